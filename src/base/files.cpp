@@ -1,0 +1,74 @@
+#include "base/files.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+namespace uabt {
+
+namespace fs = std::filesystem;
+
+std::optional<std::string> read_text_file(const fs::path& path, std::string& error) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    error = "no such file";
+    return std::nullopt;
+  }
+  if (fs::is_directory(path, ec)) {
+    error = "is a directory, not a file";
+    return std::nullopt;
+  }
+  const auto size = fs::file_size(path, ec);
+  if (ec) {
+    error = "cannot read: " + ec.message();
+    return std::nullopt;
+  }
+  if (size > kMaxInputFileBytes) {
+    error = "file is " + std::to_string(size) + " bytes; the limit is " +
+            std::to_string(kMaxInputFileBytes);
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = "cannot open for reading";
+    return std::nullopt;
+  }
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void write_file_atomically(const fs::path& path, const std::string& content) {
+  std::error_code ec;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+  fs::path tmp = path;
+  tmp += ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) {
+      fs::remove(tmp, ec);
+      throw std::runtime_error(path.string() + ": write failed");
+    }
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error(path.string() + ": cannot rename into place");
+  }
+}
+
+std::string display_path(const fs::path& path, const fs::path& base) {
+  std::error_code ec;
+  const fs::path abs_path = fs::weakly_canonical(path, ec);
+  const fs::path abs_base = fs::weakly_canonical(base, ec);
+  const fs::path rel = abs_path.lexically_relative(abs_base);
+  if (!rel.empty() && *rel.begin() != "..") return rel.generic_string();
+  return path.generic_string();
+}
+
+}  // namespace uabt

@@ -1,0 +1,23 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace uabt {
+
+// Largest mission file uabt reads; beyond it a file is refused with a finding, not parsed.
+inline constexpr std::uintmax_t kMaxInputFileBytes = 16u * 1024u * 1024u;
+
+// Reads a whole file. Returns nullopt and sets `error` when it cannot be read or is too large.
+std::optional<std::string> read_text_file(const std::filesystem::path& path, std::string& error);
+
+// Writes `content` to a temporary file beside `path`, then renames it over `path`, so a reader
+// never sees half a file. Creates missing parent directories. Throws std::runtime_error.
+void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// `path` relative to `base` when it lies inside it (generic form, '/' separators); otherwise
+// the path as given.
+std::string display_path(const std::filesystem::path& path, const std::filesystem::path& base);
+
+}  // namespace uabt

@@ -1,0 +1,23 @@
+#pragma once
+#include <string>
+
+namespace uabt {
+
+// A place in a mission file. Lines and columns are 1-based; 0 means "unknown".
+// `file` is relative to the mission directory when the file lies inside it, so that
+// reports never carry a path of the machine that produced them.
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+// A span within one file (1-based, end inclusive of the last character).
+struct SourceRange {
+  int begin_line = 0;
+  int begin_column = 0;
+  int end_line = 0;
+  int end_column = 0;
+};
+
+}  // namespace uabt

@@ -1,0 +1,60 @@
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/location.hpp"
+
+namespace uabt::bt {
+
+// One XML element of a behavior tree, as written (compact or explicit syntax).
+struct Node {
+  std::string tag;  // element name: Sequence, MoveForward, Action (explicit), SubTree, Adaptable
+  std::vector<std::pair<std::string, std::string>> attributes;  // document order
+  std::vector<Node> children;
+  int line = 0;    // 1-based position of '<' in the file
+  int column = 0;
+
+  const std::string* attribute(const std::string& name) const;
+  void set_attribute(const std::string& name, std::string value);
+  // The node's registered name: ID="X" for explicit <Action|Condition|Control|Decorator ID="X">,
+  // otherwise the tag.
+  std::string kind() const;
+  bool operator==(const Node& other) const;  // tag, attributes, children; not positions
+};
+
+struct TreeDef {
+  std::string id;
+  Node root;       // the single child of <BehaviorTree>
+  int line = 0;    // of <BehaviorTree>
+  int column = 0;
+  std::string file;  // displayed path of the file that defined it (after <include>)
+};
+
+struct Port {
+  std::string direction;  // input_port | output_port | inout_port
+  std::string name, type, default_value, description;
+};
+
+// An entry of <TreeNodesModel>: a node the robot registers.
+struct NodeModel {
+  std::string family;  // Action | Condition | Control | Decorator | SubTree
+  std::string id;
+  std::vector<Port> ports;
+  int line = 0;
+};
+
+struct Document {
+  std::string file;        // displayed path
+  int format = 4;          // 3 or 4 (BTCPP_format; v3 files have none)
+  std::string main_tree;   // main_tree_to_execute as written ("" if none)
+  std::vector<TreeDef> trees;        // document order, includes resolved
+  std::vector<NodeModel> node_models;
+  int root_line = 0;
+
+  const TreeDef* find_tree(const std::string& id) const;
+  // main_tree_to_execute when it names a tree here, else the only tree, else nullptr.
+  const TreeDef* main() const;
+};
+
+}  // namespace uabt::bt

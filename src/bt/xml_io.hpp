@@ -1,0 +1,38 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "bt/tree.hpp"
+
+namespace uabt::bt {
+
+struct ReadOptions {
+  // <include path=…> must resolve inside this directory (the mission directory).
+  std::filesystem::path confine_to;
+  // Shown in diagnostics instead of absolute paths: paths are made relative to it.
+  std::filesystem::path display_base;
+};
+
+// Reads a BT.CPP v3 or v4 file (compact or explicit syntax, CRLF, <include>). Problems are
+// findings (`bt-xml`, `bt-structure`) located at file:line:col; returns nullopt when the
+// file cannot be used at all.
+std::optional<Document> read_document(const std::filesystem::path& path, const ReadOptions& options,
+                                      std::vector<Finding>& findings);
+
+// Same, from text already in memory (`file` is the displayed name).
+std::optional<Document> parse_document(const std::string& content, const std::string& file,
+                                       std::vector<Finding>& findings);
+
+struct WriteOptions {
+  int format = 4;  // 4: <root BTCPP_format="4">; 3: v3 (no BTCPP_format)
+  bool with_node_models = true;
+};
+
+// Deterministic text: 2-space indentation, attributes in stored order, LF line ends, compact
+// syntax, <TreeNodesModel> last.
+std::string write_document(const Document& doc, const WriteOptions& options = {});
+
+}  // namespace uabt::bt

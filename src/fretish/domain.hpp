@@ -1,0 +1,44 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/location.hpp"
+#include "fretish/expr.hpp"
+
+namespace uabt::fretish {
+
+enum class VarType { boolean, integer, real, enumeration };
+
+const char* var_type_name(VarType t);
+
+// A state variable the guards range over (FRET glossary types).
+struct Variable {
+  std::string name;
+  VarType type = VarType::boolean;
+  // Bounds as literal text (exact for the solver); empty = unbounded.
+  std::string lower, upper;
+  std::vector<std::string> enum_values;  // enumeration literals, declaration order
+  SourceLocation location;
+  bool declared = true;  // false: inferred (an undeclared identifier used as a condition)
+};
+
+// An expression that always holds (domain.fret `assume`, or a FRET "assumption" requirement).
+struct Assumption {
+  std::string name;
+  ExprPtr expr;
+  SourceLocation location;
+};
+
+struct Domain {
+  std::vector<Variable> variables;
+  std::vector<Assumption> assumptions;
+
+  const Variable* find(const std::string& name) const;
+  Variable* find(const std::string& name);
+  // Name of the enum variable that has `literal` among its values, if exactly one has.
+  const Variable* enum_owning(const std::string& literal) const;
+};
+
+}  // namespace uabt::fretish

@@ -1,0 +1,66 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "bt/tree.hpp"
+#include "fretish/domain.hpp"
+#include "fretish/requirement.hpp"
+#include "fretish/selection.hpp"
+
+namespace uabt::load {
+
+// An <Adaptable ID="…"/> leaf of the mission tree.
+struct AdaptableSite {
+  std::string id;
+  std::string tree_id;  // the <BehaviorTree> that holds it
+  SourceLocation location;
+};
+
+// One alternative behaviour: alternatives/<adaptable>/<name>.xml (or the replication
+// package's resource/<adaptable>/<name>/<name>.xml).
+struct Alternative {
+  std::string adaptable;
+  std::string name;     // as the requirements name it (file or folder name)
+  std::string tree_id;  // its main tree inside the file (may differ from `name`)
+  std::string file;     // displayed path
+  bt::Document document;
+};
+
+struct Mission {
+  std::filesystem::path dir;
+  std::string name;  // the directory's name
+  std::string layout;  // "uabt" or "replication"
+
+  bt::Document tree;  // mission.xml (includes resolved)
+  std::vector<AdaptableSite> adaptables;  // document order
+  std::vector<Alternative> alternatives;  // by adaptable, then name
+
+  std::string requirements_file;  // displayed path
+  std::vector<fretish::Requirement> requirements;         // every parsed requirement
+  std::vector<fretish::SelectionRequirement> selections;  // the selection subset, file order
+  fretish::Domain domain;  // declared + inferred booleans
+
+  std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present
+
+  // Everything the loader found wrong (syntax, references, structure, types).
+  std::vector<Finding> findings;
+
+  const Alternative* find_alternative(const std::string& adaptable, const std::string& name) const;
+  // The selection requirements of one adaptable node in priority order (default last).
+  std::vector<const fretish::SelectionRequirement*> selections_for(const std::string& adaptable) const;
+};
+
+struct LoadOptions {
+  std::optional<std::filesystem::path> nodes_file;  // --nodes
+};
+
+// Loads a mission directory (DESIGN §2, or the replication package's layout). Never throws for
+// bad content: problems become findings. Returns nullopt only when `dir` is not a directory.
+std::optional<Mission> load_mission(const std::filesystem::path& dir, const LoadOptions& options,
+                                    std::string& error);
+
+}  // namespace uabt::load
