@@ -15,6 +15,9 @@ struct StructureOptions {
   std::vector<std::string> known_nodes;
   bool known_nodes_given = false;
   bool allow_adaptable = true;  // false for compiled trees: <Adaptable> is then an error
+  // Families of the robot's nodes (nodes.xml, <TreeNodesModel>): a custom Control or
+  // Decorator may have children. A node neither built in nor listed here is a leaf.
+  std::vector<NodeModel> node_models;
 };
 
 // BehaviorTree.CPP's load rules over a set of trees (one mission with its alternatives):

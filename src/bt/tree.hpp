@@ -12,7 +12,7 @@ struct Node {
   std::string tag;  // element name: Sequence, MoveForward, Action (explicit), SubTree, Adaptable
   std::vector<std::pair<std::string, std::string>> attributes;  // document order
   std::vector<Node> children;
-  int line = 0;    // 1-based position of '<' in the file
+  int line = 0;  // 1-based position of '<' in the file
   int column = 0;
 
   const std::string* attribute(const std::string& name) const;
@@ -25,8 +25,8 @@ struct Node {
 
 struct TreeDef {
   std::string id;
-  Node root;       // the single child of <BehaviorTree>
-  int line = 0;    // of <BehaviorTree>
+  Node root;     // the single child of <BehaviorTree>
+  int line = 0;  // of <BehaviorTree>
   int column = 0;
   std::string file;  // displayed path of the file that defined it (after <include>)
 };
@@ -45,10 +45,10 @@ struct NodeModel {
 };
 
 struct Document {
-  std::string file;        // displayed path
-  int format = 4;          // 3 or 4 (BTCPP_format; v3 files have none)
-  std::string main_tree;   // main_tree_to_execute as written ("" if none)
-  std::vector<TreeDef> trees;        // document order, includes resolved
+  std::string file;            // displayed path
+  int format = 4;              // 3 or 4 (BTCPP_format; v3 files have none)
+  std::string main_tree;       // main_tree_to_execute as written ("" if none)
+  std::vector<TreeDef> trees;  // document order, includes resolved
   std::vector<NodeModel> node_models;
   int root_line = 0;
 

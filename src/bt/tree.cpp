@@ -1,0 +1,56 @@
+#include "bt/tree.hpp"
+
+namespace uabt::bt {
+
+namespace {
+
+bool is_explicit_family_tag(const std::string& tag) {
+  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
+}
+
+}  // namespace
+
+const std::string* Node::attribute(const std::string& name) const {
+  for (const auto& [key, value] : attributes) {
+    if (key == name) return &value;
+  }
+  return nullptr;
+}
+
+void Node::set_attribute(const std::string& name, std::string value) {
+  for (auto& [key, existing] : attributes) {
+    if (key == name) {
+      existing = std::move(value);
+      return;
+    }
+  }
+  attributes.emplace_back(name, std::move(value));
+}
+
+std::string Node::kind() const {
+  if (is_explicit_family_tag(tag)) {
+    if (const std::string* id = attribute("ID")) return *id;
+  }
+  return tag;
+}
+
+bool Node::operator==(const Node& other) const {
+  return tag == other.tag && attributes == other.attributes && children == other.children;
+}
+
+const TreeDef* Document::find_tree(const std::string& id) const {
+  for (const TreeDef& tree : trees) {
+    if (tree.id == id) return &tree;
+  }
+  return nullptr;
+}
+
+const TreeDef* Document::main() const {
+  if (!main_tree.empty()) {
+    if (const TreeDef* named = find_tree(main_tree)) return named;
+  }
+  if (trees.size() == 1) return &trees.front();
+  return nullptr;
+}
+
+}  // namespace uabt::bt
