@@ -1,10 +1,10 @@
 #include "base/files.hpp"
 
+#include <unistd.h>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
-#include <unistd.h>
 
 namespace uabt {
 

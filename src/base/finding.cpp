@@ -24,7 +24,9 @@ Finding make_finding(const std::string& check, std::string message, SourceLocati
   Finding f;
   f.check = check;
   const std::string sev = info->severity;
-  f.severity = sev == "warning" ? Severity::warning : sev == "note" ? Severity::note : Severity::error;
+  f.severity = sev == "warning" ? Severity::warning
+               : sev == "note"  ? Severity::note
+                                : Severity::error;
   f.message = std::move(message);
   f.location = std::move(location);
   return f;

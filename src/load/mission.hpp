@@ -32,17 +32,17 @@ struct Alternative {
 
 struct Mission {
   std::filesystem::path dir;
-  std::string name;  // the directory's name
+  std::string name;    // the directory's name
   std::string layout;  // "uabt" or "replication"
 
-  bt::Document tree;  // mission.xml (includes resolved)
+  bt::Document tree;                      // mission.xml (includes resolved)
   std::vector<AdaptableSite> adaptables;  // document order
   std::vector<Alternative> alternatives;  // by adaptable, then name
 
-  std::string requirements_file;  // displayed path
+  std::string requirements_file;                          // displayed path
   std::vector<fretish::Requirement> requirements;         // every parsed requirement
   std::vector<fretish::SelectionRequirement> selections;  // the selection subset, file order
-  fretish::Domain domain;  // declared + inferred booleans
+  fretish::Domain domain;                                 // declared + inferred booleans
 
   std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present
 
@@ -51,7 +51,8 @@ struct Mission {
 
   const Alternative* find_alternative(const std::string& adaptable, const std::string& name) const;
   // The selection requirements of one adaptable node in priority order (default last).
-  std::vector<const fretish::SelectionRequirement*> selections_for(const std::string& adaptable) const;
+  std::vector<const fretish::SelectionRequirement*> selections_for(
+      const std::string& adaptable) const;
 };
 
 struct LoadOptions {

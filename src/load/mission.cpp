@@ -1,0 +1,183 @@
+#include "load/mission.hpp"
+
+#include "base/files.hpp"
+#include "bt/structure.hpp"
+#include "bt/xml_io.hpp"
+#include "fretish/parse.hpp"
+#include "load/layout.hpp"
+#include "load/references.hpp"
+
+namespace uabt::load {
+
+namespace fs = std::filesystem;
+
+const Alternative* Mission::find_alternative(const std::string& adaptable,
+                                             const std::string& name) const {
+  for (const auto& alt : alternatives)
+    if (alt.adaptable == adaptable && alt.name == name) return &alt;
+  return nullptr;
+}
+
+std::vector<const fretish::SelectionRequirement*> Mission::selections_for(
+    const std::string& adaptable) const {
+  std::vector<const fretish::SelectionRequirement*> guarded;
+  const fretish::SelectionRequirement* fallback = nullptr;
+  for (const auto& s : selections) {
+    if (s.adaptable != adaptable) continue;
+    if (s.guard)
+      guarded.push_back(&s);
+    else if (fallback == nullptr)  // a second default is ref-multiple-defaults
+      fallback = &s;
+  }
+  if (fallback != nullptr) guarded.push_back(fallback);
+  return guarded;
+}
+
+namespace {
+
+std::optional<std::string> read_or_report(const fs::path& path, const std::string& shown,
+                                          std::vector<Finding>& findings) {
+  std::string error;
+  auto text = read_text_file(path, error);
+  if (!text) findings.push_back(make_finding("load-file", shown + ": " + error, {shown, 0, 0}));
+  return text;
+}
+
+void collect_adaptables(const bt::Node& node, const std::string& tree_id, const std::string& file,
+                        std::vector<AdaptableSite>& out) {
+  // Iterative: trees may be deep, and the loader must not overflow the stack.
+  std::vector<const bt::Node*> stack{&node};
+  while (!stack.empty()) {
+    const bt::Node* n = stack.back();
+    stack.pop_back();
+    if (n->tag == "Adaptable") {
+      const std::string* id = n->attribute("ID");
+      out.push_back({id ? *id : std::string(), tree_id, {file, n->line, n->column}});
+    }
+    for (auto it = n->children.rbegin(); it != n->children.rend(); ++it) stack.push_back(&*it);
+  }
+}
+
+void load_requirements(Mission& m, const fs::path& path) {
+  m.requirements_file = display_path(path, m.dir);
+  auto text = read_or_report(path, m.requirements_file, m.findings);
+  if (!text) return;
+  fretish::ParseResult parsed = path.extension() == ".json"
+                                    ? fretish::parse_fret_json(*text, m.requirements_file, m.domain)
+                                    : fretish::parse_requirements_file(*text, m.requirements_file);
+  m.requirements = std::move(parsed.requirements);
+  m.findings.insert(m.findings.end(), parsed.findings.begin(), parsed.findings.end());
+}
+
+void load_domain(Mission& m, const fs::path& path) {
+  const std::string shown = display_path(path, m.dir);
+  auto text = read_or_report(path, shown, m.findings);
+  if (!text) return;
+  fretish::Domain declared = fretish::parse_domain_file(*text, shown, m.findings);
+  // Declarations from a FRET export (already in m.domain) come first; domain.fret adds to them.
+  for (auto& v : declared.variables) {
+    if (m.domain.find(v.name) == nullptr) m.domain.variables.push_back(std::move(v));
+  }
+  for (auto& a : declared.assumptions) m.domain.assumptions.push_back(std::move(a));
+}
+
+void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
+  auto doc = bt::read_document(path, read_options, m.findings);
+  if (doc) m.nodes = doc->node_models;
+}
+
+void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
+                       const bt::ReadOptions& read_options) {
+  for (const auto& file : files) {
+    auto doc = bt::read_document(file.path, read_options, m.findings);
+    if (!doc) continue;
+    Alternative alt;
+    alt.adaptable = file.adaptable;
+    alt.name = file.name;
+    alt.file = display_path(file.path, m.dir);
+    const bt::TreeDef* main = doc->find_tree(file.name);
+    if (main == nullptr) main = doc->main();
+    if (main == nullptr) {
+      m.findings.push_back(make_finding(
+          "bt-structure",
+          "alternative '" + file.name + "' has no tree named '" + file.name +
+              "', its main_tree_to_execute names no tree here, and it has more than one tree",
+          {alt.file, doc->root_line, 1}));
+      continue;
+    }
+    alt.tree_id = main->id;
+    alt.document = std::move(*doc);
+    m.alternatives.push_back(std::move(alt));
+  }
+}
+
+void check_all_structure(Mission& m) {
+  std::vector<const bt::TreeDef*> trees;
+  for (const auto& t : m.tree.trees) trees.push_back(&t);
+  bt::StructureOptions options;
+  if (m.nodes) {
+    options.known_nodes_given = true;
+    for (const auto& model : *m.nodes) options.known_nodes.push_back(model.id);
+    options.node_models = *m.nodes;
+  }
+  // A custom control or decorator declared anywhere in the mission is known everywhere.
+  options.node_models.insert(options.node_models.end(), m.tree.node_models.begin(),
+                             m.tree.node_models.end());
+  for (const auto& alt : m.alternatives)
+    options.node_models.insert(options.node_models.end(), alt.document.node_models.begin(),
+                               alt.document.node_models.end());
+  auto mission_findings = bt::check_structure(trees, options);
+  m.findings.insert(m.findings.end(), mission_findings.begin(), mission_findings.end());
+  // Each alternative is checked on its own: its SubTrees resolve within its own file.
+  for (const auto& alt : m.alternatives) {
+    std::vector<const bt::TreeDef*> alt_trees;
+    for (const auto& t : alt.document.trees) alt_trees.push_back(&t);
+    auto alt_findings = bt::check_structure(alt_trees, options);
+    m.findings.insert(m.findings.end(), alt_findings.begin(), alt_findings.end());
+  }
+}
+
+}  // namespace
+
+std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& options,
+                                    std::string& error) {
+  auto layout = discover_layout(dir, error);
+  if (!layout) return std::nullopt;
+
+  Mission m;
+  m.dir = dir;
+  m.name = fs::weakly_canonical(dir).filename().string();
+  m.layout = layout->kind;
+
+  bt::ReadOptions read_options;
+  read_options.confine_to = dir;
+  read_options.display_base = dir;
+
+  if (auto doc = bt::read_document(layout->mission_xml, read_options, m.findings)) {
+    m.tree = std::move(*doc);
+    for (const auto& t : m.tree.trees) collect_adaptables(t.root, t.id, t.file, m.adaptables);
+  }
+
+  if (layout->requirements.empty())
+    m.findings.push_back(
+        make_finding("load-file", "no requirements file (requirements.fret or requirements.json)",
+                     {display_path(dir, dir), 0, 0}));
+  else
+    load_requirements(m, layout->requirements);
+
+  if (layout->domain) load_domain(m, *layout->domain);
+  if (options.nodes_file)
+    load_nodes(m, *options.nodes_file, read_options);
+  else if (layout->nodes)
+    load_nodes(m, *layout->nodes, read_options);
+
+  load_alternatives(m, layout->alternatives, read_options);
+  m.selections = fretish::classify_selection(m.requirements, m.findings);
+  infer_condition_variables(m);
+  check_references(m);
+  check_all_structure(m);
+  sort_findings(m.findings);
+  return m;
+}
+
+}  // namespace uabt::load

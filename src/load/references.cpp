@@ -1,0 +1,224 @@
+#include "load/references.hpp"
+
+#include <map>
+#include <set>
+
+namespace uabt::load {
+
+using fretish::Expr;
+using fretish::ExprKind;
+
+std::vector<const Expr*> boolean_atoms(const Expr& root) {
+  std::vector<const Expr*> atoms;
+  std::vector<const Expr*> stack{&root};
+  while (!stack.empty()) {
+    const Expr* e = stack.back();
+    stack.pop_back();
+    if (e->kind == ExprKind::identifier) {
+      atoms.push_back(e);
+    } else if (fretish::is_boolean_connective(e->kind)) {
+      for (auto it = e->args.rbegin(); it != e->args.rend(); ++it) stack.push_back(it->get());
+    }
+  }
+  return atoms;
+}
+
+namespace {
+
+SourceLocation location_of(const Expr& e, const SourceLocation& owner) {
+  if (e.range.begin_line == 0) return owner;
+  return {owner.file, e.range.begin_line, e.range.begin_column};
+}
+
+void infer_from(const Expr& e, const SourceLocation& owner, fretish::Domain& domain) {
+  for (const Expr* atom : boolean_atoms(e)) {
+    if (domain.find(atom->text) != nullptr || domain.enum_owning(atom->text) != nullptr) continue;
+    fretish::Variable v;
+    v.name = atom->text;
+    v.type = fretish::VarType::boolean;
+    v.declared = false;
+    v.location = location_of(*atom, owner);
+    domain.variables.push_back(std::move(v));
+  }
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+void duplicate_requirement_ids(Mission& m) {
+  std::map<std::string, const fretish::Requirement*> first;
+  for (const auto& r : m.requirements) {
+    auto [it, inserted] = first.emplace(r.id, &r);
+    if (inserted) continue;
+    Finding f =
+        make_finding("ref-duplicate-id", "requirement id '" + r.id + "' is used twice", r.location);
+    f.requirements = {r.id};
+    f.notes.push_back("first used at " + it->second->location.file + ":" +
+                      std::to_string(it->second->location.line));
+    m.findings.push_back(std::move(f));
+  }
+}
+
+void duplicate_adaptables(Mission& m) {
+  std::map<std::string, const AdaptableSite*> first;
+  for (const auto& site : m.adaptables) {
+    if (site.id.empty()) continue;  // bt-structure reports the missing ID
+    auto [it, inserted] = first.emplace(site.id, &site);
+    if (inserted) continue;
+    Finding f = make_finding("ref-duplicate-id",
+                             "adaptable node '" + site.id + "' appears twice in the mission",
+                             site.location);
+    f.adaptable = site.id;
+    f.notes.push_back("first appears at " + it->second->location.file + ":" +
+                      std::to_string(it->second->location.line));
+    m.findings.push_back(std::move(f));
+  }
+}
+
+// The compiled tree holds the mission's trees, one selection tree per adaptable node (named
+// after it) and every alternative's trees: their IDs must not clash.
+void duplicate_tree_ids(Mission& m) {
+  struct Owner {
+    const bt::TreeDef* tree;
+    std::string what;
+  };
+  std::map<std::string, Owner> owners;
+  auto claim = [&](const bt::TreeDef& t, const std::string& what) {
+    auto [it, inserted] = owners.emplace(t.id, Owner{&t, what});
+    if (inserted) return;
+    // The same subtree included by two alternatives is one tree, not a clash.
+    if (it->second.tree != nullptr && it->second.tree->root == t.root) return;
+    Finding f = make_finding("ref-duplicate-id",
+                             "tree ID '" + t.id + "' of " + what + " is already used by " +
+                                 it->second.what + "; the compiled tree would hold both",
+                             {t.file, t.line, t.column});
+    m.findings.push_back(std::move(f));
+  };
+  for (const auto& site : m.adaptables)
+    if (!site.id.empty())
+      owners.emplace(site.id,
+                     Owner{nullptr, "the selection tree of adaptable node '" + site.id + "'"});
+  for (const auto& t : m.tree.trees) claim(t, "the mission");
+  for (const auto& alt : m.alternatives)
+    for (const auto& t : alt.document.trees) claim(t, "alternative '" + alt.name + "'");
+}
+
+void selection_references(Mission& m) {
+  std::set<std::string> adaptable_ids;
+  for (const auto& site : m.adaptables) adaptable_ids.insert(site.id);
+  std::set<std::pair<std::string, std::string>> selected;
+  std::map<std::string, const fretish::SelectionRequirement*> defaults;
+
+  for (const auto& s : m.selections) {
+    selected.insert({s.adaptable, s.alternative});
+    if (!adaptable_ids.count(s.adaptable)) {
+      std::vector<std::string> known(adaptable_ids.begin(), adaptable_ids.end());
+      Finding f =
+          make_finding("ref-unknown-adaptable",
+                       "requirement " + s.id + " is scoped to '" + s.adaptable +
+                           "', but the mission has no <Adaptable ID=\"" + s.adaptable + "\"/>" +
+                           (known.empty() ? "" : " (it has: " + joined(known) + ")"),
+                       s.location);
+      f.adaptable = s.adaptable;
+      f.requirements = {s.id};
+      m.findings.push_back(std::move(f));
+      continue;
+    }
+    if (m.find_alternative(s.adaptable, s.alternative) == nullptr) {
+      Finding f =
+          make_finding("ref-unknown-alternative",
+                       "requirement " + s.id + " selects '" + s.alternative +
+                           "', but there is no alternative file for it under '" + s.adaptable + "'",
+                       s.alternative_location.line ? s.alternative_location : s.location);
+      f.adaptable = s.adaptable;
+      f.requirements = {s.id};
+      f.alternatives = {s.alternative};
+      m.findings.push_back(std::move(f));
+    }
+    if (!s.guard) {
+      auto [it, inserted] = defaults.emplace(s.adaptable, &s);
+      if (!inserted) {
+        Finding f = make_finding(
+            "ref-multiple-defaults",
+            "requirement " + s.id + " is a second default (no condition) for '" + s.adaptable +
+                "'; " + it->second->id + " already is one, so this one can never be selected",
+            s.location);
+        f.adaptable = s.adaptable;
+        f.requirements = {it->second->id, s.id};
+        f.alternatives = {s.alternative};
+        m.findings.push_back(std::move(f));
+      }
+    }
+  }
+
+  std::set<std::string> reported;
+  for (const auto& site : m.adaptables) {
+    if (site.id.empty() || !reported.insert(site.id).second) continue;
+    bool has_requirement = false;
+    for (const auto& s : m.selections) has_requirement |= s.adaptable == site.id;
+    if (!has_requirement) {
+      Finding f = make_finding("ref-adaptable-unresolved",
+                               "adaptable node '" + site.id +
+                                   "' has no selection requirement: nothing says which "
+                                   "alternative runs there",
+                               site.location);
+      f.adaptable = site.id;
+      m.findings.push_back(std::move(f));
+    }
+  }
+
+  for (const auto& alt : m.alternatives) {
+    if (selected.count({alt.adaptable, alt.name})) continue;
+    const bt::TreeDef* main = alt.document.find_tree(alt.tree_id);
+    Finding f = make_finding(
+        "ref-orphan-alternative",
+        "alternative '" + alt.name + "' of '" + alt.adaptable + "' is selected by no requirement",
+        {alt.file, main ? main->line : 1, main ? main->column : 1});
+    f.adaptable = alt.adaptable;
+    f.alternatives = {alt.name};
+    m.findings.push_back(std::move(f));
+  }
+}
+
+void unknown_conditions(Mission& m) {
+  if (!m.nodes) return;
+  std::set<std::string> conditions;
+  for (const auto& model : *m.nodes) conditions.insert(model.id);
+  for (const auto& s : m.selections) {
+    if (!s.guard) continue;
+    for (const Expr* atom : boolean_atoms(*s.guard)) {
+      const fretish::Variable* v = m.domain.find(atom->text);
+      if (v == nullptr || v->type != fretish::VarType::boolean || conditions.count(atom->text))
+        continue;
+      Finding f = make_finding("ref-unknown-condition",
+                               "condition '" + atom->text + "' in requirement " + s.id +
+                                   " is not a node of nodes.xml; the robot cannot check it",
+                               location_of(*atom, s.location));
+      f.adaptable = s.adaptable;
+      f.requirements = {s.id};
+      m.findings.push_back(std::move(f));
+    }
+  }
+}
+
+}  // namespace
+
+void infer_condition_variables(Mission& m) {
+  for (const auto& s : m.selections)
+    if (s.guard) infer_from(*s.guard, s.location, m.domain);
+  for (const auto& a : m.domain.assumptions)
+    if (a.expr) infer_from(*a.expr, a.location, m.domain);
+}
+
+void check_references(Mission& m) {
+  duplicate_requirement_ids(m);
+  duplicate_adaptables(m);
+  duplicate_tree_ids(m);
+  selection_references(m);
+  unknown_conditions(m);
+}
+
+}  // namespace uabt::load

@@ -1,0 +1,55 @@
+#pragma once
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+namespace uabt::testing {
+
+// A mission directory written to a fresh temporary folder, removed again at the end of the
+// test. Files are given as path (relative to the mission) → content.
+class TempMission {
+ public:
+  explicit TempMission(const std::map<std::string, std::string>& files, std::string name = "m") {
+    static std::atomic<int> counter{0};
+    root_ = std::filesystem::temp_directory_path() /
+            ("uabt-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    dir_ = root_ / name;
+    std::filesystem::create_directories(dir_);
+    for (const auto& [path, content] : files) write(path, content);
+  }
+  ~TempMission() {
+    std::error_code ec;
+    std::filesystem::remove_all(root_, ec);
+  }
+  TempMission(const TempMission&) = delete;
+  TempMission& operator=(const TempMission&) = delete;
+
+  void write(const std::string& path, const std::string& content) const {
+    const auto full = dir_ / path;
+    std::filesystem::create_directories(full.parent_path());
+    std::ofstream(full, std::ios::binary) << content;
+  }
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::filesystem::path root_;
+  std::filesystem::path dir_;
+};
+
+// The smallest well-formed pieces, for tests that vary one thing.
+inline std::string mission_with(const std::string& body) {
+  return "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
+         "  <BehaviorTree ID=\"MainTree\">\n" +
+         body + "\n  </BehaviorTree>\n</root>\n";
+}
+
+inline std::string alternative_tree(const std::string& id, const std::string& body = "<Stop/>") {
+  return "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"" + id + "\">\n    " + body +
+         "\n  </BehaviorTree>\n</root>\n";
+}
+
+}  // namespace uabt::testing
