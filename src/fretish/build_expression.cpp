@@ -1,0 +1,269 @@
+#include "fretish/build_expression.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace uabt::fretish::detail {
+
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+ExprKind relation_kind(std::string_view op) {
+  if (op == "<") return ExprKind::lt;
+  if (op == "<=") return ExprKind::le;
+  if (op == ">") return ExprKind::gt;
+  if (op == ">=") return ExprKind::ge;
+  if (op == "!=") return ExprKind::ne;
+  return ExprKind::eq;  // "=" and "=="
+}
+
+ExprKind operator_kind(const SyntaxNode& op, std::string_view text) {
+  if (op.is<g::op_iff>()) return ExprKind::iff;
+  if (op.is<g::op_implies>()) return ExprKind::implies;
+  if (op.is<g::op_xor>()) return ExprKind::logical_xor;
+  if (op.is<g::op_or>()) return ExprKind::logical_or;
+  if (op.is<g::op_and>()) return ExprKind::logical_and;
+  if (op.is<g::op_add>()) return ExprKind::add;
+  if (op.is<g::op_sub>()) return ExprKind::sub;
+  if (op.is<g::op_mul>()) return ExprKind::mul;
+  if (op.is<g::op_div>()) return ExprKind::div;
+  if (op.is<g::op_mod>()) return ExprKind::mod;
+  return relation_kind(op.text(text));
+}
+
+std::string unescape_quoted(std::string_view quoted) {
+  std::string out;
+  const std::string_view inner = quoted.substr(1, quoted.size() >= 2 ? quoted.size() - 2 : 0);
+  for (std::size_t i = 0; i < inner.size(); ++i) {
+    if (inner[i] == '\\' && i + 1 < inner.size() && (inner[i + 1] == '"' || inner[i + 1] == '\\'))
+      ++i;
+    out += inner[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+ExprPtr ExpressionBuilder::build(const SyntaxNode& node) {
+  try {
+    return visit(node).expr;
+  } catch (const TooDeep& e) {
+    findings_.push_back(make_finding(
+        "fretish-syntax",
+        "expression nested deeper than " + std::to_string(kMaxExprDepth) + " operators",
+        map_.location(e.offset)));
+    return nullptr;
+  }
+}
+
+std::string ExpressionBuilder::name_of(const SyntaxNode& node) const {
+  if (node.is<g::plain_identifier>()) return std::string(node.text(text_));
+  if (node.is<g::quoted_identifier>()) return unescape_quoted(node.text(text_));
+  if (!node.children.empty()) return name_of(*node.children.front());
+  return std::string(node.text(text_));
+}
+
+ExpressionBuilder::Built ExpressionBuilder::make(ExprKind kind, std::vector<Built> args,
+                                                 std::size_t begin, std::size_t end) {
+  int depth = 0;
+  std::vector<ExprPtr> operands;
+  operands.reserve(args.size());
+  for (auto& a : args) {
+    depth = std::max(depth, a.depth);
+    operands.push_back(std::move(a.expr));
+  }
+  if (depth + 1 > kMaxExprDepth) throw TooDeep{begin};
+  return {make_expr(kind, std::move(operands), map_.range(begin, end)), depth + 1};
+}
+
+ExpressionBuilder::Built ExpressionBuilder::visit(const SyntaxNode& n) {
+  const SourceRange range = map_.range(n.begin, n.end);
+  if (n.is<g::equivalence>() || n.is<g::exclusive>() || n.is<g::additive>() ||
+      n.is<g::multiplicative>())
+    return left_fold(n);
+  if (n.is<g::implication>()) return right_fold(n);
+  if (n.is<g::disjunction>()) return flat(n, ExprKind::logical_or);
+  if (n.is<g::conjunction>()) return flat(n, ExprKind::logical_and);
+  if (n.is<g::negation>()) return negation(n);
+  if (n.is<g::relation>()) return relation(n);
+  if (n.is<g::power_chain>()) return power_chain(n);
+  if (n.is<g::paren_expression>()) return parenthesized(n);
+  if (n.is<g::call>()) return call(n);
+  if (n.is<g::occurrence>()) return occurrence(n);
+  if (n.is<g::if_then>() && n.children.size() == 2) {
+    std::vector<Built> args;
+    args.push_back(visit(*n.children[0]));
+    args.push_back(visit(*n.children[1]));
+    return make(ExprKind::implies, std::move(args), n.begin, n.end);
+  }
+  if (n.is<g::number>()) return {make_number(std::string(n.text(text_)), range)};
+  if (n.is<g::bool_true>()) return {make_bool(true, range)};
+  if (n.is<g::bool_false>()) return {make_bool(false, range)};
+  if (n.is<g::plain_identifier>() || n.is<g::quoted_identifier>())
+    return {make_identifier(name_of(n), range)};
+  // A wrapper the grammar adds around one expression node.
+  if (n.children.size() == 1) return visit(*n.children.front());
+  return {make_identifier(std::string(n.text(text_)), range)};
+}
+
+void ExpressionBuilder::warn_mixed(const SyntaxNode& op, const char* inner_spelled_as) {
+  const std::string outer = lower(op.text(text_));
+  findings_.push_back(make_finding(
+      "fretish-precedence",
+      "'" + outer + "' and '" + inner_spelled_as + "' mixed without parentheses: uabt reads '" +
+          inner_spelled_as +
+          "' as binding tighter (FRET's formalization), but FRET's requirement grammar groups "
+          "them left to right; add parentheses",
+      map_.location(op.begin)));
+}
+
+ExpressionBuilder::Built ExpressionBuilder::left_fold(const SyntaxNode& n) {
+  const auto& c = n.children;
+  if (c.size() == 1) return visit(*c[0]);
+  // `a xor b | c` and `a <-> b -> c`: FRET's two grammars group these differently.
+  const bool check_xor = n.is<g::exclusive>();
+  const bool check_iff = n.is<g::equivalence>();
+  if (check_xor || check_iff) {
+    for (std::size_t i = 0; i < c.size(); i += 2) {
+      const SyntaxNode& operand = *c[i];
+      const bool mixed =
+          (check_xor && operand.is<g::disjunction>() && operand.children.size() > 1) ||
+          (check_iff && operand.is<g::implication>() && operand.children.size() > 1);
+      if (!mixed) continue;
+      const SyntaxNode& outer_op = i > 0 ? *c[i - 1] : *c[i + 1];
+      const std::string inner = std::string(operand.children[1]->text(text_));
+      warn_mixed(outer_op, inner.c_str());
+      break;
+    }
+  }
+  Built acc = visit(*c[0]);
+  for (std::size_t i = 1; i + 1 < c.size(); i += 2) {
+    std::vector<Built> args;
+    args.push_back(std::move(acc));
+    args.push_back(visit(*c[i + 1]));
+    acc = make(operator_kind(*c[i], text_), std::move(args), c[0]->begin, c[i + 1]->end);
+  }
+  return acc;
+}
+
+ExpressionBuilder::Built ExpressionBuilder::right_fold(const SyntaxNode& n) {
+  const auto& c = n.children;
+  std::size_t last = c.size() - 1;
+  Built acc = visit(*c[last]);
+  while (last >= 2) {
+    std::vector<Built> args;
+    args.push_back(visit(*c[last - 2]));
+    args.push_back(std::move(acc));
+    acc = make(operator_kind(*c[last - 1], text_), std::move(args), c[last - 2]->begin, n.end);
+    last -= 2;
+  }
+  return acc;
+}
+
+ExpressionBuilder::Built ExpressionBuilder::flat(const SyntaxNode& n, ExprKind kind) {
+  if (n.children.size() == 1) return visit(*n.children[0]);
+  std::vector<Built> args;
+  for (std::size_t i = 0; i < n.children.size(); i += 2) args.push_back(visit(*n.children[i]));
+  return make(kind, std::move(args), n.begin, n.end);
+}
+
+ExpressionBuilder::Built ExpressionBuilder::negation(const SyntaxNode& n) {
+  const auto& c = n.children;
+  Built acc = visit(*c.back());
+  for (std::size_t i = c.size() - 1; i-- > 0;) {
+    std::vector<Built> args;
+    args.push_back(std::move(acc));
+    acc = make(ExprKind::logical_not, std::move(args), c[i]->begin, n.end);
+  }
+  return acc;
+}
+
+ExpressionBuilder::Built ExpressionBuilder::relation(const SyntaxNode& n) {
+  const auto& c = n.children;
+  if (c.size() != 3) return visit(*c[0]);
+  std::vector<Built> args;
+  args.push_back(visit(*c[0]));
+  args.push_back(visit(*c[2]));
+  return make(relation_kind(c[1]->text(text_)), std::move(args), n.begin, n.end);
+}
+
+ExpressionBuilder::Built ExpressionBuilder::power_chain(const SyntaxNode& n) {
+  // Segments "-…- operand" joined by '^'; each segment's signs negate the rest of the chain.
+  struct Segment {
+    std::vector<const SyntaxNode*> signs;
+    const SyntaxNode* operand = nullptr;
+  };
+  std::vector<Segment> segments(1);
+  for (const auto& child : n.children) {
+    if (child->is<g::op_negate>()) {
+      segments.back().signs.push_back(child.get());
+    } else {
+      segments.back().operand = child.get();
+      segments.emplace_back();
+    }
+  }
+  segments.pop_back();
+  Built acc;
+  for (std::size_t i = segments.size(); i-- > 0;) {
+    const Segment& s = segments[i];
+    Built operand = visit(*s.operand);
+    if (i + 1 == segments.size()) {
+      acc = std::move(operand);
+    } else {
+      std::vector<Built> args;
+      args.push_back(std::move(operand));
+      args.push_back(std::move(acc));
+      acc = make(ExprKind::pow, std::move(args), s.operand->begin, n.end);
+    }
+    for (std::size_t k = s.signs.size(); k-- > 0;) {
+      std::vector<Built> args;
+      args.push_back(std::move(acc));
+      acc = make(ExprKind::negate, std::move(args), s.signs[k]->begin, n.end);
+    }
+  }
+  return acc;
+}
+
+ExpressionBuilder::Built ExpressionBuilder::parenthesized(const SyntaxNode& n) {
+  Built inner = visit(*n.children.front());
+  auto copy = std::make_shared<Expr>(*inner.expr);
+  copy->parenthesized = true;
+  copy->range = map_.range(n.begin, n.end);
+  return {std::move(copy), inner.depth};
+}
+
+ExpressionBuilder::Built ExpressionBuilder::call(const SyntaxNode& n) {
+  std::vector<Built> args;
+  std::string name;
+  for (const auto& child : n.children) {
+    if (child->is<g::function_name>())
+      name = name_of(*child);
+    else
+      args.push_back(visit(*child));
+  }
+  Built b = make(ExprKind::call, std::move(args), n.begin, n.end);
+  std::const_pointer_cast<Expr>(b.expr)->text = std::move(name);
+  return b;
+}
+
+ExpressionBuilder::Built ExpressionBuilder::occurrence(const SyntaxNode& n) {
+  // "at the previous|next occurrence of P, Q" is FRET's prevOcc(P, Q) / nextOcc(P, Q).
+  std::vector<Built> args;
+  std::string name = "nextOcc";
+  for (const auto& child : n.children) {
+    if (child->is<g::occurrence_direction>())
+      name = lower(child->text(text_)) == "previous" ? "prevOcc" : "nextOcc";
+    else
+      args.push_back(visit(*child));
+  }
+  Built b = make(ExprKind::call, std::move(args), n.begin, n.end);
+  std::const_pointer_cast<Expr>(b.expr)->text = std::move(name);
+  return b;
+}
+
+}  // namespace uabt::fretish::detail
