@@ -1,1 +1,31 @@
-int main() { return 0; }
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"uabt: compile, verify and run adaptable behavior trees"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", uabt::cli::tool_version());
+  int exit_code = uabt::cli::kExitPass;
+  uabt::cli::register_compile(app, exit_code);
+  uabt::cli::register_verify(app, exit_code);
+  uabt::cli::register_conform(app, exit_code);
+  uabt::cli::register_gate(app, exit_code);
+  uabt::cli::register_report(app, exit_code);
+  uabt::cli::register_diff(app, exit_code);
+  uabt::cli::register_run(app, exit_code);
+  uabt::cli::register_explain(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : uabt::cli::kExitUsage;
+  } catch (const std::exception& e) {
+    std::cerr << "uabt: " << e.what() << "\n";
+    return uabt::cli::kExitFail;
+  }
+  return exit_code;
+}

@@ -28,8 +28,10 @@ std::vector<fs::path> sorted_entries(const fs::path& dir) {
   return entries;
 }
 
+}  // namespace
+
 // alternatives/<adaptable>/<alt>.xml
-std::vector<AlternativeFile> uabt_alternatives(const fs::path& root) {
+std::vector<AlternativeFile> discover_alternatives(const fs::path& root) {
   std::vector<AlternativeFile> out;
   if (!is_dir(root)) return out;
   for (const auto& adaptable_dir : sorted_entries(root)) {
@@ -41,6 +43,8 @@ std::vector<AlternativeFile> uabt_alternatives(const fs::path& root) {
   }
   return out;
 }
+
+namespace {
 
 // resource/<adaptable>/<alt>/<alt>.xml — the folder names the alternative; the generator's
 // <alt>_conditions.xml beside it is its own output, not an alternative.
@@ -80,7 +84,7 @@ std::optional<MissionLayout> discover_layout(const fs::path& dir, std::string& e
       layout.requirements = dir / "requirements.json";
     layout.domain = optional_file(dir / "domain.fret");
     layout.nodes = optional_file(dir / "nodes.xml");
-    layout.alternatives = uabt_alternatives(dir / "alternatives");
+    layout.alternatives = discover_alternatives(dir / "alternatives");
     return layout;
   }
   if (is_file(dir / "mission" / "mission.xml") && is_dir(dir / "resource")) {

@@ -23,6 +23,9 @@ struct MissionLayout {
   std::vector<AlternativeFile> alternatives;  // sorted by adaptable, then name
 };
 
+// alternatives/<adaptable>/<alt>.xml below `root`, sorted; empty when `root` is missing.
+std::vector<AlternativeFile> discover_alternatives(const std::filesystem::path& root);
+
 // Finds the files of the mission in `dir`. Sets `error` and returns nullopt when `dir`
 // holds neither layout.
 std::optional<MissionLayout> discover_layout(const std::filesystem::path& dir, std::string& error);

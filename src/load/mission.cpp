@@ -1,5 +1,7 @@
 #include "load/mission.hpp"
 
+#include <algorithm>
+
 #include "base/files.hpp"
 #include "bt/structure.hpp"
 #include "bt/xml_io.hpp"
@@ -58,15 +60,30 @@ void collect_adaptables(const bt::Node& node, const std::string& tree_id, const 
   }
 }
 
-void load_requirements(Mission& m, const fs::path& path) {
-  m.requirements_file = display_path(path, m.dir);
-  auto text = read_or_report(path, m.requirements_file, m.findings);
+// Parses a requirements file. The mission's own file fills the list; an uplink's file is
+// merged onto it: a requirement with a new id is appended (below the mission's, above the
+// default, since the default always goes last), one with an existing id replaces it in place.
+void load_requirements(Mission& m, const fs::path& path, bool from_uplink) {
+  const std::string shown = display_path(path, m.dir);
+  if (!from_uplink) m.requirements_file = shown;
+  auto text = read_or_report(path, shown, m.findings);
   if (!text) return;
   fretish::ParseResult parsed = path.extension() == ".json"
-                                    ? fretish::parse_fret_json(*text, m.requirements_file, m.domain)
-                                    : fretish::parse_requirements_file(*text, m.requirements_file);
-  m.requirements = std::move(parsed.requirements);
+                                    ? fretish::parse_fret_json(*text, shown, m.domain)
+                                    : fretish::parse_requirements_file(*text, shown);
   m.findings.insert(m.findings.end(), parsed.findings.begin(), parsed.findings.end());
+  if (!from_uplink) {
+    m.requirements = std::move(parsed.requirements);
+    return;
+  }
+  for (auto& r : parsed.requirements) {
+    auto same_id = std::find_if(m.requirements.begin(), m.requirements.end(),
+                                [&](const fretish::Requirement& old) { return old.id == r.id; });
+    if (same_id != m.requirements.end())
+      *same_id = std::move(r);
+    else
+      m.requirements.push_back(std::move(r));
+  }
 }
 
 void load_domain(Mission& m, const fs::path& path) {
@@ -107,7 +124,14 @@ void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
     }
     alt.tree_id = main->id;
     alt.document = std::move(*doc);
-    m.alternatives.push_back(std::move(alt));
+    // An uplinked alternative with the name of an existing one is its new version.
+    auto same = std::find_if(m.alternatives.begin(), m.alternatives.end(), [&](const Alternative& a) {
+      return a.adaptable == alt.adaptable && a.name == alt.name;
+    });
+    if (same != m.alternatives.end())
+      *same = std::move(alt);
+    else
+      m.alternatives.push_back(std::move(alt));
   }
 }
 
@@ -137,6 +161,38 @@ void check_all_structure(Mission& m) {
   }
 }
 
+// An uplink package (DESIGN §2): requirements.fret, domain.fret and alternatives/, each
+// optional, merged onto the mission as it stands. Its files must lie inside the mission
+// directory (uplinks/<name>/), so that every path in a report stays mission-relative.
+void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& read_options) {
+  std::error_code ec;
+  const std::string shown = display_path(uplink, m.dir);
+  if (!fs::is_directory(uplink, ec)) {
+    m.findings.push_back(make_finding("load-file", shown + ": uplink package is not a directory",
+                                      {shown, 0, 0}));
+    return;
+  }
+  m.uplinks.push_back(shown);
+  bool has_content = false;
+  if (fs::is_regular_file(uplink / "requirements.fret", ec)) {
+    load_requirements(m, uplink / "requirements.fret", true);
+    has_content = true;
+  }
+  if (fs::is_regular_file(uplink / "domain.fret", ec)) {
+    load_domain(m, uplink / "domain.fret");
+    has_content = true;
+  }
+  if (auto alternatives = discover_alternatives(uplink / "alternatives"); !alternatives.empty()) {
+    load_alternatives(m, alternatives, read_options);
+    has_content = true;
+  }
+  if (!has_content)
+    m.findings.push_back(make_finding(
+        "load-file",
+        shown + ": uplink package holds no requirements.fret, domain.fret or alternatives/",
+        {shown, 0, 0}));
+}
+
 }  // namespace
 
 std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& options,
@@ -163,7 +219,7 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
         make_finding("load-file", "no requirements file (requirements.fret or requirements.json)",
                      {display_path(dir, dir), 0, 0}));
   else
-    load_requirements(m, layout->requirements);
+    load_requirements(m, layout->requirements, false);
 
   if (layout->domain) load_domain(m, *layout->domain);
   if (options.nodes_file)
@@ -172,6 +228,7 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
     load_nodes(m, *layout->nodes, read_options);
 
   load_alternatives(m, layout->alternatives, read_options);
+  for (const auto& uplink : options.uplinks) merge_uplink(m, uplink, read_options);
   m.selections = fretish::classify_selection(m.requirements, m.findings);
   infer_condition_variables(m);
   check_references(m);

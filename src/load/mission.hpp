@@ -45,6 +45,7 @@ struct Mission {
   fretish::Domain domain;                                 // declared + inferred booleans
 
   std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present
+  std::vector<std::string> uplinks;  // uplink packages merged on top, in order (displayed)
 
   // Everything the loader found wrong (syntax, references, structure, types).
   std::vector<Finding> findings;
@@ -57,6 +58,10 @@ struct Mission {
 
 struct LoadOptions {
   std::optional<std::filesystem::path> nodes_file;  // --nodes
+  // Uplink packages (uplinks/<name>/) merged onto the mission in order: their requirements
+  // are appended (an existing id is replaced in place), domain declarations and assumptions
+  // added, alternatives added (an existing name is replaced).
+  std::vector<std::filesystem::path> uplinks;
 };
 
 // Loads a mission directory (DESIGN §2, or the replication package's layout). Never throws for

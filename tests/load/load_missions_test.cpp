@@ -168,3 +168,64 @@ TEST(References, MissingRequirementsFileIsAFinding) {
 
 }  // namespace
 }  // namespace uabt::load
+
+namespace uabt::load {
+namespace {
+
+TEST(Uplink, MudUplinkIsMergedAboveTheDefault) {
+  std::string error;
+  LoadOptions options;
+  const auto dir = uabt::testing::mission_dir("msl_curiosity");
+  options.uplinks.push_back(dir / "uplinks" / "on_mud");
+  auto m = load_mission(dir, options, error);
+  ASSERT_TRUE(m) << error;
+  EXPECT_TRUE(m->findings.empty()) << format_text(m->findings);
+  auto selections = m->selections_for("navigation");
+  ASSERT_EQ(selections.size(), 4u);
+  EXPECT_EQ(selections[2]->id, "Req3");
+  EXPECT_EQ(selections[2]->location.file, "uplinks/on_mud/requirements.fret");
+  EXPECT_EQ(selections[3]->alternative, "hold_position") << "the default stays last";
+  ASSERT_NE(m->find_alternative("navigation", "on_mud"), nullptr);
+  EXPECT_EQ(m->find_alternative("navigation", "on_mud")->file,
+            "uplinks/on_mud/alternatives/navigation/on_mud.xml");
+  EXPECT_NE(m->domain.find("OnMud"), nullptr);
+  EXPECT_EQ(m->domain.assumptions.size(), 2u);
+  EXPECT_EQ(m->uplinks, std::vector<std::string>{"uplinks/on_mud"});
+}
+
+TEST(Uplink, SameIdReplacesARequirementInPlace) {
+  TempMission t({{"mission.xml", uabt::testing::mission_with("<Adaptable ID=\"nav\"/>")},
+                 {"requirements.fret",
+                  "A: In nav if X Mission shall satisfy selected_alt = a\n"
+                  "B: In nav if Y Mission shall satisfy selected_alt = a\n"},
+                 {"alternatives/nav/a.xml", uabt::testing::alternative_tree("a")},
+                 {"uplinks/fix/requirements.fret",
+                  "A: In nav if X & !Y Mission shall satisfy selected_alt = a\n"}});
+  std::string error;
+  LoadOptions options;
+  options.uplinks.push_back(t.dir() / "uplinks" / "fix");
+  auto m = load_mission(t.dir(), options, error);
+  ASSERT_TRUE(m) << error;
+  auto selections = m->selections_for("nav");
+  ASSERT_EQ(selections.size(), 2u);
+  EXPECT_EQ(selections[0]->id, "A");
+  EXPECT_EQ(fretish::to_fretish(*selections[0]->guard), "X & !Y");
+}
+
+TEST(Uplink, EmptyOrMissingPackageIsAFinding) {
+  TempMission t({{"mission.xml", uabt::testing::mission_with("<Adaptable ID=\"nav\"/>")},
+                 {"requirements.fret", "A: In nav Mission shall satisfy selected_alt = a\n"},
+                 {"alternatives/nav/a.xml", uabt::testing::alternative_tree("a")},
+                 {"uplinks/empty/README", "nothing here\n"}});
+  std::string error;
+  LoadOptions options;
+  options.uplinks = {t.dir() / "uplinks" / "empty", t.dir() / "uplinks" / "missing"};
+  auto m = load_mission(t.dir(), options, error);
+  ASSERT_TRUE(m) << error;
+  ASSERT_EQ(m->findings.size(), 2u) << format_text(m->findings);
+  EXPECT_EQ(m->findings[0].check, "load-file");
+  EXPECT_EQ(m->findings[1].check, "load-file");
+}
+
+}  // namespace
+}  // namespace uabt::load

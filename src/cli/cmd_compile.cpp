@@ -1,0 +1,57 @@
+#include <iostream>
+
+#include "bt/xml_io.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "compile/compile.hpp"
+#include "report/text.hpp"
+
+namespace uabt::cli {
+
+void register_compile(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, output, selection = "sequence", nodes;
+    int bt_format = 4;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd =
+      app.add_subcommand("compile", "Compile an adaptable mission into one BT (Algorithm 1)");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("-o,--output", args->output, "output XML file (default: stdout)");
+  cmd->add_option("--bt-format", args->bt_format, "BehaviorTree.CPP XML format")
+      ->check(CLI::IsMember({3, 4}));
+  cmd->add_option("--selection", args->selection, "selector style")
+      ->check(CLI::IsMember({"sequence", "reactive"}));
+  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
+      ->check(CLI::ExistingFile);
+  cmd->callback([args, &exit_code] {
+    load::LoadOptions load_options;
+    if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
+    auto mission = load_or_complain(args->mission, load_options);
+    if (!mission) {
+      exit_code = kExitUsage;
+      return;
+    }
+    compile::Options options;
+    options.bt_format = args->bt_format;
+    options.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
+                                                      : compile::SelectionStyle::sequence;
+    compile::Result result = compile::compile_mission(*mission, options);
+    std::vector<Finding> shown = mission->findings;
+    shown.insert(shown.end(), result.findings.begin(), result.findings.end());
+    std::cerr << report::format_text(shown);
+    if (has_errors(mission->findings) || !result.ok) {
+      std::cerr << "uabt: " << mission->name << ": not compiled\n";
+      exit_code = kExitFail;
+      return;
+    }
+    bt::WriteOptions write_options;
+    write_options.format = args->bt_format;
+    emit(args->output, bt::write_document(result.document, write_options));
+    exit_code = kExitPass;
+  });
+}
+
+}  // namespace uabt::cli

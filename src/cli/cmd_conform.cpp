@@ -1,0 +1,58 @@
+#include <iostream>
+
+#include "bt/xml_io.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "cli/findings_output.hpp"
+#include "conform/conform.hpp"
+
+namespace uabt::cli {
+
+void register_conform(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, compiled, nodes, format = "text", output;
+    unsigned timeout_ms = 10000;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "conform", "Prove that a compiled BT implements the mission's requirements");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("COMPILED", args->compiled,
+                  "compiled BT XML (uabt's, the paper generator's, or hand-edited)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--timeout-ms", args->timeout_ms,
+                  "solver time limit per query (inconclusive fails)");
+  add_findings_output_options(*cmd, args->format, args->output);
+  cmd->callback([args, &exit_code] {
+    load::LoadOptions load_options;
+    if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
+    auto mission = load_or_complain(args->mission, load_options);
+    if (!mission) {
+      exit_code = kExitUsage;
+      return;
+    }
+    report::ReportInput input = report_input(*mission, {"load", "conform"});
+    const std::filesystem::path compiled_path(args->compiled);
+    bt::ReadOptions read_options;
+    read_options.confine_to =
+        compiled_path.parent_path().empty() ? "." : compiled_path.parent_path();
+    read_options.display_base = std::filesystem::current_path();
+    auto compiled = bt::read_document(compiled_path, read_options, input.findings);
+    if (compiled && !has_errors(mission->findings)) {
+      conform::Options options;
+      options.timeout_ms = args->timeout_ms;
+      auto result = conform::conform_tree(*mission, *compiled, options);
+      input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
+    }
+    sort_findings(input.findings);
+    input.uri_prefix = uri_prefix_of(args->mission);
+    exit_code = write_findings(input, args->format, args->output);
+  });
+}
+
+}  // namespace uabt::cli

@@ -1,0 +1,56 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "cli/findings_output.hpp"
+#include "gate/gate.hpp"
+#include "report/reports.hpp"
+#include "report/text.hpp"
+
+namespace uabt::cli {
+
+void register_gate(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, out = "uabt-report", nodes, selection = "sequence", format = "text",
+                         output;
+    bool allow_overlap = false;
+    unsigned timeout_ms = 10000;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "gate", "The pre-uplink gate: verify, compile, conform, and write every report");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
+  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
+      ->check(CLI::IsMember({"sequence", "reactive"}));
+  cmd->add_flag("--allow-overlap", args->allow_overlap,
+                "report overlapping guards as warnings (priority decides on purpose)");
+  cmd->add_option("--timeout-ms", args->timeout_ms,
+                  "solver time limit per query (inconclusive fails)");
+  add_findings_output_options(*cmd, args->format, args->output);
+  cmd->callback([args, &exit_code] {
+    load::LoadOptions load_options;
+    if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
+    auto mission = load_or_complain(args->mission, load_options);
+    if (!mission) {
+      exit_code = kExitUsage;
+      return;
+    }
+    gate::Options options;
+    options.verify.allow_overlap = args->allow_overlap;
+    options.verify.timeout_ms = args->timeout_ms;
+    options.conform.timeout_ms = args->timeout_ms;
+    options.compile.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
+                                                              : compile::SelectionStyle::sequence;
+    gate::Outcome outcome = gate::run_gate(std::move(*mission), options, tool_version());
+    outcome.report.uri_prefix = uri_prefix_of(args->mission);
+    report::write_reports(outcome.report, args->out, outcome.compiled_xml);
+    exit_code = write_findings(outcome.report, args->format, args->output);
+  });
+}
+
+}  // namespace uabt::cli

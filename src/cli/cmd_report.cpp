@@ -1,0 +1,48 @@
+#include <iostream>
+
+#include "base/files.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "cli/findings_output.hpp"
+#include "report/reports.hpp"
+#include "verify/verify.hpp"
+
+namespace uabt::cli {
+
+// The terrain coverage report alone: what share of the state space each alternative takes,
+// where guards overlap and where none holds, as HTML with its SVG pictures and Markdown.
+void register_report(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, out = "uabt-report";
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd =
+      app.add_subcommand("report", "Write the terrain coverage report (HTML, SVG, Markdown)");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
+  cmd->callback([args, &exit_code] {
+    auto mission = load_or_complain(args->mission, {});
+    if (!mission) {
+      exit_code = kExitUsage;
+      return;
+    }
+    verify::Result result = verify::verify_mission(*mission, {});
+    report::ReportInput input = report_input(*mission, {"load", "verify"});
+    input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
+    sort_findings(input.findings);
+    input.coverage = std::move(result.coverage);
+    input.uri_prefix = uri_prefix_of(args->mission);
+    const std::filesystem::path out(args->out);
+    write_file_atomically(out / "report.html", report::to_html(input));
+    write_file_atomically(out / "summary.md", report::to_markdown(input));
+    for (const auto& coverage : input.coverage)
+      write_file_atomically(out / ("coverage-" + coverage.adaptable + ".svg"),
+                            report::coverage_svg(coverage));
+    std::cout << "wrote " << out.generic_string() << "/report.html\n";
+    exit_code = input.passed() ? kExitPass : kExitFail;
+  });
+}
+
+}  // namespace uabt::cli

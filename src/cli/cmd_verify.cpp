@@ -1,0 +1,49 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "cli/findings_output.hpp"
+#include "verify/verify.hpp"
+
+namespace uabt::cli {
+
+void register_verify(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, nodes, format = "text", output;
+    bool allow_overlap = false;
+    unsigned timeout_ms = 10000;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "verify", "Prove the selection guards unambiguous, complete and reachable");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
+      ->check(CLI::ExistingFile);
+  add_findings_output_options(*cmd, args->format, args->output);
+  cmd->add_flag("--allow-overlap", args->allow_overlap,
+                "report overlapping guards as warnings (priority decides on purpose)");
+  cmd->add_option("--timeout-ms", args->timeout_ms,
+                  "solver time limit per query; past it the verdict is inconclusive and fails");
+  cmd->callback([args, &exit_code] {
+    load::LoadOptions load_options;
+    if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
+    auto mission = load_or_complain(args->mission, load_options);
+    if (!mission) {
+      exit_code = kExitUsage;
+      return;
+    }
+    verify::Options options;
+    options.allow_overlap = args->allow_overlap;
+    options.timeout_ms = args->timeout_ms;
+    verify::Result result = verify::verify_mission(*mission, options);
+    report::ReportInput input = report_input(*mission, {"load", "verify"});
+    input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
+    sort_findings(input.findings);
+    input.coverage = std::move(result.coverage);
+    exit_code = write_findings(input, args->format, args->output);
+  });
+}
+
+}  // namespace uabt::cli

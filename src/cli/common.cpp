@@ -1,0 +1,30 @@
+#include "cli/common.hpp"
+
+#include <iostream>
+
+#include "base/files.hpp"
+
+namespace uabt::cli {
+
+const char* tool_version() {
+  return UABT_VERSION;
+}
+
+std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
+                                              const load::LoadOptions& options) {
+  std::string error;
+  auto mission = load::load_mission(dir, options, error);
+  if (!mission) std::cerr << "uabt: " << dir.generic_string() << ": " << error << "\n";
+  return mission;
+}
+
+void emit(const std::string& path, const std::string& content) {
+  if (path.empty() || path == "-") {
+    std::cout << content;
+    std::cout.flush();
+    return;
+  }
+  write_file_atomically(path, content);
+}
+
+}  // namespace uabt::cli

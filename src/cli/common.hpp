@@ -1,0 +1,27 @@
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "load/mission.hpp"
+
+namespace uabt::cli {
+
+// DESIGN §7 exit codes.
+inline constexpr int kExitPass = 0;
+inline constexpr int kExitFail = 1;
+inline constexpr int kExitUsage = 2;
+
+const char* tool_version();
+
+// Loads a mission, or prints why it cannot and returns nullopt (exit code 2: not a mission
+// directory at all).
+std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
+                                              const load::LoadOptions& options);
+
+// Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
+void emit(const std::string& path, const std::string& content);
+
+}  // namespace uabt::cli

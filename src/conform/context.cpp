@@ -1,0 +1,55 @@
+#include "conform/context.hpp"
+
+namespace uabt::conform {
+
+std::string root_path(const bt::TreeDef& tree) {
+  return tree.id + "/" + tree.root.tag;
+}
+
+std::string child_path(const std::string& parent, const bt::Node& child, std::size_t index) {
+  return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
+}
+
+bool is_remap_attribute(const std::string& name, int bt_format) {
+  return bt_format == 3 ? name == "__shared_blackboard" : name == "_autoremap";
+}
+
+bool shares_blackboard(const bt::Node& call, int bt_format) {
+  for (const auto& [key, value] : call.attributes)
+    if (is_remap_attribute(key, bt_format) && value == "true") return true;
+  return false;
+}
+
+Context::Context(const load::Mission& mission, const bt::Document& compiled)
+    : mission_(mission), compiled_(compiled) {
+  // The robot's declarations win over what a file says about a node.
+  for (const auto& model : compiled_.node_models) families_[model.id] = model.family;
+  for (const auto& model : mission_.tree.node_models) families_[model.id] = model.family;
+  if (mission_.nodes)
+    for (const auto& model : *mission_.nodes) families_[model.id] = model.family;
+}
+
+Finding& Context::report(const std::string& check, std::string message, const bt::Node& node,
+                         const std::string& path) {
+  Finding f = make_finding(check, std::move(message), {compiled_.file, node.line, node.column});
+  f.node_path = path;
+  findings_.push_back(std::move(f));
+  return findings_.back();
+}
+
+Finding& Context::report_at_tree(const std::string& check, std::string message,
+                                 const bt::TreeDef* tree, const std::string& path) {
+  SourceLocation at{compiled_.file, compiled_.root_line, 0};
+  if (tree != nullptr) at = {compiled_.file, tree->line, tree->column};
+  Finding f = make_finding(check, std::move(message), at);
+  f.node_path = path;
+  findings_.push_back(std::move(f));
+  return findings_.back();
+}
+
+std::string Context::declared_family(const std::string& kind) const {
+  const auto it = families_.find(kind);
+  return it == families_.end() ? std::string() : it->second;
+}
+
+}  // namespace uabt::conform

@@ -1,0 +1,57 @@
+#include "gate/gate.hpp"
+
+#include "bt/xml_io.hpp"
+
+namespace uabt::gate {
+
+Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version) {
+  Outcome out;
+  out.mission = std::make_unique<load::Mission>(std::move(mission));
+  const load::Mission& m = *out.mission;
+
+  report::ReportInput& report = out.report;
+  report.tool_version = tool_version;
+  report.mission_name = m.name;
+  report.mission = &m;
+  for (const auto& site : m.adaptables) {
+    if (site.id.empty()) continue;
+    bool seen = false;
+    for (const auto& id : report.adaptables) seen |= id == site.id;
+    if (!seen) report.adaptables.push_back(site.id);
+  }
+  report.findings = m.findings;
+  report.stages = {"load"};
+
+  out.verification = verify::verify_mission(m, options.verify);
+  report.stages.push_back("verify");
+  report.findings.insert(report.findings.end(), out.verification.findings.begin(),
+                         out.verification.findings.end());
+  report.coverage = out.verification.coverage;
+
+  out.compiled = compile::compile_mission(m, options.compile);
+  report.findings.insert(report.findings.end(), out.compiled.findings.begin(),
+                         out.compiled.findings.end());
+  if (out.compiled.ok) {
+    report.stages.push_back("compile");
+    bt::WriteOptions write_options;
+    write_options.format = options.compile.bt_format;
+    out.compiled_xml = bt::write_document(out.compiled.document, write_options);
+    report.compiled_tree_file = "compiled.xml";
+
+    // Conformance reads the tree back from the bytes that will be uplinked, not from the
+    // in-memory document, so that the writer is validated too.
+    std::vector<Finding> read_findings;
+    auto reread = bt::parse_document(out.compiled_xml, "compiled.xml", read_findings);
+    report.findings.insert(report.findings.end(), read_findings.begin(), read_findings.end());
+    if (reread) {
+      out.conformance = conform::conform_tree(m, *reread, options.conform);
+      report.stages.push_back("conform");
+      report.findings.insert(report.findings.end(), out.conformance.findings.begin(),
+                             out.conformance.findings.end());
+    }
+  }
+  sort_findings(report.findings);
+  return out;
+}
+
+}  // namespace uabt::gate

@@ -1,0 +1,347 @@
+#include <algorithm>
+
+#include "fretish/expr.hpp"
+#include "report/common.hpp"
+#include "report/reports.hpp"
+
+namespace uabt::report {
+
+namespace {
+
+using detail::html_escape;
+
+constexpr const char* kStyle = R"css(
+:root { color-scheme: light; }
+body { font: 15px/1.5 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif; margin: 0;
+       color: #1f2328; background: #fff; }
+header { display: flex; align-items: center; gap: 28px; padding: 24px 32px;
+         border-bottom: 6px solid; }
+header.pass { border-color: #1a7f37; background: #dafbe1; }
+header.fail { border-color: #cf222e; background: #ffebe9; }
+.badge { font-size: 52px; font-weight: 800; letter-spacing: .06em; padding: 2px 22px;
+         border-radius: 10px; color: #fff; }
+.pass .badge { background: #1a7f37; }
+.fail .badge { background: #cf222e; }
+header h1 { margin: 0; font-size: 28px; }
+header p { margin: 4px 0 0; }
+main { padding: 8px 32px 32px; max-width: 1100px; }
+nav { padding: 12px 32px; border-bottom: 1px solid #d0d7de; font-size: 14px; }
+nav a { margin-right: 16px; }
+h2 { border-bottom: 1px solid #d0d7de; padding-bottom: 4px; margin-top: 32px; }
+code { font-family: ui-monospace, SFMono-Regular, Menlo, Consolas, monospace; font-size: 90%;
+       background: #f6f8fa; padding: 1px 4px; border-radius: 4px; }
+.finding { border: 1px solid #d0d7de; border-left: 6px solid; border-radius: 6px;
+           padding: 8px 14px; margin: 12px 0; }
+.finding p { margin: 4px 0; }
+.finding.error { border-left-color: #cf222e; }
+.finding.warning { border-left-color: #bf8700; }
+.finding.note { border-left-color: #0969da; }
+.sev { font-weight: 700; text-transform: uppercase; font-size: 12px; padding: 1px 6px;
+       border-radius: 4px; color: #fff; }
+.error .sev { background: #cf222e; }
+.warning .sev { background: #9a6700; }
+.note .sev { background: #0969da; }
+.msg { font-weight: 600; }
+.meta, .hint { color: #57606a; font-size: 13px; }
+table { border-collapse: collapse; margin: 8px 0; }
+th, td { border: 1px solid #d0d7de; padding: 3px 10px; text-align: left; vertical-align: top; }
+th { background: #f6f8fa; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; }
+caption { text-align: left; font-size: 13px; color: #57606a; }
+.swatch { display: inline-block; width: 12px; height: 12px; border: 1px solid #333;
+          vertical-align: -1px; margin-right: 6px; }
+.swatch.gap { background: repeating-linear-gradient(45deg, #d62728 0 3px, #fde0e0 3px 6px); }
+.callout { border-left: 4px solid #cf222e; background: #fff5f5; padding: 6px 12px; }
+.callout.info { border-color: #0969da; background: #f1f8ff; }
+svg { max-width: 100%; height: auto; display: block; margin: 8px 0; }
+footer { padding: 16px 32px; color: #57606a; font-size: 13px; border-top: 1px solid #d0d7de; }
+@media print { nav { display: none; } header { border-bottom-width: 2px; } }
+)css";
+
+std::string code(std::string_view text) {
+  return "<code>" + html_escape(text) + "</code>";
+}
+
+std::string code_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + code(item);
+  return out;
+}
+
+std::string state_words(const State& state) {
+  std::string out;
+  for (const auto& [name, value] : state) {
+    if (!out.empty()) out += ", ";
+    out += code(name) + " = " + code(value.to_string());
+  }
+  return out;
+}
+
+// Anchors from ids that may hold any character; the index keeps two ids apart.
+std::string anchor(std::size_t index, std::string_view id) {
+  std::string out = "node-" + std::to_string(index) + "-";
+  for (char c : id) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '_';
+    out += keep ? c : '_';
+  }
+  return out;
+}
+
+// Inline SVG in HTML needs no namespace declaration: leaving it out keeps the page free of
+// any URL.
+std::string inline_svg(std::string svg) {
+  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
+  const auto at = svg.find(xmlns);
+  if (at != std::string::npos) svg.erase(at, xmlns.size());
+  return svg;
+}
+
+std::string states_text(std::uint64_t n) {
+  return std::to_string(n) + (n == 1 ? " state" : " states");
+}
+
+void finding_html(const Finding& finding, std::string& out) {
+  const char* severity = severity_name(finding.severity);
+  out += std::string("<article class=\"finding ") + severity + "\">\n";
+  out += std::string("<p><span class=\"sev\">") + severity + "</span> " + code(finding.check) +
+         " at " + code(detail::location_text(finding.location)) + "</p>\n";
+  out += "<p class=\"msg\">" + html_escape(finding.message) + "</p>\n";
+  std::string meta;
+  if (!finding.requirements.empty()) meta += "Requirements: " + code_list(finding.requirements);
+  if (!finding.alternatives.empty())
+    meta += (meta.empty() ? "" : " · ") + std::string("Alternatives: ") +
+            code_list(finding.alternatives);
+  if (!finding.node_path.empty())
+    meta += (meta.empty() ? "" : " · ") + std::string("Node: ") + code(finding.node_path);
+  if (!meta.empty()) out += "<p class=\"meta\">" + meta + "</p>\n";
+  if (!finding.notes.empty()) {
+    out += "<ul class=\"meta\">\n";
+    for (const auto& note : finding.notes) out += "<li>" + html_escape(note) + "</li>\n";
+    out += "</ul>\n";
+  }
+  if (!finding.witness.empty()) {
+    out +=
+        "<table class=\"witness\"><caption>Witness: a state of the domain in which this "
+        "finding is true</caption>\n<thead><tr><th>Variable</th><th>Value</th></tr></thead>"
+        "<tbody>\n";
+    for (const auto& [name, value] : finding.witness)
+      out += "<tr><td>" + code(name) + "</td><td>" + code(value.to_string()) + "</td></tr>\n";
+    out += "</tbody></table>\n";
+  }
+  std::string hint = "Why it matters and how to fix it: " + code("uabt explain " + finding.check);
+  if (const CheckInfo* info = find_check(finding.check)) hint += " — " + html_escape(info->summary);
+  out += "<p class=\"hint\">" + hint + "</p>\n</article>\n";
+}
+
+void findings_section(const ReportInput& input, const std::vector<std::string>& shown,
+                      std::string& out) {
+  out += "<section id=\"findings\">\n<h2>Findings</h2>\n";
+  if (input.findings.empty()) {
+    out += "<p>No findings: every check that ran passed.</p>\n</section>\n";
+    return;
+  }
+  for (const auto& adaptable : shown) {
+    std::vector<const Finding*> group;
+    for (const auto& f : input.findings)
+      if (f.adaptable == adaptable) group.push_back(&f);
+    if (group.empty()) continue;
+    const bool in_tree = std::find(input.adaptables.begin(), input.adaptables.end(), adaptable) !=
+                         input.adaptables.end();
+    out += "<h3>Adaptable node " + code(adaptable) +
+           (in_tree ? "" : " <span class=\"meta\">(not in the mission tree)</span>") + "</h3>\n";
+    for (const Finding* f : group) finding_html(*f, out);
+  }
+  std::vector<const Finding*> mission_wide;
+  for (const auto& f : input.findings)
+    if (f.adaptable.empty()) mission_wide.push_back(&f);
+  if (!mission_wide.empty()) {
+    out += "<h3>Mission-wide</h3>\n";
+    for (const Finding* f : mission_wide) finding_html(*f, out);
+  }
+  out += "</section>\n";
+}
+
+void requirements_html(const ReportInput& input, const std::string& adaptable, std::string& out) {
+  out += "<h3>Selection requirements, in priority order</h3>\n";
+  if (input.mission == nullptr) {
+    out += "<p>The mission could not be loaded: its requirements are not shown.</p>\n";
+    return;
+  }
+  const auto selections = detail::selections_of(*input.mission, adaptable);
+  if (selections.empty()) {
+    out +=
+        "<p class=\"callout\">No selection requirement names this node: it cannot "
+        "select any alternative.</p>\n";
+    return;
+  }
+  out +=
+      "<table>\n<thead><tr><th>#</th><th>Requirement</th><th>Guard</th><th>Alternative</th>"
+      "<th>Where</th></tr></thead><tbody>\n";
+  for (std::size_t i = 0; i < selections.size(); ++i) {
+    const auto& selection = *selections[i];
+    const fretish::Requirement* requirement =
+        detail::find_requirement(*input.mission, selection.id);
+    std::string text = code(selection.id);
+    if (requirement != nullptr && !requirement->text.empty())
+      text += ": " + html_escape(requirement->text);
+    const std::string guard = selection.guard
+                                  ? code(fretish::to_fretish(*selection.guard))
+                                  : std::string("<em>default</em>: always enabled, tried last");
+    out += "<tr><td class=\"num\">" + std::to_string(i + 1) + "</td><td>" + text + "</td><td>" +
+           guard + "</td><td>" + code(selection.alternative) + "</td><td>" +
+           code(detail::location_text(selection.location)) + "</td></tr>\n";
+  }
+  out += "</tbody></table>\n";
+}
+
+void witness_examples(const ReportInput& input, const std::string& adaptable, std::string& out) {
+  for (const auto& f : input.findings) {
+    if (f.adaptable != adaptable || f.witness.empty()) continue;
+    if (f.check == "guard-gap") {
+      out +=
+          "<p>For example, no alternative is selected when " + state_words(f.witness) + ".</p>\n";
+    } else if (f.check == "guard-overlap") {
+      const std::string who =
+          f.requirements.empty() ? std::string("two guards") : code_list(f.requirements);
+      const char* verb = f.requirements.size() > 2 ? " all hold when " : " both hold when ";
+      out += "<p>For example, " + who + verb + state_words(f.witness) + ".</p>\n";
+    }
+  }
+}
+
+void coverage_html(const ReportInput& input, const std::string& adaptable, std::string& out) {
+  out += "<h3>Terrain coverage</h3>\n";
+  const verify::Coverage* coverage = nullptr;
+  for (const auto& c : input.coverage)
+    if (c.adaptable == adaptable) coverage = &c;
+  if (coverage == nullptr) {
+    out +=
+        "<p class=\"callout info\">Coverage was not computed: the verification stage did not "
+        "run for this node.</p>\n";
+    return;
+  }
+  if (!coverage->variables.empty())
+    out += "<p>The guards range over " + code_list(coverage->variables) + ".</p>\n";
+  if (coverage->counted) {
+    out += "<p>The domain has " + states_text(coverage->states) + ". ";
+    std::string parts;
+    for (const auto& a : coverage->alternatives)
+      parts += (parts.empty() ? "" : "; ") + code(a.name) + " (" + code(a.requirement) +
+               ") is selected in " + std::to_string(a.states) + " (" +
+               detail::percent(a.states, coverage->states) + ")";
+    if (!parts.empty()) out += parts + ". ";
+    out += coverage->gap_states == 0 ? std::string("Every state selects an alternative.")
+                                     : "In " + states_text(coverage->gap_states) + " (" +
+                                           detail::percent(coverage->gap_states, coverage->states) +
+                                           ") no guard holds: the adaptable node fails there.";
+    if (coverage->overlap_states > 0)
+      out += " In " + states_text(coverage->overlap_states) + " (" +
+             detail::percent(coverage->overlap_states, coverage->states) +
+             ") two or more guards hold: the first in priority order is selected, and when its "
+             "alternative fails the Fallback runs the next one.";
+    out += "</p>\n";
+  } else {
+    out += "<p class=\"callout info\">The state space was not counted: " +
+           html_escape(coverage->not_counted_reason.empty() ? "no reason given"
+                                                            : coverage->not_counted_reason) +
+           ". The solver still decided which alternatives can be selected.</p>\n";
+  }
+  out += inline_svg(coverage_svg(*coverage)) + "\n";
+
+  out += "<table>\n<thead><tr><th>Alternative</th><th>Requirement</th>";
+  if (coverage->counted)
+    out += "<th>Selected in</th><th>Share</th><th>Guard holds in</th>";
+  else
+    out += "<th>Selected in some state</th>";
+  out += "</tr></thead><tbody>\n";
+  for (std::size_t i = 0; i < coverage->alternatives.size(); ++i) {
+    const auto& a = coverage->alternatives[i];
+    out += std::string("<tr><td><span class=\"swatch\" style=\"background:") +
+           detail::alternative_colour(i) + "\"></span>" + code(a.name) + "</td><td>" +
+           code(a.requirement) + "</td>";
+    if (coverage->counted)
+      out += "<td class=\"num\">" + std::to_string(a.states) + "</td><td class=\"num\">" +
+             detail::percent(a.states, coverage->states) + "</td><td class=\"num\">" +
+             std::to_string(a.enabled_states) + "</td>";
+    else
+      out += std::string("<td>") + (a.reachable ? "yes" : "<strong>no, never</strong>") + "</td>";
+    out += "</tr>\n";
+  }
+  if (coverage->counted) {
+    out +=
+        "<tr><td><span class=\"swatch gap\"></span>gap: no guard holds</td><td></td>"
+        "<td class=\"num\">" +
+        std::to_string(coverage->gap_states) + "</td><td class=\"num\">" +
+        detail::percent(coverage->gap_states, coverage->states) + "</td><td></td></tr>\n";
+    out += "<tr><td>overlap: two or more guards hold</td><td></td><td class=\"num\">" +
+           std::to_string(coverage->overlap_states) + "</td><td class=\"num\">" +
+           detail::percent(coverage->overlap_states, coverage->states) + "</td><td></td></tr>\n";
+  }
+  out += "</tbody></table>\n";
+
+  if (!coverage->gap_region.empty()) {
+    out += "<p>The uncovered region, where the node fails:</p>\n<ul>\n";
+    for (const auto& cube : coverage->gap_region) out += "<li>" + code(cube) + "</li>\n";
+    out += "</ul>\n";
+  }
+  witness_examples(input, adaptable, out);
+
+  if (input.mission != nullptr) {
+    const std::string map = coverage_map_svg(*input.mission, *coverage);
+    if (!map.empty()) {
+      out += "<h4>Selected alternative over two variables</h4>\n" + inline_svg(map) + "\n";
+    }
+  }
+}
+
+}  // namespace
+
+std::string to_html(const ReportInput& input) {
+  const bool passed = input.passed();
+  const char* verdict = passed ? "PASS" : "FAIL";
+  const auto shown = detail::adaptables_shown(input);
+  const std::string mission = input.mission_name.empty() ? "mission" : input.mission_name;
+
+  std::string out;
+  out +=
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<title>uabt report: " +
+      html_escape(mission) + " " + verdict + "</title>\n<style>" + kStyle +
+      "</style>\n</head>\n<body>\n";
+  out += std::string("<header class=\"") + (passed ? "pass" : "fail") +
+         "\">\n<div class=\"badge\">" + verdict + "</div>\n<div>\n<h1>Mission " +
+         html_escape(mission) + "</h1>\n<p>" +
+         (passed ? "No error-severity finding in the stages that ran."
+                 : "Error-severity findings: the mission must not be uplinked as it is.") +
+         "</p>\n<p>" + html_escape(detail::counts_text(detail::count_severities(input.findings))) +
+         " · uabt " + html_escape(input.tool_version);
+  if (!input.stages.empty()) {
+    out += " · stages run:";
+    for (std::size_t i = 0; i < input.stages.size(); ++i)
+      out += (i == 0 ? " " : ", ") + html_escape(input.stages[i]);
+  }
+  out += "</p>\n</div>\n</header>\n";
+
+  out += "<nav><a href=\"#findings\">Findings</a>";
+  for (std::size_t i = 0; i < shown.size(); ++i)
+    out += "<a href=\"#" + anchor(i, shown[i]) + "\">" + html_escape(shown[i]) + "</a>";
+  out += "</nav>\n<main>\n";
+
+  findings_section(input, shown, out);
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " + code(shown[i]) +
+           "</h2>\n";
+    requirements_html(input, shown[i], out);
+    coverage_html(input, shown[i], out);
+    out += "</section>\n";
+  }
+  out += "</main>\n<footer>Generated by uabt " + html_escape(input.tool_version) +
+         " from mission " + html_escape(mission) +
+         ". Every check is documented: <code>uabt explain CHECK-ID</code>.</footer>\n"
+         "</body>\n</html>\n";
+  return out;
+}
+
+}  // namespace uabt::report

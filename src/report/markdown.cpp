@@ -1,0 +1,142 @@
+#include <cctype>
+
+#include "report/common.hpp"
+#include "report/reports.hpp"
+#include "report/text.hpp"
+
+namespace uabt::report {
+
+namespace {
+
+bool is_word_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0;
+}
+
+// Text safe inside a GFM table cell: Markdown punctuation is backslash-escaped (an intraword
+// '_' is left alone: GFM never makes emphasis of it, and `selected_alt` stays readable), '|'
+// cannot end the cell and newlines become spaces.
+std::string md(std::string_view raw) {
+  const std::string text = detail::clean_text(raw);
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    switch (c) {
+      case '\n':
+      case '\t': out += ' '; break;
+      case '_':
+        if (i > 0 && i + 1 < text.size() && is_word_char(text[i - 1]) && is_word_char(text[i + 1]))
+          out += c;
+        else
+          out += "\\_";
+        break;
+      case '\\':
+      case '`':
+      case '*':
+      case '[':
+      case ']':
+      case '<':
+      case '>':
+      case '|':
+      case '~':
+        out += '\\';
+        out += c;
+        break;
+      case '&': out += "&amp;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// A code span, or escaped text when the content would break one.
+std::string code(std::string_view raw) {
+  const std::string text = detail::clean_text(raw);
+  if (text.empty() || text.find_first_of("`|\n") != std::string::npos) return md(text);
+  return "`" + text + "`";
+}
+
+std::string state_words(const State& state) {
+  std::string out;
+  for (const auto& [name, value] : state) {
+    if (!out.empty()) out += ", ";
+    out += name + " = " + value.to_string();
+  }
+  return out;
+}
+
+void coverage_section(const verify::Coverage& coverage, std::string& out) {
+  out += "\n### Coverage of " + code(coverage.adaptable) + "\n\n";
+  if (!coverage.counted) {
+    out +=
+        "Not counted: " +
+        md(coverage.not_counted_reason.empty() ? "no reason given" : coverage.not_counted_reason) +
+        ".\n\n";
+    out += "| Alternative | Requirement | Selected in some state |\n|---|---|---|\n";
+    for (const auto& alternative : coverage.alternatives)
+      out += "| " + md(alternative.name) + " | " + md(alternative.requirement) + " | " +
+             (alternative.reachable ? "yes" : "**no**") + " |\n";
+  } else {
+    out += "| Alternative | Requirement | States | Share |\n|---|---|---:|---:|\n";
+    for (const auto& alternative : coverage.alternatives) {
+      out += "| " + md(alternative.name) + (alternative.reachable ? "" : " (never selected)") +
+             " | " + md(alternative.requirement) + " | " + std::to_string(alternative.states) +
+             " | " + detail::percent(alternative.states, coverage.states) + " |\n";
+    }
+    out += "| *gap: none selected* | | " + std::to_string(coverage.gap_states) + " | " +
+           detail::percent(coverage.gap_states, coverage.states) + " |\n";
+    out += "| **total** | | " + std::to_string(coverage.states) + " | 100.0% |\n\n";
+    out +=
+        "Gap: " + std::to_string(coverage.gap_states) + " of " + std::to_string(coverage.states) +
+        " states (" + detail::percent(coverage.gap_states, coverage.states) + ")" +
+        (coverage.gap_states > 0 ? " select no alternative: the node fails there." : ".") + "  \n";
+    out += "Overlap: " + std::to_string(coverage.overlap_states) + " of " +
+           std::to_string(coverage.states) + " states (" +
+           detail::percent(coverage.overlap_states, coverage.states) + ")" +
+           (coverage.overlap_states > 0 ? " are claimed by two or more guards." : ".") + "\n";
+  }
+  if (!coverage.gap_region.empty()) {
+    out += "\nUncovered region:\n\n";
+    for (const auto& cube : coverage.gap_region) out += "- " + code(cube) + "\n";
+  }
+}
+
+}  // namespace
+
+std::string to_markdown(const ReportInput& input) {
+  const bool passed = input.passed();
+  const auto counts = detail::count_severities(input.findings);
+  std::string out;
+  out += "## uabt: " + md(input.mission_name) + "\n\n";
+  out += std::string("**Verdict: ") + (passed ? "PASS" : "FAIL") + "** | " +
+         detail::counts_text(counts) + " | uabt " + md(input.tool_version);
+  if (!input.stages.empty()) {
+    out += " | stages:";
+    for (std::size_t i = 0; i < input.stages.size(); ++i)
+      out += (i == 0 ? " " : ", ") + md(input.stages[i]);
+  }
+  out += "\n\n### Findings\n\n";
+  if (input.findings.empty()) {
+    out += "No findings.\n";
+  } else {
+    out += "| Severity | Check | Location | Message |\n|---|---|---|---|\n";
+    for (const auto& finding : input.findings) {
+      std::string message = md(finding.message);
+      if (!finding.adaptable.empty()) message += " (node " + code(finding.adaptable) + ")";
+      out += std::string("| ") + severity_name(finding.severity) + " | " + code(finding.check) +
+             " | " + code(detail::location_text(finding.location)) + " | " + message + " |\n";
+    }
+    bool any_witness = false;
+    for (const auto& finding : input.findings) {
+      if (finding.witness.empty()) continue;
+      if (!any_witness) out += "\nWitnesses (states in which the finding is true):\n\n";
+      any_witness = true;
+      out += "- " + code(finding.check) + " at " + code(detail::location_text(finding.location)) +
+             ": " + md(state_words(finding.witness)) + "\n";
+    }
+    out += "\n`uabt explain CHECK-ID` says why a check matters and how to fix it.\n";
+  }
+  for (const auto& coverage : input.coverage) coverage_section(coverage, out);
+  return out;
+}
+
+}  // namespace uabt::report

@@ -1,0 +1,35 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "load/mission.hpp"
+#include "verify/verify.hpp"
+
+namespace uabt::report {
+
+// Everything a report shows about one mission, gathered by the gate (or by `verify`).
+struct ReportInput {
+  std::string tool_version;
+  std::string mission_name;             // the mission directory's name
+  std::vector<std::string> adaptables;  // adaptable node ids, mission order
+  std::vector<Finding> findings;        // every stage's findings, sorted
+  std::vector<verify::Coverage> coverage;
+  // Stages that ran ("load", "verify", "compile", "conform"): JUnit marks the checks of a stage
+  // that did not run as skipped rather than passed, and the summary lists them. Empty: unknown,
+  // every check counts as run.
+  std::vector<std::string> stages;
+  // Files of the mission whose lines SARIF and the HTML report point into (displayed paths).
+  std::string compiled_tree_file;  // "" when no compiled tree was written
+  // The mission directory's path from the repository root, with a trailing '/'
+  // ("missions/msl_curiosity/"): prefixed to SARIF artifact URIs so that code scanning
+  // annotates the right file. "" when the mission directory is the root.
+  std::string uri_prefix;
+  // The loaded mission (requirements, domain, guards), for pictures and requirement text.
+  // May be null when the mission could not be loaded at all.
+  const load::Mission* mission = nullptr;
+
+  bool passed() const { return !has_errors(findings); }
+};
+
+}  // namespace uabt::report

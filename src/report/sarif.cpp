@@ -1,0 +1,173 @@
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include <nlohmann/json.hpp>
+
+#include "report/common.hpp"
+#include "report/reports.hpp"
+#include "report/text.hpp"
+
+namespace uabt::report {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+const char* sarif_level(Severity severity) {
+  switch (severity) {
+    case Severity::error: return "error";
+    case Severity::warning: return "warning";
+    case Severity::note: return "note";
+  }
+  return "error";
+}
+
+// RFC 3986: keep unreserved characters and '/', percent-encode every other byte, so that a
+// file name with a space or '#' still names the file.
+std::string uri_encode(const std::string& path) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : path) {
+    const bool keep = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '.' || c == '_' || c == '~' || c == '/';
+    if (keep) {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
+std::string trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return std::string(text.substr(first, last - first + 1));
+}
+
+Json strings_json(const std::vector<std::string>& items) {
+  Json out = Json::array();
+  for (const auto& item : items) out.push_back(item);
+  return out;
+}
+
+Json rule_json(const CheckInfo& check) {
+  const std::string doc = trimmed(check.doc);
+  Json rule;
+  rule["id"] = check.id;
+  rule["name"] = detail::camel_case(check.id);
+  rule["shortDescription"] = Json{{"text", check.summary}};
+  rule["fullDescription"] = Json{{"text", doc}, {"markdown", doc}};
+  rule["help"] = Json{{"text", doc}, {"markdown", doc}};
+  rule["defaultConfiguration"] = Json{{"level", check.severity}};
+  rule["properties"] = Json{{"tags", Json::array({"uabt", check.stage})}};
+  return rule;
+}
+
+// A finding of a check the catalogue does not know (a programming error elsewhere) still
+// needs a rule, or the result would point nowhere.
+Json undocumented_rule_json(const std::string& id, Severity severity) {
+  Json rule;
+  rule["id"] = id;
+  rule["name"] = detail::camel_case(id);
+  rule["shortDescription"] = Json{{"text", id + " (not documented in checks/)"}};
+  rule["defaultConfiguration"] = Json{{"level", sarif_level(severity)}};
+  return rule;
+}
+
+}  // namespace
+
+std::string to_sarif(const ReportInput& input) {
+  // Rules: the whole catalogue sorted by id, then any undocumented check a finding uses.
+  Json rules = Json::array();
+  std::map<std::string, std::size_t> rule_index;
+  for (const CheckInfo* check : detail::sorted_catalogue()) {
+    rule_index.emplace(check->id, rules.size());
+    rules.push_back(rule_json(*check));
+  }
+  std::map<std::string, Severity> undocumented;
+  for (const auto& finding : input.findings)
+    if (!rule_index.count(finding.check)) undocumented.emplace(finding.check, finding.severity);
+  for (const auto& [id, severity] : undocumented) {
+    rule_index.emplace(id, rules.size());
+    rules.push_back(undocumented_rule_json(id, severity));
+  }
+
+  // GitHub rejects the whole file when one result has no location: a finding without a file
+  // is anchored at the mission's tree file, without a region.
+  std::string fallback_file = "mission.xml";
+  if (input.mission != nullptr && !input.mission->tree.file.empty())
+    fallback_file = input.mission->tree.file;
+
+  Json results = Json::array();
+  std::map<std::tuple<std::string, std::string, std::string>, int> occurrences;
+  for (const auto& finding : input.findings) {
+    Json result;
+    result["ruleId"] = finding.check;
+    result["ruleIndex"] = rule_index.at(finding.check);
+    result["level"] = sarif_level(finding.severity);
+    std::string text = finding.message;
+    if (!finding.witness.empty()) text += " (witness: " + format_state(finding.witness) + ")";
+    result["message"] = Json{{"text", text}};
+
+    const std::string& file = finding.location.file.empty() ? fallback_file : finding.location.file;
+    Json physical;
+    physical["artifactLocation"] =
+        Json{{"uri", uri_encode(input.uri_prefix + file)}, {"uriBaseId", "SRCROOT"}};
+    if (finding.location.line > 0) {
+      Json region;
+      region["startLine"] = finding.location.line;
+      if (finding.location.column > 0) region["startColumn"] = finding.location.column;
+      physical["region"] = std::move(region);
+    }
+    result["locations"] = Json::array({Json{{"physicalLocation", std::move(physical)}}});
+
+    // Identity of a finding across commits: check, file and message, not the line, so that an
+    // edit above it does not make code scanning see a new alert. Identical findings are told
+    // apart by their occurrence, as CodeQL's own fingerprints do.
+    const int occurrence = ++occurrences[{finding.check, finding.location.file, finding.message}];
+    const std::uint64_t hash = detail::fnv1a(
+        finding.message,
+        detail::fnv1a(finding.location.file + '\n', detail::fnv1a(finding.check + '\n')));
+    result["partialFingerprints"] =
+        Json{{"uabtFindingHash/v1", detail::hex64(hash) + ":" + std::to_string(occurrence)}};
+
+    Json properties;
+    properties["adaptable"] = finding.adaptable;
+    properties["requirements"] = strings_json(finding.requirements);
+    properties["alternatives"] = strings_json(finding.alternatives);
+    properties["witness"] = detail::witness_json(finding.witness);
+    if (!finding.node_path.empty()) properties["node_path"] = finding.node_path;
+    if (!finding.notes.empty()) properties["notes"] = strings_json(finding.notes);
+    result["properties"] = std::move(properties);
+    results.push_back(std::move(result));
+  }
+
+  Json driver;
+  driver["name"] = "uabt";
+  driver["version"] = input.tool_version;
+  driver["rules"] = std::move(rules);
+
+  Json run;
+  run["tool"] = Json{{"driver", std::move(driver)}};
+  // Several missions of one repository upload as separate analyses.
+  run["automationDetails"] = Json{{"id", "uabt/" + input.mission_name + "/"}};
+  // The root is where the report is used, not where it was made: no absolute path here.
+  run["originalUriBaseIds"] =
+      Json{{"SRCROOT", Json{{"description", Json{{"text",
+                                                  "The root of the repository that holds "
+                                                  "the mission."}}}}}};
+  run["results"] = std::move(results);
+
+  Json sarif;
+  sarif["$schema"] = "https://json.schemastore.org/sarif-2.1.0.json";
+  sarif["version"] = "2.1.0";
+  sarif["runs"] = Json::array({std::move(run)});
+  return sarif.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace uabt::report

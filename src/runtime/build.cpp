@@ -1,0 +1,400 @@
+// Instantiation of a runtime tree from bt::TreeDefs: BT.CPP's load-time rules, ports
+// resolved to blackboard slots, scripts compiled, robot leaves bound to the World.
+#include <charconv>
+#include <string_view>
+
+#include "bt/node_kinds.hpp"
+#include "bt/structure.hpp"
+#include "runtime/core.hpp"
+
+namespace uabt::runtime {
+
+namespace detail {
+
+namespace {
+
+enum class Shape { control, decorator, leaf, subtree };
+
+struct Spec {
+  Kind kind;
+  Shape shape;
+  std::vector<std::string_view> ports;  // input ports it accepts as attributes
+};
+
+const std::map<std::string_view, Spec, std::less<>>& specs() {
+  static const std::map<std::string_view, Spec, std::less<>> table = {
+      {"Sequence", {Kind::sequence, Shape::control, {}}},
+      {"SequenceWithMemory", {Kind::sequence_with_memory, Shape::control, {}}},
+      {"SequenceStar", {Kind::sequence_with_memory, Shape::control, {}}},  // v3
+      {"ReactiveSequence", {Kind::reactive_sequence, Shape::control, {}}},
+      {"Fallback", {Kind::fallback, Shape::control, {}}},
+      {"ReactiveFallback", {Kind::reactive_fallback, Shape::control, {}}},
+      {"Parallel",
+       {Kind::parallel,
+        Shape::control,
+        {"success_count", "failure_count", "success_threshold", "failure_threshold"}}},
+      {"ParallelAll", {Kind::parallel_all, Shape::control, {"max_failures"}}},
+      {"IfThenElse", {Kind::if_then_else, Shape::control, {}}},
+      {"WhileDoElse", {Kind::while_do_else, Shape::control, {}}},
+      {"Inverter", {Kind::inverter, Shape::decorator, {}}},
+      {"ForceSuccess", {Kind::force_success, Shape::decorator, {}}},
+      {"ForceFailure", {Kind::force_failure, Shape::decorator, {}}},
+      {"Repeat", {Kind::repeat, Shape::decorator, {"num_cycles"}}},
+      {"RetryUntilSuccessful", {Kind::retry_until_successful, Shape::decorator, {"num_attempts"}}},
+      {"RetryUntilSuccesful", {Kind::retry_until_successful, Shape::decorator, {"num_attempts"}}},
+      {"KeepRunningUntilFailure", {Kind::keep_running_until_failure, Shape::decorator, {}}},
+      {"RunOnce", {Kind::run_once, Shape::decorator, {"then_skip"}}},
+      {"SubTree", {Kind::subtree, Shape::subtree, {}}},
+      {"SubTreePlus", {Kind::subtree, Shape::subtree, {}}},  // v3
+      {"AlwaysSuccess", {Kind::always_success, Shape::leaf, {}}},
+      {"AlwaysFailure", {Kind::always_failure, Shape::leaf, {}}},
+      {"Script", {Kind::script, Shape::leaf, {"code"}}},
+      {"ScriptCondition", {Kind::script_condition, Shape::leaf, {"code"}}},
+  };
+  return table;
+}
+
+// BT.CPP 4.x's pre- and post-condition attributes, where their scripts go.
+struct ConditionAttribute {
+  std::string_view name;
+  bool pre;
+  int index;
+};
+constexpr ConditionAttribute kConditionAttributes[] = {
+    {"_failureIf", true, ConditionScripts::failure_if},
+    {"_successIf", true, ConditionScripts::success_if},
+    {"_skipIf", true, ConditionScripts::skip_if},
+    {"_while", true, ConditionScripts::while_true},
+    {"_onHalted", false, ConditionScripts::on_halted},
+    {"_onFailure", false, ConditionScripts::on_failure},
+    {"_onSuccess", false, ConditionScripts::on_success},
+    {"_post", false, ConditionScripts::always},
+};
+
+const ConditionAttribute* condition_attribute(std::string_view name) {
+  for (const auto& a : kConditionAttributes)
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+bool is_explicit_family(const std::string& tag) {
+  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
+}
+
+// `{key}` (or `{=}`: the key named like the port) → the key; otherwise nullopt.
+std::optional<std::string> blackboard_key(const std::string& port, const std::string& value) {
+  if (value.size() < 2 || value.front() != '{' || value.back() != '}') return std::nullopt;
+  std::string key = value.substr(1, value.size() - 2);
+  if (key == "=") key = port;
+  return key;
+}
+
+std::optional<bool> parse_bool(const std::string& text) {
+  if (text == "true" || text == "True" || text == "TRUE" || text == "1") return true;
+  if (text == "false" || text == "False" || text == "FALSE" || text == "0") return false;
+  return std::nullopt;
+}
+
+}  // namespace
+
+NodeId Builder::instantiate_tree(const std::shared_ptr<const bt::TreeDef>& def,
+                                 std::uint32_t instance, NodeId parent) {
+  call_stack.push_back(def->id);
+  const NodeId root = instantiate_node(def->root, *def, instance, parent, 0, 1);
+  call_stack.pop_back();
+  return root;
+}
+
+NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
+                                 std::uint32_t instance, NodeId parent, std::uint32_t child_index,
+                                 int depth) {
+  const std::string& file = def.file.empty() ? core.file : def.file;
+  const std::string where =
+      file + ":" + std::to_string(xml.line) + ":" + std::to_string(xml.column) + ": ";
+  auto refuse = [&](const std::string& message) -> LoadError { return LoadError(where + message); };
+
+  if (depth > bt::kMaxDepth)
+    throw refuse("tree '" + def.id + "' is nested deeper than " + std::to_string(bt::kMaxDepth) +
+                 " levels");
+  const std::string kind_name = xml.kind();
+  if (xml.tag == "Adaptable")
+    throw refuse("<Adaptable ID=\"" + (xml.attribute("ID") ? *xml.attribute("ID") : "") +
+                 "\"/> cannot run: compile the mission first (uabt compile)");
+  const auto spec_it = specs().find(kind_name);
+  const Spec* spec = spec_it == specs().end() ? nullptr : &spec_it->second;
+  if (spec == nullptr && bt::find_builtin(kind_name) != nullptr)
+    throw refuse("BehaviorTree.CPP's " + kind_name + " is not supported by the uabt runtime");
+  if (spec == nullptr && !xml.children.empty())
+    throw refuse("'" + kind_name + "' has children but is not a control or decorator node " +
+                 "of BehaviorTree.CPP");
+  const Shape shape = spec ? spec->shape : Shape::leaf;
+  const Kind kind = spec ? spec->kind : Kind::world_leaf;
+
+  const std::size_t n_children = xml.children.size();
+  if (shape == Shape::control && n_children == 0)
+    throw refuse(kind_name + " needs at least one child");
+  if (shape == Shape::decorator && n_children != 1)
+    throw refuse(kind_name + " needs exactly one child, it has " + std::to_string(n_children));
+  if ((shape == Shape::leaf || shape == Shape::subtree) && n_children != 0)
+    throw refuse(kind_name + " cannot have children");
+
+  const auto id = static_cast<NodeId>(core.nodes.size());
+  RtNode node;
+  node.kind = kind;
+  core.nodes.push_back(node);
+  NodeInfo info;
+  info.tag = xml.tag;
+  info.kind = kind_name;
+  if (const std::string* name = xml.attribute("name")) info.name = *name;
+  info.tree_id = def.id;
+  info.parent = parent;
+  info.child_index = child_index;
+  info.instance = instance;
+  info.location = SourceLocation{file, xml.line, xml.column};
+  info.element = &xml;
+  core.info.push_back(std::move(info));
+
+  const ScopeId scope = core.instances[instance].scope;
+  Blackboard& bb = core.bb;
+  auto new_params = [&]() -> NodeParams& {
+    core.nodes[id].params = static_cast<std::uint32_t>(core.params.size());
+    return core.params.emplace_back();
+  };
+  // An integer/boolean input: literal converted now (BT.CPP fails at load), `{key}` at tick.
+  auto input = [&](const char* port, std::optional<std::int64_t> fallback, bool boolean) -> Input {
+    Input in;
+    const std::string* text = xml.attribute(port);
+    if (text == nullptr) {
+      in.present = fallback.has_value();
+      in.value = fallback.value_or(0);
+      return in;
+    }
+    in.present = true;
+    if (auto key = blackboard_key(port, *text)) {
+      in.slot = bb.resolve(scope, *key);
+      return in;
+    }
+    if (boolean) {
+      const auto b = parse_bool(*text);
+      if (!b) throw refuse(kind_name + ": port " + port + "=\"" + *text + "\" is not a boolean");
+      in.value = *b ? 1 : 0;
+      return in;
+    }
+    const char* last = text->data() + text->size();
+    const auto [end, ec] = std::from_chars(text->data(), last, in.value);
+    if (text->empty() || ec != std::errc() || end != last || in.value < INT32_MIN ||
+        in.value > INT32_MAX)
+      throw refuse(kind_name + ": port " + port + "=\"" + *text + "\" is not an integer");
+    return in;
+  };
+
+  // A script compiled now (BT.CPP validates scripts at load) and bound to this scope.
+  auto compile = [&](const std::string& what, const std::string& code) -> std::uint32_t {
+    script::Program program;
+    try {
+      program = script::Program::parse(code);
+    } catch (const script::ScriptError& e) {
+      throw refuse(what + ": the script `" + code + "` does not parse: " + e.what() + " (column " +
+                   std::to_string(e.column()) + ")");
+    }
+    program.bind(bb, scope);
+    core.programs.push_back(std::move(program));
+    return static_cast<std::uint32_t>(core.programs.size() - 1);
+  };
+
+  // Attributes: reserved ones, then the ports the node declares.
+  for (const auto& [attr, value] : xml.attributes) {
+    if (attr == "name") continue;
+    if (const ConditionAttribute* c = condition_attribute(attr)) {
+      if (core.nodes[id].conditions == RtNode::kNoConditions) {
+        core.nodes[id].conditions = static_cast<std::uint32_t>(core.conditions.size());
+        core.conditions.emplace_back();
+      }
+      ConditionScripts& scripts = core.conditions[core.nodes[id].conditions];
+      const auto program = static_cast<std::int32_t>(compile(kind_name + " " + attr, value));
+      (c->pre ? scripts.pre : scripts.post)[c->index] = program;
+      continue;
+    }
+    if (attr == "ID" && (is_explicit_family(xml.tag) || shape == Shape::subtree)) continue;
+    if (shape == Shape::subtree || kind == Kind::world_leaf) continue;  // ports, see below
+    bool known = false;
+    for (std::string_view port : spec->ports) known = known || port == attr;
+    if (!known) throw refuse(kind_name + " has no port named '" + attr + "'");
+  }
+
+  switch (kind) {
+    case Kind::parallel: {
+      NodeParams& p = new_params();
+      p.in0 =
+          input(xml.attribute("success_count") ? "success_count" : "success_threshold", -1, false);
+      p.in1 =
+          input(xml.attribute("failure_count") ? "failure_count" : "failure_threshold", 1, false);
+      break;
+    }
+    case Kind::parallel_all: new_params().in0 = input("max_failures", 1, false); break;
+    case Kind::repeat: new_params().in0 = input("num_cycles", std::nullopt, false); break;
+    case Kind::retry_until_successful:
+      new_params().in0 = input("num_attempts", std::nullopt, false);
+      break;
+    case Kind::run_once: new_params().in0 = input("then_skip", 1, true); break;
+    case Kind::script:
+    case Kind::script_condition: {
+      const std::string* code = xml.attribute("code");
+      if (code == nullptr) throw refuse(kind_name + " needs its port 'code'");
+      const std::uint32_t program = compile(kind_name, *code);
+      if (kind == Kind::script_condition && core.programs[program].empty())
+        throw refuse("ScriptCondition with an empty script has no result");
+      new_params().program = program;
+      break;
+    }
+    case Kind::world_leaf: {
+      NodeParams& p = new_params();
+      p.ports_begin = static_cast<std::uint32_t>(core.leaf_ports.size());
+      for (const auto& [attr, value] : xml.attributes) {
+        if (attr == "name" || (attr == "ID" && is_explicit_family(xml.tag))) continue;
+        LeafPort port;
+        port.name = attr;
+        if (auto key = blackboard_key(attr, value)) {
+          port.slot = bb.resolve(scope, *key);
+        } else {
+          port.literal = value;
+        }
+        core.leaf_ports.push_back(std::move(port));
+      }
+      p.ports_count = static_cast<std::uint32_t>(core.leaf_ports.size()) - p.ports_begin;
+      if (bind_world) {
+        const std::string family =
+            xml.tag == "Action" || xml.tag == "Condition" ? xml.tag : std::string();
+        const std::span<const LeafPort> ports(core.leaf_ports.data() + p.ports_begin,
+                                              p.ports_count);
+        const std::uint32_t handle = core.world->bind_leaf(
+            LeafBinding{id, core.info[id].kind, family, ports, core.info[id], bb});
+        core.params[core.nodes[id].params].world_handle = handle;
+      }
+      break;
+    }
+    case Kind::subtree: {
+      const std::string* target = xml.attribute("ID");
+      if (target == nullptr) throw refuse("SubTree needs an ID attribute");
+      const auto def_it = core.defs.find(*target);
+      if (def_it == core.defs.end())
+        throw refuse("SubTree ID '" + *target + "' names no <BehaviorTree>");
+      for (std::size_t i = 0; i < call_stack.size(); ++i) {
+        if (call_stack[i] != *target) continue;
+        std::string cycle;
+        for (std::size_t j = i; j < call_stack.size(); ++j) cycle += call_stack[j] + " -> ";
+        throw refuse("recursive SubTree: " + cycle + *target);
+      }
+      if (static_cast<int>(call_stack.size()) >= core.options.max_subtree_nesting)
+        throw refuse("SubTrees nested deeper than " +
+                     std::to_string(core.options.max_subtree_nesting) + " levels");
+
+      auto flag = [&](const char* attr) {
+        const std::string* text = xml.attribute(attr);
+        if (text == nullptr) return false;
+        const auto b = parse_bool(*text);
+        if (!b) throw refuse(std::string(attr) + "=\"" + *text + "\" is not a boolean");
+        return *b;
+      };
+      const bool shared = flag("__shared_blackboard");  // v3: the caller's blackboard itself
+      const bool autoremap = flag("_autoremap") || flag("__autoremap");
+      const ScopeId sub_scope = shared ? scope : bb.add_scope(scope, autoremap);
+      if (!shared) {
+        for (const auto& [attr, value] : xml.attributes) {
+          if (attr == "ID" || attr == "name" || attr == "_autoremap" || attr == "__autoremap" ||
+              attr == "__shared_blackboard")
+            continue;
+          if (auto key = blackboard_key(attr, value)) {
+            bb.add_remap(sub_scope, attr, *key);
+          } else {
+            bb.set_local(sub_scope, attr, ScriptValue::of_string(value));
+          }
+        }
+      }
+      const auto sub_instance = static_cast<std::uint32_t>(core.instances.size());
+      Instance inst;
+      inst.tree_id = *target;
+      inst.call = id;
+      inst.scope = sub_scope;
+      core.instances.push_back(std::move(inst));
+      new_params().instance = sub_instance;
+
+      const auto slot = static_cast<std::uint32_t>(core.children.size());
+      core.children.push_back(kNoNode);
+      core.child_done.push_back(0);
+      core.nodes[id].first_child = slot;
+      core.nodes[id].child_count = 1;
+      const NodeId sub_root = instantiate_tree(def_it->second, sub_instance, id);
+      core.children[slot] = sub_root;
+      core.instances[sub_instance].root = sub_root;
+      return id;
+    }
+    default: break;
+  }
+
+  if (n_children > 0) {
+    const auto first = static_cast<std::uint32_t>(core.children.size());
+    core.children.resize(first + n_children, kNoNode);
+    core.child_done.resize(first + n_children, 0);
+    core.nodes[id].first_child = first;
+    core.nodes[id].child_count = static_cast<std::uint32_t>(n_children);
+    for (std::uint32_t i = 0; i < n_children; ++i)
+      core.children[first + i] = instantiate_node(xml.children[i], def, instance, id, i, depth + 1);
+  }
+  return id;
+}
+
+CoreMark mark(const Core& core) {
+  return CoreMark{core.nodes.size(),      core.children.size(), core.params.size(),
+                  core.leaf_ports.size(), core.programs.size(), core.conditions.size(),
+                  core.instances.size(),  core.bb.mark()};
+}
+
+void rollback(Core& core, const CoreMark& m) {
+  core.nodes.resize(m.nodes);
+  core.info.resize(m.nodes);
+  core.children.resize(m.children);
+  core.child_done.resize(m.children);
+  core.params.resize(m.params);
+  core.leaf_ports.resize(m.leaf_ports);
+  core.programs.resize(m.programs);
+  core.conditions.resize(m.conditions);
+  core.instances.resize(m.instances);
+  core.bb.rollback(m.bb);
+}
+
+}  // namespace detail
+
+Engine Engine::build(const bt::Document& doc, World& world, EngineOptions options) {
+  return build(doc, std::string(), world, std::move(options));
+}
+
+Engine Engine::build(const bt::Document& doc, const std::string& main_tree, World& world,
+                     EngineOptions options) {
+  auto core = std::make_unique<detail::Core>();
+  core->world = &world;
+  core->options = options;
+  core->file = doc.file;
+  for (const bt::TreeDef& tree : doc.trees) {
+    auto [it, inserted] = core->defs.emplace(tree.id, std::make_shared<bt::TreeDef>(tree));
+    if (!inserted)
+      throw LoadError(doc.file + ":" + std::to_string(tree.line) + ":" +
+                      std::to_string(tree.column) + ": tree '" + tree.id + "' is defined twice");
+  }
+  const bt::TreeDef* main = main_tree.empty() ? doc.main() : doc.find_tree(main_tree);
+  if (main == nullptr)
+    throw LoadError(
+        doc.file + ":" + std::to_string(doc.root_line) + ":1: " +
+        (main_tree.empty() && doc.main_tree.empty()
+             ? std::string("several trees and no main_tree_to_execute: which one runs?")
+             : "no tree '" + (main_tree.empty() ? doc.main_tree : main_tree) + "' to run"));
+  detail::Instance inst;
+  inst.tree_id = main->id;
+  core->instances.push_back(std::move(inst));
+  detail::Builder builder(*core);
+  core->root = builder.instantiate_tree(core->defs.at(main->id), 0, kNoNode);
+  core->instances[0].root = core->root;
+  return Engine(std::move(core));
+}
+
+}  // namespace uabt::runtime

@@ -1,0 +1,31 @@
+// Fallback (BT.CPP FallbackNode): the mirror of Sequence; the first child that succeeds ends
+// it, FAILURE moves on to the next child.
+#include "runtime/core.hpp"
+
+namespace uabt::runtime::detail {
+
+NodeStatus tick_fallback(Core& core, NodeId id) {
+  RtNode& n = core.nodes[id];
+  const auto count = static_cast<std::int32_t>(n.child_count);
+  if (n.status == NodeStatus::idle) n.b = 0;
+  core.set_status(id, NodeStatus::running);
+
+  while (n.a < count) {
+    const NodeStatus s = core.execute_tick(core.child(id, n.a));
+    if (s == NodeStatus::running) return s;
+    if (s == NodeStatus::success) {
+      core.reset_children(id);
+      n.a = 0;
+      return s;
+    }
+    if (s == NodeStatus::skipped) ++n.b;
+    ++n.a;  // FAILURE or SKIPPED: next child
+  }
+  const bool all_skipped = n.b == count;
+  core.reset_children(id);
+  n.a = 0;
+  n.b = 0;
+  return all_skipped ? NodeStatus::skipped : NodeStatus::failure;
+}
+
+}  // namespace uabt::runtime::detail

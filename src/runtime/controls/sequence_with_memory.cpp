@@ -1,0 +1,32 @@
+// SequenceWithMemory (v3: SequenceStar): a Sequence that keeps its index on FAILURE, and on
+// halt (BT.CPP leaves current_child_idx_ alone there too), so children that succeeded are
+// not ticked again.
+#include "runtime/core.hpp"
+
+namespace uabt::runtime::detail {
+
+NodeStatus tick_sequence_with_memory(Core& core, NodeId id) {
+  RtNode& n = core.nodes[id];
+  const auto count = static_cast<std::int32_t>(n.child_count);
+  if (n.status == NodeStatus::idle) n.b = 0;
+  core.set_status(id, NodeStatus::running);
+
+  while (n.a < count) {
+    const NodeStatus s = core.execute_tick(core.child(id, n.a));
+    if (s == NodeStatus::running) return s;
+    if (s == NodeStatus::failure) {
+      // Only the failed child and those after it are reset; the index stays.
+      for (auto i = static_cast<std::uint32_t>(n.a); i < n.child_count; ++i) core.halt_child(id, i);
+      return s;
+    }
+    if (s == NodeStatus::skipped) ++n.b;
+    ++n.a;
+  }
+  const bool all_skipped = n.b == count;
+  core.reset_children(id);
+  n.a = 0;
+  n.b = 0;
+  return all_skipped ? NodeStatus::skipped : NodeStatus::success;
+}
+
+}  // namespace uabt::runtime::detail

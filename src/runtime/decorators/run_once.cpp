@@ -1,0 +1,25 @@
+// RunOnce (then_skip, default true): ticks its child until it completes once; afterwards
+// returns SKIPPED, or with then_skip="false" the status it completed with. Halting does not
+// make it forget.
+#include "runtime/core.hpp"
+
+namespace uabt::runtime::detail {
+
+NodeStatus tick_run_once(Core& core, NodeId id) {
+  bool then_skip = true;
+  if (!core.read_bool(id, core.params[core.nodes[id].params].in0, "then_skip", then_skip))
+    return NodeStatus::failure;
+  RtNode& n = core.nodes[id];
+  if (n.a != 0) return then_skip ? NodeStatus::skipped : static_cast<NodeStatus>(n.b);
+
+  core.set_status(id, NodeStatus::running);
+  const NodeStatus s = core.execute_tick(core.child(id, 0));
+  if (is_completed(s)) {
+    n.a = 1;
+    n.b = static_cast<std::int32_t>(s);
+    core.halt_child(id, 0);
+  }
+  return s;
+}
+
+}  // namespace uabt::runtime::detail

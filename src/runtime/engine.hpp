@@ -1,0 +1,165 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/location.hpp"
+#include "bt/tree.hpp"
+#include "runtime/blackboard.hpp"
+#include "runtime/status.hpp"
+
+namespace uabt::runtime {
+
+using NodeId = std::uint32_t;
+inline constexpr NodeId kNoNode = UINT32_MAX;
+
+class World;
+namespace detail {
+struct Core;
+}
+
+// A tree BehaviorTree.CPP would refuse to load: unknown SubTree ID, recursive SubTrees, an
+// unsupported built-in node, a literal port that does not convert, a script that does not
+// parse. The message starts with "file:line:col: ".
+class LoadError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// What a runtime node is, for observers, logs and the manager. Stable for the engine's life:
+// a node swapped out keeps its id and info, with `alive` false.
+struct NodeInfo {
+  std::string tag;          // element name as written: Sequence, MoveForward, Action (explicit)
+  std::string kind;         // registered name: the ID of <Action ID="X">, otherwise the tag
+  std::string name;         // the `name` attribute, "" if none
+  std::string tree_id;      // the <BehaviorTree> whose definition holds this node
+  NodeId parent = kNoNode;  // a tree's root has the SubTree node calling it as parent
+  std::uint32_t child_index = 0;  // position among the parent's children
+  std::uint32_t instance = 0;     // tree instance: 0 is the main tree, then one per SubTree call
+  SourceLocation location;
+  const bt::Node* element = nullptr;  // the XML element (kept alive by the engine)
+  bool alive = true;
+};
+
+// A failure BT.CPP raises as an exception while ticking (undefined script key, bad port,
+// wrong child count). uabt records it and the node returns FAILURE.
+struct TickError {
+  std::uint64_t tick = 0;
+  NodeId node = kNoNode;
+  std::string message;  // "file:line:col: Kind 'name': what went wrong"
+};
+
+struct Stats {
+  std::uint64_t root_ticks = 0;
+  std::uint64_t node_ticks = 0;  // every node tick, the root's included
+  std::uint64_t swaps = 0;       // tree instances rebuilt by replace_tree
+  std::uint64_t errors = 0;      // TickErrors, recorded or not
+};
+
+// Told about every status change, in the order BT.CPP's StatusChangeLogger would see them
+// (a control goes IDLE→RUNNING when ticked, completed children are reset to IDLE by their
+// parent, halted nodes go to IDLE). Must not modify the engine from the callback.
+class Observer {
+ public:
+  virtual ~Observer() = default;
+  virtual void on_status_change(NodeId node, NodeStatus previous, NodeStatus next) = 0;
+};
+
+// What replace_tree does with an instance of the tree that is RUNNING.
+enum class SwapPolicy {
+  refuse_if_running,  // change nothing (not even the definition) if any instance runs
+  halt_then_swap,     // halt the running instance (its actions get halt), then rebuild it
+  defer_until_idle,   // rebuild it after the first tick at whose end it is not RUNNING
+};
+
+struct SwapResult {
+  enum class Outcome { swapped, deferred, refused };
+  Outcome outcome = Outcome::swapped;
+  std::size_t swapped = 0;   // instances rebuilt now
+  std::size_t halted = 0;    // of those, RUNNING ones halted first
+  std::size_t deferred = 0;  // RUNNING instances waiting to be rebuilt
+};
+
+struct EngineOptions {
+  // Repeat and RetryUntilSuccessful loop within one tick while their child completes at once
+  // (BT.CPP). After this many rounds in one tick they return RUNNING and go on at the next
+  // tick, so that num_cycles="-1" over an instant child cannot hang the engine.
+  std::uint32_t max_loop_rounds_per_tick = 10000;
+  // SubTree calls nested deeper than this are refused at load (ticking recurses).
+  int max_subtree_nesting = 64;
+  // TickErrors kept; later ones are only counted (Stats::errors).
+  std::size_t max_recorded_errors = 1000;
+};
+
+// BehaviorTree.CPP 4.x tick engine over a bt::Document (DESIGN §8). Nodes live in flat
+// vectors and are addressed by NodeId; blackboard keys and scripts are resolved and compiled
+// once at instantiation, so a tick does no string lookups and no allocations.
+// Leaves that are not built in are delegated to a World.
+class Engine {
+ public:
+  // Instantiates the document's main tree (main_tree_to_execute, or its only tree), or the
+  // tree `main_tree` when given. `world` must outlive the engine. Throws LoadError.
+  static Engine build(const bt::Document& doc, World& world, EngineOptions options = {});
+  static Engine build(const bt::Document& doc, const std::string& main_tree, World& world,
+                      EngineOptions options = {});
+
+  Engine(Engine&&) noexcept;
+  Engine& operator=(Engine&&) noexcept;
+  ~Engine();
+
+  // One tick of the root (BT.CPP's tickOnce). Deferred swaps whose instance is no longer
+  // RUNNING are applied at the end of the tick.
+  NodeStatus tick();
+  // Halts the whole tree: every RUNNING node is halted and every node is IDLE afterwards.
+  void halt();
+
+  NodeId root() const;
+  NodeStatus status() const;  // the root's
+  NodeStatus status(NodeId node) const;
+  std::size_t node_count() const;  // ids in use, swapped-out nodes included
+  const NodeInfo& info(NodeId node) const;
+  std::span<const NodeId> children(NodeId node) const;
+  // "navigation/Fallback/Sequence[1]/SubTree[1]": the node's place in its own tree, in the
+  // compiler's trace-map notation (the root without index, then Tag[child index]).
+  std::string tree_path(NodeId node) const;
+  // The place in the running tree: SubTree calls joined with their tree paths,
+  // "MainTree/Sequence/Fallback[0]/SubTree[1]/navigation/Fallback/...".
+  std::string instance_path(NodeId node) const;
+  NodeId find_path(std::string_view instance_path) const;         // kNoNode if none (alive only)
+  std::vector<NodeId> find_by_name(std::string_view name) const;  // `name` attribute, alive
+  // SubTree nodes (alive) that call `tree_id`; the main tree has none.
+  std::vector<NodeId> subtree_calls(std::string_view tree_id) const;
+
+  void add_observer(Observer* observer);
+  void remove_observer(Observer* observer);
+
+  Blackboard& blackboard();
+  const Blackboard& blackboard() const;
+  // The blackboard scope a node reads and writes (its tree instance's).
+  ScopeId scope(NodeId node) const;
+
+  std::uint64_t tick_count() const;  // root ticks so far
+  const Stats& stats() const;
+  const std::vector<TickError>& errors() const;
+
+  // Hot swap (DESIGN §8), between two ticks.
+  // Registers or replaces the definition of `def.id` for later instantiations only.
+  void define_tree(bt::TreeDef def);
+  bool has_tree(std::string_view tree_id) const;
+  // Replaces tree `tree_id` (main tree or SubTree) by `def` in every instance, each rebuilt
+  // on its own blackboard scope (entries survive). Nodes outside the instances keep their
+  // state and are not halted. `def` is validated first: on LoadError nothing changes.
+  SwapResult replace_tree(const std::string& tree_id, bt::TreeDef def, SwapPolicy policy);
+  std::size_t pending_swaps() const;
+  void apply_pending_swaps();
+
+ private:
+  explicit Engine(std::unique_ptr<detail::Core> core);
+  std::unique_ptr<detail::Core> core_;
+};
+
+}  // namespace uabt::runtime

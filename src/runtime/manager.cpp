@@ -1,0 +1,218 @@
+#include "runtime/manager.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "base/diagnostics.hpp"
+#include "bt/xml_io.hpp"
+#include "runtime/runner.hpp"
+#include "runtime/selection.hpp"
+
+namespace uabt::runtime {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Version {
+  gate::Outcome outcome;
+  bt::Document document;  // the compiled tree as read back from its bytes
+};
+
+// Loads the mission with the given uplinks merged and runs the gate on it.
+Version gated_version(const fs::path& dir, const std::vector<std::string>& uplinks,
+                      const gate::Options& options) {
+  load::LoadOptions load_options;
+  for (const auto& u : uplinks) load_options.uplinks.push_back(dir / u);
+  std::string error;
+  auto mission = load::load_mission(dir, load_options, error);
+  if (!mission) throw std::runtime_error(dir.generic_string() + ": " + error);
+  Version v{gate::run_gate(std::move(*mission), options, "runtime"), {}};
+  if (v.outcome.passed()) {
+    std::vector<Finding> findings;
+    auto doc = bt::parse_document(v.outcome.compiled_xml, "compiled.xml", findings);
+    if (!doc)
+      throw std::runtime_error("compiled tree does not read back: " + format_text(findings));
+    v.document = std::move(*doc);
+  }
+  return v;
+}
+
+std::string lower_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string alternative_name(const load::Mission& m, const std::string& adaptable,
+                             const std::string& tree_id) {
+  for (const auto& alt : m.alternatives)
+    if (alt.adaptable == adaptable && alt.tree_id == tree_id) return alt.name;
+  return tree_id;
+}
+
+}  // namespace
+
+BehaviorTreeManager::BehaviorTreeManager(fs::path mission_dir, Scenario scenario,
+                                         ManagerOptions options)
+    : dir_(std::move(mission_dir)), scenario_(std::move(scenario)), options_(std::move(options)) {}
+
+void BehaviorTreeManager::add_uplink(std::int64_t tick, const std::string& package) {
+  ScenarioEvent event;
+  event.at = tick;
+  event.uplink = package;
+  event.index = static_cast<int>(scenario_.events.size());
+  scenario_.events.push_back(std::move(event));
+  std::stable_sort(scenario_.events.begin(), scenario_.events.end(),
+                   [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
+}
+
+ManagerRun BehaviorTreeManager::run() {
+  ManagerRun result;
+  std::vector<std::string> accepted;
+  Version running = gated_version(dir_, accepted, options_.gate);
+  if (!running.outcome.passed())
+    throw std::runtime_error("the mission does not pass the gate; only a verified version runs:\n" +
+                             format_text(running.outcome.report.findings));
+
+  RunOptions run_options;
+  run_options.max_ticks = options_.max_ticks;
+  run_options.log_conditions = false;
+  std::vector<bt::NodeModel> robot_nodes;
+  if (running.outcome.mission->nodes) robot_nodes = *running.outcome.mission->nodes;
+  Runner runner(running.document, scenario_, run_options, robot_nodes);
+
+  SelectionObserver selections(runner.engine(), [&](const Selection& s) {
+    TraceEvent e;
+    e.tick = s.tick;
+    e.event = "select";
+    e.adaptable = s.adaptable;
+    e.requirement = s.requirement;
+    e.alternative = alternative_name(*running.outcome.mission, s.adaptable, s.alternative);
+    result.trace.push_back(std::move(e));
+  });
+  runner.engine().add_observer(&selections);
+
+  runner.on_uplink = [&](const ScenarioEvent& event, Runner& r) {
+    const auto started = std::chrono::steady_clock::now();
+    TraceEvent e;
+    e.tick = r.ticks() + 1;  // it takes effect before this tick
+    e.event = "uplink";
+    e.uplink = event.uplink;
+    std::vector<std::string> candidate = accepted;
+    candidate.push_back(event.uplink);
+    Version next = gated_version(dir_, candidate, options_.gate);
+    if (!next.outcome.passed()) {
+      e.verdict = "rejected";
+      for (const auto& f : next.outcome.report.findings)
+        if (f.severity == Severity::error) e.findings.push_back(f);
+    } else {
+      e.verdict = "accepted";
+      // New trees (alternatives) first, so that a changed selection tree can call them.
+      for (const auto& def : next.document.trees) {
+        if (!r.engine().has_tree(def.id)) {
+          r.engine().define_tree(def);
+          e.swapped.push_back(def.id);
+        }
+      }
+      for (const auto& def : next.document.trees) {
+        const bt::TreeDef* old = running.document.find_tree(def.id);
+        if (old == nullptr || old->root == def.root) continue;
+        SwapResult swap = r.engine().replace_tree(def.id, def, SwapPolicy::halt_then_swap);
+        e.halted += swap.halted;
+        e.swapped.push_back(def.id);
+      }
+      accepted = std::move(candidate);
+      running = std::move(next);
+    }
+    e.latency_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+            .count();
+    result.trace.push_back(std::move(e));
+  };
+
+  NodeStatus last = NodeStatus::idle;
+  while (!runner.done()) {
+    const NodeStatus now = runner.step();
+    if (now == last) continue;
+    TraceEvent e;
+    e.tick = runner.ticks();
+    e.event = "status";
+    e.status = lower_case(status_name(now));
+    result.trace.push_back(std::move(e));
+    last = now;
+  }
+  runner.engine().remove_observer(&selections);
+
+  result.ticks = runner.ticks();
+  result.status = runner.engine().status();
+  result.finished = result.status == NodeStatus::success || result.status == NodeStatus::failure;
+  result.accepted_uplinks = accepted;
+  TraceEvent done;
+  done.tick = result.ticks;
+  done.event = "done";
+  done.verdict = result.finished ? lower_case(status_name(result.status)) : "timeout";
+  result.trace.push_back(std::move(done));
+  return result;
+}
+
+std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
+  std::string out;
+  for (const auto& e : trace) {
+    nlohmann::ordered_json j;
+    j["tick"] = e.tick;
+    j["event"] = e.event;
+    if (!e.adaptable.empty()) j["adaptable"] = e.adaptable;
+    if (!e.alternative.empty()) j["alternative"] = e.alternative;
+    if (!e.requirement.empty()) j["requirement"] = e.requirement;
+    if (!e.uplink.empty()) j["uplink"] = e.uplink;
+    if (!e.verdict.empty()) j["verdict"] = e.verdict;
+    if (!e.status.empty()) j["status"] = e.status;
+    if (e.event == "uplink") {
+      if (e.verdict == "accepted") {
+        j["swapped"] = e.swapped;
+        j["halted"] = e.halted;
+      }
+      j["latency_ms"] = e.latency_ms;
+      nlohmann::ordered_json findings = nlohmann::ordered_json::array();
+      for (const auto& f : e.findings)
+        findings.push_back({{"check", f.check},
+                            {"message", f.message},
+                            {"file", f.location.file},
+                            {"line", f.location.line}});
+      if (!findings.empty()) j["findings"] = std::move(findings);
+    }
+    out += j.dump() + "\n";
+  }
+  return out;
+}
+
+std::string trace_summary(const ManagerRun& run) {
+  std::string out;
+  for (const auto& e : run.trace) {
+    out += "tick " + std::to_string(e.tick) + ": ";
+    if (e.event == "select") {
+      out += e.adaptable + " selects " + e.alternative + " (" + e.requirement + ")";
+    } else if (e.event == "uplink") {
+      out += "uplink " + e.uplink + " " + e.verdict;
+      if (e.verdict == "accepted") {
+        out += ", swapped";
+        for (const auto& id : e.swapped) out += " " + id;
+      } else {
+        for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
+      }
+    } else if (e.event == "status") {
+      out += "mission " + e.status;
+    } else if (e.event == "done") {
+      out += "mission " + e.verdict;
+    } else {
+      out += e.event;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace uabt::runtime

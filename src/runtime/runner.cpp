@@ -1,0 +1,53 @@
+#include "runtime/runner.hpp"
+
+namespace uabt::runtime {
+
+Runner::Runner(const bt::Document& doc, Scenario scenario, RunOptions options,
+               std::vector<bt::NodeModel> robot_nodes) {
+  max_ticks_ = options.max_ticks > 0 ? options.max_ticks : scenario.max_ticks;
+  // The document's own models first, then what the robot declares (nodes.xml).
+  std::vector<bt::NodeModel> models = doc.node_models;
+  models.insert(models.end(), robot_nodes.begin(), robot_nodes.end());
+  world_ = std::make_unique<SimWorld>(std::move(scenario), std::move(models));
+  world_->log_conditions(options.log_conditions);
+  engine_ =
+      std::make_unique<Engine>(Engine::build(doc, options.main_tree, *world_, options.engine));
+  world_->apply_initial(engine_->blackboard());
+}
+
+NodeStatus Runner::step() {
+  const auto next_tick = static_cast<std::int64_t>(engine_->tick_count() + 1);
+  const auto& events = world_->scenario().events;
+  while (next_event_ < events.size() && events[next_event_].at <= next_tick) {
+    const ScenarioEvent& event = events[next_event_++];
+    world_->apply_event(event, engine_->blackboard());
+    if (event.uplink.empty()) continue;
+    if (on_uplink) {
+      on_uplink(event, *this);
+    } else {
+      unhandled_.push_back(event);
+    }
+  }
+  last_ = engine_->tick();
+  return last_;
+}
+
+bool Runner::done() const {
+  return last_ == NodeStatus::success || last_ == NodeStatus::failure ||
+         last_ == NodeStatus::skipped;
+}
+
+RunResult Runner::run() {
+  while (!done() && static_cast<std::int64_t>(engine_->tick_count()) < max_ticks_) step();
+  RunResult result;
+  result.status = last_;
+  result.ticks = engine_->tick_count();
+  result.finished = done();
+  result.log = world_->log();
+  result.errors = engine_->errors();
+  result.unhandled_uplinks = unhandled_;
+  result.stats = engine_->stats();
+  return result;
+}
+
+}  // namespace uabt::runtime

@@ -1,0 +1,67 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bt/tree.hpp"
+#include "runtime/engine.hpp"
+#include "runtime/scenario.hpp"
+#include "runtime/world.hpp"
+
+namespace uabt::runtime {
+
+struct RunOptions {
+  std::int64_t max_ticks = 0;  // 0: the scenario's max_ticks
+  std::string main_tree;       // "": the document's main tree
+  bool log_conditions = true;
+  EngineOptions engine;
+};
+
+struct RunResult {
+  NodeStatus status = NodeStatus::idle;  // the root's last status
+  std::uint64_t ticks = 0;
+  bool finished = false;  // the root completed (SUCCESS/FAILURE, or SKIPPED) within max_ticks
+  std::vector<LeafLogEntry> log;  // what the world's leaves did, tick by tick
+  std::vector<TickError> errors;
+  std::vector<ScenarioEvent> unhandled_uplinks;  // due uplinks nobody took (no on_uplink)
+  Stats stats;
+};
+
+// Runs a tree in a scenario's simulated world: before each tick the events due at it are
+// applied (state changes; uplinks go to on_uplink), then the root is ticked, until it
+// completes or max_ticks. Independent of the gate: the manager wires uplinks through
+// on_uplink and swaps trees through engine().
+class Runner {
+ public:
+  // Throws LoadError (tree) as Engine::build does.
+  Runner(const bt::Document& doc, Scenario scenario, RunOptions options = {},
+         std::vector<bt::NodeModel> robot_nodes = {});
+
+  Engine& engine() { return *engine_; }
+  SimWorld& world() { return *world_; }
+  const Scenario& scenario() const { return world_->scenario(); }
+
+  // Called between ticks for each due event that has an "uplink", after its "set" is
+  // applied and before the tick.
+  std::function<void(const ScenarioEvent&, Runner&)> on_uplink;
+
+  // Applies the events due at the next tick, then ticks once.
+  NodeStatus step();
+  bool done() const;
+  std::uint64_t ticks() const { return engine_->tick_count(); }
+  std::int64_t max_ticks() const { return max_ticks_; }
+  // Steps until done() or max_ticks, then reports.
+  RunResult run();
+
+ private:
+  std::unique_ptr<SimWorld> world_;  // before engine_: the engine calls it until destroyed
+  std::unique_ptr<Engine> engine_;
+  std::int64_t max_ticks_ = 0;
+  std::size_t next_event_ = 0;
+  NodeStatus last_ = NodeStatus::idle;
+  std::vector<ScenarioEvent> unhandled_;
+};
+
+}  // namespace uabt::runtime

@@ -1,0 +1,193 @@
+// Scenario JSON (DESIGN §8) → Scenario, with errors that point into the file.
+#include "runtime/scenario.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "base/files.hpp"
+
+namespace uabt::runtime {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+[[noreturn]] void shape_error(const std::string& file, const std::string& where,
+                              const std::string& message) {
+  throw ScenarioError(file + ": " + (where.empty() ? "" : where + ": ") + message);
+}
+
+// nlohmann reports the byte offset after the offending character; line and column are
+// counted from the text so that the message has the usual file:line:col form.
+std::pair<int, int> line_column(std::string_view text, std::size_t byte) {
+  const std::size_t offset = std::min(byte == 0 ? 0 : byte - 1, text.size());
+  int line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < offset; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return {line, static_cast<int>(offset - line_start) + 1};
+}
+
+// nlohmann's what(): "[json.exception.parse_error.101] parse error at line 3, column 14:
+// syntax error while parsing ..." — keep the part after the position.
+std::string syntax_message(const std::string& what) {
+  const auto column = what.find("column ");
+  const auto colon = what.find(": ", column == std::string::npos ? 0 : column);
+  std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
+  if (message.rfind("syntax error ", 0) == 0) message = message.substr(13);
+  return "invalid JSON: " + message;
+}
+
+ScriptValue state_value(const Json& j, const std::string& file, const std::string& where) {
+  switch (j.type()) {
+    case Json::value_t::boolean: return ScriptValue::of_bool(j.get<bool>());
+    case Json::value_t::number_integer: return ScriptValue::of_int(j.get<std::int64_t>());
+    case Json::value_t::number_unsigned: {
+      const auto u = j.get<std::uint64_t>();
+      if (u > static_cast<std::uint64_t>(INT64_MAX)) shape_error(file, where, "integer too large");
+      return ScriptValue::of_int(static_cast<std::int64_t>(u));
+    }
+    case Json::value_t::number_float: return ScriptValue::of_real(j.get<double>());
+    case Json::value_t::string: return ScriptValue::of_string(j.get<std::string>());
+    default:
+      shape_error(file, where,
+                  std::string("a state value must be a boolean, a number or a string, not ") +
+                      j.type_name());
+  }
+}
+
+StateAssignment assignment(const Json& j, const std::string& file, const std::string& where) {
+  if (!j.is_object())
+    shape_error(file, where,
+                std::string("must be an object of state values, not ") + j.type_name());
+  StateAssignment out;
+  for (const auto& [key, value] : j.items()) {
+    if (key.empty()) shape_error(file, where, "a state variable needs a name");
+    out.emplace_back(key, state_value(value, file, where + "/" + key));
+  }
+  return out;
+}
+
+std::int64_t integer(const Json& j, const std::string& file, const std::string& where,
+                     std::int64_t minimum) {
+  if (!j.is_number_integer() || (j.is_number_unsigned() && j.get<std::uint64_t>() > INT64_MAX))
+    shape_error(file, where, std::string("must be an integer, not ") + j.dump());
+  const auto v = j.get<std::int64_t>();
+  if (v < minimum)
+    shape_error(file, where,
+                "must be at least " + std::to_string(minimum) + ", not " + std::to_string(v));
+  return v;
+}
+
+void only_keys(const Json& j, std::initializer_list<std::string_view> allowed,
+               const std::string& file, const std::string& where) {
+  for (const auto& [key, value] : j.items()) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    std::string list;
+    for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    shape_error(file, where, "unknown key '" + key + "' (expected: " + list + ")");
+  }
+}
+
+ActionSpec action(const Json& j, const std::string& file, const std::string& where) {
+  if (!j.is_object())
+    shape_error(file, where, std::string("an action must be an object, not ") + j.type_name());
+  only_keys(j, {"ticks", "effects", "result"}, file, where);
+  ActionSpec spec;
+  if (j.contains("ticks")) spec.ticks = integer(j["ticks"], file, where + "/ticks", 1);
+  if (j.contains("effects")) spec.effects = assignment(j["effects"], file, where + "/effects");
+  if (j.contains("result")) {
+    const Json& r = j["result"];
+    if (r == "success") {
+      spec.result = NodeStatus::success;
+    } else if (r == "failure") {
+      spec.result = NodeStatus::failure;
+    } else {
+      shape_error(file, where + "/result", "must be \"success\" or \"failure\", not " + r.dump());
+    }
+  }
+  return spec;
+}
+
+}  // namespace
+
+bool Scenario::mentions_state(std::string_view key) const {
+  auto in = [&](const StateAssignment& a) {
+    return std::any_of(a.begin(), a.end(), [&](const auto& kv) { return kv.first == key; });
+  };
+  if (in(initial)) return true;
+  for (const auto& e : events)
+    if (in(e.set)) return true;
+  for (const auto& [name, spec] : actions)
+    if (in(spec.effects)) return true;
+  return false;
+}
+
+Scenario parse_scenario(std::string_view text, const std::string& file) {
+  Json root;
+  try {
+    root = Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& e) {
+    const auto [line, column] = line_column(text, e.byte);
+    throw ScenarioError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                        syntax_message(e.what()));
+  }
+  if (!root.is_object())
+    shape_error(file, "", std::string("a scenario must be a JSON object, not ") + root.type_name());
+  only_keys(root, {"max_ticks", "initial", "actions", "events", "description", "name"}, file, "");
+
+  Scenario s;
+  s.file = file;
+  if (root.contains("max_ticks")) s.max_ticks = integer(root["max_ticks"], file, "/max_ticks", 1);
+  if (root.contains("initial")) s.initial = assignment(root["initial"], file, "/initial");
+  if (root.contains("actions")) {
+    const Json& actions = root["actions"];
+    if (!actions.is_object())
+      shape_error(file, "/actions", std::string("must be an object, not ") + actions.type_name());
+    for (const auto& [name, spec] : actions.items())
+      s.actions.emplace(name, action(spec, file, "/actions/" + name));
+  }
+  if (root.contains("events")) {
+    const Json& events = root["events"];
+    if (!events.is_array())
+      shape_error(file, "/events", std::string("must be an array, not ") + events.type_name());
+    int index = 0;
+    for (const Json& e : events) {
+      const std::string where = "/events/" + std::to_string(index);
+      if (!e.is_object())
+        shape_error(file, where, std::string("an event must be an object, not ") + e.type_name());
+      only_keys(e, {"at", "set", "uplink"}, file, where);
+      if (!e.contains("at")) shape_error(file, where, "an event needs \"at\" (a tick number)");
+      ScenarioEvent event;
+      event.index = index;
+      event.at = integer(e["at"], file, where + "/at", 0);
+      if (e.contains("set")) event.set = assignment(e["set"], file, where + "/set");
+      if (e.contains("uplink")) {
+        if (!e["uplink"].is_string() || e["uplink"].get<std::string>().empty())
+          shape_error(file, where + "/uplink", "must be a non-empty path");
+        event.uplink = e["uplink"].get<std::string>();
+      }
+      if (!e.contains("set") && !e.contains("uplink"))
+        shape_error(file, where, "an event needs \"set\" or \"uplink\"");
+      s.events.push_back(std::move(event));
+      ++index;
+    }
+    std::stable_sort(s.events.begin(), s.events.end(),
+                     [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
+  }
+  return s;
+}
+
+Scenario load_scenario(const std::filesystem::path& path, const std::string& display) {
+  const std::string shown = display.empty() ? path.generic_string() : display;
+  std::string error;
+  const auto text = read_text_file(path, error);
+  if (!text) throw ScenarioError(shown + ": " + error);
+  return parse_scenario(*text, shown);
+}
+
+}  // namespace uabt::runtime

@@ -1,0 +1,60 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "runtime/script/value.hpp"
+#include "runtime/status.hpp"
+
+namespace uabt::runtime {
+
+using StateAssignment = std::vector<std::pair<std::string, ScriptValue>>;  // file order
+
+struct ActionSpec {
+  std::int64_t ticks = 1;   // completes on its `ticks`-th tick; RUNNING before
+  StateAssignment effects;  // applied when it completes
+  NodeStatus result = NodeStatus::success;
+};
+
+struct ScenarioEvent {
+  std::int64_t at = 0;  // applied before tick `at` (ticks count from 1)
+  StateAssignment set;
+  std::string uplink;  // an uplink package directory (the manager's business), "" if none
+  int index = 0;       // position in the file's "events" array
+};
+
+// A runtime scenario (DESIGN §8):
+//   {"max_ticks": 2000,
+//    "initial": {"OnDust": true, "battery": 90, "terrain": "dust"},
+//    "actions": {"Drill": {"ticks": 30, "effects": {"IsDug": true}, "result": "success"}},
+//    "events": [{"at": 15, "set": {"OnDust": false}}, {"at": 40, "uplink": "uplinks/on_mud"}]}
+// JSON booleans, integers, reals and strings become state values (strings hold enum values).
+struct Scenario {
+  std::string file;  // displayed path
+  std::int64_t max_ticks = 2000;
+  StateAssignment initial;
+  std::map<std::string, ActionSpec, std::less<>> actions;
+  std::vector<ScenarioEvent> events;  // by `at`, file order within one tick
+
+  // True when `key` is a state variable the scenario sets anywhere (initial, events,
+  // effects).
+  bool mentions_state(std::string_view key) const;
+};
+
+// A scenario file that is not valid JSON or not of the shape above. The message names the
+// file, and line:col for JSON syntax errors ("scenarios/a.json:3:14: ...").
+class ScenarioError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+Scenario parse_scenario(std::string_view text, const std::string& file);
+// Reads and parses; `display` is the path shown in messages (default: `path` as given).
+Scenario load_scenario(const std::filesystem::path& path, const std::string& display = "");
+
+}  // namespace uabt::runtime

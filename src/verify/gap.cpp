@@ -1,0 +1,141 @@
+#include <algorithm>
+#include <unordered_map>
+
+#include "smt/atoms.hpp"
+#include "verify/node.hpp"
+#include "verify/region.hpp"
+
+namespace uabt::verify::detail {
+
+namespace {
+
+// How many cubes of the uncovered region a finding lists before it says "and more".
+constexpr std::size_t kMaxGapCubes = 5;
+
+bool contains(const std::vector<z3::expr>& v, const z3::expr& x) {
+  return std::any_of(v.begin(), v.end(), [&](const z3::expr& y) { return z3::eq(x, y); });
+}
+
+// The distinct atoms of the node's guards, each with a literal defined equivalent to it.
+struct AtomTable {
+  std::vector<const fretish::Expr*> atoms;
+  std::vector<z3::expr> formulas;
+  std::vector<z3::expr> literals;
+};
+
+AtomTable atom_table(const Node& node, Session& session) {
+  AtomTable table;
+  smt::Encoder& encoder = session.encoder();
+  std::unordered_map<unsigned, std::size_t> seen;  // Z3 hash-conses: equal atoms share an id
+  for (const Guard& g : node.guards) {
+    if (g.is_default) continue;
+    for (const fretish::Expr* atom :
+         smt::atom_occurrences(*g.requirement->guard, encoder.typing())) {
+      const z3::expr formula = encoder.lower(*atom);
+      if (!seen.emplace(formula.id(), table.atoms.size()).second) continue;
+      table.atoms.push_back(atom);
+      table.formulas.push_back(formula);
+      table.literals.push_back(session.define(formula, "atom"));
+    }
+  }
+  return table;
+}
+
+}  // namespace
+
+void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
+  region.clear();
+  const bool has_default = std::any_of(node.guards.begin(), node.guards.end(),
+                                       [](const Guard& g) { return g.is_default; });
+  if (has_default) {  // the default is always enabled: no state is left uncovered
+    ++session.statistics().prefiltered;
+    return;
+  }
+  std::vector<z3::expr> none_hold;
+  for (const Guard& g : node.guards) none_hold.push_back(!g.literal);
+  const Guard& last = node.guards.back();
+  const Answer gap = session.check(none_hold);
+  if (gap == Answer::unsat) return;
+  std::vector<const Guard*> all;
+  for (const Guard& g : node.guards) all.push_back(&g);
+  if (gap == Answer::unknown) {
+    report_inconclusive(node, session,
+                        "whether some state selects no alternative of " + node.adaptable,
+                        last.requirement->location, all);
+    return;
+  }
+  z3::model model = session.model();
+  const State witness = session.encoder().state_of(model);
+
+  // The region: generalise each gap model to a cube over the guards' atoms that lies wholly
+  // in the gap (drop literals while D ∧ cube ∧ (g1 ∨ … ∨ gn) stays unsat), block it, repeat.
+  const AtomTable table = atom_table(node, session);
+  z3::expr_vector guard_literals(session.context());
+  for (const Guard& g : node.guards) guard_literals.push_back(g.literal);
+  const z3::expr some_holds = session.define(z3::mk_or(guard_literals), "any");
+  const z3::expr blocking = session.encoder().fresh_literal("gapblock");
+  std::vector<z3::expr> search = none_hold;
+  search.push_back(blocking);
+  std::string more;
+  for (;;) {
+    std::vector<z3::expr> cube;
+    for (std::size_t k = 0; k < table.atoms.size(); ++k)
+      cube.push_back(model.eval(table.formulas[k], true).is_true() ? table.literals[k]
+                                                                   : !table.literals[k]);
+    // The full cube fixes every atom at values where every guard is false, so it lies in the
+    // gap; the core and the minimisation only make it larger.
+    std::vector<z3::expr> query{some_holds};
+    query.insert(query.end(), cube.begin(), cube.end());
+    if (session.check(query) == Answer::unsat) {
+      const std::vector<z3::expr> core = session.core();
+      std::vector<z3::expr> needed;
+      for (const auto& l : cube)
+        if (contains(core, l)) needed.push_back(l);
+      cube = session.minimise({some_holds}, needed);
+    }
+    std::vector<CubeLiteral> literals;
+    for (std::size_t k = 0; k < table.atoms.size(); ++k) {
+      if (contains(cube, table.literals[k]))
+        literals.push_back({table.atoms[k], true});
+      else if (contains(cube, !table.literals[k]))
+        literals.push_back({table.atoms[k], false});
+    }
+    region.push_back(render_cube(literals, session.encoder().domain(), session.encoder().typing()));
+    if (cube.empty()) break;  // the whole domain is uncovered
+    z3::expr_vector conjunction(session.context());
+    for (const auto& l : cube) conjunction.push_back(l);
+    session.add(z3::implies(blocking, !z3::mk_and(conjunction)));
+    const Answer next = session.check(search);
+    if (next == Answer::unsat) break;
+    if (next == Answer::unknown) {
+      more = "… and possibly more (the solver could not tell)";
+      break;
+    }
+    if (region.size() == kMaxGapCubes) {
+      more = "… and more";
+      break;
+    }
+    model = session.model();
+  }
+
+  Finding f = node_finding(node, "guard-gap",
+                           "no requirement of " + node.adaptable +
+                               " holds in some states: there the Fallback fails and " +
+                               node.adaptable + " returns FAILURE",
+                           last.requirement->location);
+  for (const Guard& g : node.guards) {
+    f.requirements.push_back(g.requirement->id);
+    f.alternatives.push_back(g.requirement->alternative);
+  }
+  f.witness = witness;
+  f.notes.push_back("for example " + describe_state(witness));
+  for (const auto& cube : region) f.notes.push_back("uncovered: " + cube);
+  if (!more.empty()) {
+    f.notes.push_back("uncovered: " + more);
+    region.push_back(more);
+  }
+  f.notes.push_back("add a default requirement (no condition) or guards that cover these states");
+  node.result->findings.push_back(std::move(f));
+}
+
+}  // namespace uabt::verify::detail

@@ -1,0 +1,53 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <z3++.h>
+
+#include "fretish/selection.hpp"
+#include "verify/prefilter.hpp"
+#include "verify/session.hpp"
+#include "verify/verify.hpp"
+
+namespace uabt::verify::detail {
+
+// One selection requirement of the node under analysis.
+struct Guard {
+  explicit Guard(z3::context& c) : formula(c.bool_val(true)), literal(c.bool_val(true)) {}
+
+  const fretish::SelectionRequirement* requirement = nullptr;
+  bool is_default = false;               // no condition: always enabled
+  z3::expr formula;                      // the lowered guard (true for the default)
+  z3::expr literal;                      // defined equivalent to `formula` in the session
+  Signature signature;                   // cheap over-approximation for pre-filters
+  Answer satisfiable = Answer::unknown;  // D ∧ g
+  Answer selectable = Answer::unknown;   // D ∧ g ∧ ¬(earlier guards): some state selects it
+};
+
+// One adaptable node: its guards in priority order (default last).
+struct Node {
+  std::string adaptable;
+  std::vector<Guard> guards;
+  Result* result = nullptr;
+  const Options* options = nullptr;
+};
+
+// "Req1 (on_dust)"
+std::string label(const Guard& g);
+// "OnDust = true, OnRocks = false, battery = 19"
+std::string describe_state(const State& state);
+// A finding of the verify stage about `node`, located at `location`.
+Finding node_finding(const Node& node, const std::string& check, std::string message,
+                     const SourceLocation& location);
+// Reports that a question could not be decided.
+void report_inconclusive(Node& node, Session& session, const std::string& question,
+                         const SourceLocation& location, const std::vector<const Guard*>& guards);
+
+// The checks, in the order verify_mission runs them.
+void check_satisfiable_and_shadowed(Node& node, Session& session);
+void check_overlaps(Node& node, Session& session);
+void check_gap(Node& node, Session& session, std::vector<std::string>& region);
+void check_vacuous_atoms(Node& node, Session& session, const std::vector<std::string>& assumed);
+
+}  // namespace uabt::verify::detail

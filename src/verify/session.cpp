@@ -1,0 +1,84 @@
+#include "verify/session.hpp"
+
+#include <algorithm>
+
+namespace uabt::verify::detail {
+
+Session::Session(smt::Encoder& encoder, const Options& options, Statistics& statistics)
+    : encoder_(encoder), statistics_(statistics), solver_(encoder.context()) {
+  if (options.timeout_ms > 0) {
+    z3::params params(encoder.context());
+    params.set("timeout", options.timeout_ms);
+    solver_.set(params);
+  }
+}
+
+Answer Session::check(const std::vector<z3::expr>& assumptions) {
+  ++statistics_.solver_queries;
+  reason_.clear();
+  try {
+    z3::expr_vector literals(context());
+    for (const auto& a : assumptions) literals.push_back(a);
+    switch (solver_.check(literals)) {
+      case z3::sat: return Answer::sat;
+      case z3::unsat: return Answer::unsat;
+      case z3::unknown: break;
+    }
+    reason_ = solver_.reason_unknown();
+    // Z3 wraps some reasons in parentheses: "(incomplete (theory arithmetic))".
+    if (reason_.size() > 2 && reason_.front() == '(' && reason_.back() == ')')
+      reason_ = reason_.substr(1, reason_.size() - 2);
+  } catch (const z3::exception& e) {
+    // Z3 gives up on some inputs by throwing (resource limits, unsupported operators).
+    reason_ = e.msg();
+  }
+  if (reason_.empty()) reason_ = "unknown";
+  return Answer::unknown;
+}
+
+std::vector<z3::expr> Session::core() const {
+  std::vector<z3::expr> out;
+  const z3::expr_vector c = const_cast<z3::solver&>(solver_).unsat_core();
+  for (unsigned i = 0; i < c.size(); ++i) out.push_back(c[i]);
+  return out;
+}
+
+z3::expr Session::define(const z3::expr& formula, const char* prefix) {
+  z3::expr literal = encoder_.fresh_literal(prefix);
+  solver_.add(literal == formula);
+  return literal;
+}
+
+z3::expr Session::guard(const z3::expr& formula, const char* prefix) {
+  z3::expr literal = encoder_.fresh_literal(prefix);
+  solver_.add(z3::implies(literal, formula));
+  return literal;
+}
+
+std::vector<z3::expr> Session::minimise(const std::vector<z3::expr>& fixed,
+                                        std::vector<z3::expr> candidates) {
+  for (std::size_t k = 0; k < candidates.size();) {
+    std::vector<z3::expr> trial = fixed;
+    for (std::size_t j = 0; j < candidates.size(); ++j)
+      if (j != k) trial.push_back(candidates[j]);
+    if (check(trial) == Answer::unsat) {
+      // Keep only what the new core still needs: often drops several candidates at once.
+      const std::vector<z3::expr> c = core();
+      std::vector<z3::expr> kept;
+      for (std::size_t j = 0; j < candidates.size(); ++j) {
+        if (j == k) continue;
+        const bool in_core = std::any_of(
+            c.begin(), c.end(), [&](const z3::expr& x) { return z3::eq(x, candidates[j]); });
+        if (in_core) kept.push_back(candidates[j]);
+      }
+      candidates = std::move(kept);
+      // Candidates before k were each needed, so they are all kept and position k now holds
+      // the next untried one.
+      continue;
+    }
+    ++k;
+  }
+  return candidates;
+}
+
+}  // namespace uabt::verify::detail

@@ -1,0 +1,312 @@
+#include <gtest/gtest.h>
+
+#include <tinyxml2.h>
+
+#include "fretish/expr.hpp"
+#include "report/reports.hpp"
+#include "report_fixtures.hpp"
+
+namespace uabt::report {
+namespace {
+
+using fretish::ExprKind;
+using fretish::make_expr;
+using fretish::make_identifier;
+using fretish::make_number;
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+bool well_formed_xml(const std::string& text) {
+  tinyxml2::XMLDocument doc;
+  return doc.Parse(text.c_str()) == tinyxml2::XML_SUCCESS;
+}
+
+fretish::Variable variable(std::string name, fretish::VarType type, std::string lower = {},
+                           std::string upper = {}) {
+  fretish::Variable v;
+  v.name = std::move(name);
+  v.type = type;
+  v.lower = std::move(lower);
+  v.upper = std::move(upper);
+  return v;
+}
+
+fretish::SelectionRequirement selection(std::string id, std::string adaptable,
+                                        std::string alternative, fretish::ExprPtr guard, int line) {
+  fretish::SelectionRequirement s;
+  s.id = std::move(id);
+  s.adaptable = std::move(adaptable);
+  s.alternative = std::move(alternative);
+  s.guard = std::move(guard);
+  s.location = {"requirements.fret", line, 1};
+  return s;
+}
+
+fretish::Requirement requirement(std::string id, std::string text) {
+  fretish::Requirement r;
+  r.id = std::move(id);
+  r.text = std::move(text);
+  return r;
+}
+
+// The paper's MSL navigation node, as the loader would hand it over.
+load::Mission msl_mission(bool one_terrain) {
+  load::Mission mission;
+  mission.name = "msl_curiosity_paper";
+  mission.domain.variables = {variable("OnDust", fretish::VarType::boolean),
+                              variable("OnRocks", fretish::VarType::boolean)};
+  if (one_terrain) {
+    fretish::Assumption a;
+    a.name = "one_terrain";
+    a.expr = make_expr(ExprKind::logical_not,
+                       {make_expr(ExprKind::logical_and,
+                                  {make_identifier("OnDust"), make_identifier("OnRocks")})});
+    mission.domain.assumptions.push_back(a);
+  }
+  mission.requirements = {
+      requirement("Req1", "In navigation if OnDust Mission shall satisfy selected_alt = on_dust"),
+      requirement("Req2",
+                  "In navigation if OnRocks Mission shall satisfy selected_alt = on_rocks")};
+  mission.selections = {selection("Req1", "navigation", "on_dust", make_identifier("OnDust"), 1),
+                        selection("Req2", "navigation", "on_rocks", make_identifier("OnRocks"), 2)};
+  return mission;
+}
+
+// The exploration node: numeric guards over battery and slope, overlapping, with a gap.
+load::Mission exploration_mission() {
+  load::Mission mission;
+  mission.name = "exploration";
+  mission.domain.variables = {variable("battery", fretish::VarType::integer, "0", "100"),
+                              variable("slope", fretish::VarType::real, "-45", "45")};
+  auto sand = make_expr(ExprKind::logical_and,
+                        {make_expr(ExprKind::lt, {make_identifier("slope"), make_number("10")}),
+                         make_expr(ExprKind::gt, {make_identifier("battery"), make_number("30")})});
+  auto rocks = make_expr(ExprKind::ge, {make_identifier("slope"), make_number("5")});
+  mission.requirements = {requirement("Sand",
+                                      "In exploration if slope < 10 & battery > 30 "
+                                      "Mission shall satisfy selected_alt = sand_alternative"),
+                          requirement("Rocks",
+                                      "In exploration if slope >= 5 Mission shall "
+                                      "satisfy selected_alt = rocks_alternative")};
+  mission.selections = {selection("Sand", "exploration", "sand_alternative", sand, 1),
+                        selection("Rocks", "exploration", "rocks_alternative", rocks, 2)};
+  return mission;
+}
+
+verify::Coverage exploration_coverage() {
+  verify::Coverage c;
+  c.adaptable = "exploration";
+  c.counted = false;
+  c.not_counted_reason = "slope is a real variable";
+  c.alternatives = {{"sand_alternative", "Sand", 0, 0, true},
+                    {"rocks_alternative", "Rocks", 0, 0, true}};
+  c.variables = {"battery", "slope"};
+  return c;
+}
+
+TEST(HtmlReport, VerdictAndSelfContainedPage) {
+  const std::string html = to_html(testing::failing_input());
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>\n", 0), 0u);
+  EXPECT_TRUE(has(html, "<meta charset=\"utf-8\">"));
+  EXPECT_TRUE(has(html, "<div class=\"badge\">FAIL</div>"));
+  EXPECT_TRUE(has(html, "<h1>Mission msl_curiosity_paper</h1>"));
+  EXPECT_TRUE(has(html, "<svg"));
+  // Nothing is fetched: no URL at all, no script, no external style or image.
+  EXPECT_FALSE(has(html, "http://"));
+  EXPECT_FALSE(has(html, "https://"));
+  EXPECT_FALSE(has(html, "<script"));
+  EXPECT_FALSE(has(html, "<link"));
+  EXPECT_FALSE(has(html, "src="));
+  EXPECT_FALSE(has(html, "@import"));
+  EXPECT_TRUE(has(to_html(testing::passing_input()), "<div class=\"badge\">PASS</div>"));
+}
+
+TEST(HtmlReport, EveryFindingMessageEscaped) {
+  const ReportInput input = testing::failing_input();
+  const std::string html = to_html(input);
+  EXPECT_TRUE(has(html, "expected &#39;shall&#39; after &lt;Adaptable&gt; | here"));
+  EXPECT_FALSE(has(html, "<Adaptable>"));
+  EXPECT_TRUE(has(html, "the guards of Req1 and Req2 both hold in some state"));
+  EXPECT_TRUE(has(html, "no requirement of &#39;navigation&#39; holds in some state"));
+  EXPECT_TRUE(
+      has(html, "alternative &#39;spare&#39; of &#39;navigation&#39; is named by no requirement"));
+  EXPECT_TRUE(has(html, "the guards of Arm1 and Arm2 both hold in some state"));
+  EXPECT_EQ(count(html, "<article class=\"finding "), input.findings.size());
+  EXPECT_EQ(count(html, "uabt explain guard-overlap"), 2u);
+}
+
+TEST(HtmlReport, FindingsGroupedByNodeWithWitnessTables) {
+  const std::string html = to_html(testing::failing_input());
+  const auto navigation = html.find("<h3>Adaptable node <code>navigation</code></h3>");
+  const auto arm = html.find("<h3>Adaptable node <code>arm</code></h3>");
+  const auto mission_wide = html.find("<h3>Mission-wide</h3>");
+  ASSERT_NE(navigation, std::string::npos);
+  ASSERT_NE(arm, std::string::npos);
+  ASSERT_NE(mission_wide, std::string::npos);
+  EXPECT_LT(navigation, arm);
+  EXPECT_LT(arm, mission_wide);
+  EXPECT_TRUE(has(html, "<tr><td><code>OnDust</code></td><td><code>true</code></td></tr>"));
+  EXPECT_TRUE(has(html, "<tr><td><code>slope</code></td><td><code>1/3</code></td></tr>"));
+  EXPECT_TRUE(has(html, "Node: <code>spare/Sequence[0]</code>"));
+}
+
+TEST(HtmlReport, CoverageInWords) {
+  const std::string html = to_html(testing::failing_input());
+  EXPECT_TRUE(has(html, "In 1 state (25.0%) no guard holds: the adaptable node fails there."));
+  EXPECT_TRUE(has(html, "<li><code>!OnDust &amp; !OnRocks</code></li>"));
+  EXPECT_TRUE(has(html,
+                  "For example, no alternative is selected when <code>OnDust</code> = "
+                  "<code>false</code>, <code>OnRocks</code> = <code>false</code>."));
+  EXPECT_TRUE(has(html, "The state space was not counted: slope is a real variable."));
+  EXPECT_TRUE(has(html, "<strong>no, never</strong>"));
+  EXPECT_TRUE(has(html, "The mission could not be loaded"));
+}
+
+TEST(HtmlReport, RequirementsInPriorityOrderFromTheMission) {
+  const load::Mission mission = msl_mission(false);
+  ReportInput input = testing::failing_input();
+  input.mission = &mission;
+  const std::string html = to_html(input);
+  const auto req1 = html.find("<code>Req1</code>: In navigation if OnDust Mission shall");
+  const auto req2 = html.find("<code>Req2</code>: In navigation if OnRocks Mission shall");
+  ASSERT_NE(req1, std::string::npos);
+  ASSERT_NE(req2, std::string::npos);
+  EXPECT_LT(req1, req2);
+  EXPECT_TRUE(has(html, "No selection requirement names this node")) << "arm has none";
+  EXPECT_TRUE(has(html, "Selected alternative over two variables"));
+  EXPECT_FALSE(has(html, "http://"));
+}
+
+TEST(HtmlReport, ByteIdenticalAcrossCalls) {
+  const load::Mission mission = exploration_mission();
+  ReportInput input = testing::failing_input();
+  input.adaptables.push_back("exploration");
+  input.coverage.push_back(exploration_coverage());
+  input.mission = &mission;
+  EXPECT_EQ(to_html(input), to_html(input));
+  EXPECT_EQ(to_html(testing::passing_input()), to_html(testing::passing_input()));
+}
+
+TEST(CoverageSvg, PartitionBarAndLegend) {
+  const verify::Coverage coverage = testing::failing_input().coverage[0];
+  const std::string svg = coverage_svg(coverage);
+  EXPECT_TRUE(well_formed_xml(svg));
+  EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+  // One segment per alternative with states, in priority order, then the hatched gap.
+  const auto dust = svg.find("fill=\"#0072b2\" stroke=\"#fff\"");
+  const auto rocks = svg.find("fill=\"#e69f00\" stroke=\"#fff\"");
+  const auto gap = svg.find("-gap)\" stroke=\"#fff\"");
+  ASSERT_NE(dust, std::string::npos);
+  ASSERT_NE(rocks, std::string::npos);
+  ASSERT_NE(gap, std::string::npos);
+  EXPECT_LT(dust, rocks);
+  EXPECT_LT(rocks, gap);
+  // Segment widths are proportional: 2, 1 and 1 of 4 states over a 700-wide bar.
+  EXPECT_TRUE(has(svg, "<rect x=\"10\" y=\"28\" width=\"350\" height=\"36\" fill=\"#0072b2\""));
+  EXPECT_TRUE(has(svg, "<rect x=\"360\" y=\"28\" width=\"175\" height=\"36\" fill=\"#e69f00\""));
+  // The legend uses the same colours and says the counts.
+  EXPECT_TRUE(has(svg, "fill=\"#0072b2\" stroke=\"#333\""));
+  EXPECT_TRUE(has(svg, "on_dust — Req1: selected in 2 states (50.0%)"));
+  EXPECT_TRUE(
+      has(svg, "on_rocks — Req2: selected in 1 state (25.0%); its guard holds in 2 (50.0%)"));
+  EXPECT_TRUE(has(svg, "gap — no guard holds, the node fails: 1 state (25.0%)"));
+  EXPECT_TRUE(has(svg, "overlap — two or more guards hold (gauge under the bar): 1 state (25.0%)"));
+  EXPECT_TRUE(has(svg, "#d62728"));
+}
+
+TEST(CoverageSvg, NotCountedSaysWhy) {
+  const verify::Coverage coverage = testing::failing_input().coverage[1];
+  const std::string svg = coverage_svg(coverage);
+  EXPECT_TRUE(well_formed_xml(svg));
+  EXPECT_TRUE(has(svg, "not counted: slope is a real variable"));
+  EXPECT_TRUE(has(svg, "retract — Arm2: never selected"));
+  EXPECT_TRUE(has(svg, "reach — Arm1: selected in some state"));
+}
+
+TEST(CoverageSvg, EscapesNames) {
+  verify::Coverage coverage = testing::failing_input().coverage[0];
+  coverage.adaptable = "nav<&>";
+  coverage.alternatives[0].name = "a\"b";
+  const std::string svg = coverage_svg(coverage);
+  EXPECT_TRUE(well_formed_xml(svg));
+  EXPECT_TRUE(has(svg, "nav&lt;&amp;&gt;"));
+}
+
+TEST(CoverageMapSvg, BooleanNodeShowsEachState) {
+  const load::Mission mission = msl_mission(false);
+  const std::string svg = coverage_map_svg(mission, testing::failing_input().coverage[0]);
+  ASSERT_FALSE(svg.empty());
+  EXPECT_TRUE(well_formed_xml(svg));
+  EXPECT_TRUE(has(svg, "OnDust = true, OnRocks = true: on_dust; two or more guards hold"));
+  EXPECT_TRUE(has(svg, "OnDust = false, OnRocks = true: on_rocks<"));
+  EXPECT_TRUE(has(svg, "OnDust = false, OnRocks = false: gap<"));
+  EXPECT_TRUE(has(svg, "<circle")) << "the overlap cell is marked";
+}
+
+TEST(CoverageMapSvg, AssumptionsGreyOutImpossibleStates) {
+  const load::Mission mission = msl_mission(true);
+  const std::string svg = coverage_map_svg(mission, testing::failing_input().coverage[0]);
+  EXPECT_TRUE(has(svg, "OnDust = true, OnRocks = true: outside the domain"));
+  EXPECT_FALSE(has(svg, "<circle"));
+}
+
+TEST(CoverageMapSvg, NumericGuardsAreSampled) {
+  const load::Mission mission = exploration_mission();
+  const std::string svg = coverage_map_svg(mission, exploration_coverage());
+  ASSERT_FALSE(svg.empty());
+  EXPECT_TRUE(well_formed_xml(svg));
+  // 32 x 32 cells over battery [0, 100] and slope [-45, 45].
+  EXPECT_EQ(count(svg, "<g><title>battery = "), 32u * 32u);
+  EXPECT_TRUE(has(svg, ": sand_alternative<"));
+  EXPECT_TRUE(has(svg, ": rocks_alternative<"));
+  EXPECT_TRUE(has(svg, ": gap<"));
+  EXPECT_TRUE(has(svg, "sand_alternative; two or more guards hold"));
+  EXPECT_TRUE(has(svg, "numeric cells evaluated at their centre"));
+  // battery 1 (cell 0 of 0..100 in 32 steps) and slope -43.59 (cell 0): no guard holds there.
+  EXPECT_TRUE(has(svg, "battery = 1, slope = -43.59: gap<"));
+}
+
+TEST(CoverageMapSvg, ChoosesTheAxesThatExplainMostCells) {
+  // The shipped exploration mission: terrain decides between sand and rocks, slope bounds both,
+  // battery matters only on sand. Over slope x terrain only a few cells depend on battery.
+  load::Mission mission = exploration_mission();
+  fretish::Variable terrain = variable("terrain", fretish::VarType::enumeration);
+  terrain.enum_values = {"sand", "rocks", "unknown"};
+  mission.domain.variables.push_back(terrain);
+  auto is = [](const char* literal) {
+    return make_expr(ExprKind::eq, {make_identifier("terrain"), make_identifier(literal)});
+  };
+  mission.selections[0].guard =
+      make_expr(ExprKind::logical_and,
+                {is("sand"), make_expr(ExprKind::le, {make_identifier("slope"), make_number("15")}),
+                 make_expr(ExprKind::ge, {make_identifier("battery"), make_number("40")})});
+  mission.selections[1].guard = make_expr(
+      ExprKind::logical_or,
+      {is("rocks"), make_expr(ExprKind::gt, {make_identifier("slope"), make_number("15")})});
+  const std::string svg = coverage_map_svg(mission, exploration_coverage());
+  ASSERT_FALSE(svg.empty());
+  EXPECT_TRUE(has(svg, "<title>Selected alternative of exploration over slope and terrain</title>"))
+      << svg.substr(0, 400);
+  EXPECT_TRUE(has(svg,
+                  "slope = -1.406, terrain = sand: sand_alternative or gap (depends on the "
+                  "other variables)"));
+  EXPECT_TRUE(has(svg, "slope = -1.406, terrain = rocks: rocks_alternative<"));
+  EXPECT_TRUE(has(svg, "slope = 43.59, terrain = sand: rocks_alternative<"));
+}
+
+TEST(CoverageMapSvg, NeedsTwoVariables) {
+  load::Mission mission = msl_mission(false);
+  mission.selections.pop_back();
+  EXPECT_EQ(coverage_map_svg(mission, testing::failing_input().coverage[0]), "");
+}
+
+}  // namespace
+}  // namespace uabt::report

@@ -1,0 +1,76 @@
+// guard-vacuous-atom: atoms a constant can stand for under the domain.
+#include <gtest/gtest.h>
+
+#include "verify/mission_builder.hpp"
+
+namespace uabt::testing {
+namespace {
+
+const char* const kDefault = "Safe: In exploration Mission shall satisfy selected_alt = explore\n";
+
+TEST(Vacuity, WeakerThresholdInAConjunctionIsVacuous) {
+  const load::Mission m = make_mission(
+      std::string("Low: In exploration if battery < 20 & battery < 30 Mission shall satisfy "
+                  "selected_alt = nav_to_base\n") +
+          kDefault,
+      "integer battery in [0, 100]\n");
+  const verify::Result r = verify_checked(m);
+  const auto vacuous = findings_of(r, "guard-vacuous-atom");
+  ASSERT_EQ(vacuous.size(), 1u);
+  EXPECT_EQ(vacuous[0]->severity, Severity::warning);
+  EXPECT_EQ(vacuous[0]->requirements, (std::vector<std::string>{"Low"}));
+  EXPECT_NE(vacuous[0]->message.find("'battery < 30'"), std::string::npos);
+  EXPECT_NE(vacuous[0]->message.find("replaced by true"), std::string::npos);
+  EXPECT_EQ(vacuous[0]->location.line, 1);
+  // The atom's own column: "Low: In exploration if battery < 20 & " is 38 characters.
+  EXPECT_EQ(vacuous[0]->location.column, 39);
+}
+
+TEST(Vacuity, AssumptionMakesANegatedAtomVacuous) {
+  const std::string reqs = std::string(
+                               "R1: In exploration if OnDust & !OnRocks Mission shall satisfy "
+                               "selected_alt = on_dust\n") +
+                           kDefault;
+  EXPECT_TRUE(findings_of(verify_checked(make_mission(reqs)), "guard-vacuous-atom").empty());
+  const load::Mission m =
+      make_mission(reqs, "boolean OnDust, OnRocks\nassume one_terrain: !(OnDust & OnRocks)\n");
+  const verify::Result r = verify_checked(m);
+  const auto vacuous = findings_of(r, "guard-vacuous-atom");
+  ASSERT_EQ(vacuous.size(), 1u);
+  EXPECT_NE(vacuous[0]->message.find("'OnRocks'"), std::string::npos);
+  EXPECT_NE(vacuous[0]->message.find("replaced by false"), std::string::npos);
+}
+
+TEST(Vacuity, AbsorbedOccurrencesAreVacuousButTheFirstIsNot) {
+  const load::Mission m = make_mission(
+      std::string("R1: In exploration if A | (A & B) Mission shall satisfy selected_alt = a\n") +
+      kDefault);
+  const verify::Result r = verify_checked(m);
+  const auto vacuous = findings_of(r, "guard-vacuous-atom");
+  ASSERT_EQ(vacuous.size(), 2u);
+  std::set<int> columns;
+  for (const auto* f : vacuous) columns.insert(f->location.column);
+  // "R1: In exploration if " is 22 characters: A at 23, the second A at 28, B at 32.
+  EXPECT_EQ(columns, (std::set<int>{28, 32}));
+}
+
+TEST(Vacuity, IndependentBooleansNeedNoSolverCall) {
+  const load::Mission m = make_mission(
+      std::string("R1: In exploration if (A | B) & !C Mission shall satisfy selected_alt = a\n") +
+      kDefault);
+  const verify::Result r = verify_checked(m);
+  EXPECT_TRUE(r.findings.empty());
+  EXPECT_GE(r.statistics.prefiltered, 3u);
+}
+
+TEST(Vacuity, EveryAtomOfARealGuardMatters) {
+  const load::Mission m = make_mission(
+      std::string("R1: In exploration if slope > 10 & (battery < 20 | OnRocks) Mission shall "
+                  "satisfy selected_alt = a\n") +
+          kDefault,
+      "real slope in [-45, 45]\ninteger battery in [0, 100]\nboolean OnRocks\n");
+  EXPECT_TRUE(findings_of(verify_checked(m), "guard-vacuous-atom").empty());
+}
+
+}  // namespace
+}  // namespace uabt::testing
