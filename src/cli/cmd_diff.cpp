@@ -17,10 +17,16 @@ void register_diff(CLI::App& app, int& exit_code) {
     unsigned timeout_ms = 10000;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("diff", "Which states change their selected alternative between two versions");
-  cmd->add_option("OLD", args->before, "mission directory as it runs now")->required()->check(CLI::ExistingPath);
-  cmd->add_option("NEW", args->after, "mission directory as uplinked")->required()->check(CLI::ExistingPath);
-  cmd->add_option("--format", args->format, "output format")->check(CLI::IsMember({"text", "json"}));
+  CLI::App* cmd = app.add_subcommand(
+      "diff", "Which states change their selected alternative between two versions");
+  cmd->add_option("OLD", args->before, "mission directory as it runs now")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("NEW", args->after, "mission directory as uplinked")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("--format", args->format, "output format")
+      ->check(CLI::IsMember({"text", "json"}));
   cmd->add_option("-o,--output", args->output, "write to FILE instead of standard output");
   cmd->add_option("--timeout-ms", args->timeout_ms, "solver time limit per query");
   cmd->callback([args, &exit_code] {
@@ -39,7 +45,8 @@ void register_diff(CLI::App& app, int& exit_code) {
     verify::Options options;
     options.timeout_ms = args->timeout_ms;
     verify::Impact impact = verify::selection_impact(*before, *after, options);
-    emit(args->output, args->format == "json" ? report::impact_json(impact) : report::impact_text(impact));
+    emit(args->output,
+         args->format == "json" ? report::impact_json(impact) : report::impact_text(impact));
     exit_code = has_errors(impact.findings) ? kExitFail : kExitPass;
   });
 }

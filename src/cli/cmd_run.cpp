@@ -16,14 +16,22 @@ void register_run(CLI::App& app, int& exit_code) {
     std::int64_t max_ticks = 0;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("run", "Run the mission in a simulated world; uplinks go through the gate");
-  cmd->add_option("MISSION", args->mission, "mission directory")->required()->check(CLI::ExistingDirectory);
-  cmd->add_option("--scenario", args->scenario, "scenario JSON (DESIGN §8)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--uplink", args->uplinks, "TICK:DIR — an uplink package, relative to the mission, arriving before tick TICK");
+  CLI::App* cmd = app.add_subcommand(
+      "run", "Run the mission in a simulated world; uplinks go through the gate");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--scenario", args->scenario, "scenario JSON (DESIGN §8)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option(
+      "--uplink", args->uplinks,
+      "TICK:DIR — an uplink package, relative to the mission, arriving before tick TICK");
   cmd->add_option("--trace", args->trace, "write the trace as JSON lines to FILE");
   cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
       ->check(CLI::IsMember({"sequence", "reactive"}));
-  cmd->add_option("--max-ticks", args->max_ticks, "stop after this many ticks (default: the scenario's)");
+  cmd->add_option("--max-ticks", args->max_ticks,
+                  "stop after this many ticks (default: the scenario's)");
   cmd->callback([args, &exit_code] {
     try {
       runtime::Scenario scenario = runtime::load_scenario(args->scenario);
@@ -48,8 +56,10 @@ void register_run(CLI::App& app, int& exit_code) {
       }
       runtime::ManagerRun run = manager.run();
       std::cout << runtime::trace_summary(run);
-      if (!args->trace.empty()) write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
-      exit_code = run.finished && run.status == runtime::NodeStatus::success ? kExitPass : kExitFail;
+      if (!args->trace.empty())
+        write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
+      exit_code =
+          run.finished && run.status == runtime::NodeStatus::success ? kExitPass : kExitFail;
     } catch (const std::exception& e) {
       std::cerr << "uabt: " << e.what() << "\n";
       exit_code = kExitFail;

@@ -42,6 +42,7 @@ void register_verify(CLI::App& app, int& exit_code) {
     input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
     sort_findings(input.findings);
     input.coverage = std::move(result.coverage);
+    input.uri_prefix = uri_prefix_of(args->mission);
     exit_code = write_findings(input, args->format, args->output);
   });
 }

@@ -202,7 +202,14 @@ void print(const Expr& e, std::string& out) {
       return;
     case ExprKind::logical_not:
       out += '!';
-      if (!e.args.empty()) print_operand(*e.args[0], kNot, out);
+      // `!x < 20` already means !(x < 20), but nobody should have to know that to read it.
+      if (!e.args.empty() && is_relation(e.args[0]->kind)) {
+        out += '(';
+        print(*e.args[0], out);
+        out += ')';
+      } else if (!e.args.empty()) {
+        print_operand(*e.args[0], kNot, out);
+      }
       return;
     case ExprKind::negate:
       out += '-';

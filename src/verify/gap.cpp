@@ -128,7 +128,6 @@ void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
     f.alternatives.push_back(g.requirement->alternative);
   }
   f.witness = witness;
-  f.notes.push_back("for example " + describe_state(witness));
   for (const auto& cube : region) f.notes.push_back("uncovered: " + cube);
   if (!more.empty()) {
     f.notes.push_back("uncovered: " + more);

@@ -35,7 +35,6 @@ void check_overlaps(Node& node, Session& session) {
       f.requirements = {a.requirement->id, b.requirement->id};
       f.alternatives = {a.requirement->alternative, b.requirement->alternative};
       f.witness = witness;
-      f.notes.push_back("for example " + describe_state(witness));
       f.notes.push_back("if " + a.requirement->alternative +
                         " fails there, the Fallback falls through to " +
                         b.requirement->alternative);

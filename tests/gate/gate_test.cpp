@@ -121,7 +121,8 @@ TEST(Gate, InconclusiveFailsClosed) {
        {"domain.fret", "integer x\ninteger y\ninteger z\n"},
        {"requirements.fret",
         // Fermat's cubes: beyond what the solver decides in a few milliseconds.
-        "R: In nav if x*x*x + y*y*y = z*z*z & x > 1 & y > 1 Mission shall satisfy selected_alt = a\n"
+        "R: In nav if x*x*x + y*y*y = z*z*z & x > 1 & y > 1 Mission shall satisfy selected_alt = "
+        "a\n"
         "D: In nav Mission shall satisfy selected_alt = a\n"},
        {"alternatives/nav/a.xml", uabt::testing::alternative_tree("a")}});
   Options options;

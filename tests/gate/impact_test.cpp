@@ -10,7 +10,8 @@
 namespace uabt::verify {
 namespace {
 
-load::Mission load(const std::filesystem::path& dir, std::vector<std::filesystem::path> uplinks = {}) {
+load::Mission load(const std::filesystem::path& dir,
+                   std::vector<std::filesystem::path> uplinks = {}) {
   std::string error;
   load::LoadOptions options;
   options.uplinks = std::move(uplinks);

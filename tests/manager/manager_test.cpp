@@ -6,7 +6,9 @@
 namespace uabt::runtime {
 namespace {
 
-std::filesystem::path curiosity() { return uabt::testing::mission_dir("msl_curiosity"); }
+std::filesystem::path curiosity() {
+  return uabt::testing::mission_dir("msl_curiosity");
+}
 
 ManagerRun run_scenario(const std::string& name, compile::SelectionStyle style,
                         std::vector<std::pair<std::int64_t, std::string>> uplinks = {}) {

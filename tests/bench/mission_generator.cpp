@@ -1,0 +1,118 @@
+#include "mission_generator.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace uabt::bench {
+namespace {
+
+void write_file(const std::filesystem::path& path, const std::string& content) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << content;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string node_name(int i) { return "node" + std::to_string(i); }
+std::string alt_name(int i, int j) { return "n" + std::to_string(i) + "_alt" + std::to_string(j); }
+std::string req_id(int i, int j) { return "N" + std::to_string(i) + "A" + std::to_string(j); }
+
+// Guard of alternative j (j < K-1) of node i: pairwise disjoint over the node's variable.
+std::string guard(int i, int j) {
+  const std::string n = std::to_string(i);
+  const std::string a = std::to_string(j);
+  switch (i % 4) {
+    case 0:
+      return "mode_" + n + " = m" + n + "_l" + a;
+    case 1:
+      return "x_" + n + " >= " + std::to_string(10 * j) + " & x_" + n + " < " +
+             std::to_string(10 * j + 10);
+    case 2:
+      return "r_" + n + " >= " + a + " & r_" + n + " < " + std::to_string(j + 1);
+    default:
+      return "mode_" + n + " = m" + n + "_l" + a + " & ok_" + n;
+  }
+}
+
+// Domain declarations of node i; each leaves room for the default (a literal, or values
+// outside every interval).
+std::string declarations(int i, int k) {
+  const std::string n = std::to_string(i);
+  switch (i % 4) {
+    case 1:
+      return "integer x_" + n + " in [-1, " + std::to_string(10 * k) + "]\n";
+    case 2:
+      return "real r_" + n + " in [-1, " + std::to_string(k) + "]\n";
+    default: {
+      std::string s = "enum mode_" + n + " in {";
+      for (int j = 0; j < k; ++j) s += (j ? ", m" : "m") + n + "_l" + std::to_string(j);
+      s += "}\n";
+      if (i % 4 == 3) s += "boolean ok_" + n + "\n";
+      return s;
+    }
+  }
+}
+
+std::string alternative_xml(const std::string& id) {
+  return "<root BTCPP_format=\"4\" main_tree_to_execute=\"" + id + "\">\n  <BehaviorTree ID=\"" +
+         id + "\">\n    <AlwaysSuccess/>\n  </BehaviorTree>\n</root>\n";
+}
+
+}  // namespace
+
+GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes,
+                                  int alternatives, GeneratorMode mode) {
+  const int k = alternatives;
+  const bool planted = mode == GeneratorMode::planted;
+  if (nodes < 1 || k < 2) throw std::invalid_argument("need nodes >= 1 and alternatives >= 2");
+  if (planted && (nodes < 3 || k < 4))
+    throw std::invalid_argument("planted missions need nodes >= 3 and alternatives >= 4");
+
+  GeneratedMission result;
+  result.dir = parent / ("gen_" + std::string(planted ? "planted_" : "partition_") +
+                         std::to_string(nodes) + "x" + std::to_string(k));
+  std::filesystem::remove_all(result.dir);
+
+  std::ostringstream mission, requirements, domain;
+  mission << "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
+          << "  <BehaviorTree ID=\"MainTree\">\n    <Sequence>\n";
+  for (int i = 0; i < nodes; ++i) {
+    mission << "      <Adaptable ID=\"" << node_name(i) << "\"/>\n";
+    domain << declarations(i, k);
+    const bool overlap_node = planted && i == 0;
+    const bool gap_node = planted && i == 1;
+    const bool shadow_node = planted && i == 2;
+    for (int j = 0; j < k; ++j) {
+      const bool is_default = j == k - 1;
+      if (is_default && gap_node) continue;  // no default: the last literal/interval is a gap
+      std::string g;
+      if (!is_default) g = guard(i, j);
+      if (overlap_node && j == 1) g = "(" + guard(i, 1) + ") | (" + guard(i, 0) + ")";
+      if (shadow_node && j == k - 2) g = guard(i, 0);  // hidden by alternative 0
+      requirements << req_id(i, j) << ": In " << node_name(i);
+      if (!g.empty()) requirements << " if " << g;
+      requirements << " Mission shall satisfy selected_alt = " << alt_name(i, j) << "\n";
+      write_file(result.dir / "alternatives" / node_name(i) / (alt_name(i, j) + ".xml"),
+                 alternative_xml(alt_name(i, j)));
+    }
+  }
+  mission << "    </Sequence>\n  </BehaviorTree>\n</root>\n";
+  write_file(result.dir / "mission.xml", mission.str());
+  write_file(result.dir / "requirements.fret", requirements.str());
+  write_file(result.dir / "domain.fret", domain.str());
+
+  if (planted) {
+    result.expected = {
+        {"guard-overlap", node_name(0), {req_id(0, 0), req_id(0, 1)}},
+        {"guard-gap", node_name(1), {}},
+        {"guard-overlap", node_name(2), {req_id(2, 0), req_id(2, k - 2)}},
+        {"guard-shadowed", node_name(2), {req_id(2, 0), req_id(2, k - 2)}},
+    };
+    for (auto& e : result.expected) std::sort(e.requirements.begin(), e.requirements.end());
+  }
+  return result;
+}
+
+}  // namespace uabt::bench
