@@ -11,16 +11,16 @@
 
 namespace {
 
-struct Run {
+struct CliRun {
   int exit_code = -1;
   std::string out;  // stdout and stderr together
 };
 
 // Runs the real binary from the source directory, as a user or CI would.
-Run uabt(const std::string& args) {
+CliRun uabt(const std::string& args) {
   const std::string command = "cd '" + uabt::testing::source_dir().string() + "' && '" +
                               UABT_BINARY + "' " + args + " 2>&1";
-  Run run;
+  CliRun run;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return run;
   std::array<char, 4096> buffer{};
@@ -39,9 +39,9 @@ std::string read(const std::filesystem::path& p) {
 
 TEST(Cli, GatePassesOnCuriosityAndFailsOnThePapersRequirements) {
   uabt::testing::TempMission out({});
-  Run pass = uabt("gate missions/msl_curiosity --out '" + (out.dir() / "a").string() + "'");
+  CliRun pass = uabt("gate missions/msl_curiosity --out '" + (out.dir() / "a").string() + "'");
   EXPECT_EQ(pass.exit_code, 0) << pass.out;
-  Run fail = uabt("gate missions/msl_curiosity_paper --out '" + (out.dir() / "b").string() + "'");
+  CliRun fail = uabt("gate missions/msl_curiosity_paper --out '" + (out.dir() / "b").string() + "'");
   EXPECT_EQ(fail.exit_code, 1) << fail.out;
   EXPECT_NE(fail.out.find("requirements.fret:5:7: error:"), std::string::npos) << fail.out;
   EXPECT_NE(fail.out.find("[guard-overlap]"), std::string::npos);
@@ -60,7 +60,7 @@ TEST(Cli, MissingPathAndBadOptionsExitTwo) {
 }
 
 TEST(Cli, VerifyJsonFollowsTheContract) {
-  Run run = uabt("verify missions/msl_curiosity_paper --format json");
+  CliRun run = uabt("verify missions/msl_curiosity_paper --format json");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.out.find("\"verdict\": \"fail\""), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("\"check\": \"guard-overlap\""), std::string::npos);
@@ -68,14 +68,14 @@ TEST(Cli, VerifyJsonFollowsTheContract) {
 }
 
 TEST(Cli, AllowOverlapTurnsOverlapIntoAWarning) {
-  Run run = uabt("verify missions/msl_curiosity_paper --allow-overlap");
+  CliRun run = uabt("verify missions/msl_curiosity_paper --allow-overlap");
   EXPECT_EQ(run.exit_code, 1) << "the gap is still an error";
   EXPECT_NE(run.out.find("warning:"), std::string::npos) << run.out;
   EXPECT_EQ(run.out.find("error: Req1 (on_dust) and Req2"), std::string::npos) << run.out;
 }
 
 TEST(Cli, CompileToStdoutIsTheGoldenTree) {
-  Run run = uabt("compile missions/msl_curiosity");
+  CliRun run = uabt("compile missions/msl_curiosity");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(run.out, read(uabt::testing::source_dir() / "tests/compile/golden/msl_curiosity.xml"));
 }
@@ -87,29 +87,29 @@ TEST(Cli, ConformAcceptsTheCompiledTreeAndThePapersGeneratedTree) {
   EXPECT_EQ(uabt("conform missions/exploration '" + compiled + "'").exit_code, 0);
   const auto replication = uabt::testing::replication_dir();
   if (!std::filesystem::exists(replication)) GTEST_SKIP();
-  Run paper = uabt("conform '" + replication.string() + "' '" +
+  CliRun paper = uabt("conform '" + replication.string() + "' '" +
                    (replication / "output/concrete_mission.xml").string() + "'");
   EXPECT_EQ(paper.exit_code, 0) << paper.out;
 }
 
 TEST(Cli, ExplainPrintsTheCheckDocumentation) {
-  Run run = uabt("explain guard-overlap");
+  CliRun run = uabt("explain guard-overlap");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("## Why this matters"), std::string::npos);
   EXPECT_NE(run.out.find("## How to fix it"), std::string::npos);
-  Run list = uabt("explain");
+  CliRun list = uabt("explain");
   EXPECT_NE(list.out.find("guard-gap (error, verify)"), std::string::npos) << list.out;
 }
 
 TEST(Cli, DiffShowsTheMudUplinkImpact) {
   // A copy of the mission with the uplink merged in by hand is the uplinked version.
-  Run run = uabt("diff missions/msl_curiosity missions/msl_curiosity");
+  CliRun run = uabt("diff missions/msl_curiosity missions/msl_curiosity");
   EXPECT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("navigation: unchanged"), std::string::npos) << run.out;
 }
 
 TEST(Cli, RunTheCuriosityStory) {
-  Run run = uabt(
+  CliRun run = uabt(
       "run missions/msl_curiosity --selection reactive --scenario "
       "missions/msl_curiosity/scenarios/mud_uplink.json");
   EXPECT_EQ(run.exit_code, 0) << run.out;

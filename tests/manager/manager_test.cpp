@@ -78,9 +78,12 @@ TEST(Manager, MudUplinkIsGatedSwappedAndCompletesTheMission) {
     ASSERT_FALSE(alternatives.empty());
     EXPECT_EQ(alternatives.front(), "on_rocks");
     EXPECT_EQ(alternatives.back(), "on_mud") << trace_summary(run);
-    EXPECT_NE(std::find(alternatives.begin(), alternatives.end(), "hold_position"),
-              alternatives.end())
-        << "mud is unknown until the uplink: the safe default holds the rover";
+    // Reactive: mud pre-empts on_rocks and, unknown until the uplink, gets the safe default.
+    // Sequence: on_rocks keeps driving until the swap halts it.
+    const bool held =
+        std::find(alternatives.begin(), alternatives.end(), "hold_position") != alternatives.end();
+    EXPECT_EQ(held, style == compile::SelectionStyle::reactive) << trace_summary(run);
+    EXPECT_EQ(uplink->halted, 1u) << "the running navigation instance is halted and rebuilt";
     EXPECT_EQ(run.accepted_uplinks, std::vector<std::string>{"uplinks/on_mud"});
     EXPECT_EQ(run.status, NodeStatus::success) << trace_summary(run);
   }
