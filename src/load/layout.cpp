@@ -62,8 +62,10 @@ std::vector<AlternativeFile> replication_alternatives(const fs::path& root) {
   return out;
 }
 
+// Present in any form: a directory where a file belongs must be reported, not ignored.
 std::optional<fs::path> optional_file(const fs::path& p) {
-  if (is_file(p)) return p;
+  std::error_code ec;
+  if (fs::exists(p, ec)) return p;
   return std::nullopt;
 }
 

@@ -93,7 +93,7 @@ struct LeafLogEntry {
 // false. The SubTree scopes do not matter: the world's state lives in the root scope.
 //
 // Leaves with ports: `<IsArmInPosition function="drilling"/>` reads the state key
-// "IsArmInPosition(function=drilling)" when the scenario has it, else "IsArmInPosition".
+// "IsArmInPosition(function=drilling)" when it is set, else "IsArmInPosition".
 // Several ports are listed sorted by name and comma-separated, with the value a `{key}` port
 // currently reads. Actions are looked up the same way in "actions".
 //
@@ -102,6 +102,8 @@ struct LeafLogEntry {
 class SimWorld : public World {
  public:
   explicit SimWorld(Scenario scenario, std::vector<bt::NodeModel> robot_nodes = {});
+  SimWorld(const SimWorld&) = delete;  // leaves point into scenario_
+  SimWorld& operator=(const SimWorld&) = delete;
 
   // Writes the scenario's initial state into the root scope.
   void apply_initial(Blackboard& blackboard) const;

@@ -38,7 +38,7 @@ class Typing {
 
 // Type checks a condition (a guard or an assumption) against the domain and records the type
 // of each node in `typing`. Mismatches become `ref-type-mismatch` errors, a division by a
-// literal zero an `arith-division-by-zero` warning, each at the offending sub-expression of
+// literal zero an `arith-division-by-zero` error, each at the offending sub-expression of
 // `file`. Returns true when the condition is well typed (warnings allowed).
 bool check_condition(const fretish::Expr& condition, const fretish::Domain& domain,
                      const SourceLocation& where, Typing& typing, std::vector<Finding>& findings);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,24 +16,34 @@ void write_file(const std::filesystem::path& path, const std::string& content) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
-std::string node_name(int i) { return "node" + std::to_string(i); }
-std::string alt_name(int i, int j) { return "n" + std::to_string(i) + "_alt" + std::to_string(j); }
-std::string req_id(int i, int j) { return "N" + std::to_string(i) + "A" + std::to_string(j); }
+// Concatenation by append: GCC 12 warns (-Wrestrict, a false positive) on "literal" + string.
+std::string cat(std::initializer_list<std::string> parts) {
+  std::string s;
+  for (const auto& p : parts) s += p;
+  return s;
+}
+
+std::string node_name(int i) {
+  return cat({"node", std::to_string(i)});
+}
+std::string alt_name(int i, int j) {
+  return cat({"n", std::to_string(i), "_alt", std::to_string(j)});
+}
+std::string req_id(int i, int j) {
+  return cat({"N", std::to_string(i), "A", std::to_string(j)});
+}
 
 // Guard of alternative j (j < K-1) of node i: pairwise disjoint over the node's variable.
 std::string guard(int i, int j) {
   const std::string n = std::to_string(i);
   const std::string a = std::to_string(j);
   switch (i % 4) {
-    case 0:
-      return "mode_" + n + " = m" + n + "_l" + a;
+    case 0: return "mode_" + n + " = m" + n + "_l" + a;
     case 1:
       return "x_" + n + " >= " + std::to_string(10 * j) + " & x_" + n + " < " +
              std::to_string(10 * j + 10);
-    case 2:
-      return "r_" + n + " >= " + a + " & r_" + n + " < " + std::to_string(j + 1);
-    default:
-      return "mode_" + n + " = m" + n + "_l" + a + " & ok_" + n;
+    case 2: return "r_" + n + " >= " + a + " & r_" + n + " < " + std::to_string(j + 1);
+    default: return "mode_" + n + " = m" + n + "_l" + a + " & ok_" + n;
   }
 }
 
@@ -41,10 +52,8 @@ std::string guard(int i, int j) {
 std::string declarations(int i, int k) {
   const std::string n = std::to_string(i);
   switch (i % 4) {
-    case 1:
-      return "integer x_" + n + " in [-1, " + std::to_string(10 * k) + "]\n";
-    case 2:
-      return "real r_" + n + " in [-1, " + std::to_string(k) + "]\n";
+    case 1: return "integer x_" + n + " in [-1, " + std::to_string(10 * k) + "]\n";
+    case 2: return "real r_" + n + " in [-1, " + std::to_string(k) + "]\n";
     default: {
       std::string s = "enum mode_" + n + " in {";
       for (int j = 0; j < k; ++j) s += (j ? ", m" : "m") + n + "_l" + std::to_string(j);
@@ -62,8 +71,8 @@ std::string alternative_xml(const std::string& id) {
 
 }  // namespace
 
-GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes,
-                                  int alternatives, GeneratorMode mode) {
+GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes, int alternatives,
+                                  GeneratorMode mode) {
   const int k = alternatives;
   const bool planted = mode == GeneratorMode::planted;
   if (nodes < 1 || k < 2) throw std::invalid_argument("need nodes >= 1 and alternatives >= 2");
@@ -71,8 +80,8 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
     throw std::invalid_argument("planted missions need nodes >= 3 and alternatives >= 4");
 
   GeneratedMission result;
-  result.dir = parent / ("gen_" + std::string(planted ? "planted_" : "partition_") +
-                         std::to_string(nodes) + "x" + std::to_string(k));
+  result.dir = parent / cat({"gen_", planted ? "planted_" : "partition_", std::to_string(nodes),
+                             "x", std::to_string(k)});
   std::filesystem::remove_all(result.dir);
 
   std::ostringstream mission, requirements, domain;
@@ -89,7 +98,7 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
       if (is_default && gap_node) continue;  // no default: the last literal/interval is a gap
       std::string g;
       if (!is_default) g = guard(i, j);
-      if (overlap_node && j == 1) g = "(" + guard(i, 1) + ") | (" + guard(i, 0) + ")";
+      if (overlap_node && j == 1) g = cat({"(", guard(i, 1), ") | (", guard(i, 0), ")"});
       if (shadow_node && j == k - 2) g = guard(i, 0);  // hidden by alternative 0
       requirements << req_id(i, j) << ": In " << node_name(i);
       if (!g.empty()) requirements << " if " << g;

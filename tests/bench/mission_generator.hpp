@@ -28,7 +28,7 @@ struct GeneratedMission {
 // a bounded integer, a bounded real, an enumeration conjoined with a boolean. Planted missions
 // need nodes >= 3 and alternatives >= 4: node 0 gets an overlap, node 1 a gap (no default),
 // node 2 a shadowed guard (which also overlaps the guard that hides it).
-GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes,
-                                  int alternatives, GeneratorMode mode);
+GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes, int alternatives,
+                                  GeneratorMode mode);
 
 }  // namespace uabt::bench

@@ -33,8 +33,8 @@ TEST(ScriptParse, LogicalOperatorsShareOneLevelLeftToRight) {
   // BT.CPP's grammar: a || b && c is (a || b) && c.
   EXPECT_EQ(read("battery < 1 || battery > 5 && slope > 0"),
             "(battery < 1 | battery > 5) & slope > 0");
-  // FRETISH's ! binds looser than a relation: this is !(battery < 20).
-  EXPECT_EQ(read("!(battery < 20)"), "!battery < 20");
+  // A negated relation keeps its parentheses when printed, for the reader's sake.
+  EXPECT_EQ(read("!(battery < 20)"), "!(battery < 20)");
   EXPECT_EQ(read("true && battery<2"), "true & battery < 2");
 }
 

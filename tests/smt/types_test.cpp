@@ -126,12 +126,14 @@ TEST_F(TypesTest, MismatchIsLocatedAtTheOffendingSubExpression) {
   expect_mismatch("OnDust & terrain < 2", "'<' needs numbers", 10);
 }
 
-TEST_F(TypesTest, DivisionByLiteralZeroIsAWarningNotAnError) {
+TEST_F(TypesTest, DivisionByLiteralZeroIsAnErrorButStillTyped) {
+  // Well typed (the solver can still reason about the rest), but a guard that divides by zero
+  // means nothing on board: the finding is an error, so the gate fails closed.
   const Checked c = check(expr("battery / 0 > 2"), d);
   EXPECT_TRUE(c.ok);
   ASSERT_EQ(c.findings.size(), 1u);
   EXPECT_EQ(c.findings[0].check, "arith-division-by-zero");
-  EXPECT_EQ(c.findings[0].severity, Severity::warning);
+  EXPECT_EQ(c.findings[0].severity, Severity::error);
   EXPECT_TRUE(check(expr("battery / 2 > 2"), d).findings.empty());
 }
 
