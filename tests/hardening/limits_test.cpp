@@ -316,7 +316,9 @@ TEST(Limits, DeepGuardStaysLoadableByBehaviorTreeCpp) {
   ASSERT_TRUE(run.outcome.has_value());
   EXPECT_FALSE(run.passed()) << run.text();
   for (const Finding& f : run.findings())
-    if (f.severity == Severity::error) EXPECT_FALSE(f.location.file.empty()) << f.message;
+    if (f.severity == Severity::error) {
+      EXPECT_FALSE(f.location.file.empty()) << f.message;
+    }
 }
 
 }  // namespace

@@ -30,11 +30,12 @@
 namespace uabt::testing {
 namespace {
 
-// --- the state space: b0, b1, b2 booleans, mode in {m0, m1, m2}, lvl in [0, 4] ---------------
+// --- the state space: b0, b1, b2 booleans, terrain in {dust, rocks, sand}, lvl in [0, 4] ------
 
 constexpr int kBooleans = 3;
 constexpr int kModes = 3;
 constexpr int kLevels = 5;
+const char* const kTerrains[kModes] = {"dust", "rocks", "sand"};
 
 struct S {
   bool b[kBooleans] = {};
@@ -58,14 +59,14 @@ std::vector<S> all_states() {
 
 const char* kDomain =
     "boolean b0, b1, b2\n"
-    "enum mode in {m0, m1, m2}\n"
+    "enum gear in {m0, m1, m2}\n"
     "integer lvl in [0, 4]\n";
 
 State to_state(const S& s) {
   State out;
   for (int k = 0; k < kBooleans; ++k)
     out.emplace_back("b" + std::to_string(k), Value::of_bool(s.b[k]));
-  out.emplace_back("mode", Value::of_enum("m" + std::to_string(s.mode)));
+  out.emplace_back("gear", Value::of_enum("m" + std::to_string(s.mode)));
   out.emplace_back("lvl", Value::of_int(s.lvl));
   return out;
 }
@@ -93,7 +94,7 @@ class Random {
 Atom random_atom(Random& r) {
   const int k = r.below(kLevels);
   const int m = r.below(kModes);
-  const std::string ks = std::to_string(k), ms = "m" + std::to_string(m);
+  const std::string ks = std::to_string(k), ms = kTerrains[m];
   switch (r.below(12)) {
     case 0:
     case 1:
@@ -102,9 +103,9 @@ Atom random_atom(Random& r) {
       return {
           "b" + std::to_string(b), [b](const S& s) { return s.b[b]; }, {"b" + std::to_string(b)}};
     }
-    case 3: return {"mode = " + ms, [m](const S& s) { return s.mode == m; }, {"mode"}};
-    case 4: return {"mode != " + ms, [m](const S& s) { return s.mode != m; }, {"mode"}};
-    case 5: return {ms + " = mode", [m](const S& s) { return s.mode == m; }, {"mode"}};
+    case 3: return {"gear = " + ms, [m](const S& s) { return s.mode == m; }, {"gear"}};
+    case 4: return {"gear != " + ms, [m](const S& s) { return s.mode != m; }, {"gear"}};
+    case 5: return {ms + " = gear", [m](const S& s) { return s.mode == m; }, {"gear"}};
     case 6: return {"lvl < " + ks, [k](const S& s) { return s.lvl < k; }, {"lvl"}};
     case 7: return {"lvl >= " + ks, [k](const S& s) { return s.lvl >= k; }, {"lvl"}};
     case 8: return {"lvl = " + ks, [k](const S& s) { return s.lvl == k; }, {"lvl"}};
@@ -220,8 +221,8 @@ RandomMission random_mission(Random& r) {
     domain += "assume a0: !(b0 & b1)\n";
   }
   if (r.chance(25)) {
-    m.assumptions.push_back({"b2 -> mode = m0", [](const S& s) { return !s.b[2] || s.mode == 0; }});
-    domain += "assume a1: b2 -> mode = m0\n";
+    m.assumptions.push_back({"b2 -> gear = m0", [](const S& s) { return !s.b[2] || s.mode == 0; }});
+    domain += "assume a1: b2 -> gear = m0\n";
   }
   m.reactive = r.chance(30);
   m.files["mission.xml"] =
@@ -325,7 +326,7 @@ TEST(Property, CompiledSelectionPicksTheFirstRequirementThatHolds) {
       runtime::Blackboard& bb = engine.blackboard();
       for (int k = 0; k < kBooleans; ++k)
         bb.set("b" + std::to_string(k), runtime::ScriptValue::of_bool(st.b[k]));
-      bb.set("mode", runtime::ScriptValue::of_string("m" + std::to_string(st.mode)));
+      bb.set("gear", runtime::ScriptValue::of_string("m" + std::to_string(st.mode)));
       bb.set("lvl", runtime::ScriptValue::of_int(st.lvl));
       const runtime::NodeStatus status = engine.tick();
       const Req* expected = rm.selected(st);
