@@ -78,6 +78,23 @@ TEST(FuzzReplay, Pipeline) {
   replay("pipeline", "regressions", check);
 }
 
+// Found by fuzz_bt_xml (regressions/bt_xml/writer-explicit-id-not-an-xml-name.xml): the writer
+// turns <Decorator ID="Cu<x"> into the element name <Cu<x>, so its output does not parse.
+// check_structure refuses such IDs, so the gate never writes one; the fuzz check skips
+// documents with such names until src/bt/writer.cpp keeps the explicit syntax (or escapes) for
+// an ID that is not an XML name. Enable this test with that fix.
+TEST(FuzzReplay, DISABLED_WriterOutputParsesForIdsThatAreNotXmlNames) {
+  for (const fs::path& file : inputs_of("bt_xml", "regressions")) {
+    SCOPED_TRACE(file.filename().string());
+    std::vector<Finding> findings;
+    const auto doc = bt::parse_document(contents(file), "tree.xml", findings);
+    if (!doc) continue;
+    const std::string written = bt::write_document(*doc);
+    std::vector<Finding> again;
+    EXPECT_TRUE(bt::parse_document(written, "written.xml", again).has_value()) << written;
+  }
+}
+
 // The harness's fixed mission with the shipped requirements passes the gate: the pipeline
 // target reaches compile and conform, not only the loader's errors.
 TEST(FuzzReplay, PipelineHarnessMissionPasses) {

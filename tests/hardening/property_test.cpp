@@ -30,12 +30,11 @@
 namespace uabt::testing {
 namespace {
 
-// --- the state space: b0, b1, b2 booleans, terrain in {dust, rocks, sand}, lvl in [0, 4] ------
+// --- the state space: b0, b1, b2 booleans, gear in {m0, m1, m2}, lvl in [0, 4] -----------------
 
 constexpr int kBooleans = 3;
 constexpr int kModes = 3;
 constexpr int kLevels = 5;
-const char* const kTerrains[kModes] = {"dust", "rocks", "sand"};
 
 struct S {
   bool b[kBooleans] = {};
@@ -94,7 +93,7 @@ class Random {
 Atom random_atom(Random& r) {
   const int k = r.below(kLevels);
   const int m = r.below(kModes);
-  const std::string ks = std::to_string(k), ms = kTerrains[m];
+  const std::string ks = std::to_string(k), ms = "m" + std::to_string(m);
   switch (r.below(12)) {
     case 0:
     case 1:
