@@ -55,14 +55,17 @@ void write_attribute(std::string& out, const std::string& name, const std::strin
 }
 
 // Explicit syntax (<Action ID="X">) is written compact (<X>): BT.CPP 4.10 rejects explicit
-// children of a ReactiveSequence.
+// children of a ReactiveSequence. An ID that is no XML name stays explicit, or the output
+// would not parse.
 void write_node(std::string& out, const Node& node, int level) {
-  const bool explicit_syntax = is_explicit_family_tag(node.tag) && node.attribute("ID") != nullptr;
+  const bool compacted = is_explicit_family_tag(node.tag) && node.attribute("ID") != nullptr &&
+                         is_xml_name(node.kind());
+  const std::string& element = compacted ? node.kind() : node.tag;
   indent(out, level);
   out += '<';
-  out += node.kind();
+  out += element;
   for (const auto& [name, value] : node.attributes) {
-    if (explicit_syntax && name == "ID") continue;
+    if (compacted && name == "ID") continue;
     write_attribute(out, name, value);
   }
   if (node.children.empty()) {
@@ -73,9 +76,25 @@ void write_node(std::string& out, const Node& node, int level) {
   for (const Node& child : node.children) write_node(out, child, level + 1);
   indent(out, level);
   out += "</";
-  out += node.kind();
+  out += element;
   out += ">\n";
 }
+
+}  // namespace
+
+bool is_xml_name(std::string_view name) {
+  auto start = [](unsigned char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c == ':' || c >= 0x80;
+  };
+  if (name.empty() || !start(static_cast<unsigned char>(name[0]))) return false;
+  for (const char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (!start(u) && !(u >= '0' && u <= '9') && u != '.' && u != '-') return false;
+  }
+  return true;
+}
+
+namespace {
 
 bool looks_like_condition(const std::string& id) {
   for (const std::string_view prefix : {"Is", "Has", "On", "Can", "Check"}) {

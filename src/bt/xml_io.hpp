@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/finding.hpp"
@@ -30,6 +31,10 @@ struct WriteOptions {
   int format = 4;  // 4: <root BTCPP_format="4">; 3: v3 (no BTCPP_format)
   bool with_node_models = true;
 };
+
+// What tinyxml2 accepts as an element name (ASCII letters, digits, _ : . - and any byte of a
+// multi-byte UTF-8 sequence; no digit, '.' or '-' first).
+bool is_xml_name(std::string_view name);
 
 // Deterministic text: 2-space indentation, attributes in stored order, LF line ends, compact
 // syntax, <TreeNodesModel> last.

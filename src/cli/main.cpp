@@ -4,8 +4,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
+#include "smt/solver.hpp"
 
 int main(int argc, char** argv) {
+  uabt::smt::keep_freed_memory();
   CLI::App app{"uabt: compile, verify and run adaptable behavior trees"};
   app.require_subcommand(1);
   app.set_version_flag("--version", uabt::cli::tool_version());

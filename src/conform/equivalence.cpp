@@ -3,10 +3,7 @@
 namespace uabt::conform {
 
 Prover::Prover(const fretish::Domain& domain, unsigned timeout_ms)
-    : encoder_(domain), solver_(encoder_.context()) {
-  z3::params params(encoder_.context());
-  params.set("timeout", timeout_ms);
-  solver_.set(params);
+    : encoder_(domain), solver_(encoder_.context(), timeout_ms) {
   // D once: ranges, enumeration membership, assumptions. Ill-typed assumptions are the
   // loader's and the verifier's to report; they are left out here as there.
   std::vector<Finding> ignored;
@@ -38,7 +35,7 @@ Proof Prover::never(const z3::expr& condition) {
     proof.answer = Answer::holds;
   } else if (r == z3::sat) {
     proof.answer = Answer::fails;
-    proof.witness = encoder_.state_of(solver_.get_model());
+    proof.witness = encoder_.state_of(solver_.model());
   } else {
     proof.answer = Answer::unknown;
     proof.reason = solver_.reason_unknown();

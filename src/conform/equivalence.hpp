@@ -10,6 +10,7 @@
 #include "fretish/domain.hpp"
 #include "fretish/expr.hpp"
 #include "smt/encoder.hpp"
+#include "smt/solver.hpp"
 
 namespace uabt::conform {
 
@@ -45,7 +46,7 @@ class Prover {
   // Keeps every expression the encoder typed alive: its typing is keyed by node address.
   std::vector<fretish::ExprPtr> kept_;
   smt::Encoder encoder_;
-  z3::solver solver_;
+  smt::Solver solver_;
   std::uint64_t queries_ = 0;
 };
 

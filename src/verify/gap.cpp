@@ -51,8 +51,12 @@ void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
     ++session.statistics().prefiltered;
     return;
   }
+  Session::Scope scope(session);
   std::vector<z3::expr> none_hold;
-  for (const Guard& g : node.guards) none_hold.push_back(!g.literal);
+  for (const Guard& g : node.guards) {
+    session.define(g.literal, g.formula);
+    none_hold.push_back(!g.literal);
+  }
   const Guard& last = node.guards.back();
   const Answer gap = session.check(none_hold);
   if (gap == Answer::unsat) return;

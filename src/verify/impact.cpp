@@ -7,6 +7,7 @@
 
 #include "smt/encoder.hpp"
 #include "smt/evaluate.hpp"
+#include "smt/solver.hpp"
 
 namespace uabt::verify {
 
@@ -214,12 +215,7 @@ Impact selection_impact(const load::Mission& before, const load::Mission& after,
       return std::string();
     };
 
-    z3::solver solver(ctx);
-    if (options.timeout_ms > 0) {
-      z3::params params(ctx);
-      params.set("timeout", options.timeout_ms);
-      solver.set(params);
-    }
+    smt::Solver solver(ctx, options.timeout_ms);
     for (const auto& part : parts) solver.add(part.constraint);
     solver.add(old_sel != new_sel);
     // Each answer names one (from, to) pair; blocking it asks for the next.
@@ -235,7 +231,7 @@ Impact selection_impact(const load::Mission& before, const load::Mission& after,
         result.findings.push_back(std::move(f));
         break;
       }
-      z3::model model = solver.get_model();
+      z3::model model = solver.model();
       const int from = model.eval(old_sel, true).get_numeral_int();
       const int to = model.eval(new_sel, true).get_numeral_int();
       SelectionChange change;

@@ -15,6 +15,10 @@ std::string describe_state(const State& state) {
   return out.empty() ? "(no variables)" : out;
 }
 
+void define(Session& session, const std::vector<const Guard*>& guards) {
+  for (const Guard* g : guards) session.define(g->literal, g->formula);
+}
+
 Finding node_finding(const Node& node, const std::string& check, std::string message,
                      const SourceLocation& location) {
   Finding f = make_finding(check, std::move(message), location);

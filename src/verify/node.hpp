@@ -19,7 +19,7 @@ struct Guard {
   const fretish::SelectionRequirement* requirement = nullptr;
   bool is_default = false;               // no condition: always enabled
   z3::expr formula;                      // the lowered guard (true for the default)
-  z3::expr literal;                      // defined equivalent to `formula` in the session
+  z3::expr literal;                      // stands for `formula` where `define`d
   Signature signature;                   // cheap over-approximation for pre-filters
   Answer satisfiable = Answer::unknown;  // D ∧ g
   Answer selectable = Answer::unknown;   // D ∧ g ∧ ¬(earlier guards): some state selects it
@@ -29,6 +29,9 @@ struct Guard {
 struct Node {
   std::string adaptable;
   std::vector<Guard> guards;
+  // meeting[i]: the guards whose signatures do not rule out meeting guard i, ascending. Only
+  // these can overlap it or hide part of it.
+  std::vector<std::vector<std::size_t>> meeting;
   Result* result = nullptr;
   const Options* options = nullptr;
 };
@@ -37,6 +40,9 @@ struct Node {
 std::string label(const Guard& g);
 // "OnDust = true, OnRocks = false, battery = 19"
 std::string describe_state(const State& state);
+// Asserts each guard's literal equivalent to its formula in the session's current scope.
+void define(Session& session, const std::vector<const Guard*>& guards);
+
 // A finding of the verify stage about `node`, located at `location`.
 Finding node_finding(const Node& node, const std::string& check, std::string message,
                      const SourceLocation& location);

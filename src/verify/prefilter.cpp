@@ -1,5 +1,6 @@
 #include "verify/prefilter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -189,6 +190,88 @@ bool disjoint(const Signature& a, const Signature& b) {
     if (!intersect(meet, it->second)) return true;
   }
   return false;
+}
+
+namespace {
+
+// The variable constrained by the most signatures ("" when none is constrained twice).
+std::string pivot_variable(const std::vector<const Signature*>& sigs) {
+  std::map<std::string, std::size_t> uses;
+  for (const Signature* s : sigs)
+    if (!s->contradictory)
+      for (const auto& [name, c] : s->constraints) ++uses[name];
+  std::string best;
+  std::size_t most = 1;
+  for (const auto& [name, n] : uses) {
+    if (n > most) {
+      best = name;
+      most = n;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::size_t>> meeting_candidates(
+    const std::vector<const Signature*>& sigs) {
+  const std::size_t n = sigs.size();
+  std::vector<std::vector<std::size_t>> meets(n);
+  // Pairs (i, j) that share a bucket (or are swept together) are only candidates: `disjoint`
+  // has the last word on each, once.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  auto consider = [&](std::size_t i, std::size_t j) {
+    if (i != j) pairs.emplace_back(std::min(i, j), std::max(i, j));
+  };
+  const std::string pivot = pivot_variable(sigs);
+  std::vector<std::size_t> free;  // signatures that leave the pivot unconstrained
+  std::map<std::size_t, std::vector<std::size_t>> buckets;  // value (or polarity) → signatures
+  std::vector<std::size_t> intervals;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (sigs[i]->contradictory) continue;  // meets nothing
+    const auto it = pivot.empty() ? sigs[i]->constraints.end() : sigs[i]->constraints.find(pivot);
+    if (it == sigs[i]->constraints.end()) {
+      free.push_back(i);
+      continue;
+    }
+    const VariableConstraint& c = it->second;
+    switch (c.kind) {
+      case VariableConstraint::Kind::boolean: buckets[c.polarity ? 1 : 0].push_back(i); break;
+      case VariableConstraint::Kind::values:
+        for (std::size_t v = 0; v < c.allowed.size(); ++v)
+          if (c.allowed[v]) buckets[v].push_back(i);
+        break;
+      case VariableConstraint::Kind::interval: intervals.push_back(i); break;
+    }
+  }
+  for (const std::size_t i : free)
+    for (std::size_t j = 0; j < n; ++j)
+      if (!sigs[j]->contradictory) consider(i, j);
+  for (const auto& [value, members] : buckets)
+    for (std::size_t a = 0; a < members.size(); ++a)
+      for (std::size_t b = a + 1; b < members.size(); ++b) consider(members[a], members[b]);
+  // Sorted by lower end, an interval can only meet those after it that start before it ends.
+  auto interval_of = [&](std::size_t i) -> const VariableConstraint& {
+    return sigs[i]->constraints.at(pivot);
+  };
+  std::sort(intervals.begin(), intervals.end(), [&](std::size_t a, std::size_t b) {
+    return interval_of(a).lower < interval_of(b).lower;
+  });
+  for (std::size_t a = 0; a < intervals.size(); ++a) {
+    const double upper = interval_of(intervals[a]).upper;
+    for (std::size_t b = a + 1; b < intervals.size() && interval_of(intervals[b]).lower <= upper;
+         ++b)
+      consider(intervals[a], intervals[b]);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for (const auto& [i, j] : pairs) {
+    if (disjoint(*sigs[i], *sigs[j])) continue;
+    meets[i].push_back(j);
+    meets[j].push_back(i);
+  }
+  for (auto& m : meets) std::sort(m.begin(), m.end());
+  return meets;
 }
 
 }  // namespace uabt::verify::detail

@@ -32,6 +32,12 @@ Signature signature_of(const fretish::Expr& guard, const smt::Typing& typing);
 // The two signatures cannot hold together (some variable's constraints do not intersect).
 bool disjoint(const Signature& a, const Signature& b);
 
+// For each signature, the others it may meet (not `disjoint`), in increasing order. Indexed by
+// the variable most signatures constrain (enum values and booleans by value, intervals by a
+// sweep over their lower ends), so a partition of K guards costs O(K log K) rather than K^2
+// comparisons.
+std::vector<std::vector<std::size_t>> meeting_candidates(const std::vector<const Signature*>& sigs);
+
 // A comparison `variable op number` (either side), normalised so the variable is on the left.
 struct Bound {
   std::string variable;

@@ -5,13 +5,7 @@
 namespace uabt::verify::detail {
 
 Session::Session(smt::Encoder& encoder, const Options& options, Statistics& statistics)
-    : encoder_(encoder), statistics_(statistics), solver_(encoder.context()) {
-  if (options.timeout_ms > 0) {
-    z3::params params(encoder.context());
-    params.set("timeout", options.timeout_ms);
-    solver_.set(params);
-  }
-}
+    : encoder_(encoder), statistics_(statistics), solver_(encoder.context(), options.timeout_ms) {}
 
 Answer Session::check(const std::vector<z3::expr>& assumptions) {
   ++statistics_.solver_queries;
@@ -25,9 +19,6 @@ Answer Session::check(const std::vector<z3::expr>& assumptions) {
       case z3::unknown: break;
     }
     reason_ = solver_.reason_unknown();
-    // Z3 wraps some reasons in parentheses: "(incomplete (theory arithmetic))".
-    if (reason_.size() > 2 && reason_.front() == '(' && reason_.back() == ')')
-      reason_ = reason_.substr(1, reason_.size() - 2);
   } catch (const z3::exception& e) {
     // Z3 gives up on some inputs by throwing (resource limits, unsupported operators).
     reason_ = e.msg();
@@ -38,7 +29,7 @@ Answer Session::check(const std::vector<z3::expr>& assumptions) {
 
 std::vector<z3::expr> Session::core() const {
   std::vector<z3::expr> out;
-  const z3::expr_vector c = const_cast<z3::solver&>(solver_).unsat_core();
+  const z3::expr_vector c = solver_.unsat_core();
   for (unsigned i = 0; i < c.size(); ++i) out.push_back(c[i]);
   return out;
 }

@@ -5,14 +5,17 @@
 #include <z3++.h>
 
 #include "smt/encoder.hpp"
+#include "smt/solver.hpp"
 #include "verify/verify.hpp"
 
 namespace uabt::verify::detail {
 
 enum class Answer { sat, unsat, unknown };
 
-// The run's one incremental solver: D is asserted once, and every question is asked as a set
-// of assumption literals, so learnt facts carry over from one question to the next. Counts
+// One node's incremental solver: D is asserted once at the base; every question is asked as
+// a set of assumption literals inside a Scope that holds only the definitions it needs.
+// Definitions kept for the whole node would make every check assign every guard of it (Z3
+// satisfies each asserted definition), so K questions over K guards would cost K^3. Counts
 // the questions it sends to Z3.
 class Session {
  public:
@@ -22,20 +25,34 @@ class Session {
   z3::context& context() { return encoder_.context(); }
   Statistics& statistics() { return statistics_; }
 
+  // Asserts `formula` in the current scope.
   void add(const z3::expr& formula) { solver_.add(formula); }
-  void push() { solver_.push(); }
-  void pop() { solver_.pop(); }
+
+  // Everything asserted while a Scope lives is retracted when it ends. Read models and cores
+  // before it does.
+  class Scope {
+   public:
+    explicit Scope(Session& session) : session_(session) { session_.solver_.push(); }
+    ~Scope() { session_.solver_.pop(); }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+   private:
+    Session& session_;
+  };
 
   Answer check(const std::vector<z3::expr>& assumptions = {});
-  z3::model model() const { return solver_.get_model(); }
+  z3::model model() const { return solver_.model(); }
   // The assumptions of the last unsat check that suffice for unsat.
   std::vector<z3::expr> core() const;
   // Why the last check answered unknown ("timeout", "incomplete (theory arithmetic)", …).
   const std::string& reason_unknown() const { return reason_; }
 
-  // A fresh literal asserted equivalent to `formula`: questions about the formula become
-  // assumption sets.
+  // A fresh literal asserted (in the current scope) equivalent to `formula`: questions about
+  // the formula become assumption sets.
   z3::expr define(const z3::expr& formula, const char* prefix);
+  // Asserts `literal` equivalent to `formula` in the current scope.
+  void define(const z3::expr& literal, const z3::expr& formula) { solver_.add(literal == formula); }
   // A fresh literal that implies `formula`: enough to ask whether the formula is satisfiable.
   z3::expr guard(const z3::expr& formula, const char* prefix);
 
@@ -48,7 +65,7 @@ class Session {
  private:
   smt::Encoder& encoder_;
   Statistics& statistics_;
-  z3::solver solver_;
+  smt::Solver solver_;
   std::string reason_;
 };
 

@@ -65,14 +65,11 @@ void check_satisfiable_and_shadowed(Node& node, Session& session) {
     Guard& g = node.guards[i];
     // Only earlier guards that can overlap g can hide any part of it.
     std::vector<const Guard*> candidates;
-    for (std::size_t k = 0; k < i; ++k) {
-      const Guard& e = node.guards[k];
-      if (e.satisfiable == Answer::unsat || disjoint(e.signature, g.signature)) {
-        ++session.statistics().prefiltered;
-        continue;
-      }
-      candidates.push_back(&e);
+    for (const std::size_t k : node.meeting[i]) {
+      if (k >= i) break;
+      if (node.guards[k].satisfiable != Answer::unsat) candidates.push_back(&node.guards[k]);
     }
+    session.statistics().prefiltered += i - candidates.size();
     if (g.is_default) {
       g.satisfiable = Answer::sat;  // the domain is consistent
       ++session.statistics().prefiltered;
@@ -82,6 +79,9 @@ void check_satisfiable_and_shadowed(Node& node, Session& session) {
       report_unsatisfiable(node, g, false);
       continue;
     }
+    Session::Scope scope(session);
+    define(session, {&g});
+    define(session, candidates);
     // First ask whether some state selects g: in the usual case that settles both questions.
     std::vector<z3::expr> query{g.literal};
     for (const Guard* e : candidates) query.push_back(!e->literal);

@@ -1,6 +1,10 @@
 #include "verify/verify.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <exception>
 #include <set>
+#include <thread>
 
 #include "smt/encoder.hpp"
 #include "verify/coverage.hpp"
@@ -39,18 +43,33 @@ bool build_guards(detail::Node& node, const std::vector<const fretish::Selection
     node.guards.push_back(std::move(g));
   }
   if (!well_typed) return false;
-  for (auto& g : node.guards) g.literal = session.define(g.formula, "guard");
+  for (auto& g : node.guards) g.literal = encoder.fresh_literal("guard");
   return true;
 }
 
-}  // namespace
+// One adaptable node to analyse and its requirements in priority order (empty: none names it).
+struct NodeJob {
+  std::string adaptable;
+  std::vector<const fretish::SelectionRequirement*> requirements;
+};
 
-Result verify_mission(const load::Mission& mission, const Options& options) {
-  Result result;
+// What one job found. The domain's own findings (its consistency, ill-typed assumptions) come
+// out of every job alike; verify_mission keeps the first job's.
+struct NodeOutcome {
+  std::vector<Finding> domain_findings;
+  Result node;  // the node's findings, its one coverage entry and the solver statistics
+};
+
+// Analyses one node in a Z3 context of its own. Nothing is shared with other nodes, so the
+// answers, witnesses included, are the same whichever thread runs it and whatever ran before:
+// the report does not depend on the number of cores.
+NodeOutcome analyse_node(const load::Mission& mission, const NodeJob& job, const Options& options) {
+  NodeOutcome out;
+  Result& result = out.node;
   smt::Encoder encoder(mission.domain);
   detail::Session session(encoder, options, result.statistics);
 
-  const auto parts = encoder.domain_parts(result.findings);
+  const auto parts = encoder.domain_parts(out.domain_findings);
   std::vector<const fretish::Expr*> assumptions;  // the well-typed ones, which D includes
   std::vector<std::string> assumed_names;
   for (const auto& a : mission.domain.assumptions) {
@@ -60,49 +79,100 @@ Result verify_mission(const load::Mission& mission, const Options& options) {
     assumptions.push_back(a.expr.get());
     names_in(*a.expr, assumed_names);
   }
-  const Answer domain = detail::check_domain(session, parts, result.findings);
+  const Answer domain = detail::check_domain(session, parts, out.domain_findings);
 
-  std::set<std::string> done;
-  for (const auto& site : mission.adaptables) {
-    if (!done.insert(site.id).second) continue;  // one analysis per node, however often used
-    const auto reqs = mission.selections_for(site.id);
-    Coverage cov;
-    cov.adaptable = site.id;
-    if (reqs.empty()) {
-      cov.not_counted_reason = "no selection requirement names this adaptable node";
-      result.coverage.push_back(std::move(cov));
-      continue;
-    }
-    detail::Node node;
-    node.adaptable = site.id;
-    node.result = &result;
-    node.options = &options;
-    const bool well_typed = build_guards(node, reqs, session);
-    if (!well_typed || domain != Answer::sat) {
-      for (const auto* r : reqs) {
-        AlternativeCoverage a;
-        a.name = r->alternative;
-        a.requirement = r->id;
-        a.reachable = false;  // not decided
-        cov.alternatives.push_back(a);
-      }
-      cov.not_counted_reason = !well_typed               ? "a guard does not type-check"
-                               : domain == Answer::unsat ? "the domain is inconsistent"
-                                                         : "the domain could not be decided";
-      result.coverage.push_back(std::move(cov));
-      continue;
-    }
-    detail::check_satisfiable_and_shadowed(node, session);
-    detail::check_overlaps(node, session);
-    std::vector<std::string> region;
-    detail::check_gap(node, session, region);
-    detail::check_vacuous_atoms(node, session, assumed_names);
-
-    cov = detail::count_coverage(site.id, reqs, assumptions, mission.domain, encoder.typing());
-    for (std::size_t k = 0; k < node.guards.size() && k < cov.alternatives.size(); ++k)
-      cov.alternatives[k].reachable = node.guards[k].selectable == Answer::sat;
-    cov.gap_region = std::move(region);
+  Coverage cov;
+  cov.adaptable = job.adaptable;
+  const auto& reqs = job.requirements;
+  if (reqs.empty()) {
+    cov.not_counted_reason = "no selection requirement names this adaptable node";
     result.coverage.push_back(std::move(cov));
+    return out;
+  }
+  detail::Node node;
+  node.adaptable = job.adaptable;
+  node.result = &result;
+  node.options = &options;
+  const bool well_typed = build_guards(node, reqs, session);
+  if (!well_typed || domain != Answer::sat) {
+    for (const auto* r : reqs) {
+      AlternativeCoverage a;
+      a.name = r->alternative;
+      a.requirement = r->id;
+      a.reachable = false;  // not decided
+      cov.alternatives.push_back(a);
+    }
+    cov.not_counted_reason = !well_typed               ? "a guard does not type-check"
+                             : domain == Answer::unsat ? "the domain is inconsistent"
+                                                       : "the domain could not be decided";
+    result.coverage.push_back(std::move(cov));
+    return out;
+  }
+  std::vector<const detail::Signature*> signatures;
+  for (const auto& g : node.guards) signatures.push_back(&g.signature);
+  node.meeting = detail::meeting_candidates(signatures);
+  detail::check_satisfiable_and_shadowed(node, session);
+  detail::check_overlaps(node, session);
+  std::vector<std::string> region;
+  detail::check_gap(node, session, region);
+  detail::check_vacuous_atoms(node, session, assumed_names);
+
+  cov = detail::count_coverage(job.adaptable, reqs, assumptions, mission.domain, encoder.typing());
+  for (std::size_t k = 0; k < node.guards.size() && k < cov.alternatives.size(); ++k)
+    cov.alternatives[k].reachable = node.guards[k].selectable == Answer::sat;
+  cov.gap_region = std::move(region);
+  result.coverage.push_back(std::move(cov));
+  return out;
+}
+
+// Runs every job on up to `threads` threads (0: one per core); outcomes in job order.
+std::vector<NodeOutcome> analyse_nodes(const load::Mission& mission,
+                                       const std::vector<NodeJob>& jobs, const Options& options) {
+  std::vector<NodeOutcome> outcomes(jobs.size());
+  std::vector<std::exception_ptr> errors(jobs.size());
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t k = next++; k < jobs.size(); k = next++) {
+      try {
+        outcomes[k] = analyse_node(mission, jobs[k], options);
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    }
+  };
+  unsigned threads = options.threads != 0 ? options.threads : std::thread::hardware_concurrency();
+  threads = static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, jobs.size()));
+  std::vector<std::jthread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  pool.clear();  // joins
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return outcomes;
+}
+
+}  // namespace
+
+Result verify_mission(const load::Mission& mission, const Options& options) {
+  std::vector<NodeJob> jobs;
+  std::set<std::string> seen;
+  for (const auto& site : mission.adaptables) {
+    if (!seen.insert(site.id).second) continue;  // one analysis per node, however often used
+    jobs.push_back({site.id, mission.selections_for(site.id)});
+  }
+  // With no node to analyse, the domain is still checked (a job without requirements).
+  const bool domain_only = jobs.empty();
+  if (domain_only) jobs.push_back({});
+
+  std::vector<NodeOutcome> outcomes = analyse_nodes(mission, jobs, options);
+  Result result;
+  result.findings = std::move(outcomes.front().domain_findings);
+  for (auto& o : outcomes) {
+    for (auto& f : o.node.findings) result.findings.push_back(std::move(f));
+    if (!domain_only)
+      for (auto& c : o.node.coverage) result.coverage.push_back(std::move(c));
+    result.statistics.solver_queries += o.node.statistics.solver_queries;
+    result.statistics.prefiltered += o.node.statistics.prefiltered;
   }
   sort_findings(result.findings);
   return result;

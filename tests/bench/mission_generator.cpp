@@ -64,15 +64,24 @@ std::string declarations(int i, int k) {
   }
 }
 
-std::string alternative_xml(const std::string& id) {
-  return "<root BTCPP_format=\"4\" main_tree_to_execute=\"" + id + "\">\n  <BehaviorTree ID=\"" +
-         id + "\">\n    <AlwaysSuccess/>\n  </BehaviorTree>\n</root>\n";
+std::string alternative_xml(const std::string& id, int tree_nodes) {
+  std::string body;
+  if (tree_nodes <= 1) {
+    body = "    <AlwaysSuccess/>\n";
+  } else {
+    body = "    <Sequence>\n";
+    for (int k = 1; k < tree_nodes; ++k)
+      body += k % 2 ? "      <AlwaysSuccess/>\n" : "      <AlwaysSuccess name=\"step\"/>\n";
+    body += "    </Sequence>\n";
+  }
+  return cat({"<root BTCPP_format=\"4\" main_tree_to_execute=\"", id, "\">\n  <BehaviorTree ID=\"",
+              id, "\">\n", body, "  </BehaviorTree>\n</root>\n"});
 }
 
 }  // namespace
 
 GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes, int alternatives,
-                                  GeneratorMode mode) {
+                                  GeneratorMode mode, int tree_nodes) {
   const int k = alternatives;
   const bool planted = mode == GeneratorMode::planted;
   if (nodes < 1 || k < 2) throw std::invalid_argument("need nodes >= 1 and alternatives >= 2");
@@ -81,7 +90,7 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
 
   GeneratedMission result;
   result.dir = parent / cat({"gen_", planted ? "planted_" : "partition_", std::to_string(nodes),
-                             "x", std::to_string(k)});
+                             "x", std::to_string(k), "x", std::to_string(tree_nodes)});
   std::filesystem::remove_all(result.dir);
 
   std::ostringstream mission, requirements, domain;
@@ -104,7 +113,7 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
       if (!g.empty()) requirements << " if " << g;
       requirements << " Mission shall satisfy selected_alt = " << alt_name(i, j) << "\n";
       write_file(result.dir / "alternatives" / node_name(i) / (alt_name(i, j) + ".xml"),
-                 alternative_xml(alt_name(i, j)));
+                 alternative_xml(alt_name(i, j), tree_nodes));
     }
   }
   mission << "    </Sequence>\n  </BehaviorTree>\n</root>\n";

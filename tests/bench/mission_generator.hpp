@@ -28,7 +28,9 @@ struct GeneratedMission {
 // a bounded integer, a bounded real, an enumeration conjoined with a boolean. Planted missions
 // need nodes >= 3 and alternatives >= 4: node 0 gets an overlap, node 1 a gap (no default),
 // node 2 a shadowed guard (which also overlaps the guard that hides it).
+// Each alternative's tree has `tree_nodes` BT nodes (a Sequence of tree_nodes - 1 leaves; 1 is
+// a lone leaf), for compile and load benchmarks.
 GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes, int alternatives,
-                                  GeneratorMode mode);
+                                  GeneratorMode mode, int tree_nodes = 1);
 
 }  // namespace uabt::bench

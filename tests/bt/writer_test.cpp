@@ -177,6 +177,29 @@ TEST(Writer, ReservedAttributesAreNotPorts) {
       << out;
 }
 
+TEST(Writer, ExplicitSyntaxIsCompactedOnlyForIdsThatAreXmlNames) {
+  Document doc;
+  TreeDef tree;
+  tree.id = "A";
+  tree.root = parent("Sequence", {leaf("Action", {{"ID", "MoveBase"}, {"goal", "1"}}),
+                                  parent("Decorator", {leaf("AlwaysSuccess")}, {{"ID", "Cu<x"}}),
+                                  leaf("Condition", {{"ID", "2fast"}})});
+  doc.trees = {tree};
+  const std::string out = write_document(doc, {4, false});
+  EXPECT_NE(out.find("<MoveBase goal=\"1\"/>"), std::string::npos) << out;
+  EXPECT_NE(out.find("<Decorator ID=\"Cu&lt;x\">"), std::string::npos) << out;
+  EXPECT_NE(out.find("</Decorator>"), std::string::npos) << out;
+  EXPECT_NE(out.find("<Condition ID=\"2fast\"/>"), std::string::npos) << out;
+  std::vector<Finding> findings;
+  const auto again = parse_document(out, "again.xml", findings);
+  ASSERT_TRUE(again.has_value()) << out;
+  const Node& root = again->trees.at(0).root;
+  ASSERT_EQ(root.children.size(), 3u);
+  EXPECT_EQ(root.children[0].kind(), "MoveBase");
+  EXPECT_EQ(root.children[1].kind(), "Cu<x");
+  EXPECT_EQ(root.children[2].kind(), "2fast");
+}
+
 TEST(Writer, EscapingRoundTrips) {
   Document doc;
   TreeDef tree;

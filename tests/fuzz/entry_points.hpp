@@ -129,34 +129,6 @@ inline bool same_meaning(const bt::Node& a, const bt::Node& b) {
   return true;
 }
 
-// What tinyxml2 accepts as an element name.
-inline bool is_xml_name(const std::string& name) {
-  auto start = [](unsigned char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c == ':' || c >= 0x80;
-  };
-  if (name.empty() || !start(static_cast<unsigned char>(name[0]))) return false;
-  for (const char c : name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (!start(u) && !(u >= '0' && u <= '9') && u != '.' && u != '-') return false;
-  }
-  return true;
-}
-
-// Every node would be written as an element named after its kind. A node whose kind (the ID of
-// <Action ID="…">) is no XML name cannot be (known bug, see tests/fuzz/regressions/bt_xml/).
-inline bool kinds_are_xml_names(const bt::Document& doc) {
-  std::vector<const bt::Node*> pending;
-  for (const auto& t : doc.trees)
-    if (!t.root.tag.empty()) pending.push_back(&t.root);
-  while (!pending.empty()) {
-    const bt::Node* n = pending.back();
-    pending.pop_back();
-    if (!is_xml_name(n->kind())) return false;
-    for (const auto& c : n->children) pending.push_back(&c);
-  }
-  return true;
-}
-
 }  // namespace detail
 
 // requirements.fret text: parse_requirements_file + classify_selection; every expression of
@@ -229,9 +201,6 @@ inline std::string check_bt_xml(std::string_view data) {
     if (std::string p = detail::check_locations(structure, "tree.xml", text, false); !p.empty())
       return p;
   }
-  // The structure check refuses such IDs, so no compiled tree holds one; the writer still
-  // writes them as broken element names (reported; not checked here until it is fixed).
-  if (!detail::kinds_are_xml_names(*doc)) return {};
   for (const int format : {4, 3}) {
     bt::WriteOptions options;
     options.format = format;

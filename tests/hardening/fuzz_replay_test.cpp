@@ -79,11 +79,9 @@ TEST(FuzzReplay, Pipeline) {
 }
 
 // Found by fuzz_bt_xml (regressions/bt_xml/writer-explicit-id-not-an-xml-name.xml): the writer
-// turns <Decorator ID="Cu<x"> into the element name <Cu<x>, so its output does not parse.
-// check_structure refuses such IDs, so the gate never writes one; the fuzz check skips
-// documents with such names until src/bt/writer.cpp keeps the explicit syntax (or escapes) for
-// an ID that is not an XML name. Enable this test with that fix.
-TEST(FuzzReplay, DISABLED_WriterOutputParsesForIdsThatAreNotXmlNames) {
+// turned <Decorator ID="Cu<x"> into the element name <Cu<x>, so its output did not parse. An ID
+// that is no XML name now stays in the explicit syntax.
+TEST(FuzzReplay, WriterOutputParsesForIdsThatAreNotXmlNames) {
   for (const fs::path& file : inputs_of("bt_xml", "regressions")) {
     SCOPED_TRACE(file.filename().string());
     std::vector<Finding> findings;
