@@ -45,6 +45,29 @@ bool is_name_char(char c) {
   return is_name_start(c) || (c >= '0' && c <= '9') || c == '-' || c == '.';
 }
 
+// True when `rest` starts with a reference XML defines without a DTD: &lt; &gt; &amp; &apos;
+// &quot; or a character reference &#N; / &#xH;. tinyxml2 passes anything else through, and
+// after an earlier reference in the same value it writes a wrong byte instead (seen with
+// "&#10;é&e"), so a stray '&' is refused rather than guessed at.
+bool is_reference(std::string_view rest) {
+  for (const std::string_view named : {"&lt;", "&gt;", "&amp;", "&apos;", "&quot;"})
+    if (rest.starts_with(named)) return true;
+  if (!rest.starts_with("&#")) return false;
+  const bool hex = rest.size() > 2 && rest[2] == 'x';
+  std::size_t k = hex ? 3 : 2, digits = 0;
+  for (; k < rest.size() && digits <= 8; ++k, ++digits) {
+    const char c = rest[k];
+    const bool digit =
+        (c >= '0' && c <= '9') || (hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')));
+    if (!digit) break;
+  }
+  return digits > 0 && digits <= 8 && k < rest.size() && rest[k] == ';';
+}
+
+constexpr const char* kStrayAmpersand =
+    "'&' must start a reference (&lt; &gt; &amp; &apos; &quot; &#N;); write &amp; for a literal "
+    "'&'";
+
 // Walks the text keeping line and column of the current byte.
 class Cursor {
  public:
@@ -58,6 +81,7 @@ class Cursor {
     return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
   }
   bool starts_with(std::string_view s) const { return text_.substr(pos_).starts_with(s); }
+  std::string_view rest() const { return text_.substr(pos_); }
 
   void advance() {
     const char c = text_[pos_++];
@@ -134,6 +158,10 @@ ScanResult scan_xml(const std::string& input, int max_depth) {
   bool complete = true;  // false when the text ends inside markup: tinyxml2 reports that
   while (!cursor.done()) {
     if (cursor.peek() != '<') {
+      if (cursor.peek() == '&' && !is_reference(cursor.rest())) {
+        result.problem = ScanProblem{kStrayAmpersand, cursor.line(), cursor.column()};
+        return result;
+      }
       cursor.advance();
       continue;
     }
@@ -187,6 +215,10 @@ ScanResult scan_xml(const std::string& input, int max_depth) {
         const char c = cursor.peek();
         if (quote != '\0') {
           if (c == quote) quote = '\0';
+          if (c == '&' && !is_reference(cursor.rest())) {
+            result.problem = ScanProblem{kStrayAmpersand, cursor.line(), cursor.column()};
+            return result;
+          }
         } else if (c == '"' || c == '\'') {
           quote = c;
         } else if (c == '>') {

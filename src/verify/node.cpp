@@ -6,15 +6,6 @@ std::string label(const Guard& g) {
   return g.requirement->id + " (" + g.requirement->alternative + ")";
 }
 
-std::string describe_state(const State& state) {
-  std::string out;
-  for (const auto& [name, value] : state) {
-    if (!out.empty()) out += ", ";
-    out += name + " = " + value.to_string();
-  }
-  return out.empty() ? "(no variables)" : out;
-}
-
 void define(Session& session, const std::vector<const Guard*>& guards) {
   for (const Guard* g : guards) session.define(g->literal, g->formula);
 }

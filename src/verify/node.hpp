@@ -38,8 +38,6 @@ struct Node {
 
 // "Req1 (on_dust)"
 std::string label(const Guard& g);
-// "OnDust = true, OnRocks = false, battery = 19"
-std::string describe_state(const State& state);
 // Asserts each guard's literal equivalent to its formula in the session's current scope.
 void define(Session& session, const std::vector<const Guard*>& guards);
 

@@ -43,8 +43,8 @@ void report_shadowed(Node& node, Session& session, const Guard& g,
   }
   for (const Guard* h : hiders) {
     if (model.eval(h->formula, true).is_true()) {
-      f.notes.push_back("for example in the state " + describe_state(witness) + ", " +
-                        g.requirement->id + "'s guard holds but the Fallback selects " + label(*h));
+      f.notes.push_back("in the witness state " + g.requirement->id +
+                        "'s guard holds but the Fallback selects " + label(*h));
       break;
     }
   }

@@ -8,12 +8,16 @@
 //                                                     one size: times, queries, peak memory
 //   uabt_bench scale [--quick]                        the scaling curves (Markdown), each
 //                                                     point measured in a process of its own
+//   uabt_bench process RUNS COMMAND [ARGS…]           a whole command RUNS times: wall time
+//                                                     (min, median, max), CPU, peak memory
 #include <benchmark/benchmark.h>
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -43,7 +47,8 @@ int usage() {
                "usage: uabt_bench [--benchmark_* flags]\n"
                "       uabt_bench generate N K DIR [--planted] [--tree-nodes M]\n"
                "       uabt_bench measure N K [--threads T] [--naive default|core]\n"
-               "       uabt_bench scale [--quick]\n");
+               "       uabt_bench scale [--quick]\n"
+               "       uabt_bench process RUNS COMMAND [ARGS...]\n");
   return 2;
 }
 
@@ -244,6 +249,45 @@ int scale(int argc, char** argv) {
   return ok ? 0 : 1;
 }
 
+// Runs a command RUNS times (its output discarded) and reports wall time, CPU time and peak
+// resident memory, as /usr/bin/time -v would for each run.
+int process(int argc, char** argv) {
+  if (argc < 4) return usage();
+  const auto runs = positive(argv[2]);
+  if (!runs) return usage();
+  std::vector<double> wall;
+  double cpu_ms = 0, peak_mib = 0;
+  int exit_code = 0;
+  for (int r = 0; r < *runs; ++r) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    pid_t pid = 0;
+    const auto start = Clock::now();
+    const int spawned = posix_spawnp(&pid, argv[3], &actions, nullptr, argv + 3, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0) {
+      std::fprintf(stderr, "uabt_bench: cannot run %s\n", argv[3]);
+      return 1;
+    }
+    int status = 0;
+    rusage usage{};
+    if (wait4(pid, &status, 0, &usage) < 0) return 1;
+    wall.push_back(ms_since(start));
+    cpu_ms += (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1e3 +
+              (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e3;
+    peak_mib = std::max(peak_mib, static_cast<double>(usage.ru_maxrss) / 1024.0);
+    exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+  }
+  std::sort(wall.begin(), wall.end());
+  std::printf(
+      "%d runs, exit status %d: wall min %.1f ms, median %.1f ms, max %.1f ms; CPU %.1f ms "
+      "per run; peak RSS %.1f MiB\n",
+      *runs, exit_code, wall.front(), wall[wall.size() / 2], wall.back(), cpu_ms / *runs, peak_mib);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -254,6 +298,7 @@ int main(int argc, char** argv) {
       if (mode == "generate") return generate(argc, argv);
       if (mode == "measure") return measure(argc, argv);
       if (mode == "scale") return scale(argc, argv);
+      if (mode == "process") return process(argc, argv);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "uabt_bench: %s\n", e.what());
       return 1;

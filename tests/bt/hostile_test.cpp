@@ -100,6 +100,28 @@ TEST(Hostile, DtdAndEntitiesAreRefused) {
       "<root><!-- <!DOCTYPE x> --><BehaviorTree ID=\"A\"><X/></BehaviorTree></root>");
 }
 
+TEST(Hostile, StrayAmpersandsAreRefusedAndLocated) {
+  // Found by fuzz_bt_xml (regressions/bt_xml/stray-ampersand-after-reference.xml): tinyxml2
+  // turned "&#10;b\xC3\xA9&e" into "\nb\xC3\xA9\xC3e", a byte the text never had.
+  const Finding f = refused(
+      "<root>\n  <BehaviorTree ID=\"A\"><Say text=\"a&#10;b\xC3\xA9&e\"/></BehaviorTree></root>");
+  EXPECT_NE(f.message.find("'&' must start a reference"), std::string::npos) << f.message;
+  EXPECT_EQ(f.location.line, 2);
+  EXPECT_EQ(f.location.column, 43);
+  EXPECT_NE(refused("<root><BehaviorTree ID=\"A\"><X/>Tom & Jerry</BehaviorTree></root>")
+                .message.find("'&' must start a reference"),
+            std::string::npos);
+  refused("<root><X a=\"&#;\"/></root>");
+  refused("<root><X a=\"&#x;\"/></root>");
+  refused("<root><X a=\"&amp\"/></root>");
+  // Every reference XML defines without a DTD is fine, in values and in text; in a comment or
+  // CDATA section '&' is only text.
+  const bt::Document doc = testing::parse_clean(
+      "<root><BehaviorTree ID=\"A\"><Script code=\"a &lt; b &amp;&amp; c &gt; d &apos;&quot; "
+      "&#10;&#x41;\"/><!-- & --></BehaviorTree></root>");
+  EXPECT_EQ(*doc.trees.at(0).root.attribute("code"), "a < b && c > d '\" \nA");
+}
+
 std::string nested(int depth) {
   std::string text = "<root><BehaviorTree ID=\"A\">";
   for (int i = 0; i < depth; ++i) text += "<Inverter>";

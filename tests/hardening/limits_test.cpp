@@ -140,7 +140,8 @@ TEST(Limits, ALongLineAndManyLines) {
   const std::string long_line = requirement_with_guard("a" + repeat(" | a", 100000));
   EXPECT_EQ(first_error(parse_findings(long_line)), nullptr);
   const std::string many = repeat("# comment\n\n", 200000) + "Req: In nav if a & Mission\n";
-  const Finding* f = first_error(parse_findings(many));
+  const std::vector<Finding> findings = parse_findings(many);  // f points into it
+  const Finding* f = first_error(findings);
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(f->location.line, 400001);
 }
