@@ -80,22 +80,6 @@ void write_node(std::string& out, const Node& node, int level) {
   out += ">\n";
 }
 
-}  // namespace
-
-bool is_xml_name(std::string_view name) {
-  auto start = [](unsigned char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c == ':' || c >= 0x80;
-  };
-  if (name.empty() || !start(static_cast<unsigned char>(name[0]))) return false;
-  for (const char c : name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (!start(u) && !(u >= '0' && u <= '9') && u != '.' && u != '-') return false;
-  }
-  return true;
-}
-
-namespace {
-
 bool looks_like_condition(const std::string& id) {
   for (const std::string_view prefix : {"Is", "Has", "On", "Can", "Check"}) {
     if (!id.starts_with(prefix)) continue;

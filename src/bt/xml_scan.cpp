@@ -1,5 +1,7 @@
 #include "bt/xml_scan.hpp"
 
+#include "bt/xml_io.hpp"
+
 #include <cstddef>
 #include <string_view>
 
@@ -142,6 +144,22 @@ std::optional<ScanProblem> check_encoding(std::string_view text) {
 }
 
 }  // namespace
+
+}  // namespace uabt::bt::detail
+
+namespace uabt::bt {
+
+// The scanner's own notion of a name, so the writer compacts exactly what the reader accepts.
+bool is_xml_name(std::string_view name) {
+  if (name.empty() || !detail::is_name_start(name.front())) return false;
+  for (const char c : name)
+    if (!detail::is_name_char(c)) return false;
+  return true;
+}
+
+}  // namespace uabt::bt
+
+namespace uabt::bt::detail {
 
 ScanResult scan_xml(const std::string& input, int max_depth) {
   ScanResult result;

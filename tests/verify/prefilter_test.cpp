@@ -35,6 +35,29 @@ std::vector<std::vector<std::size_t>> pairwise(
   return meets;
 }
 
+// The signatures of the node's guards in priority order (the default's is empty), and
+// pointers to them as meeting_candidates takes them.
+struct Signatures {
+  std::vector<verify::detail::Signature> owned;
+  std::vector<const verify::detail::Signature*> pointers;
+};
+
+Signatures signatures_of(const load::Mission& m) {
+  smt::Encoder encoder(m.domain);
+  std::vector<Finding> findings;
+  Signatures out;
+  for (const auto* r : m.selections_for("node")) {
+    if (!r->guard) {
+      out.owned.emplace_back();  // the default constrains nothing
+      continue;
+    }
+    EXPECT_TRUE(encoder.lower_condition(*r->guard, r->guard_location, findings));
+    out.owned.push_back(verify::detail::signature_of(*r->guard, encoder.typing()));
+  }
+  for (const auto& s : out.owned) out.pointers.push_back(&s);
+  return out;
+}
+
 TEST(MeetingCandidates, AgreeWithComparingEveryPair) {
   std::mt19937 random(20261122);
   for (int round = 0; round < 400; ++round) {
@@ -57,21 +80,9 @@ TEST(MeetingCandidates, AgreeWithComparingEveryPair) {
                       " Mission shall satisfy selected_alt = a" + std::to_string(g) + "\n";
     }
     SCOPED_TRACE(requirements);
-    const load::Mission m = make_mission(requirements, kDomain);
-    smt::Encoder encoder(m.domain);
-    std::vector<Finding> findings;
-    std::vector<verify::detail::Signature> signatures;
-    for (const auto* r : m.selections_for("node")) {
-      if (r->guard) {
-        ASSERT_TRUE(encoder.lower_condition(*r->guard, r->guard_location, findings));
-        signatures.push_back(verify::detail::signature_of(*r->guard, encoder.typing()));
-      } else {
-        signatures.emplace_back();  // the default constrains nothing
-      }
-    }
-    std::vector<const verify::detail::Signature*> pointers;
-    for (const auto& s : signatures) pointers.push_back(&s);
-    EXPECT_EQ(verify::detail::meeting_candidates(pointers), pairwise(pointers));
+    const Signatures signatures = signatures_of(make_mission(requirements, kDomain));
+    EXPECT_EQ(verify::detail::meeting_candidates(signatures.pointers),
+              pairwise(signatures.pointers));
   }
 }
 
@@ -81,17 +92,10 @@ TEST(MeetingCandidates, APartitionOfIntervalsMeetsNothing) {
     requirements += "I" + std::to_string(k) + ": In node if n >= " + std::to_string(k * 2) +
                     " & n < " + std::to_string(k * 2 + 2) +
                     " Mission shall satisfy selected_alt = a" + std::to_string(k) + "\n";
-  const load::Mission m = make_mission(requirements, "integer n in [0, 100]\n");
-  smt::Encoder encoder(m.domain);
-  std::vector<Finding> findings;
-  std::vector<verify::detail::Signature> signatures;
-  for (const auto* r : m.selections_for("node")) {
-    ASSERT_TRUE(encoder.lower_condition(*r->guard, r->guard_location, findings));
-    signatures.push_back(verify::detail::signature_of(*r->guard, encoder.typing()));
-  }
-  std::vector<const verify::detail::Signature*> pointers;
-  for (const auto& s : signatures) pointers.push_back(&s);
-  for (const auto& meets : verify::detail::meeting_candidates(pointers)) EXPECT_TRUE(meets.empty());
+  const Signatures signatures =
+      signatures_of(make_mission(requirements, "integer n in [0, 100]\n"));
+  for (const auto& meets : verify::detail::meeting_candidates(signatures.pointers))
+    EXPECT_TRUE(meets.empty());
 }
 
 }  // namespace
