@@ -8,10 +8,12 @@
 namespace uabt::cli {
 
 // The Behavior Tree Manager on a simulated world. Exit 0 when the mission completes with
-// SUCCESS, 1 when it fails, times out, or cannot start (the mission does not pass the gate).
+// SUCCESS; 1 when it fails, times out (max_ticks), stops on a tick error (verdict `error`:
+// what BehaviorTree.CPP would throw, e.g. a script reading a key nobody set), or cannot
+// start (the mission does not pass the gate, the scenario does not fit the mission).
 void register_run(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, scenario, trace, selection = "sequence";
+    std::string mission, scenario, trace, selection = "sequence", trace_level = "events";
     std::vector<std::string> uplinks;
     std::int64_t max_ticks = 0;
   };
@@ -31,12 +33,17 @@ void register_run(CLI::App& app, int& exit_code) {
   cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
       ->check(CLI::IsMember({"sequence", "reactive"}));
   cmd->add_option("--max-ticks", args->max_ticks,
-                  "stop after this many ticks (default: the scenario's)");
+                  "stop after this many ticks, verdict timeout (default: the scenario's)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--trace-level", args->trace_level,
+                  "events, or nodes: also every node status change and condition read")
+      ->check(CLI::IsMember({"events", "nodes"}));
   cmd->callback([args, &exit_code] {
     try {
       runtime::Scenario scenario = runtime::load_scenario(args->scenario);
       runtime::ManagerOptions options;
       options.max_ticks = args->max_ticks;
+      options.trace_nodes = args->trace_level == "nodes";
       options.gate.compile.selection = args->selection == "reactive"
                                            ? compile::SelectionStyle::reactive
                                            : compile::SelectionStyle::sequence;
@@ -58,8 +65,11 @@ void register_run(CLI::App& app, int& exit_code) {
       std::cout << runtime::trace_summary(run);
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
-      exit_code =
-          run.finished && run.status == runtime::NodeStatus::success ? kExitPass : kExitFail;
+      if (run.error)
+        std::cerr << "uabt: tick " << run.error->tick << ": " << run.error->message
+                  << "\n  node: " << run.error->path
+                  << (run.error->script.empty() ? "" : "\n  script: " + run.error->script) << "\n";
+      exit_code = run.verdict == "success" ? kExitPass : kExitFail;
     } catch (const std::exception& e) {
       std::cerr << "uabt: " << e.what() << "\n";
       exit_code = kExitFail;

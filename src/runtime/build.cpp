@@ -1,5 +1,6 @@
 // Instantiation of a runtime tree from bt::TreeDefs: BT.CPP's load-time rules, ports
 // resolved to blackboard slots, scripts compiled, robot leaves bound to the World.
+#include <cctype>
 #include <charconv>
 #include <string_view>
 
@@ -87,6 +88,12 @@ std::optional<std::string> blackboard_key(const std::string& port, const std::st
   std::string key = value.substr(1, value.size() - 2);
   if (key == "=") key = port;
   return key;
+}
+
+// BT.CPP treats only attributes that start with a letter as ports; `_description`, `_uid`
+// and the pre/post-condition attributes are not ports of the node.
+bool is_port_name(const std::string& attr) {
+  return !attr.empty() && std::isalpha(static_cast<unsigned char>(attr.front()));
 }
 
 std::optional<bool> parse_bool(const std::string& text) {
@@ -217,6 +224,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     }
     if (attr == "ID" && (is_explicit_family(xml.tag) || shape == Shape::subtree)) continue;
     if (shape == Shape::subtree || kind == Kind::world_leaf) continue;  // ports, see below
+    if (!is_port_name(attr)) continue;
     bool known = false;
     for (std::string_view port : spec->ports) known = known || port == attr;
     if (!known) throw refuse(kind_name + " has no port named '" + attr + "'");
@@ -252,6 +260,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
       p.ports_begin = static_cast<std::uint32_t>(core.leaf_ports.size());
       for (const auto& [attr, value] : xml.attributes) {
         if (attr == "name" || (attr == "ID" && is_explicit_family(xml.tag))) continue;
+        if (!is_port_name(attr)) continue;
         LeafPort port;
         port.name = attr;
         if (auto key = blackboard_key(attr, value)) {

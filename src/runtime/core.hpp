@@ -113,10 +113,24 @@ struct Core {
   std::string file;  // the document's displayed path, for trees without their own
   NodeId root = kNoNode;
 
+  std::string tree_path(NodeId node) const;
+  std::string instance_path(NodeId node) const;
+
   std::vector<Observer*> observers;
   std::vector<TickError> errors;
   Stats stats;
   std::uint64_t tick = 0;
+  NodeStatus last_result = NodeStatus::idle;
+
+  // BT.CPP's WakeUpSignal: set by a node that wants the root ticked again within this tick;
+  // cleared only when Engine::tick() tests it, so one set in a tick that completes carries
+  // into the next tick (as in BT.CPP).
+  bool wake_up = false;
+  NodeId wake_up_node = kNoNode;  // the node that emitted it last (for the loop guard)
+  void emit_wake_up(NodeId id) {
+    wake_up = true;
+    wake_up_node = id;
+  }
 
   NodeId child(NodeId parent, std::uint32_t i) const {
     return children[nodes[parent].first_child + i];
@@ -132,13 +146,15 @@ struct Core {
   void notify(NodeId id, NodeStatus previous, NodeStatus next);
 
   NodeStatus execute_tick(NodeId id);
+  void notify_ticked(NodeId id, NodeStatus result);
   NodeStatus tick_kind(NodeId id);  // the node's own tick(), without its conditions
   // _failureIf/_successIf/_skipIf/_while: the status they impose, or idle for "tick it".
   NodeStatus check_preconditions(NodeId id);
   // _onSuccess/_onFailure/_post after a completed tick; FAILURE if a script fails.
   NodeStatus run_postconditions(NodeId id, NodeStatus status);
-  // Runs one condition script; false (error recorded) when it fails or has no truth value.
-  bool run_condition_script(NodeId id, std::int32_t program, const char* attribute, bool* truth);
+  // Runs one condition script; its truth in *truth when asked. Throws (fail) when the script
+  // fails or has no truth value.
+  void run_condition_script(NodeId id, std::int32_t program, const char* attribute, bool* truth);
   // BT.CPP's haltNode(): the kind's halt (its state and its children), then IDLE.
   void halt_node(NodeId id);
   // ControlNode::haltChild / resetChildren: halt if RUNNING, then IDLE.
@@ -151,11 +167,15 @@ struct Core {
     for (std::uint32_t i = 0; i < nodes[parent].child_count; ++i) halt_child(parent, i);
   }
 
-  // Records what BT.CPP would throw at tick and makes the node fail.
-  NodeStatus fail(NodeId id, const std::string& message);
-  // An Input's value now; false (and an error recorded) when absent or not an integer.
-  bool read_int(NodeId id, const Input& input, const char* port, std::int64_t& out);
-  bool read_bool(NodeId id, const Input& input, const char* port, bool& out);
+  // What BT.CPP throws at tick: records it and throws TickException. `script` is the code of
+  // the script that failed, if any.
+  [[noreturn]] void fail(NodeId id, const std::string& message, const std::string& script = {});
+  // An Input's value now (BT.CPP's getInput). The throwing form fails when it is absent or
+  // not an integer/boolean; try_read_* leaves `out` alone then, as BT.CPP's nodes that ignore
+  // getInput's answer do.
+  std::int64_t read_int(NodeId id, const Input& input, const char* port);
+  bool try_read_int(const Input& input, std::int64_t& out) const;
+  bool try_read_bool(const Input& input, bool& out) const;
 
   LeafContext leaf_context(NodeId id) {
     const NodeParams& p = params[nodes[id].params];

@@ -14,6 +14,10 @@ void Core::notify(NodeId id, NodeStatus previous, NodeStatus next) {
   for (Observer* observer : observers) observer->on_status_change(id, previous, next);
 }
 
+void Core::notify_ticked(NodeId id, NodeStatus result) {
+  for (Observer* observer : observers) observer->on_node_ticked(id, result);
+}
+
 NodeStatus Core::execute_tick(NodeId id) {
   ++stats.node_ticks;
   NodeStatus s = NodeStatus::idle;
@@ -26,9 +30,10 @@ NodeStatus Core::execute_tick(NodeId id) {
     if (s == NodeStatus::idle) s = tick_kind(id);
     if (is_completed(s)) s = run_postconditions(id, s);
   }
-  if (s == NodeStatus::idle) s = fail(id, "returned IDLE, which a tick must not");
+  if (s == NodeStatus::idle) fail(id, "returned IDLE, which a tick must not");
   // A skipped node stays IDLE; only its parent hears SKIPPED (BT.CPP's executeTick).
   if (s != NodeStatus::skipped) set_status(id, s);
+  if (!observers.empty()) notify_ticked(id, s);
   return s;
 }
 
@@ -61,18 +66,20 @@ NodeStatus Core::tick_kind(NodeId id) {
   return s;
 }
 
-bool Core::run_condition_script(NodeId id, std::int32_t program, const char* attribute,
+void Core::run_condition_script(NodeId id, std::int32_t program, const char* attribute,
                                 bool* truth) {
   script::Program& p = programs[static_cast<std::size_t>(program)];
+  const ScriptValue* result = nullptr;
   try {
-    const ScriptValue& result = p.run(bb);
-    if (truth == nullptr || script_truth(result, *truth)) return true;
-    fail(id, std::string(attribute) + ": the result of `" + p.code() + "` is not a boolean: '" +
-                 result.to_string() + "'");
+    result = &p.run(bb);
   } catch (const script::ScriptError& e) {
-    fail(id, std::string(attribute) + ": " + script_error(p, e));
+    fail(id, std::string(attribute) + ": " + script_error(p, e), p.code());
   }
-  return false;
+  if (truth != nullptr && !script_truth(*result, *truth))
+    fail(id,
+         std::string(attribute) + ": the result of `" + p.code() + "` is not a boolean: '" +
+             result->to_string() + "'",
+         p.code());
 }
 
 NodeStatus Core::check_preconditions(NodeId id) {
@@ -85,7 +92,7 @@ NodeStatus Core::check_preconditions(NodeId id) {
     bool truth = false;
     if (status == NodeStatus::idle) {
       // Checked when the node starts, not while it runs.
-      if (!run_condition_script(id, c.pre[pre], kNames[pre], &truth)) return NodeStatus::failure;
+      run_condition_script(id, c.pre[pre], kNames[pre], &truth);
       if (truth) {
         if (pre == C::failure_if) return NodeStatus::failure;
         if (pre == C::success_if) return NodeStatus::success;
@@ -95,7 +102,7 @@ NodeStatus Core::check_preconditions(NodeId id) {
       }
     } else if (status == NodeStatus::running && pre == C::while_true) {
       // _while is checked on every tick: false halts the running node.
-      if (!run_condition_script(id, c.pre[pre], kNames[pre], &truth)) return NodeStatus::failure;
+      run_condition_script(id, c.pre[pre], kNames[pre], &truth);
       if (!truth) {
         halt_node(id);
         return NodeStatus::skipped;
@@ -111,10 +118,8 @@ NodeStatus Core::run_postconditions(NodeId id, NodeStatus status) {
   const std::int32_t specific =
       status == NodeStatus::success ? c.post[C::on_success] : c.post[C::on_failure];
   const char* name = status == NodeStatus::success ? "_onSuccess" : "_onFailure";
-  if (specific >= 0 && !run_condition_script(id, specific, name, nullptr))
-    return NodeStatus::failure;
-  if (c.post[C::always] >= 0 && !run_condition_script(id, c.post[C::always], "_post", nullptr))
-    return NodeStatus::failure;
+  if (specific >= 0) run_condition_script(id, specific, name, nullptr);
+  if (c.post[C::always] >= 0) run_condition_script(id, c.post[C::always], "_post", nullptr);
   return status;
 }
 
@@ -146,16 +151,35 @@ void Core::halt_node(NodeId id) {
   }
 }
 
-NodeStatus Core::fail(NodeId id, const std::string& message) {
+void Core::fail(NodeId id, const std::string& message, const std::string& script) {
   ++stats.errors;
-  if (errors.size() < options.max_recorded_errors) {
-    const NodeInfo& i = info[id];
-    std::string text = i.location.file + ":" + std::to_string(i.location.line) + ":" +
-                       std::to_string(i.location.column) + ": " + i.kind;
-    if (!i.name.empty()) text += " '" + i.name + "'";
-    errors.push_back(TickError{tick, id, text + ": " + message});
+  const NodeInfo& i = info[id];
+  std::string text = i.location.file + ":" + std::to_string(i.location.line) + ":" +
+                     std::to_string(i.location.column) + ": " + i.kind;
+  if (!i.name.empty()) text += " '" + i.name + "'";
+  TickError error{tick, id, text + ": " + message, instance_path(id), script};
+  if (errors.size() < options.max_recorded_errors) errors.push_back(error);
+  throw TickException(std::move(error));
+}
+
+std::string Core::tree_path(NodeId node) const {
+  std::vector<NodeId> chain;
+  const std::uint32_t instance = info[node].instance;
+  for (NodeId n = node; n != kNoNode && info[n].instance == instance; n = info[n].parent)
+    chain.push_back(n);
+  std::string path = info[node].tree_id;
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    const NodeInfo& i = info[*it];
+    path += "/" + i.tag;
+    if (it != chain.rbegin()) path += "[" + std::to_string(i.child_index) + "]";
   }
-  return NodeStatus::failure;
+  return path;
+}
+
+std::string Core::instance_path(NodeId node) const {
+  const Instance& inst = instances[info[node].instance];
+  const std::string own = tree_path(node);
+  return inst.call == kNoNode ? own : instance_path(inst.call) + "/" + own;
 }
 
 namespace {
@@ -178,34 +202,32 @@ bool int_from_value(const ScriptValue& v, std::int64_t& out) {
 
 }  // namespace
 
-bool Core::read_int(NodeId id, const Input& input, const char* port, std::int64_t& out) {
-  if (!input.present) {
-    fail(id, std::string("missing required input [") + port + "]");
-    return false;
-  }
+bool Core::try_read_int(const Input& input, std::int64_t& out) const {
+  if (!input.present) return false;
   if (input.slot == kNoSlot) {
     out = input.value;
     return true;
   }
-  const ScriptValue& v = bb.value(input.slot);
-  if (v.empty()) {
-    fail(id, std::string("input [") + port + "] reads blackboard key '" + bb.key(input.slot) +
-                 "', which is not set");
-    return false;
-  }
-  if (!int_from_value(v, out)) {
-    fail(id, std::string("input [") + port + "]: '" + v.to_string() + "' (key '" +
-                 bb.key(input.slot) + "') is not an integer");
-    return false;
-  }
+  std::int64_t v = 0;
+  if (!int_from_value(bb.value(input.slot), v)) return false;
+  out = v;
   return true;
 }
 
-bool Core::read_bool(NodeId id, const Input& input, const char* port, bool& out) {
-  if (!input.present) {
-    fail(id, std::string("missing required input [") + port + "]");
-    return false;
-  }
+std::int64_t Core::read_int(NodeId id, const Input& input, const char* port) {
+  std::int64_t out = 0;
+  if (try_read_int(input, out)) return out;
+  if (!input.present) fail(id, std::string("missing required input [") + port + "]");
+  const ScriptValue& v = bb.value(input.slot);
+  if (v.empty())
+    fail(id, std::string("input [") + port + "] reads blackboard key '" + bb.key(input.slot) +
+                 "', which is not set");
+  fail(id, std::string("input [") + port + "]: '" + v.to_string() + "' (key '" +
+               bb.key(input.slot) + "') is not an integer");
+}
+
+bool Core::try_read_bool(const Input& input, bool& out) const {
+  if (!input.present) return false;
   if (input.slot == kNoSlot) {
     out = input.value != 0;
     return true;
@@ -219,8 +241,6 @@ bool Core::read_bool(NodeId id, const Input& input, const char* port, bool& out)
   } else if (!v.empty() && int_from_value(v, i) && (i == 0 || i == 1)) {
     out = i == 1;
   } else {
-    fail(id, std::string("input [") + port + "]: key '" + bb.key(input.slot) +
-                 "' does not hold a boolean");
     return false;
   }
   return true;
@@ -234,10 +254,32 @@ Engine& Engine::operator=(Engine&&) noexcept = default;
 Engine::~Engine() = default;
 
 NodeStatus Engine::tick() {
-  ++core_->tick;
-  ++core_->stats.root_ticks;
-  const NodeStatus s = core_->execute_tick(core_->root);
+  detail::Core& c = *core_;
+  ++c.tick;
+  ++c.stats.root_ticks;
+  NodeStatus s = c.execute_tick(c.root);
+  if (s == NodeStatus::running && c.wake_up) s = wake_up_loop();
+  c.last_result = s;
+  if (is_completed(s)) c.set_status(c.root, NodeStatus::idle);  // BT.CPP's resetStatus()
+  for (Observer* observer : c.observers) observer->on_tick_done(c.tick, s);
   apply_pending_swaps();
+  return s;
+}
+
+// Tree::tickRoot's inner loop: the flag is tested (and cleared) only while the root runs.
+NodeStatus Engine::wake_up_loop() {
+  detail::Core& c = *core_;
+  NodeStatus s = NodeStatus::running;
+  std::uint32_t reticks = 0;
+  while (s == NodeStatus::running && c.wake_up) {
+    c.wake_up = false;
+    if (reticks++ == c.options.max_wakeup_reticks)
+      c.fail(c.wake_up_node,
+             "asked for a wake-up re-tick " + std::to_string(reticks) +
+                 " times within one tick: BehaviorTree.CPP's tickOnce() would never return");
+    ++c.stats.wakeup_reticks;
+    s = c.execute_tick(c.root);
+  }
   return s;
 }
 
@@ -259,6 +301,9 @@ NodeId Engine::root() const {
 NodeStatus Engine::status() const {
   return core_->nodes[core_->root].status;
 }
+NodeStatus Engine::last_result() const {
+  return core_->last_result;
+}
 NodeStatus Engine::status(NodeId node) const {
   return core_->nodes.at(node).status;
 }
@@ -275,24 +320,13 @@ std::span<const NodeId> Engine::children(NodeId node) const {
 }
 
 std::string Engine::tree_path(NodeId node) const {
-  std::vector<NodeId> chain;
-  const std::uint32_t instance = info(node).instance;
-  for (NodeId n = node; n != kNoNode && core_->info[n].instance == instance;
-       n = core_->info[n].parent)
-    chain.push_back(n);
-  std::string path = info(node).tree_id;
-  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-    const NodeInfo& i = core_->info[*it];
-    path += "/" + i.tag;
-    if (it != chain.rbegin()) path += "[" + std::to_string(i.child_index) + "]";
-  }
-  return path;
+  info(node);  // range check
+  return core_->tree_path(node);
 }
 
 std::string Engine::instance_path(NodeId node) const {
-  const detail::Instance& inst = core_->instances[info(node).instance];
-  const std::string own = tree_path(node);
-  return inst.call == kNoNode ? own : instance_path(inst.call) + "/" + own;
+  info(node);  // range check
+  return core_->instance_path(node);
 }
 
 NodeId Engine::find_path(std::string_view path) const {
@@ -312,6 +346,20 @@ std::vector<NodeId> Engine::subtree_calls(std::string_view tree_id) const {
   std::vector<NodeId> out;
   for (const detail::Instance& inst : core_->instances)
     if (inst.alive && inst.call != kNoNode && inst.tree_id == tree_id) out.push_back(inst.call);
+  return out;
+}
+
+std::vector<std::pair<std::string, ScriptValue>> Engine::condition_reads(NodeId node) const {
+  const detail::RtNode& n = core_->nodes.at(node);
+  std::vector<std::pair<std::string, ScriptValue>> out;
+  if (n.kind == detail::Kind::world_leaf)
+    return core_->world->condition_reads(core_->leaf_context(node));
+  if (n.kind != detail::Kind::script_condition) return out;
+  const script::Program& program = core_->programs[core_->params[n.params].program];
+  for (const std::string& key : program.names()) {
+    const auto slot = core_->bb.find(scope(node), key);
+    out.emplace_back(key, slot ? core_->bb.value(*slot) : ScriptValue{});
+  }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "base/location.hpp"
@@ -45,28 +46,45 @@ struct NodeInfo {
   bool alive = true;
 };
 
-// A failure BT.CPP raises as an exception while ticking (undefined script key, bad port,
-// wrong child count). uabt records it and the node returns FAILURE.
+// A failure BT.CPP raises as an exception while ticking (undefined script key, type error,
+// bad port, wrong child count, a skipped IfThenElse/WhileDoElse condition). As in BT.CPP the
+// tick stops there: Engine::tick() throws a TickException carrying it, nothing is halted or
+// reset, and a later tick resumes where this one stopped.
 struct TickError {
   std::uint64_t tick = 0;
   NodeId node = kNoNode;
   std::string message;  // "file:line:col: Kind 'name': what went wrong"
+  std::string path;     // the node's instance path (Engine::instance_path)
+  std::string script;   // the script that failed, "" when the error is not a script's
+};
+
+class TickException : public std::runtime_error {
+ public:
+  explicit TickException(TickError e) : std::runtime_error(e.message), error(std::move(e)) {}
+  TickError error;
 };
 
 struct Stats {
-  std::uint64_t root_ticks = 0;
-  std::uint64_t node_ticks = 0;  // every node tick, the root's included
-  std::uint64_t swaps = 0;       // tree instances rebuilt by replace_tree
-  std::uint64_t errors = 0;      // TickErrors, recorded or not
+  std::uint64_t root_ticks = 0;      // Engine::tick() calls
+  std::uint64_t node_ticks = 0;      // every node tick, the root's included
+  std::uint64_t swaps = 0;           // tree instances rebuilt by replace_tree
+  std::uint64_t errors = 0;          // TickErrors, recorded or not
+  std::uint64_t wakeup_reticks = 0;  // extra root ticks the wake-up signal asked for
 };
 
 // Told about every status change, in the order BT.CPP's StatusChangeLogger would see them
 // (a control goes IDLE→RUNNING when ticked, completed children are reset to IDLE by their
-// parent, halted nodes go to IDLE). Must not modify the engine from the callback.
+// parent, halted nodes go to IDLE, a completed root goes back to IDLE at the end of the tick).
+// Must not modify the engine from the callbacks.
 class Observer {
  public:
   virtual ~Observer() = default;
   virtual void on_status_change(NodeId node, NodeStatus previous, NodeStatus next) = 0;
+  // After every tick of a node, with what it returned to its parent (SKIPPED included), also
+  // when its status did not change. Wake-up re-ticks are ticks like any other.
+  virtual void on_node_ticked(NodeId /*node*/, NodeStatus /*result*/) {}
+  // At the end of each Engine::tick() that returned (after its wake-up re-ticks).
+  virtual void on_tick_done(std::uint64_t /*tick*/, NodeStatus /*root_result*/) {}
 };
 
 // What replace_tree does with an instance of the tree that is RUNNING.
@@ -85,10 +103,12 @@ struct SwapResult {
 };
 
 struct EngineOptions {
-  // Repeat and RetryUntilSuccessful loop within one tick while their child completes at once
-  // (BT.CPP). After this many rounds in one tick they return RUNNING and go on at the next
-  // tick, so that num_cycles="-1" over an instant child cannot hang the engine.
-  std::uint32_t max_loop_rounds_per_tick = 10000;
+  // Bound on the wake-up loop of one tick (BT.CPP's tickOnce re-ticks the root while a node
+  // asked for it, without limit). A tree that keeps asking, e.g. Repeat num_cycles="-1" over
+  // a child that completes at once, would never return from BT.CPP's tickOnce(); uabt stops
+  // after this many re-ticks with a TickException naming the node that asked last. Trees that
+  // settle within the bound tick exactly as in BT.CPP.
+  std::uint32_t max_wakeup_reticks = 100000;
   // SubTree calls nested deeper than this are refused at load (ticking recurses).
   int max_subtree_nesting = 64;
   // TickErrors kept; later ones are only counted (Stats::errors).
@@ -111,14 +131,18 @@ class Engine {
   Engine& operator=(Engine&&) noexcept;
   ~Engine();
 
-  // One tick of the root (BT.CPP's tickOnce). Deferred swaps whose instance is no longer
-  // RUNNING are applied at the end of the tick.
+  // One tick (BT.CPP's Tree::tickOnce): the root is ticked, then ticked again at once while
+  // it is RUNNING and a node emitted the wake-up signal (Repeat, RetryUntilSuccessful,
+  // SequenceWithMemory after a child that completed within the tick). A root that completes
+  // is reset to IDLE. Deferred swaps whose instance is no longer RUNNING are applied at the
+  // end of the tick. Throws TickException where BT.CPP's tick throws (see TickError).
   NodeStatus tick();
   // Halts the whole tree: every RUNNING node is halted and every node is IDLE afterwards.
   void halt();
 
   NodeId root() const;
-  NodeStatus status() const;  // the root's
+  NodeStatus status() const;       // the root's (IDLE again once a tick completed it)
+  NodeStatus last_result() const;  // what the last tick() returned (IDLE before the first)
   NodeStatus status(NodeId node) const;
   std::size_t node_count() const;  // ids in use, swapped-out nodes included
   const NodeInfo& info(NodeId node) const;
@@ -133,6 +157,11 @@ class Engine {
   std::vector<NodeId> find_by_name(std::string_view name) const;  // `name` attribute, alive
   // SubTree nodes (alive) that call `tree_id`; the main tree has none.
   std::vector<NodeId> subtree_calls(std::string_view tree_id) const;
+
+  // What a condition read in its last tick: a ScriptCondition's keys, a robot condition's
+  // state entry (World::condition_reads), with their values now (empty: not set). Empty for
+  // every other node.
+  std::vector<std::pair<std::string, ScriptValue>> condition_reads(NodeId node) const;
 
   void add_observer(Observer* observer);
   void remove_observer(Observer* observer);
@@ -159,6 +188,7 @@ class Engine {
 
  private:
   explicit Engine(std::unique_ptr<detail::Core> core);
+  NodeStatus wake_up_loop();
   std::unique_ptr<detail::Core> core_;
 };
 

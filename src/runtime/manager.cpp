@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "base/diagnostics.hpp"
@@ -79,7 +78,7 @@ ManagerRun BehaviorTreeManager::run() {
 
   RunOptions run_options;
   run_options.max_ticks = options_.max_ticks;
-  run_options.log_conditions = false;
+  run_options.log_conditions = false;  // the leaf log is not kept (see the loop below)
   std::vector<bt::NodeModel> robot_nodes;
   if (running.outcome.mission->nodes) robot_nodes = *running.outcome.mission->nodes;
   Runner runner(running.document, scenario_, run_options, robot_nodes);
@@ -133,10 +132,14 @@ ManagerRun BehaviorTreeManager::run() {
     result.trace.push_back(std::move(e));
   };
 
+  NodeTracer tracer(runner.engine(), result.trace);
+  if (options_.trace_nodes) runner.engine().add_observer(&tracer);
+
   NodeStatus last = NodeStatus::idle;
-  while (!runner.done()) {
+  while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
     const NodeStatus now = runner.step();
-    if (now == last) continue;
+    runner.world().clear_log();  // memory stays bounded however long the run
+    if (runner.error() || now == last) continue;
     TraceEvent e;
     e.tick = runner.ticks();
     e.event = "status";
@@ -144,75 +147,34 @@ ManagerRun BehaviorTreeManager::run() {
     result.trace.push_back(std::move(e));
     last = now;
   }
+  runner.engine().remove_observer(&tracer);
   runner.engine().remove_observer(&selections);
 
   result.ticks = runner.ticks();
-  result.status = runner.engine().status();
-  result.finished = result.status == NodeStatus::success || result.status == NodeStatus::failure;
+  result.status = runner.engine().last_result();
+  result.verdict = runner.verdict();
+  result.finished = result.verdict != "timeout" && result.verdict != "error";
+  result.error = runner.error();
   result.accepted_uplinks = accepted;
+  if (result.error) {
+    TraceEvent e;
+    e.tick = result.error->tick;
+    e.event = "error";
+    e.node = result.error->path;
+    e.message = result.error->message;
+    e.script = result.error->script;
+    result.trace.push_back(std::move(e));
+  }
   TraceEvent done;
   done.tick = result.ticks;
   done.event = "done";
-  done.verdict = result.finished ? lower_case(status_name(result.status)) : "timeout";
+  done.verdict = result.verdict;
   result.trace.push_back(std::move(done));
   return result;
 }
 
-std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
-  std::string out;
-  for (const auto& e : trace) {
-    nlohmann::ordered_json j;
-    j["tick"] = e.tick;
-    j["event"] = e.event;
-    if (!e.adaptable.empty()) j["adaptable"] = e.adaptable;
-    if (!e.alternative.empty()) j["alternative"] = e.alternative;
-    if (!e.requirement.empty()) j["requirement"] = e.requirement;
-    if (!e.uplink.empty()) j["uplink"] = e.uplink;
-    if (!e.verdict.empty()) j["verdict"] = e.verdict;
-    if (!e.status.empty()) j["status"] = e.status;
-    if (e.event == "uplink") {
-      if (e.verdict == "accepted") {
-        j["swapped"] = e.swapped;
-        j["halted"] = e.halted;
-      }
-      j["latency_ms"] = e.latency_ms;
-      nlohmann::ordered_json findings = nlohmann::ordered_json::array();
-      for (const auto& f : e.findings)
-        findings.push_back({{"check", f.check},
-                            {"message", f.message},
-                            {"file", f.location.file},
-                            {"line", f.location.line}});
-      if (!findings.empty()) j["findings"] = std::move(findings);
-    }
-    out += j.dump() + "\n";
-  }
-  return out;
-}
-
 std::string trace_summary(const ManagerRun& run) {
-  std::string out;
-  for (const auto& e : run.trace) {
-    out += "tick " + std::to_string(e.tick) + ": ";
-    if (e.event == "select") {
-      out += e.adaptable + " selects " + e.alternative + " (" + e.requirement + ")";
-    } else if (e.event == "uplink") {
-      out += "uplink " + e.uplink + " " + e.verdict;
-      if (e.verdict == "accepted") {
-        out += ", swapped";
-        for (const auto& id : e.swapped) out += " " + id;
-      } else {
-        for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
-      }
-    } else if (e.event == "status") {
-      out += "mission " + e.status;
-    } else if (e.event == "done") {
-      out += "mission " + e.verdict;
-    } else {
-      out += e.event;
-    }
-    out += "\n";
-  }
-  return out;
+  return trace_summary(run.trace);
 }
 
 }  // namespace uabt::runtime

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,33 +10,23 @@
 #include "gate/gate.hpp"
 #include "runtime/scenario.hpp"
 #include "runtime/status.hpp"
+#include "runtime/trace.hpp"
 
 namespace uabt::runtime {
-
-// One line of the manager's trace (DESIGN §8): JSON lines with tick, event and what it
-// concerns.
-struct TraceEvent {
-  std::uint64_t tick = 0;
-  std::string event;  // select | uplink | status | done
-  std::string adaptable, alternative, requirement;
-  std::string verdict;  // uplink: accepted | rejected; done: success | failure | timeout
-  std::string uplink;   // the package, for uplink events
-  std::vector<std::string> swapped;  // uplink accepted: trees replaced or added
-  std::vector<Finding> findings;     // uplink rejected: why
-  std::uint64_t halted = 0;          // uplink accepted: running instances halted by the swap
-  double latency_ms = 0.0;           // uplink: from receipt to the new tree being in place
-  std::string status;                // status: the root's status after the tick
-};
 
 struct ManagerOptions {
   gate::Options gate;          // also chooses the selector style of every compiled version
   std::int64_t max_ticks = 0;  // 0: the scenario's
+  bool trace_nodes = false;    // --trace-level nodes: every node status change, condition read
 };
 
 struct ManagerRun {
-  NodeStatus status = NodeStatus::idle;
+  NodeStatus status = NodeStatus::idle;  // what the root returned in the last tick
   std::uint64_t ticks = 0;
-  bool finished = false;
+  bool finished = false;  // the root completed
+  // success | failure | skipped | timeout (max_ticks reached) | error (a tick threw)
+  std::string verdict;
+  std::optional<TickError> error;
   std::vector<TraceEvent> trace;
   std::vector<std::string> accepted_uplinks;
 };
@@ -64,8 +55,7 @@ class BehaviorTreeManager {
   ManagerOptions options_;
 };
 
-// The trace as JSON lines, and as a short text summary for a terminal.
-std::string trace_json_lines(const std::vector<TraceEvent>& trace);
+// The trace as a short text summary for a terminal (trace.hpp has the JSON lines).
 std::string trace_summary(const ManagerRun& run);
 
 }  // namespace uabt::runtime

@@ -16,25 +16,40 @@ Runner::Runner(const bt::Document& doc, Scenario scenario, RunOptions options,
 }
 
 NodeStatus Runner::step() {
+  if (error_) return last_;
   const auto next_tick = static_cast<std::int64_t>(engine_->tick_count() + 1);
   const auto& events = world_->scenario().events;
-  while (next_event_ < events.size() && events[next_event_].at <= next_tick) {
-    const ScenarioEvent& event = events[next_event_++];
-    world_->apply_event(event, engine_->blackboard());
-    if (event.uplink.empty()) continue;
-    if (on_uplink) {
-      on_uplink(event, *this);
-    } else {
-      unhandled_.push_back(event);
+  try {
+    while (next_event_ < events.size() && events[next_event_].at <= next_tick) {
+      const ScenarioEvent& event = events[next_event_++];
+      world_->apply_event(event, engine_->blackboard());
+      if (event.uplink.empty()) continue;
+      if (on_uplink) {
+        on_uplink(event, *this);
+      } else {
+        unhandled_.push_back(event);
+      }
     }
+    last_ = engine_->tick();
+  } catch (const TickException& e) {
+    error_ = e.error;
   }
-  last_ = engine_->tick();
   return last_;
 }
 
 bool Runner::done() const {
-  return last_ == NodeStatus::success || last_ == NodeStatus::failure ||
+  return error_ || last_ == NodeStatus::success || last_ == NodeStatus::failure ||
          last_ == NodeStatus::skipped;
+}
+
+std::string Runner::verdict() const {
+  if (error_) return "error";
+  switch (last_) {
+    case NodeStatus::success: return "success";
+    case NodeStatus::failure: return "failure";
+    case NodeStatus::skipped: return "skipped";
+    default: return "timeout";
+  }
 }
 
 RunResult Runner::run() {
@@ -42,7 +57,9 @@ RunResult Runner::run() {
   RunResult result;
   result.status = last_;
   result.ticks = engine_->tick_count();
-  result.finished = done();
+  result.finished = done() && !error_;
+  result.verdict = verdict();
+  result.error = error_;
   result.log = world_->log();
   result.errors = engine_->errors();
   result.unhandled_uplinks = unhandled_;

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,10 +21,14 @@ struct RunOptions {
 };
 
 struct RunResult {
-  NodeStatus status = NodeStatus::idle;  // the root's last status
+  NodeStatus status = NodeStatus::idle;  // what the root returned in the last tick
   std::uint64_t ticks = 0;
   bool finished = false;  // the root completed (SUCCESS/FAILURE, or SKIPPED) within max_ticks
-  std::vector<LeafLogEntry> log;  // what the world's leaves did, tick by tick
+  // success | failure | skipped (the root's last result) | timeout (max_ticks reached while it
+  // ran) | error (a tick threw, see `error`).
+  std::string verdict;
+  std::optional<TickError> error;  // what stopped the run, as BT.CPP's tickOnce() throws it
+  std::vector<LeafLogEntry> log;   // what the world's leaves did, tick by tick
   std::vector<TickError> errors;
   std::vector<ScenarioEvent> unhandled_uplinks;  // due uplinks nobody took (no on_uplink)
   Stats stats;
@@ -31,8 +36,9 @@ struct RunResult {
 
 // Runs a tree in a scenario's simulated world: before each tick the events due at it are
 // applied (state changes; uplinks go to on_uplink), then the root is ticked, until it
-// completes or max_ticks. Independent of the gate: the manager wires uplinks through
-// on_uplink and swaps trees through engine().
+// completes, max_ticks is reached (verdict timeout), or a tick throws (verdict error: the run
+// stops there, as a BT.CPP program whose tickOnce() throws). Independent of the gate: the manager
+// wires uplinks through on_uplink and swaps trees through engine().
 class Runner {
  public:
   // Throws LoadError (tree) as Engine::build does.
@@ -47,9 +53,13 @@ class Runner {
   // applied and before the tick.
   std::function<void(const ScenarioEvent&, Runner&)> on_uplink;
 
-  // Applies the events due at the next tick, then ticks once.
+  // Applies the events due at the next tick, then ticks once. A TickException (from the tick,
+  // or from a halt an uplink caused) ends the run: error() holds it, done() is true.
   NodeStatus step();
-  bool done() const;
+  bool done() const;  // completed, or stopped by an error
+  const std::optional<TickError>& error() const { return error_; }
+  // The verdict so far (see RunResult::verdict): "timeout" while the root runs.
+  std::string verdict() const;
   std::uint64_t ticks() const { return engine_->tick_count(); }
   std::int64_t max_ticks() const { return max_ticks_; }
   // Steps until done() or max_ticks, then reports.
@@ -61,6 +71,7 @@ class Runner {
   std::int64_t max_ticks_ = 0;
   std::size_t next_event_ = 0;
   NodeStatus last_ = NodeStatus::idle;
+  std::optional<TickError> error_;
   std::vector<ScenarioEvent> unhandled_;
 };
 

@@ -84,19 +84,36 @@ std::uint32_t SimWorld::bind_leaf(const LeafBinding& binding) {
   return static_cast<std::uint32_t>(leaves_.size() - 1);
 }
 
+const ScriptValue* SimWorld::condition_value(const Leaf& leaf, const LeafContext& context,
+                                             std::string& dynamic_key) const {
+  const ScriptValue* value = nullptr;
+  if (leaf.dynamic) {
+    dynamic_key = qualified_key(leaf, context.ports, context.blackboard);
+    value = context.blackboard.get(dynamic_key);
+  } else if (leaf.qualified != kNoSlot && !context.blackboard.value(leaf.qualified).empty()) {
+    value = &context.blackboard.value(leaf.qualified);
+  }
+  if (value == nullptr && !context.blackboard.value(leaf.plain).empty())
+    value = &context.blackboard.value(leaf.plain);
+  return value;
+}
+
+std::vector<std::pair<std::string, ScriptValue>> SimWorld::condition_reads(
+    const LeafContext& context) const {
+  const Leaf& leaf = leaves_[context.handle];
+  if (!leaf.condition) return {};
+  std::string dynamic_key;
+  const ScriptValue* value = condition_value(leaf, context, dynamic_key);
+  std::string key = leaf.dynamic ? dynamic_key : leaf.label;
+  if (value != nullptr && value == &context.blackboard.value(leaf.plain)) key = leaf.name;
+  return {{std::move(key), value ? *value : ScriptValue{}}};
+}
+
 NodeStatus SimWorld::tick_leaf(const LeafContext& context) {
   Leaf& leaf = leaves_[context.handle];
   if (leaf.condition) {
-    const ScriptValue* value = nullptr;
     std::string dynamic_key;
-    if (leaf.dynamic) {
-      dynamic_key = qualified_key(leaf, context.ports, context.blackboard);
-      value = context.blackboard.get(dynamic_key);
-    } else if (leaf.qualified != kNoSlot && !context.blackboard.value(leaf.qualified).empty()) {
-      value = &context.blackboard.value(leaf.qualified);
-    }
-    if (value == nullptr && !context.blackboard.value(leaf.plain).empty())
-      value = &context.blackboard.value(leaf.plain);
+    const ScriptValue* value = condition_value(leaf, context, dynamic_key);
     const bool truth = value != nullptr && value->is_number() && value->as_double() != 0.0;
     const NodeStatus s = truth ? NodeStatus::success : NodeStatus::failure;
     if (log_conditions_)

@@ -3,6 +3,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "bt/tree.hpp"
@@ -60,6 +61,12 @@ class World {
   virtual std::uint32_t bind_leaf(const LeafBinding& leaf) = 0;
   virtual NodeStatus tick_leaf(const LeafContext& leaf) = 0;
   virtual void halt_leaf(const LeafContext& leaf) = 0;
+  // For traces: the state entries a condition leaf reads, with their values now (an empty
+  // value: not set). Empty for actions; the default knows of no conditions.
+  virtual std::vector<std::pair<std::string, ScriptValue>> condition_reads(
+      const LeafContext& /*leaf*/) const {
+    return {};
+  }
 };
 
 // What the simulated world did with a leaf on one tick.
@@ -120,6 +127,8 @@ class SimWorld : public World {
   std::uint32_t bind_leaf(const LeafBinding& leaf) override;
   NodeStatus tick_leaf(const LeafContext& leaf) override;
   void halt_leaf(const LeafContext& leaf) override;
+  std::vector<std::pair<std::string, ScriptValue>> condition_reads(
+      const LeafContext& leaf) const override;
 
  private:
   struct Leaf {
@@ -135,6 +144,10 @@ class SimWorld : public World {
   };
   std::string qualified_key(const Leaf& leaf, std::span<const LeafPort> ports,
                             const Blackboard& blackboard) const;
+  // The value a condition reads now (nullptr: unset); the key it looked up when its ports
+  // read the blackboard.
+  const ScriptValue* condition_value(const Leaf& leaf, const LeafContext& context,
+                                     std::string& dynamic_key) const;
 
   Scenario scenario_;
   std::vector<bt::NodeModel> robot_nodes_;

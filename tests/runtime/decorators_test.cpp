@@ -29,10 +29,13 @@ TEST_F(Decorator, ForceSuccessAndForceFailure) {
   EXPECT_EQ(no.tick(), F);
 }
 
-TEST_F(Decorator, RepeatLoopsWithinOneTickWhileTheChildSucceeds) {
+TEST_F(Decorator, RepeatCyclesWithinOneTickThroughTheWakeUpSignal) {
   Engine e = build("<Repeat num_cycles=\"3\"><A/></Repeat>");
   EXPECT_EQ(e.tick(), S);
   EXPECT_EQ(world.ticks("A"), 3);
+  // Each instant success yields RUNNING with the wake-up signal; tick() re-ticks the root.
+  EXPECT_EQ(e.stats().wakeup_reticks, 2u);
+  EXPECT_EQ(e.stats().root_ticks, 1u);
 }
 
 TEST_F(Decorator, RepeatResumesAfterRunningAndStopsOnFailure) {
@@ -47,14 +50,21 @@ TEST_F(Decorator, RepeatResumesAfterRunningAndStopsOnFailure) {
   EXPECT_EQ(world.ticks("B"), 2);
 }
 
-TEST_F(Decorator, RepeatForeverIsBoundedPerTick) {
+TEST_F(Decorator, RepeatForeverOverAnInstantChildStopsTheRunWithAnError) {
+  // BT.CPP's tickOnce() never returns here; uabt stops after max_wakeup_reticks.
   EngineOptions options;
-  options.max_loop_rounds_per_tick = 5;
-  Engine e = build("<Repeat num_cycles=\"-1\"><A/></Repeat>", "", options);
-  EXPECT_EQ(e.tick(), R);  // yields instead of looping forever
-  EXPECT_EQ(world.ticks("A"), 5);
-  EXPECT_EQ(e.tick(), R);
-  EXPECT_EQ(world.ticks("A"), 10);
+  options.max_wakeup_reticks = 5;
+  Engine e = build("<Sequence><Repeat name=\"loop\" num_cycles=\"-1\"><A/></Repeat></Sequence>", "",
+                   options);
+  try {
+    e.tick();
+    FAIL() << "no error";
+  } catch (const TickException& x) {
+    EXPECT_EQ(x.error.node, by_name(e, "loop"));
+    EXPECT_EQ(x.error.path, "Main/Sequence/Repeat[0]");
+    EXPECT_NE(x.error.message.find("tickOnce() would never return"), std::string::npos);
+  }
+  EXPECT_EQ(world.ticks("A"), 6);
 }
 
 TEST_F(Decorator, RepeatCountFromTheBlackboardAndMissingCount) {
@@ -63,7 +73,7 @@ TEST_F(Decorator, RepeatCountFromTheBlackboardAndMissingCount) {
   EXPECT_EQ(e.tick(), S);
   EXPECT_EQ(world.ticks("A"), 2);
   Engine missing = build("<Repeat><B/></Repeat>");  // BT.CPP throws at tick
-  EXPECT_EQ(missing.tick(), F);
+  EXPECT_THROW(missing.tick(), TickException);
   ASSERT_EQ(missing.errors().size(), 1u);
   EXPECT_NE(missing.errors()[0].message.find("num_cycles"), std::string::npos);
   EXPECT_THROW(build("<Repeat num_cycles=\"three\"><B/></Repeat>"), LoadError);
@@ -132,7 +142,7 @@ TEST_F(SubTree, AutoremapSharesKeysWithTheParentButNotPrivateOnes) {
 TEST_F(SubTree, WithoutAutoremapTheScopeIsIsolated) {
   Engine e = build("<Sequence><Script code=\"x := 1\"/><SubTree ID=\"Sub\"/></Sequence>",
                    "<BehaviorTree ID=\"Sub\"><Script code=\"x = 5\"/></BehaviorTree>");
-  EXPECT_EQ(e.tick(), F);
+  EXPECT_THROW(e.tick(), TickException);
   ASSERT_EQ(e.errors().size(), 1u);
   EXPECT_NE(e.errors()[0].message.find("'x' does not exist"), std::string::npos);
   EXPECT_EQ(*e.blackboard().get("x"), ScriptValue::of_int(1));

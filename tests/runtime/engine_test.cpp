@@ -41,10 +41,19 @@ TEST_F(EngineTest, ScriptConditionReadsTheBlackboardEveryTick) {
   EXPECT_TRUE(e.errors().empty());
 }
 
-TEST_F(EngineTest, UndefinedScriptKeyFailsTheNodeAndIsRecorded) {
+TEST_F(EngineTest, UndefinedScriptKeyStopsTheTickAsBtcppThrows) {
   Engine e =
       build("<Fallback><ScriptCondition name=\"low\" code=\"battery &lt; 20\"/><A/></Fallback>");
-  EXPECT_EQ(e.tick(), S);  // the condition failed, the Fallback went on to A
+  try {
+    e.tick();
+    FAIL() << "no TickException";
+  } catch (const TickException& x) {
+    EXPECT_EQ(x.error.path, "Main/Fallback/ScriptCondition[0]");
+    EXPECT_EQ(x.error.script, "battery < 20");
+  }
+  EXPECT_EQ(world.ticks("A"), 0);  // the Fallback did not go on
+  // Nothing was halted or reset: the Fallback is still RUNNING at its first child.
+  EXPECT_EQ(e.status(), R);
   ASSERT_EQ(e.errors().size(), 1u);
   const TickError& err = e.errors()[0];
   EXPECT_EQ(err.tick, 1u);
@@ -58,7 +67,7 @@ TEST_F(EngineTest, UndefinedScriptKeyFailsTheNodeAndIsRecorded) {
 
 TEST_F(EngineTest, ScriptConditionNeedsABooleanResult) {
   Engine e = build("<ScriptCondition code=\"'rocks'\"/>");
-  EXPECT_EQ(e.tick(), F);
+  EXPECT_THROW(e.tick(), TickException);
   ASSERT_EQ(e.errors().size(), 1u);
   EXPECT_NE(e.errors()[0].message.find("not a boolean"), std::string::npos);
 }
@@ -118,7 +127,7 @@ TEST_F(EngineTest, WhileConditionHaltsARunningNode) {
   EXPECT_EQ(e.tick(), K);  // not started while the condition is false
   EXPECT_EQ(world.joined_events(), "Act ~Act");
   e.blackboard().set("go", ScriptValue::of_string("maybe"));
-  EXPECT_EQ(e.tick(), F);
+  EXPECT_THROW(e.tick(), TickException);
   ASSERT_EQ(e.errors().size(), 1u);
   EXPECT_NE(e.errors()[0].message.find("_while: the result of `go` is not a boolean"),
             std::string::npos);
@@ -154,8 +163,10 @@ TEST_F(EngineTest, ObserverSeesStatusChangesInBtcppOrder) {
             (std::vector<std::string>{"seq:IDLE>RUNNING", "A:IDLE>SUCCESS", "B:IDLE>RUNNING"}));
   rec.changes.clear();
   e.tick();
-  EXPECT_EQ(rec.changes, (std::vector<std::string>{"B:RUNNING>SUCCESS", "A:SUCCESS>IDLE",
-                                                   "B:SUCCESS>IDLE", "seq:RUNNING>SUCCESS"}));
+  // The completed root goes back to IDLE at the end of the tick (BT.CPP's tickRoot).
+  EXPECT_EQ(rec.changes,
+            (std::vector<std::string>{"B:RUNNING>SUCCESS", "A:SUCCESS>IDLE", "B:SUCCESS>IDLE",
+                                      "seq:RUNNING>SUCCESS", "seq:SUCCESS>IDLE"}));
   e.remove_observer(&rec);
   rec.changes.clear();
   e.tick();

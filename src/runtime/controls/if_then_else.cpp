@@ -9,7 +9,7 @@ NodeStatus tick_if_then_else(Core& core, NodeId id) {
   RtNode& n = core.nodes[id];
   const std::uint32_t count = n.child_count;
   if (count != 2 && count != 3)
-    return core.fail(id, "IfThenElse must have 2 or 3 children, it has " + std::to_string(count));
+    core.fail(id, "IfThenElse must have 2 or 3 children, it has " + std::to_string(count));
   core.set_status(id, NodeStatus::running);
 
   if (n.a == 0) {
@@ -22,7 +22,8 @@ NodeStatus tick_if_then_else(Core& core, NodeId id) {
       n.a = 2;
     }
   }
-  if (n.a == 0) return core.fail(id, "its condition was skipped: no branch to run");
+  // BT.CPP throws "Something unexpected happened" here.
+  if (n.a == 0) core.fail(id, "its condition was skipped: no branch to run");
 
   const NodeStatus s = core.execute_tick(core.child(id, static_cast<std::uint32_t>(n.a)));
   if (s == NodeStatus::running) return s;

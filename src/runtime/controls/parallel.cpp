@@ -28,22 +28,21 @@ void halt_parallel(Core& core, NodeId id) {
 
 NodeStatus tick_parallel(Core& core, NodeId id) {
   const NodeParams& p = core.params[core.nodes[id].params];
-  std::int64_t success_value = -1, failure_value = 1;
-  if (!core.read_int(id, p.in0, "success_count", success_value)) return NodeStatus::failure;
-  if (!core.read_int(id, p.in1, "failure_count", failure_value)) return NodeStatus::failure;
+  const std::int64_t success_value = core.read_int(id, p.in0, "success_count");
+  const std::int64_t failure_value = core.read_int(id, p.in1, "failure_count");
 
   RtNode& n = core.nodes[id];
   const std::uint32_t count = n.child_count;
   const std::int64_t required_successes = threshold(success_value, count);
   const std::int64_t failure_threshold = threshold(failure_value, count);
   if (count < required_successes)
-    return core.fail(id, "success_count " + std::to_string(success_value) + " needs " +
-                             std::to_string(required_successes) + " children, it has " +
-                             std::to_string(count) + ": it can never succeed");
+    core.fail(id, "success_count " + std::to_string(success_value) + " needs " +
+                      std::to_string(required_successes) + " children, it has " +
+                      std::to_string(count) + ": it can never succeed");
   if (count < failure_threshold)
-    return core.fail(id, "failure_count " + std::to_string(failure_value) + " needs " +
-                             std::to_string(failure_threshold) + " children, it has " +
-                             std::to_string(count) + ": it can never fail");
+    core.fail(id, "failure_count " + std::to_string(failure_value) + " needs " +
+                      std::to_string(failure_threshold) + " children, it has " +
+                      std::to_string(count) + ": it can never fail");
 
   core.set_status(id, NodeStatus::running);
   std::uint32_t skipped = 0;

@@ -14,17 +14,16 @@ void halt_parallel_all(Core& core, NodeId id) {
 
 NodeStatus tick_parallel_all(Core& core, NodeId id) {
   const NodeParams& p = core.params[core.nodes[id].params];
-  std::int64_t max_failures = 1;
-  if (!core.read_int(id, p.in0, "max_failures", max_failures)) return NodeStatus::failure;
+  const std::int64_t max_failures = core.read_int(id, p.in0, "max_failures");
 
   RtNode& n = core.nodes[id];
   const std::uint32_t count = n.child_count;
   const std::int64_t failure_threshold =
       max_failures < 0 ? std::max<std::int64_t>(count + max_failures + 1, 0) : max_failures;
   if (count < failure_threshold)
-    return core.fail(id, "max_failures " + std::to_string(max_failures) + " needs " +
-                             std::to_string(failure_threshold) + " children, it has " +
-                             std::to_string(count) + ": it can never fail");
+    core.fail(id, "max_failures " + std::to_string(max_failures) + " needs " +
+                      std::to_string(failure_threshold) + " children, it has " +
+                      std::to_string(count) + ": it can never fail");
 
   core.set_status(id, NodeStatus::running);
   std::uint32_t skipped = 0;

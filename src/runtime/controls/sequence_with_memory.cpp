@@ -1,6 +1,7 @@
 // SequenceWithMemory (v3: SequenceStar): a Sequence that keeps its index on FAILURE, and on
 // halt (BT.CPP leaves current_child_idx_ alone there too), so children that succeeded are
-// not ticked again.
+// not ticked again. A child that was IDLE and succeeds at once yields: the wake-up signal,
+// then RUNNING, so that the root is ticked again within the same tick (BT.CPP 4.10).
 #include "runtime/core.hpp"
 
 namespace uabt::runtime::detail {
@@ -12,15 +13,22 @@ NodeStatus tick_sequence_with_memory(Core& core, NodeId id) {
   core.set_status(id, NodeStatus::running);
 
   while (n.a < count) {
-    const NodeStatus s = core.execute_tick(core.child(id, n.a));
+    const NodeId child = core.child(id, static_cast<std::uint32_t>(n.a));
+    const NodeStatus before = core.nodes[child].status;
+    const NodeStatus s = core.execute_tick(child);
     if (s == NodeStatus::running) return s;
     if (s == NodeStatus::failure) {
       // Only the failed child and those after it are reset; the index stays.
       for (auto i = static_cast<std::uint32_t>(n.a); i < n.child_count; ++i) core.halt_child(id, i);
       return s;
     }
-    if (s == NodeStatus::skipped) ++n.b;
     ++n.a;
+    if (s == NodeStatus::skipped) {
+      ++n.b;
+    } else if (before == NodeStatus::idle && n.a < count) {
+      core.emit_wake_up(id);
+      return NodeStatus::running;
+    }
   }
   const bool all_skipped = n.b == count;
   core.reset_children(id);

@@ -8,7 +8,7 @@ namespace uabt::runtime::detail {
 NodeStatus tick_while_do_else(Core& core, NodeId id) {
   const std::uint32_t count = core.nodes[id].child_count;
   if (count != 2 && count != 3)
-    return core.fail(id, "WhileDoElse must have 2 or 3 children, it has " + std::to_string(count));
+    core.fail(id, "WhileDoElse must have 2 or 3 children, it has " + std::to_string(count));
   core.set_status(id, NodeStatus::running);
 
   const NodeStatus condition = core.execute_tick(core.child(id, 0));
@@ -28,7 +28,9 @@ NodeStatus tick_while_do_else(Core& core, NodeId id) {
   }
   if (s == NodeStatus::running) return s;
   core.reset_children(id);
-  if (s == NodeStatus::idle) return core.fail(id, "its condition was skipped: no branch to run");
+  // BT.CPP returns IDLE here, and setting IDLE throws: the tick ends with an error.
+  if (s == NodeStatus::idle)
+    core.fail(id, "its condition was skipped: no branch to run (BT.CPP: the node returns IDLE)");
   return s;
 }
 

@@ -1,20 +1,24 @@
-// Repeat (num_cycles, -1 = forever): ticks the child again, within the same tick, each time it
-// succeeds; FAILURE ends it. A SKIPPED child skips the decorator, keeping the count.
+// Repeat (num_cycles, -1 = forever): each time the child succeeds it is reset and, while
+// cycles remain, run again. A child that was IDLE and succeeded at once yields (wake-up
+// signal, RUNNING: the root is ticked again within the same tick); one that had been RUNNING
+// is ticked again at once (BT.CPP 4.10). FAILURE ends it; a SKIPPED child skips the
+// decorator, keeping the count.
 #include "runtime/core.hpp"
 
 namespace uabt::runtime::detail {
 
 NodeStatus tick_repeat(Core& core, NodeId id) {
-  std::int64_t cycles = 0;
-  if (!core.read_int(id, core.params[core.nodes[id].params].in0, "num_cycles", cycles))
-    return NodeStatus::failure;
+  const std::int64_t cycles =
+      core.read_int(id, core.params[core.nodes[id].params].in0, "num_cycles");
   RtNode& n = core.nodes[id];
   bool again = n.a < cycles || cycles == -1;
   core.set_status(id, NodeStatus::running);
 
-  std::uint32_t rounds = 0;
+  // At most two rounds: after the first the child is IDLE, so a second success yields.
   while (again) {
-    const NodeStatus s = core.execute_tick(core.child(id, 0));
+    const NodeId child = core.child(id, 0);
+    const NodeStatus before = core.nodes[child].status;
+    const NodeStatus s = core.execute_tick(child);
     if (s == NodeStatus::running) return s;
     if (s == NodeStatus::failure) {
       n.a = 0;
@@ -25,8 +29,10 @@ NodeStatus tick_repeat(Core& core, NodeId id) {
     if (s == NodeStatus::skipped) return s;
     if (n.a < INT32_MAX) ++n.a;
     again = n.a < cycles || cycles == -1;
-    // uabt's bound on BT.CPP's in-tick loop (EngineOptions::max_loop_rounds_per_tick).
-    if (again && ++rounds >= core.options.max_loop_rounds_per_tick) return NodeStatus::running;
+    if (again && before == NodeStatus::idle) {
+      core.emit_wake_up(id);
+      return NodeStatus::running;
+    }
   }
   n.a = 0;
   return NodeStatus::success;

@@ -1,33 +1,42 @@
-// RetryUntilSuccessful (num_attempts, -1 = forever; v3 spelling RetryUntilSuccesful): ticks
-// the child again, within the same tick, each time it fails; SUCCESS ends it.
+// RetryUntilSuccessful (num_attempts, -1 = forever; v3 spelling RetryUntilSuccesful): the
+// mirror of Repeat. Each failure of the child resets it; while attempts remain, a child
+// that was IDLE yields (wake-up signal, RUNNING), one that had been RUNNING is ticked again
+// at once (BT.CPP 4.10). SUCCESS ends it.
 #include "runtime/core.hpp"
 
 namespace uabt::runtime::detail {
 
 NodeStatus tick_retry_until_successful(Core& core, NodeId id) {
   const Input& input = core.params[core.nodes[id].params].in0;
-  std::int64_t attempts = 0;
-  if (!core.read_int(id, input, "num_attempts", attempts)) return NodeStatus::failure;
+  std::int64_t attempts = core.read_int(id, input, "num_attempts");
   RtNode& n = core.nodes[id];
   bool again = n.a < attempts || attempts == -1;
   core.set_status(id, NodeStatus::running);
 
-  std::uint32_t rounds = 0;
   while (again) {
-    const NodeStatus s = core.execute_tick(core.child(id, 0));
+    const NodeId child = core.child(id, 0);
+    const NodeStatus before = core.nodes[child].status;
+    const NodeStatus s = core.execute_tick(child);
     if (s == NodeStatus::running) return s;
     if (s == NodeStatus::success) {
       n.a = 0;
       core.halt_child(id, 0);
       return s;
     }
-    core.halt_child(id, 0);
-    if (s == NodeStatus::skipped) return s;
+    if (s == NodeStatus::skipped) {
+      core.halt_child(id, 0);
+      return s;
+    }
     if (n.a < INT32_MAX) ++n.a;
-    // BT.CPP reads num_attempts again here: the child may have changed it.
-    if (!core.read_int(id, input, "num_attempts", attempts)) return NodeStatus::failure;
+    // BT.CPP reads num_attempts again here (the child may have changed it) and keeps the old
+    // value when that read fails.
+    core.try_read_int(input, attempts);
     again = n.a < attempts || attempts == -1;
-    if (again && ++rounds >= core.options.max_loop_rounds_per_tick) return NodeStatus::running;
+    core.halt_child(id, 0);
+    if (again && before == NodeStatus::idle) {
+      core.emit_wake_up(id);
+      return NodeStatus::running;
+    }
   }
   n.a = 0;
   return NodeStatus::failure;

@@ -6,9 +6,8 @@
 namespace uabt::runtime::detail {
 
 NodeStatus tick_run_once(Core& core, NodeId id) {
-  bool then_skip = true;
-  if (!core.read_bool(id, core.params[core.nodes[id].params].in0, "then_skip", then_skip))
-    return NodeStatus::failure;
+  bool then_skip = true;  // also when the port does not read as a boolean, as in BT.CPP
+  core.try_read_bool(core.params[core.nodes[id].params].in0, then_skip);
   RtNode& n = core.nodes[id];
   if (n.a != 0) return then_skip ? NodeStatus::skipped : static_cast<NodeStatus>(n.b);
 

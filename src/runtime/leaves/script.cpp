@@ -1,7 +1,6 @@
 // Script (`code`, returns SUCCESS) and ScriptCondition (`code`, returns the result's truth).
 // The script was compiled and its keys resolved at instantiation. A script error (an
-// undefined key, a type error) is what BT.CPP throws at tick: uabt records it and the node
-// fails.
+// undefined key, a type error) is what BT.CPP throws at tick: the tick stops with it.
 #include "runtime/core.hpp"
 
 namespace uabt::runtime::detail {
@@ -18,7 +17,7 @@ NodeStatus tick_script(Core& core, NodeId id) {
   try {
     program.run(core.bb);
   } catch (const script::ScriptError& e) {
-    return core.fail(id, script_error(program, e));
+    core.fail(id, script_error(program, e), program.code());
   }
   return NodeStatus::success;
 }
@@ -41,15 +40,19 @@ bool script_truth(const ScriptValue& value, bool& truth) {
 
 NodeStatus tick_script_condition(Core& core, NodeId id) {
   script::Program& program = core.programs[core.params[core.nodes[id].params].program];
+  const ScriptValue* result = nullptr;
   try {
-    const ScriptValue& result = program.run(core.bb);
-    bool truth = false;
-    if (script_truth(result, truth)) return truth ? NodeStatus::success : NodeStatus::failure;
-    return core.fail(id, "the result of `" + program.code() + "` is not a boolean: '" +
-                             result.to_string() + "'");
+    result = &program.run(core.bb);
   } catch (const script::ScriptError& e) {
-    return core.fail(id, script_error(program, e));
+    core.fail(id, script_error(program, e), program.code());
   }
+  bool truth = false;
+  if (!script_truth(*result, truth))
+    core.fail(
+        id,
+        "the result of `" + program.code() + "` is not a boolean: '" + result->to_string() + "'",
+        program.code());
+  return truth ? NodeStatus::success : NodeStatus::failure;
 }
 
 }  // namespace uabt::runtime::detail

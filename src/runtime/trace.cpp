@@ -1,0 +1,153 @@
+#include "runtime/trace.hpp"
+
+#include <cctype>
+#include <nlohmann/json.hpp>
+
+namespace uabt::runtime {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string lower_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+Json to_json(const ScriptValue& v) {
+  switch (v.kind) {
+    case ScriptValue::Kind::boolean: return v.boolean;
+    case ScriptValue::Kind::integer: return v.integer;
+    case ScriptValue::Kind::real: return v.real;
+    case ScriptValue::Kind::string: return v.text;
+    case ScriptValue::Kind::empty: break;
+  }
+  return nullptr;
+}
+
+std::string reads_text(const std::vector<std::pair<std::string, ScriptValue>>& reads) {
+  std::string out;
+  for (const auto& [key, value] : reads)
+    out += (out.empty() ? "" : ", ") + key + "=" + (value.empty() ? "unset" : value.to_string());
+  return out;
+}
+
+}  // namespace
+
+NodeTracer::NodeTracer(const Engine& engine, std::vector<TraceEvent>& trace)
+    : engine_(engine), trace_(trace) {}
+
+const std::string& NodeTracer::path(NodeId node) {
+  if (paths_.size() <= node) paths_.resize(engine_.node_count());
+  if (paths_[node].empty()) paths_[node] = engine_.instance_path(node);
+  return paths_[node];
+}
+
+bool NodeTracer::is_condition(NodeId node) {
+  if (condition_.size() <= node) condition_.resize(engine_.node_count(), 0);
+  if (condition_[node] == 0)
+    condition_[node] =
+        engine_.info(node).kind == "ScriptCondition" || !engine_.condition_reads(node).empty() ? 1
+                                                                                               : 2;
+  return condition_[node] == 1;
+}
+
+void NodeTracer::on_status_change(NodeId node, NodeStatus previous, NodeStatus next) {
+  TraceEvent e;
+  e.tick = engine_.tick_count();
+  e.event = "node";
+  e.node = path(node);
+  e.from = status_name(previous);
+  e.to = status_name(next);
+  trace_.push_back(std::move(e));
+}
+
+void NodeTracer::on_node_ticked(NodeId node, NodeStatus result) {
+  if (!is_condition(node)) return;
+  TraceEvent e;
+  e.tick = engine_.tick_count();
+  e.event = "condition";
+  e.node = path(node);
+  e.status = lower_case(status_name(result));
+  e.reads = engine_.condition_reads(node);
+  trace_.push_back(std::move(e));
+}
+
+std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
+  std::string out;
+  for (const auto& e : trace) {
+    Json j;
+    j["tick"] = e.tick;
+    j["event"] = e.event;
+    if (!e.node.empty()) j["node"] = e.node;
+    if (!e.from.empty()) j["from"] = e.from;
+    if (!e.to.empty()) j["to"] = e.to;
+    if (!e.adaptable.empty()) j["adaptable"] = e.adaptable;
+    if (!e.alternative.empty()) j["alternative"] = e.alternative;
+    if (!e.requirement.empty()) j["requirement"] = e.requirement;
+    if (!e.uplink.empty()) j["uplink"] = e.uplink;
+    if (!e.verdict.empty()) j["verdict"] = e.verdict;
+    if (!e.status.empty()) j["status"] = e.status;
+    if (e.event == "condition") {
+      Json reads = Json::object();
+      for (const auto& [key, value] : e.reads) reads[key] = to_json(value);
+      j["reads"] = std::move(reads);
+    }
+    if (!e.message.empty()) j["message"] = e.message;
+    if (!e.script.empty()) j["script"] = e.script;
+    if (e.event == "uplink") {
+      if (e.verdict == "accepted") {
+        j["swapped"] = e.swapped;
+        j["halted"] = e.halted;
+      }
+      j["latency_ms"] = e.latency_ms;
+      Json findings = Json::array();
+      for (const auto& f : e.findings)
+        findings.push_back({{"check", f.check},
+                            {"message", f.message},
+                            {"file", f.location.file},
+                            {"line", f.location.line}});
+      if (!findings.empty()) j["findings"] = std::move(findings);
+    }
+    out += j.dump() + "\n";
+  }
+  return out;
+}
+
+std::string trace_summary(const std::vector<TraceEvent>& trace) {
+  std::string out;
+  for (const auto& e : trace) {
+    // The outcome is the "done" line's; the status event that completes the run repeats it.
+    if (e.event == "status" && e.status != "running") continue;
+    out += "tick " + std::to_string(e.tick) + ": ";
+    if (e.event == "select") {
+      out += e.adaptable + " selects " + e.alternative + " (" + e.requirement + ")";
+    } else if (e.event == "uplink") {
+      out += "uplink " + e.uplink + " " + e.verdict;
+      if (e.verdict == "accepted") {
+        out += ", swapped";
+        for (const auto& id : e.swapped) out += " " + id;
+      } else {
+        for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
+      }
+    } else if (e.event == "status") {
+      out += "mission " + e.status;
+    } else if (e.event == "node") {
+      out += e.node + ": " + e.from + " -> " + e.to;
+    } else if (e.event == "condition") {
+      out +=
+          e.node + " read " + (e.reads.empty() ? "nothing" : reads_text(e.reads)) + ": " + e.status;
+    } else if (e.event == "error") {
+      out += "error: " + e.message + "\n    node: " + e.node;
+      if (!e.script.empty()) out += "\n    script: " + e.script;
+    } else if (e.event == "done") {
+      out += "mission " + e.verdict;
+    } else {
+      out += e.event;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace uabt::runtime

@@ -1,0 +1,58 @@
+// The manager's trace (DESIGN §8): JSON lines for tools, a short text summary for a terminal,
+// and the observer that adds every node status change and condition read at `--trace-level
+// nodes`.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "runtime/engine.hpp"
+#include "runtime/status.hpp"
+
+namespace uabt::runtime {
+
+// One line of the trace, with tick, event and what it concerns.
+struct TraceEvent {
+  std::uint64_t tick = 0;
+  std::string event;  // select | uplink | status | node | condition | error | done
+  std::string adaptable, alternative, requirement;
+  std::string verdict;  // uplink: accepted | rejected; done: success | failure | timeout | error
+  std::string uplink;   // the package, for uplink events
+  std::vector<std::string> swapped;  // uplink accepted: trees replaced or added
+  std::vector<Finding> findings;     // uplink rejected: why
+  std::uint64_t halted = 0;          // uplink accepted: running instances halted by the swap
+  double latency_ms = 0.0;           // uplink: from receipt to the new tree being in place
+  std::string status;    // status: the root's result after the tick; condition: its result
+  std::string node;      // node, condition, error: the node's instance path
+  std::string from, to;  // node: the status change
+  std::vector<std::pair<std::string, ScriptValue>> reads;  // condition: what it read
+  std::string message, script;                             // error: what BT.CPP would throw
+};
+
+// Records, into a trace, every status change of every node ("node" events, BT.CPP's
+// StatusChangeLogger order) and every tick of a condition with the values it read
+// ("condition" events).
+class NodeTracer : public Observer {
+ public:
+  NodeTracer(const Engine& engine, std::vector<TraceEvent>& trace);
+  void on_status_change(NodeId node, NodeStatus previous, NodeStatus next) override;
+  void on_node_ticked(NodeId node, NodeStatus result) override;
+
+ private:
+  const std::string& path(NodeId node);
+  bool is_condition(NodeId node);
+
+  const Engine& engine_;
+  std::vector<TraceEvent>& trace_;
+  std::vector<std::string> paths_;       // per node, "" until first needed
+  std::vector<std::uint8_t> condition_;  // per node: 0 unknown, 1 condition, 2 not
+};
+
+std::string trace_json_lines(const std::vector<TraceEvent>& trace);
+// One line per event; a completed root's status is left to the final "mission <verdict>"
+// line, so that the outcome is printed once.
+std::string trace_summary(const std::vector<TraceEvent>& trace);
+
+}  // namespace uabt::runtime

@@ -1,0 +1,154 @@
+// The recorded differences between BehaviorTree.CPP 4.10.0 and uabt (shared reference
+// btcpp-diff/): each reproducer's compiled tree runs in its scenario, and uabt's per-tick
+// record (root status, leaf activity) and outcome must equal BT.CPP's.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bt/xml_io.hpp"
+#include "runtime/runner.hpp"
+#include "test_support.hpp"
+
+namespace uabt::runtime {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+fs::path reproducer(const std::string& name) {
+  return uabt::testing::shared_dir() / "reference" / "btcpp-diff" / name;
+}
+
+Json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return Json::parse(text.str());
+}
+
+Json value_json(const ScriptValue& v) {
+  switch (v.kind) {
+    case ScriptValue::Kind::boolean: return v.boolean;
+    case ScriptValue::Kind::integer: return v.integer;
+    case ScriptValue::Kind::real: return v.real;
+    case ScriptValue::Kind::string: return v.text;
+    case ScriptValue::Kind::empty: break;
+  }
+  return nullptr;
+}
+
+Json leaf_json(const LeafLogEntry& e) {
+  switch (e.event) {
+    case LeafEvent::condition: return {"cond", e.leaf, status_name(e.status)};
+    case LeafEvent::action_started: return {"start", e.leaf};
+    case LeafEvent::action_finished: return {"finish", e.leaf, status_name(e.status)};
+    case LeafEvent::action_halted: return {"halt", e.leaf};
+  }
+  return nullptr;
+}
+
+struct Recorded {
+  Json record = Json::array();  // the probe's format
+  std::optional<TickError> error;
+};
+
+// Runs the reproducer's compiled.xml in its scenario.json, one Runner step a tick, recording
+// what BT.CPP's probe records.
+Recorded run_reproducer(const fs::path& dir) {
+  std::vector<Finding> findings;
+  auto doc = bt::read_document(dir / "compiled.xml", bt::ReadOptions{dir, dir}, findings);
+  if (!doc) throw std::runtime_error("compiled.xml does not read");
+  Runner runner(*doc, load_scenario(dir / "scenario.json"));
+  Recorded out;
+  while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
+    const NodeStatus s = runner.step();
+    Json leaves = Json::array();
+    for (const LeafLogEntry& e : runner.world().log()) leaves.push_back(leaf_json(e));
+    runner.world().clear_log();
+    out.record.push_back({{"tick", runner.ticks()},
+                          {"root", runner.error() ? "EXCEPTION" : status_name(s)},
+                          {"leaves", leaves}});
+  }
+  std::string verdict = runner.verdict();
+  if (verdict == "success" || verdict == "failure")
+    verdict = verdict == "success" ? "SUCCESS" : "FAILURE";
+  Json state = Json::object();
+  for (const auto& [key, value] : runner.engine().blackboard().entries())
+    state[key] = value_json(value);
+  out.record.push_back(
+      {{"event", "done"}, {"verdict", verdict}, {"ticks", runner.ticks()}, {"state", state}});
+  out.error = runner.error();
+  return out;
+}
+
+// uabt's record equals BT.CPP's, tick by tick; BT.CPP's exception text is not compared (uabt
+// names the node and the script its own way), its presence is.
+void expect_btcpp_record(const std::string& name) {
+  const fs::path dir = reproducer(name);
+  if (!fs::exists(dir / "outputs.json")) GTEST_SKIP() << "no btcpp-diff reference data";
+  Json expected = read_json(dir / "outputs.json")["btcpp_probe"];
+  ASSERT_FALSE(expected.empty());
+  const bool expects_error = expected.back().value("verdict", "") == "error";
+  expected.back().erase("error");
+  const Recorded got = run_reproducer(dir);
+  ASSERT_EQ(got.record.size(), expected.size()) << got.record.dump(1);
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    EXPECT_EQ(got.record[i], expected[i]) << "record " << i;
+  EXPECT_EQ(got.error.has_value(), expects_error);
+}
+
+TEST(BtcppDiff, SequenceWithMemoryUnderParallelAllFailsAtTickOne) {
+  // The wake-up re-tick lets A1 finish within tick 1, so the Inverter sees C1 true.
+  expect_btcpp_record("wakeup-seqmem-verdict-flip");
+}
+
+TEST(BtcppDiff, RepeatInsideAReactiveSequenceNeverEnds) {
+  // Every tick restarts the Repeat, whose wake-up halts the running A0: timeout at 40.
+  expect_btcpp_record("wakeup-repeat-reactive-never-ends");
+}
+
+TEST(BtcppDiff, ReservedAttributesAreNotPartOfTheLeafKey) {
+  expect_btcpp_record("leaf-key-has-reserved-attrs");
+}
+
+TEST(BtcppDiff, ScriptConditionOnAnUnsetKeyStopsTheRun) {
+  expect_btcpp_record("tick-error-random-minimal");
+  const fs::path dir = reproducer("tick-error-random-minimal");
+  if (!fs::exists(dir)) return;
+  const Recorded got = run_reproducer(dir);
+  ASSERT_TRUE(got.error.has_value());
+  EXPECT_EQ(got.error->tick, 1u);
+  EXPECT_EQ(got.error->path, "MainTree/Sequence/ScriptCondition[1]");
+  EXPECT_EQ(got.error->script, "x >= 1 && C1 == false");
+  EXPECT_NE(got.error->message.find("undefined blackboard key 'x'"), std::string::npos)
+      << got.error->message;
+}
+
+TEST(BtcppDiff, SkippedWhileDoElseConditionStopsTheRun) {
+  expect_btcpp_record("skipped-condition-whiledoelse");
+  const fs::path dir = reproducer("skipped-condition-whiledoelse");
+  if (!fs::exists(dir)) return;
+  const Recorded got = run_reproducer(dir);
+  ASSERT_TRUE(got.error.has_value());
+  EXPECT_EQ(got.error->path, "MainTree/Sequence/WhileDoElse[1]");
+}
+
+TEST(BtcppDiff, UnboundedRetryLoopIsAnErrorInsteadOfAHang) {
+  // BT.CPP's first tickOnce() never returns (no record). uabt stops the run within tick 1
+  // and names the node that keeps asking for a re-tick.
+  const fs::path dir = reproducer("unbounded-retry-loop");
+  if (!fs::exists(dir / "outputs.json")) GTEST_SKIP() << "no btcpp-diff reference data";
+  EXPECT_TRUE(read_json(dir / "outputs.json")["btcpp_probe"].empty());
+  const Recorded got = run_reproducer(dir);
+  ASSERT_TRUE(got.error.has_value());
+  EXPECT_EQ(got.error->tick, 1u);
+  EXPECT_EQ(got.error->path, "MainTree/Sequence/RetryUntilSuccessful[1]");
+  EXPECT_NE(got.error->message.find("tickOnce() would never return"), std::string::npos);
+  EXPECT_EQ(got.record.back()["verdict"], "error");
+}
+
+}  // namespace
+}  // namespace uabt::runtime
