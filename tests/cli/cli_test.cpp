@@ -41,7 +41,8 @@ TEST(Cli, GatePassesOnCuriosityAndFailsOnThePapersRequirements) {
   uabt::testing::TempMission out({});
   CliRun pass = uabt("gate missions/msl_curiosity --out '" + (out.dir() / "a").string() + "'");
   EXPECT_EQ(pass.exit_code, 0) << pass.out;
-  CliRun fail = uabt("gate missions/msl_curiosity_paper --out '" + (out.dir() / "b").string() + "'");
+  CliRun fail =
+      uabt("gate missions/msl_curiosity_paper --out '" + (out.dir() / "b").string() + "'");
   EXPECT_EQ(fail.exit_code, 1) << fail.out;
   EXPECT_NE(fail.out.find("requirements.fret:5:7: error:"), std::string::npos) << fail.out;
   EXPECT_NE(fail.out.find("[guard-overlap]"), std::string::npos);
@@ -88,7 +89,7 @@ TEST(Cli, ConformAcceptsTheCompiledTreeAndThePapersGeneratedTree) {
   const auto replication = uabt::testing::replication_dir();
   if (!std::filesystem::exists(replication)) GTEST_SKIP();
   CliRun paper = uabt("conform '" + replication.string() + "' '" +
-                   (replication / "output/concrete_mission.xml").string() + "'");
+                      (replication / "output/concrete_mission.xml").string() + "'");
   EXPECT_EQ(paper.exit_code, 0) << paper.out;
 }
 
@@ -116,6 +117,28 @@ TEST(Cli, RunTheCuriosityStory) {
   EXPECT_NE(run.out.find("uplink uplinks/on_mud accepted"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("navigation selects on_mud (Req3)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("mission success"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Cli, RunStopsOnAScriptErrorAndOnMaxTicks) {
+  const std::map<std::string, std::string> files = {
+      {"no_battery.json", R"({"initial": {"terrain": "sand"}})"},
+      {"forever.json",
+       R"({"initial": {"OnDust": true}, "actions": {"MoveForward": {"ticks": 1000000}}})"}};
+  uabt::testing::TempMission dir(files);
+  CliRun error = uabt("run missions/exploration --scenario '" +
+                      (dir.dir() / "no_battery.json").string() + "'");
+  EXPECT_EQ(error.exit_code, 1) << error.out;
+  EXPECT_NE(error.out.find("undefined blackboard key 'battery'"), std::string::npos);
+  EXPECT_NE(error.out.find("mission error"), std::string::npos) << error.out;
+  EXPECT_EQ(error.out.find("mission success"), std::string::npos) << error.out;
+  CliRun timeout = uabt("run missions/msl_curiosity --max-ticks 50 --scenario '" +
+                        (dir.dir() / "forever.json").string() + "'");
+  EXPECT_EQ(timeout.exit_code, 1) << timeout.out;
+  EXPECT_NE(timeout.out.find("tick 50: mission timeout"), std::string::npos) << timeout.out;
 }
 
 }  // namespace
