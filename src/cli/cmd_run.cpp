@@ -70,6 +70,9 @@ void register_run(CLI::App& app, int& exit_code) {
                   << "\n  node: " << run.error->path
                   << (run.error->script.empty() ? "" : "\n  script: " + run.error->script) << "\n";
       exit_code = run.verdict == "success" ? kExitPass : kExitFail;
+    } catch (const runtime::ScenarioError& e) {
+      std::cerr << e.what() << "\n";  // file:line:col: error: … lines
+      exit_code = kExitFail;
     } catch (const std::exception& e) {
       std::cerr << "uabt: " << e.what() << "\n";
       exit_code = kExitFail;

@@ -8,6 +8,7 @@
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
 #include "runtime/runner.hpp"
+#include "runtime/scenario_check.hpp"
 #include "runtime/selection.hpp"
 
 namespace uabt::runtime {
@@ -58,6 +59,24 @@ BehaviorTreeManager::BehaviorTreeManager(fs::path mission_dir, Scenario scenario
                                          ManagerOptions options)
     : dir_(std::move(mission_dir)), scenario_(std::move(scenario)), options_(std::move(options)) {}
 
+// The scenario's names and values against the mission and every uplink it may receive.
+void BehaviorTreeManager::check_against_mission(const load::Mission& mission) const {
+  ScenarioVocabulary vocabulary;
+  vocabulary.add(mission);
+  for (const ScenarioEvent& event : scenario_.events) {
+    if (event.uplink.empty()) continue;
+    load::LoadOptions with_uplink;
+    with_uplink.uplinks.push_back(dir_ / event.uplink);
+    std::string error;  // a package that does not load is the gate's to reject, at its tick
+    if (auto merged = load::load_mission(dir_, with_uplink, error)) vocabulary.add(*merged);
+  }
+  const std::vector<std::string> errors = check_scenario(scenario_, vocabulary);
+  if (errors.empty()) return;
+  std::string text;
+  for (const std::string& e : errors) text += (text.empty() ? "" : "\n") + e;
+  throw ScenarioError(text);
+}
+
 void BehaviorTreeManager::add_uplink(std::int64_t tick, const std::string& package) {
   ScenarioEvent event;
   event.at = tick;
@@ -75,6 +94,8 @@ ManagerRun BehaviorTreeManager::run() {
   if (!running.outcome.passed())
     throw std::runtime_error("the mission does not pass the gate; only a verified version runs:\n" +
                              format_text(running.outcome.report.findings));
+
+  check_against_mission(*running.outcome.mission);
 
   RunOptions run_options;
   run_options.max_ticks = options_.max_ticks;

@@ -47,9 +47,14 @@ class BehaviorTreeManager {
   // Extra uplinks: (tick, package directory) as given on the command line.
   void add_uplink(std::int64_t tick, const std::string& package);
 
+  // Throws ScenarioError when the scenario does not fit the mission.
   ManagerRun run();
 
  private:
+  // Throws ScenarioError ("file:line:col: error: …" lines) when the scenario's names or values
+  // do not fit the mission (scenario_check.hpp).
+  void check_against_mission(const load::Mission& mission) const;
+
   std::filesystem::path dir_;
   Scenario scenario_;
   ManagerOptions options_;

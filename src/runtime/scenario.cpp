@@ -12,9 +12,77 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-[[noreturn]] void shape_error(const std::string& file, const std::string& where,
+// The start of every key and value of a JSON text (already known to be valid), by pointer.
+class PositionScanner {
+ public:
+  PositionScanner(std::string_view text, Scenario& out) : t_(text), out_(out) {}
+  void scan() { value(""); }
+
+ private:
+  void space() {
+    while (i_ < t_.size() &&
+           (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\r' || t_[i_] == '\n')) {
+      if (t_[i_] == '\n') {
+        ++line_;
+        line_start_ = i_ + 1;
+      }
+      ++i_;
+    }
+  }
+  std::pair<int, int> here() const { return {line_, static_cast<int>(i_ - line_start_) + 1}; }
+  std::string string() {
+    std::string s;
+    for (++i_; i_ < t_.size() && t_[i_] != '"'; ++i_) {
+      if (t_[i_] == '\\' && i_ + 1 < t_.size()) ++i_;  // an escaped character, kept as is
+      s += t_[i_];
+    }
+    ++i_;
+    return s;
+  }
+  void value(const std::string& path) {
+    space();
+    if (i_ >= t_.size()) return;
+    out_.value_positions[path] = here();
+    const char c = t_[i_];
+    if (c == '{' || c == '[') {
+      ++i_;
+      for (int index = 0;; ++index) {
+        space();
+        if (i_ >= t_.size() || t_[i_] == '}' || t_[i_] == ']') break;
+        if (t_[i_] == ',') {
+          ++i_;
+          space();
+        }
+        std::string child = path + "/" + std::to_string(index);
+        if (c == '{') {
+          const auto at = here();
+          child = path + "/" + string();
+          out_.key_positions[child] = at;
+          space();
+          ++i_;  // ':'
+        }
+        value(child);
+      }
+      ++i_;
+    } else if (c == '"') {
+      string();
+    } else {
+      while (i_ < t_.size() &&
+             std::string_view(",}] \t\r\n").find(t_[i_]) == std::string_view::npos)
+        ++i_;
+    }
+  }
+
+  std::string_view t_;
+  Scenario& out_;
+  std::size_t i_ = 0, line_start_ = 0;
+  int line_ = 1;
+};
+
+[[noreturn]] void shape_error(const Scenario& s, const std::string& where,
                               const std::string& message) {
-  throw ScenarioError(file + ": " + (where.empty() ? "" : where + ": ") + message);
+  throw ScenarioError(s.where(where, true) + ": error: " + (where.empty() ? "" : where + ": ") +
+                      message);
 }
 
 // nlohmann reports the byte offset after the offending character; line and column are
@@ -42,7 +110,7 @@ std::string syntax_message(const std::string& what) {
   return "invalid JSON: " + message;
 }
 
-ScriptValue state_value(const Json& j, const std::string& file, const std::string& where) {
+ScriptValue state_value(const Json& j, const Scenario& file, const std::string& where) {
   switch (j.type()) {
     case Json::value_t::boolean: return ScriptValue::of_bool(j.get<bool>());
     case Json::value_t::number_integer: return ScriptValue::of_int(j.get<std::int64_t>());
@@ -60,7 +128,7 @@ ScriptValue state_value(const Json& j, const std::string& file, const std::strin
   }
 }
 
-StateAssignment assignment(const Json& j, const std::string& file, const std::string& where) {
+StateAssignment assignment(const Json& j, const Scenario& file, const std::string& where) {
   if (!j.is_object())
     shape_error(file, where,
                 std::string("must be an object of state values, not ") + j.type_name());
@@ -72,7 +140,7 @@ StateAssignment assignment(const Json& j, const std::string& file, const std::st
   return out;
 }
 
-std::int64_t integer(const Json& j, const std::string& file, const std::string& where,
+std::int64_t integer(const Json& j, const Scenario& file, const std::string& where,
                      std::int64_t minimum) {
   if (!j.is_number_integer() || (j.is_number_unsigned() && j.get<std::uint64_t>() > INT64_MAX))
     shape_error(file, where, std::string("must be an integer, not ") + j.dump());
@@ -83,17 +151,19 @@ std::int64_t integer(const Json& j, const std::string& file, const std::string& 
   return v;
 }
 
-void only_keys(const Json& j, std::initializer_list<std::string_view> allowed,
-               const std::string& file, const std::string& where) {
+void only_keys(const Json& j, std::initializer_list<std::string_view> allowed, const Scenario& file,
+               const std::string& where) {
   for (const auto& [key, value] : j.items()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     std::string list;
     for (auto a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-    shape_error(file, where, "unknown key '" + key + "' (expected: " + list + ")");
+    throw ScenarioError(file.where(where + "/" + key) +
+                        ": error: " + (where.empty() ? "" : where + ": ") + "unknown key '" + key +
+                        "' (expected: " + list + ")");
   }
 }
 
-ActionSpec action(const Json& j, const std::string& file, const std::string& where) {
+ActionSpec action(const Json& j, const Scenario& file, const std::string& where) {
   if (!j.is_object())
     shape_error(file, where, std::string("an action must be an object, not ") + j.type_name());
   only_keys(j, {"ticks", "effects", "result"}, file, where);
@@ -115,6 +185,13 @@ ActionSpec action(const Json& j, const std::string& file, const std::string& whe
 
 }  // namespace
 
+std::string Scenario::where(std::string_view pointer, bool value) const {
+  const auto& map = value ? value_positions : key_positions;
+  const auto it = map.find(pointer);
+  if (it == map.end()) return file;
+  return file + ":" + std::to_string(it->second.first) + ":" + std::to_string(it->second.second);
+}
+
 bool Scenario::mentions_state(std::string_view key) const {
   auto in = [&](const StateAssignment& a) {
     return std::any_of(a.begin(), a.end(), [&](const auto& kv) { return kv.first == key; });
@@ -133,46 +210,47 @@ Scenario parse_scenario(std::string_view text, const std::string& file) {
     root = Json::parse(text.begin(), text.end());
   } catch (const Json::parse_error& e) {
     const auto [line, column] = line_column(text, e.byte);
-    throw ScenarioError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-                        syntax_message(e.what()));
+    throw ScenarioError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                        ": error: " + syntax_message(e.what()));
   }
-  if (!root.is_object())
-    shape_error(file, "", std::string("a scenario must be a JSON object, not ") + root.type_name());
-  only_keys(root, {"max_ticks", "initial", "actions", "events", "description", "name"}, file, "");
-
   Scenario s;
   s.file = file;
-  if (root.contains("max_ticks")) s.max_ticks = integer(root["max_ticks"], file, "/max_ticks", 1);
-  if (root.contains("initial")) s.initial = assignment(root["initial"], file, "/initial");
+  PositionScanner(text, s).scan();
+  if (!root.is_object())
+    shape_error(s, "", std::string("a scenario must be a JSON object, not ") + root.type_name());
+  only_keys(root, {"max_ticks", "initial", "actions", "events", "description", "name"}, s, "");
+
+  if (root.contains("max_ticks")) s.max_ticks = integer(root["max_ticks"], s, "/max_ticks", 1);
+  if (root.contains("initial")) s.initial = assignment(root["initial"], s, "/initial");
   if (root.contains("actions")) {
     const Json& actions = root["actions"];
     if (!actions.is_object())
-      shape_error(file, "/actions", std::string("must be an object, not ") + actions.type_name());
+      shape_error(s, "/actions", std::string("must be an object, not ") + actions.type_name());
     for (const auto& [name, spec] : actions.items())
-      s.actions.emplace(name, action(spec, file, "/actions/" + name));
+      s.actions.emplace(name, action(spec, s, "/actions/" + name));
   }
   if (root.contains("events")) {
     const Json& events = root["events"];
     if (!events.is_array())
-      shape_error(file, "/events", std::string("must be an array, not ") + events.type_name());
+      shape_error(s, "/events", std::string("must be an array, not ") + events.type_name());
     int index = 0;
     for (const Json& e : events) {
       const std::string where = "/events/" + std::to_string(index);
       if (!e.is_object())
-        shape_error(file, where, std::string("an event must be an object, not ") + e.type_name());
-      only_keys(e, {"at", "set", "uplink"}, file, where);
-      if (!e.contains("at")) shape_error(file, where, "an event needs \"at\" (a tick number)");
+        shape_error(s, where, std::string("an event must be an object, not ") + e.type_name());
+      only_keys(e, {"at", "set", "uplink"}, s, where);
+      if (!e.contains("at")) shape_error(s, where, "an event needs \"at\" (a tick number)");
       ScenarioEvent event;
       event.index = index;
-      event.at = integer(e["at"], file, where + "/at", 0);
-      if (e.contains("set")) event.set = assignment(e["set"], file, where + "/set");
+      event.at = integer(e["at"], s, where + "/at", 0);
+      if (e.contains("set")) event.set = assignment(e["set"], s, where + "/set");
       if (e.contains("uplink")) {
         if (!e["uplink"].is_string() || e["uplink"].get<std::string>().empty())
-          shape_error(file, where + "/uplink", "must be a non-empty path");
+          shape_error(s, where + "/uplink", "must be a non-empty path");
         event.uplink = e["uplink"].get<std::string>();
       }
       if (!e.contains("set") && !e.contains("uplink"))
-        shape_error(file, where, "an event needs \"set\" or \"uplink\"");
+        shape_error(s, where, "an event needs \"set\" or \"uplink\"");
       s.events.push_back(std::move(event));
       ++index;
     }

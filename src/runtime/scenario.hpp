@@ -41,9 +41,15 @@ struct Scenario {
   std::map<std::string, ActionSpec, std::less<>> actions;
   std::vector<ScenarioEvent> events;  // by `at`, file order within one tick
 
+  // Where each member's key and each value starts in the file, by JSON pointer ("/initial/
+  // battery"), as (line, column).
+  std::map<std::string, std::pair<int, int>, std::less<>> key_positions, value_positions;
+
   // True when `key` is a state variable the scenario sets anywhere (initial, events,
   // effects).
   bool mentions_state(std::string_view key) const;
+  // "file:line:col" of the member `pointer` (its key, or its value), "file" if unknown.
+  std::string where(std::string_view pointer, bool value = false) const;
 };
 
 // A scenario file that is not valid JSON or not of the shape above. The message names the

@@ -116,3 +116,70 @@ TEST(RunOutcome, NodeTraceShowsWhatAnUnsetConditionRead) {
 
 }  // namespace
 }  // namespace uabt::runtime
+
+namespace uabt::runtime {
+namespace {
+
+std::string scenario_errors(const std::string& mission, const std::string& json) {
+  try {
+    run_mission(mission, json);
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScenarioCheck, ValuesAreCheckedAgainstTheDomain) {
+  // exploration/domain.fret: integer battery in [0, 100], real slope in [-45, 45],
+  // enum terrain in {sand, rocks, unknown}.
+  const std::string errors =
+      scenario_errors("exploration",
+                      "{\"initial\": {\"battery\": 150, \"slope\": 2.5,\n"
+                      "             \"terrain\": \"mud\"},\n"
+                      " \"events\": [{\"at\": 3, \"set\": {\"battery\": 0.5, \"slope\": true}}]}");
+  EXPECT_NE(errors.find("scenario.json:1:25: error: battery = 150 is out of its range [0, 100] "
+                        "(declared integer at domain.fret:1:"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("scenario.json:2:25: error: terrain = \"mud\" is not one of \"sand\", "
+                        "\"rocks\", \"unknown\""),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("scenario.json:3:42: error: battery = 0.5 is not an integer"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("slope = true is not a number"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("slope = 2.5"), std::string::npos) << errors;
+}
+
+TEST(ScenarioCheck, UnknownNamesGetADidYouMean) {
+  const std::string errors = scenario_errors(
+      "msl_curiosity",
+      "{\"initial\": {\"OnDustt\": true, \"IsArmInPosition(function=drilling)\": true},\n"
+      " \"actions\": {\"MoveForwrd\": {\"ticks\": 3}, \"Drill\": {\"effects\": {\"IsDug\": "
+      "true}}}}");
+  EXPECT_NE(errors.find("scenario.json:1:14: error: 'OnDustt' is not a state variable, condition "
+                        "or blackboard key of the mission (did you mean 'OnDust'?)"),
+            std::string::npos)
+      << errors;
+  EXPECT_NE(errors.find("scenario.json:2:14: error: action 'MoveForwrd' is not a leaf of the "
+                        "mission (did you mean 'MoveForward'?)"),
+            std::string::npos)
+      << errors;
+  EXPECT_EQ(errors.find("IsArmInPosition"), std::string::npos) << errors;  // a leaf with a port
+  EXPECT_EQ(errors.find("Drill"), std::string::npos) << errors;
+}
+
+TEST(ScenarioCheck, NamesAnUplinkBringsAreKnown) {
+  // OnMud is declared by uplinks/on_mud only; the scenario sets it before the uplink arrives.
+  const std::string errors = scenario_errors("msl_curiosity",
+                                             R"({"max_ticks": 5, "initial": {"OnMud": true},
+          "events": [{"at": 3, "uplink": "uplinks/on_mud"}]})");
+  EXPECT_EQ(errors, "");
+  EXPECT_NE(scenario_errors("msl_curiosity", R"({"max_ticks": 5, "initial": {"OnMud": true}})")
+                .find("'OnMud' is not a state variable"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace uabt::runtime

@@ -50,19 +50,22 @@ TEST(Scenario, SyntaxErrorsNameFileLineAndColumn) {
   EXPECT_EQ(e.rfind("scenarios/s.json:2:", 0), 0u) << e;
   EXPECT_NE(e.find("invalid JSON"), std::string::npos) << e;
   const std::string comma = scenario_error("{\"max_ticks\": 5,\n\n   }");
-  EXPECT_EQ(comma.rfind("scenarios/s.json:3:4: invalid JSON", 0), 0u) << comma;
+  EXPECT_EQ(comma.rfind("scenarios/s.json:3:4: error: invalid JSON", 0), 0u) << comma;
   const std::string eof = scenario_error("{\"a\": [1, 2");
   EXPECT_EQ(eof.rfind("scenarios/s.json:1:", 0), 0u) << eof;
 }
 
 TEST(Scenario, ShapeErrorsNameTheFileAndTheEntry) {
-  EXPECT_EQ(scenario_error("[]"), "scenarios/s.json: a scenario must be a JSON object, not array");
+  EXPECT_EQ(scenario_error("[]"),
+            "scenarios/s.json:1:1: error: a scenario must be a JSON object, not array");
   EXPECT_EQ(scenario_error(R"({"actions": {"Drill": {"ticks": 0}}})"),
-            "scenarios/s.json: /actions/Drill/ticks: must be at least 1, not 0");
-  EXPECT_EQ(scenario_error(R"({"actions": {"Drill": {"result": "maybe"}}})"),
-            "scenarios/s.json: /actions/Drill/result: must be \"success\" or \"failure\", not "
-            "\"maybe\"");
-  EXPECT_NE(scenario_error(R"({"evnts": []})").find("unknown key 'evnts'"), std::string::npos);
+            "scenarios/s.json:1:33: error: /actions/Drill/ticks: must be at least 1, not 0");
+  EXPECT_EQ(scenario_error("{\"actions\": {\n  \"Drill\": {\"result\": \"maybe\"}}}"),
+            "scenarios/s.json:2:23: error: /actions/Drill/result: must be \"success\" or "
+            "\"failure\", not \"maybe\"");
+  EXPECT_EQ(scenario_error("{\n \"evnts\": []}"),
+            "scenarios/s.json:2:2: error: unknown key 'evnts' (expected: max_ticks, initial, "
+            "actions, events, description, name)");
   EXPECT_NE(scenario_error(R"({"events": [{"set": {}}]})").find("/events/0"), std::string::npos);
   EXPECT_NE(scenario_error(R"({"initial": {"x": [1]}})").find("/initial/x"), std::string::npos);
   EXPECT_NE(scenario_error(R"({"events": [{"at": 3}]})").find("\"set\" or \"uplink\""),

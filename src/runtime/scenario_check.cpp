@@ -1,0 +1,169 @@
+#include "runtime/scenario_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "bt/node_kinds.hpp"
+#include "runtime/script/program.hpp"
+
+namespace uabt::runtime {
+
+namespace {
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// " (did you mean 'x'?)" for the closest names within two edits (a third of the name at most).
+std::string did_you_mean(const std::string& name, const std::set<std::string>& known) {
+  const std::size_t limit = std::min<std::size_t>(2, std::max<std::size_t>(1, name.size() / 3));
+  std::size_t best = limit + 1;
+  std::vector<std::string> closest;
+  for (const std::string& k : known) {
+    const std::size_t d = edit_distance(name, k);
+    if (d < best) {
+      best = d;
+      closest = {k};
+    } else if (d == best) {
+      closest.push_back(k);
+    }
+  }
+  if (closest.empty()) return "";
+  std::string out = " (did you mean '" + closest[0] + "'";
+  for (std::size_t i = 1; i < closest.size() && i < 3; ++i) out += " or '" + closest[i] + "'";
+  return out + "?)";
+}
+
+void add_script(const std::string& code, std::set<std::string>& state) {
+  try {
+    for (const std::string& name : script::Program::parse(code).names())
+      state.insert(name.starts_with('@') ? name.substr(1) : name);
+  } catch (const script::ScriptError&) {
+    // The gate reports scripts that do not parse.
+  }
+}
+
+void add_node(const bt::Node& node, ScenarioVocabulary& v) {
+  const std::string kind = node.kind();
+  const bool builtin = bt::find_builtin(kind) != nullptr || kind == "SubTree" ||
+                       node.tag == "Adaptable" || !node.children.empty();
+  if (!builtin) v.leaves.insert(kind);
+  for (const auto& [attr, value] : node.attributes) {
+    if (attr == "code" || attr.starts_with('_')) {
+      if (attr == "code" || (attr != "_autoremap" && attr != "_description"))
+        add_script(value, v.state);
+    } else if (value.size() > 2 && value.front() == '{' && value.back() == '}') {
+      v.state.insert(value == "{=}" ? attr : value.substr(1, value.size() - 2));
+    }
+  }
+  for (const bt::Node& child : node.children) add_node(child, v);
+}
+
+void add_document(const bt::Document& doc, ScenarioVocabulary& v) {
+  for (const bt::TreeDef& tree : doc.trees) add_node(tree.root, v);
+  for (const bt::NodeModel& model : doc.node_models) v.leaves.insert(model.id);
+}
+
+// What is wrong with `value` for `var`, "" when it fits.
+std::string misfit(const ScriptValue& value, const fretish::Variable& var) {
+  using fretish::VarType;
+  switch (var.type) {
+    case VarType::boolean:
+      return value.kind == ScriptValue::Kind::boolean ? "" : "is not a boolean (true or false)";
+    case VarType::enumeration: {
+      const auto& values = var.enum_values;
+      if (value.is_string() && std::find(values.begin(), values.end(), value.text) != values.end())
+        return "";
+      std::string list;
+      for (const auto& e : values)
+        list += (list.empty() ? "" : ", ") + std::string("\"") + e + "\"";
+      return "is not one of " + list;
+    }
+    case VarType::integer:
+    case VarType::real: {
+      const bool integer = var.type == VarType::integer;
+      if (!(integer ? value.kind == ScriptValue::Kind::integer
+                    : value.kind == ScriptValue::Kind::integer ||
+                          value.kind == ScriptValue::Kind::real))
+        return integer ? "is not an integer" : "is not a number";
+      const double d = value.as_double();
+      const double lo = var.lower.empty() ? -INFINITY : std::strtod(var.lower.c_str(), nullptr);
+      const double hi = var.upper.empty() ? INFINITY : std::strtod(var.upper.c_str(), nullptr);
+      if (d < lo || d > hi)
+        return "is out of its range [" + (var.lower.empty() ? "-inf" : var.lower) + ", " +
+               (var.upper.empty() ? "inf" : var.upper) + "]";
+      return "";
+    }
+  }
+  return "";
+}
+
+std::string base_name(const std::string& key) {
+  return key.substr(0, key.find('('));
+}
+
+}  // namespace
+
+void ScenarioVocabulary::add(const load::Mission& mission) {
+  for (const fretish::Variable& var : mission.domain.variables) {
+    state.insert(var.name);
+    if (var.declared) variables.emplace(var.name, var);
+  }
+  add_document(mission.tree, *this);
+  for (const load::Alternative& alt : mission.alternatives) add_document(alt.document, *this);
+  if (mission.nodes)
+    for (const bt::NodeModel& model : *mission.nodes) leaves.insert(model.id);
+}
+
+std::vector<std::string> check_scenario(const Scenario& scenario,
+                                        const ScenarioVocabulary& vocabulary) {
+  std::vector<std::string> errors;
+  std::set<std::string> names = vocabulary.state;
+  names.insert(vocabulary.leaves.begin(), vocabulary.leaves.end());
+
+  auto check_state = [&](const StateAssignment& assignment, const std::string& where) {
+    for (const auto& [key, value] : assignment) {
+      const std::string pointer = where + "/" + key;
+      const auto var = vocabulary.variables.find(key);
+      if (var != vocabulary.variables.end()) {
+        const std::string why = misfit(value, var->second);
+        const fretish::Variable& v = var->second;
+        if (!why.empty())
+          errors.push_back(
+              scenario.where(pointer, true) + ": error: " + key + " = " +
+              (value.is_string() ? "\"" + value.to_string() + "\"" : value.to_string()) + " " +
+              why + " (declared " + fretish::var_type_name(v.type) + " at " + v.location.file +
+              ":" + std::to_string(v.location.line) + ":" + std::to_string(v.location.column) +
+              ")");
+      } else if (!vocabulary.state.contains(key) && !vocabulary.leaves.contains(base_name(key))) {
+        errors.push_back(scenario.where(pointer) + ": error: '" + key +
+                         "' is not a state variable, condition or blackboard key of the mission" +
+                         did_you_mean(key, names));
+      }
+    }
+  };
+  check_state(scenario.initial, "/initial");
+  for (const ScenarioEvent& e : scenario.events)
+    check_state(e.set, "/events/" + std::to_string(e.index) + "/set");
+  for (const auto& [name, spec] : scenario.actions) {
+    if (!vocabulary.leaves.contains(base_name(name)))
+      errors.push_back(scenario.where("/actions/" + name) + ": error: action '" + name +
+                       "' is not a leaf of the mission" + did_you_mean(name, vocabulary.leaves));
+    check_state(spec.effects, "/actions/" + name + "/effects");
+  }
+  return errors;
+}
+
+}  // namespace uabt::runtime
