@@ -1,7 +1,6 @@
 #include "runtime/trace.hpp"
 
 #include <cctype>
-#include <nlohmann/json.hpp>
 
 namespace uabt::runtime {
 
@@ -12,17 +11,6 @@ using Json = nlohmann::ordered_json;
 std::string lower_case(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
-}
-
-Json to_json(const ScriptValue& v) {
-  switch (v.kind) {
-    case ScriptValue::Kind::boolean: return v.boolean;
-    case ScriptValue::Kind::integer: return v.integer;
-    case ScriptValue::Kind::real: return v.real;
-    case ScriptValue::Kind::string: return v.text;
-    case ScriptValue::Kind::empty: break;
-  }
-  return nullptr;
 }
 
 std::string reads_text(const std::vector<std::pair<std::string, ScriptValue>>& reads) {
@@ -73,6 +61,17 @@ void NodeTracer::on_node_ticked(NodeId node, NodeStatus result) {
   trace_.push_back(std::move(e));
 }
 
+Json value_json(const ScriptValue& v) {
+  switch (v.kind) {
+    case ScriptValue::Kind::boolean: return v.boolean;
+    case ScriptValue::Kind::integer: return v.integer;
+    case ScriptValue::Kind::real: return v.real;
+    case ScriptValue::Kind::string: return v.text;
+    case ScriptValue::Kind::empty: break;
+  }
+  return nullptr;
+}
+
 std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
   std::string out;
   for (const auto& e : trace) {
@@ -90,7 +89,7 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
     if (!e.status.empty()) j["status"] = e.status;
     if (e.event == "condition") {
       Json reads = Json::object();
-      for (const auto& [key, value] : e.reads) reads[key] = to_json(value);
+      for (const auto& [key, value] : e.reads) reads[key] = value_json(value);
       j["reads"] = std::move(reads);
     }
     if (!e.message.empty()) j["message"] = e.message;

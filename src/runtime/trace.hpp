@@ -3,6 +3,7 @@
 // nodes`.
 #pragma once
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,6 +52,8 @@ class NodeTracer : public Observer {
 };
 
 std::string trace_json_lines(const std::vector<TraceEvent>& trace);
+// A state value as it appears in the trace: a JSON boolean, number or string; null when unset.
+nlohmann::ordered_json value_json(const ScriptValue& value);
 // One line per event; a completed root's status is left to the final "mission <verdict>"
 // line, so that the outcome is printed once.
 std::string trace_summary(const std::vector<TraceEvent>& trace);
