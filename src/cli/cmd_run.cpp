@@ -1,4 +1,5 @@
 #include <iostream>
+#include <regex>
 
 #include "base/files.hpp"
 #include "cli/commands.hpp"
@@ -65,10 +66,19 @@ void register_run(CLI::App& app, int& exit_code) {
       std::cout << runtime::trace_summary(run);
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
-      if (run.error)
-        std::cerr << "uabt: tick " << run.error->tick << ": " << run.error->message
-                  << "\n  node: " << run.error->path
-                  << (run.error->script.empty() ? "" : "\n  script: " + run.error->script) << "\n";
+      if (run.error) {
+        // GCC style: "file:line:col: error: …", then where in the running tree it happened.
+        static const std::regex located(R"(^([^:]+:\d+:\d+): (.*)$)");
+        std::smatch m;
+        const std::string& text = run.error->message;
+        if (std::regex_match(text, m, located))
+          std::cerr << m[1] << ": error: " << m[2] << "\n";
+        else
+          std::cerr << "uabt: error: " << text << "\n";
+        std::cerr << "  note: tick " << run.error->tick << ", node " << run.error->path << "\n";
+        if (!run.error->script.empty())
+          std::cerr << "  note: script `" << run.error->script << "`\n";
+      }
       exit_code = run.verdict == "success" ? kExitPass : kExitFail;
     } catch (const runtime::ScenarioError& e) {
       std::cerr << e.what() << "\n";  // file:line:col: error: … lines
