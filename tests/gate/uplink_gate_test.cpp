@@ -7,6 +7,7 @@
 #include <random>
 
 #include "base/diagnostics.hpp"
+#include "gate/load_support.hpp"
 #include "gate/uplink.hpp"
 #include "report/impact.hpp"
 #include "report/reports.hpp"
@@ -20,19 +21,11 @@ namespace {
 
 using uabt::testing::TempMission;
 
-load::Mission load(const std::filesystem::path& dir,
-                   std::vector<std::filesystem::path> uplinks = {}) {
-  std::string error;
-  load::LoadOptions options;
-  options.uplinks = std::move(uplinks);
-  auto m = load::load_mission(dir, options, error);
-  EXPECT_TRUE(m.has_value()) << error;
-  return m ? std::move(*m) : load::Mission{};
-}
+using uabt::testing::load_merged;
 
 Outcome gate_uplink(const std::filesystem::path& dir, const std::string& package,
                     const Options& options = {}) {
-  return run_uplink_gate(load(dir), load(dir, {dir / package}), options, "test");
+  return run_uplink_gate(load_merged(dir), load_merged(dir, {dir / package}), options, "test");
 }
 
 std::vector<const Finding*> of_check(const Outcome& o, const std::string& check) {
@@ -160,7 +153,7 @@ TEST(UplinkGate, MergedMissionGatesToTheSameCompiledTree) {
     ASSERT_TRUE(o.passed()) << package;
     TempMission out({});
     write_merged_mission(*o.mission, out.dir() / "merged");
-    load::Mission again = load(out.dir() / "merged");
+    load::Mission again = load_merged(out.dir() / "merged");
     Outcome regated = run_gate(std::move(again), {}, "test");
     EXPECT_TRUE(regated.passed()) << package << "\n" << format_text(regated.report.findings);
     EXPECT_EQ(regated.compiled_xml, o.compiled_xml) << package;
@@ -189,7 +182,7 @@ Severity overlap_severity(const Outcome& o) {
 
 TEST(HitPolicy, FirstMakesTheOverlapANoteAndPriorityDecides) {
   TempMission t(overlapping(" policy=\"first\""));
-  Outcome o = run_gate(load(t.dir()), {}, "test");
+  Outcome o = run_gate(load_merged(t.dir()), {}, "test");
   EXPECT_TRUE(o.passed()) << format_text(o.report.findings);
   EXPECT_EQ(overlap_severity(o), Severity::note);
   EXPECT_EQ(o.compiled_xml.find("policy"), std::string::npos)
@@ -201,13 +194,13 @@ TEST(HitPolicy, FirstMakesTheOverlapANoteAndPriorityDecides) {
 TEST(HitPolicy, UniqueIsTheDefaultAndAllowOverlapStaysGlobal) {
   for (const char* attribute : {"", " policy=\"unique\""}) {
     TempMission t(overlapping(attribute));
-    Outcome o = run_gate(load(t.dir()), {}, "test");
+    Outcome o = run_gate(load_merged(t.dir()), {}, "test");
     EXPECT_FALSE(o.passed());
     EXPECT_EQ(overlap_severity(o), Severity::error);
     EXPECT_EQ(o.report.coverage.at(0).overlap_states, 1u);
     Options allow;
     allow.verify.allow_overlap = true;
-    Outcome allowed = run_gate(load(t.dir()), allow, "test");
+    Outcome allowed = run_gate(load_merged(t.dir()), allow, "test");
     EXPECT_TRUE(allowed.passed()) << format_text(allowed.report.findings);
     EXPECT_EQ(overlap_severity(allowed), Severity::warning);
   }
@@ -256,8 +249,8 @@ TEST(UplinkImpact, CountsEqualBruteForceOnSmallDomains) {
          {"alternatives/nav/c.xml", uabt::testing::alternative_tree("c")},
          {"uplinks/u/requirements.fret", uplink_reqs},
          {"uplinks/u/uplink.json", plan}});
-    const load::Mission before = load(t.dir());
-    const load::Mission after = load(t.dir(), {t.dir() / "uplinks" / "u"});
+    const load::Mission before = load_merged(t.dir());
+    const load::Mission after = load_merged(t.dir(), {t.dir() / "uplinks" / "u"});
     ASSERT_FALSE(has_errors(after.findings))
         << reqs << uplink_reqs << plan << format_text(after.findings);
     verify::Impact impact = verify::selection_impact(before, after, {});
@@ -309,8 +302,8 @@ TEST(UplinkImpact, AnUncountedSpaceIsNullInJson) {
       {"uplinks/steeper/requirements.fret",
        "Sand: In exploration if terrain = sand & slope <= 20 & slope >= -20 & battery "
        ">= 40 Mission shall satisfy selected_alt = sand_alternative\n"}});
-  const verify::Impact impact =
-      verify::selection_impact(load(dir), load(dir, {t.dir() / "uplinks" / "steeper"}), {});
+  const verify::Impact impact = verify::selection_impact(
+      load_merged(dir), load_merged(dir, {t.dir() / "uplinks" / "steeper"}), {});
   const auto json = nlohmann::json::parse(report::impact_json(impact));
   const auto& node = json["nodes"][0];
   EXPECT_EQ(node["counted"], false);
