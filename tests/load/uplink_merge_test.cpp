@@ -235,5 +235,19 @@ TEST(HitPolicy, PolicyIsReadAndABadValueIsAFinding) {
   EXPECT_NE(bad[0]->message.find("policy=\"any\" is not a hit policy"), std::string::npos);
 }
 
+TEST(HitPolicy, OneNodeHasOnePolicy) {
+  TempMission t({{"mission.xml",
+                  uabt::testing::mission_with("<Sequence><Adaptable ID=\"nav\" policy=\"first\"/>"
+                                              "<Adaptable ID=\"nav\"/></Sequence>")},
+                 {"requirements.fret", "N: In nav Mission shall satisfy selected_alt = a\n"},
+                 {"alternatives/nav/a.xml", uabt::testing::alternative_tree("a")}});
+  std::string error;
+  auto m = load_mission(t.dir(), {}, error);
+  ASSERT_TRUE(m) << error;
+  auto bad = of_check(*m, "bt-structure");
+  ASSERT_EQ(bad.size(), 1u) << format_text(m->findings);
+  EXPECT_NE(bad[0]->message.find("one node has one hit policy"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace uabt::load
