@@ -120,6 +120,22 @@ TEST(UplinkGate, AmbiguousUplinkIsRejected) {
   EXPECT_NE(change(o.report.uplink->impact.nodes.at(0), "hold_position", "on_sand"), nullptr);
 }
 
+TEST(UplinkGate, AnUplinkThatChangesNoSelectionHasNoBehaviourChangeNote) {
+  // Req1 sent again as it is: replaced in place, no state moves.
+  TempMission package(std::map<std::string, std::string>{
+      {"requirements.fret",
+       "Req1: In navigation if OnDust Mission shall satisfy selected_alt = on_dust\n"}});
+  Outcome o = run_uplink_gate(load_merged(kCuriosity), load_merged(kCuriosity, {package.dir()}), {},
+                              "test");
+  EXPECT_TRUE(o.passed()) << format_text(o.report.findings);
+  EXPECT_TRUE(of_check(o, "uplink-behaviour-change").empty()) << format_text(o.report.findings);
+  ASSERT_EQ(o.report.uplink->impact.nodes.size(), 1u);
+  EXPECT_EQ(o.report.uplink->impact.nodes[0].status, "unchanged");
+  EXPECT_EQ(o.report.uplink->impact.nodes[0].changed_states, 0u);
+  ASSERT_NE(merge_of(o, "Req1"), nullptr);
+  EXPECT_EQ(merge_of(o, "Req1")->rule, "replaced");
+}
+
 TEST(UplinkGate, EveryReportFormatCarriesTheUplink) {
   Outcome o = gate_uplink(kCuriosity, "uplinks/on_mud");
   const std::string json = report::to_json(o.report);
