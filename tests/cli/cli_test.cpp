@@ -145,6 +145,15 @@ TEST(CliUplink, GateUplinkExitCodes) {
       2);
 }
 
+TEST(CliUplink, APackageGivenAsTheMissionGetsTheRightCommand) {
+  CliRun run = uabt("gate missions/msl_curiosity/uplinks/on_mud");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.out.find("`uabt gate missions/msl_curiosity --uplink "
+                         "missions/msl_curiosity/uplinks/on_mud`"),
+            std::string::npos)
+      << run.out;
+}
+
 TEST(CliUplink, GateUplinkWritesTheMergedMissionThatGatesToTheSameTree) {
   uabt::testing::TempMission out({});
   const auto dir = out.dir() / "storm";
