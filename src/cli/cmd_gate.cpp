@@ -4,6 +4,7 @@
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
+#include "gate/uplink.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
 
@@ -12,7 +13,7 @@ namespace uabt::cli {
 void register_gate(CLI::App& app, int& exit_code) {
   struct Args {
     std::string mission, out = "uabt-report", nodes, selection = "sequence", format = "text",
-                         output;
+                         output, uplink;
     bool allow_overlap = false;
     unsigned timeout_ms = 10000;
   };
@@ -31,6 +32,10 @@ void register_gate(CLI::App& app, int& exit_code) {
                 "report overlapping guards as warnings (priority decides on purpose)");
   cmd->add_option("--timeout-ms", args->timeout_ms,
                   "solver time limit per query (inconclusive fails)");
+  cmd->add_option("--uplink", args->uplink,
+                  "an uplink package to merge and gate before it is sent; the reports add where "
+                  "each requirement went and the behaviour change, OUT/merged/ the merged mission")
+      ->check(CLI::ExistingDirectory);
   add_findings_output_options(*cmd, args->format, args->output);
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
@@ -40,15 +45,29 @@ void register_gate(CLI::App& app, int& exit_code) {
       exit_code = kExitUsage;
       return;
     }
+    std::optional<load::Mission> running;
+    if (!args->uplink.empty()) {
+      running = std::move(mission);
+      load_options.uplinks.push_back(args->uplink);
+      mission = load_or_complain(args->mission, load_options);
+      if (!mission) {
+        exit_code = kExitUsage;
+        return;
+      }
+    }
     gate::Options options;
     options.verify.allow_overlap = args->allow_overlap;
     options.verify.timeout_ms = args->timeout_ms;
     options.conform.timeout_ms = args->timeout_ms;
     options.compile.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
                                                               : compile::SelectionStyle::sequence;
-    gate::Outcome outcome = gate::run_gate(std::move(*mission), options, tool_version());
+    gate::Outcome outcome =
+        running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
+                : gate::run_gate(std::move(*mission), options, tool_version());
     outcome.report.uri_prefix = uri_prefix_of(args->mission);
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
+    if (running)
+      gate::write_merged_mission(*outcome.mission, std::filesystem::path(args->out) / "merged");
     exit_code = write_findings(outcome.report, args->format, args->output);
   });
 }

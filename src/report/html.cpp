@@ -3,6 +3,7 @@
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
 #include "report/reports.hpp"
+#include "report/uplink_sections.hpp"
 
 namespace uabt::report {
 
@@ -325,11 +326,13 @@ std::string to_html(const ReportInput& input) {
   out += "</p>\n</div>\n</header>\n";
 
   out += "<nav><a href=\"#findings\">Findings</a>";
+  if (input.uplink) out += "<a href=\"#uplink\">Uplink</a>";
   for (std::size_t i = 0; i < shown.size(); ++i)
     out += "<a href=\"#" + anchor(i, shown[i]) + "\">" + html_escape(shown[i]) + "</a>";
   out += "</nav>\n<main>\n";
 
   findings_section(input, shown, out);
+  if (input.uplink) out += detail::uplink_html(*input.uplink);
   for (std::size_t i = 0; i < shown.size(); ++i) {
     out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " + code(shown[i]) +
            "</h2>\n";

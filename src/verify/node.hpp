@@ -34,6 +34,7 @@ struct Node {
   std::vector<std::vector<std::size_t>> meeting;
   Result* result = nullptr;
   const Options* options = nullptr;
+  bool first_hit = false;  // policy="first": an overlap is a note, priority decides
 };
 
 // "Req1 (on_dust)"

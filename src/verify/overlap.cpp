@@ -34,7 +34,13 @@ void check_overlaps(Node& node, Session& session) {
                            a.requirement->alternative + " and " + b.requirement->alternative +
                            " is never considered in this state",
                        b.requirement->location);
-      if (node.options->allow_overlap) f.severity = Severity::warning;
+      if (node.first_hit) {
+        f.severity = Severity::note;
+        f.notes.push_back("policy=\"first\" on " + node.adaptable + ": priority decides, " +
+                          a.requirement->alternative + " runs in this state");
+      } else if (node.options->allow_overlap) {
+        f.severity = Severity::warning;
+      }
       f.requirements = {a.requirement->id, b.requirement->id};
       f.alternatives = {a.requirement->alternative, b.requirement->alternative};
       f.witness = witness;

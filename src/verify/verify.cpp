@@ -93,6 +93,7 @@ NodeOutcome analyse_node(const load::Mission& mission, const NodeJob& job, const
   node.adaptable = job.adaptable;
   node.result = &result;
   node.options = &options;
+  node.first_hit = mission.first_hit(job.adaptable);
   const bool well_typed = build_guards(node, reqs, session);
   if (!well_typed || domain != Answer::sat) {
     for (const auto* r : reqs) {

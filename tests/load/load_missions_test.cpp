@@ -179,7 +179,8 @@ TEST(Uplink, MudUplinkIsMergedAboveTheDefault) {
   options.uplinks.push_back(dir / "uplinks" / "on_mud");
   auto m = load_mission(dir, options, error);
   ASSERT_TRUE(m) << error;
-  EXPECT_TRUE(m->findings.empty()) << format_text(m->findings);
+  ASSERT_EQ(m->findings.size(), 1u) << format_text(m->findings);
+  EXPECT_EQ(m->findings[0].check, "uplink-merge") << "the merge says where Req3 went";
   auto selections = m->selections_for("navigation");
   ASSERT_EQ(selections.size(), 4u);
   EXPECT_EQ(selections[2]->id, "Req3");
