@@ -11,8 +11,8 @@ namespace uabt::cli {
 
 void register_gate(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, out = "uabt-report", nodes, selection = "sequence", format = "text",
-                         output;
+    std::string mission, source_root, out = "uabt-report", nodes, selection = "sequence",
+                                      format = "text", output;
     bool allow_overlap = false;
     unsigned timeout_ms = 10000;
   };
@@ -32,6 +32,7 @@ void register_gate(CLI::App& app, int& exit_code) {
   cmd->add_option("--timeout-ms", args->timeout_ms,
                   "solver time limit per query (inconclusive fails)");
   add_findings_output_options(*cmd, args->format, args->output);
+  add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
@@ -47,7 +48,13 @@ void register_gate(CLI::App& app, int& exit_code) {
     options.compile.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
                                                               : compile::SelectionStyle::sequence;
     gate::Outcome outcome = gate::run_gate(std::move(*mission), options, tool_version());
-    outcome.report.uri_prefix = uri_prefix_of(args->mission);
+    outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
+    // What conform says about the compiled tree points at its file in the report directory.
+    if (!outcome.report.compiled_tree_file.empty())
+      relocate_findings(
+          outcome.report.findings, outcome.report.compiled_tree_file,
+          relative_to_mission(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
+                              outcome.mission->dir));
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
     exit_code = write_findings(outcome.report, args->format, args->output);
   });

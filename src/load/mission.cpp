@@ -8,6 +8,9 @@
 #include "fretish/parse.hpp"
 #include "load/layout.hpp"
 #include "load/references.hpp"
+#include "load/registered_nodes.hpp"
+#include "load/unknowable.hpp"
+#include "load/vocabulary.hpp"
 
 namespace uabt::load {
 
@@ -60,6 +63,17 @@ void collect_adaptables(const bt::Node& node, const std::string& tree_id, const 
   }
 }
 
+// Line `number` (1-based) of `text`, "" when there is none.
+std::string line_of(const std::string& text, int number) {
+  std::size_t begin = 0;
+  for (int k = 1; k < number && begin != std::string::npos; ++k) {
+    begin = text.find('\n', begin);
+    if (begin != std::string::npos) ++begin;
+  }
+  if (number < 1 || begin == std::string::npos) return {};
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
 // Parses a requirements file. The mission's own file fills the list; an uplink's file is
 // merged onto it: a requirement with a new id is appended (below the mission's, above the
 // default, since the default always goes last), one with an existing id replaces it in place.
@@ -71,6 +85,9 @@ void load_requirements(Mission& m, const fs::path& path, bool from_uplink) {
   fretish::ParseResult parsed = path.extension() == ".json"
                                     ? fretish::parse_fret_json(*text, shown, m.domain)
                                     : fretish::parse_requirements_file(*text, shown);
+  for (const auto& f : parsed.findings)
+    if (f.check == "fretish-syntax")
+      m.unparsed_requirements.emplace_back(f.location, line_of(*text, f.location.line));
   m.findings.insert(m.findings.end(), parsed.findings.begin(), parsed.findings.end());
   if (!from_uplink) {
     m.requirements = std::move(parsed.requirements);
@@ -90,6 +107,7 @@ void load_domain(Mission& m, const fs::path& path) {
   const std::string shown = display_path(path, m.dir);
   auto text = read_or_report(path, shown, m.findings);
   if (!text) return;
+  m.has_domain_file = true;
   fretish::Domain declared = fretish::parse_domain_file(*text, shown, m.findings);
   // Declarations from a FRET export (already in m.domain) come first; domain.fret adds to them.
   for (auto& v : declared.variables) {
@@ -106,8 +124,13 @@ void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_op
 void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
                        const bt::ReadOptions& read_options) {
   for (const auto& file : files) {
+    const std::string key = file.adaptable + "/" + file.name;
     auto doc = bt::read_document(file.path, read_options, m.findings);
-    if (!doc) continue;
+    if (!doc) {
+      m.unreadable_alternatives[key] = display_path(file.path, m.dir);
+      continue;
+    }
+    m.unreadable_alternatives.erase(key);  // an uplink's readable version replaces it
     Alternative alt;
     alt.adaptable = file.adaptable;
     alt.name = file.name;
@@ -120,14 +143,15 @@ void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
           "alternative '" + file.name + "' has no tree named '" + file.name +
               "', its main_tree_to_execute names no tree here, and it has more than one tree",
           {alt.file, doc->root_line, 1}));
+      m.unreadable_alternatives[key] = alt.file;
       continue;
     }
     alt.tree_id = main->id;
     alt.document = std::move(*doc);
     // An uplinked alternative with the name of an existing one is its new version.
-    auto same = std::find_if(m.alternatives.begin(), m.alternatives.end(), [&](const Alternative& a) {
-      return a.adaptable == alt.adaptable && a.name == alt.name;
-    });
+    auto same = std::find_if(
+        m.alternatives.begin(), m.alternatives.end(),
+        [&](const Alternative& a) { return a.adaptable == alt.adaptable && a.name == alt.name; });
     if (same != m.alternatives.end())
       *same = std::move(alt);
     else
@@ -168,8 +192,8 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
   std::error_code ec;
   const std::string shown = display_path(uplink, m.dir);
   if (!fs::is_directory(uplink, ec)) {
-    m.findings.push_back(make_finding("load-file", shown + ": uplink package is not a directory",
-                                      {shown, 0, 0}));
+    m.findings.push_back(
+        make_finding("load-file", shown + ": uplink package is not a directory", {shown, 0, 0}));
     return;
   }
   m.uplinks.push_back(shown);
@@ -191,6 +215,40 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
         "load-file",
         shown + ": uplink package holds no requirements.fret, domain.fret or alternatives/",
         {shown, 0, 0}));
+}
+
+// Files uabt would otherwise pass over in silence: a second requirements file, and an
+// alternative left directly in alternatives/ instead of alternatives/<adaptable>/.
+void report_layout_mistakes(Mission& m, const MissionLayout& layout) {
+  std::error_code ec;
+  if (layout.kind != "uabt") return;
+  if (fs::is_regular_file(m.dir / "requirements.fret", ec) &&
+      fs::is_regular_file(m.dir / "requirements.json", ec)) {
+    Finding f = make_finding("load-ignored-file",
+                             "both requirements.fret and requirements.json exist: uabt reads "
+                             "requirements.fret and ignores requirements.json",
+                             {"requirements.json", 0, 0});
+    f.notes.push_back("keep one of them, so that what is verified is what the team reads");
+    m.findings.push_back(std::move(f));
+  }
+  const fs::path root = m.dir / "alternatives";
+  if (!fs::is_directory(root, ec)) return;
+  std::vector<fs::path> stray;
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && it->path().extension() == ".xml") stray.push_back(it->path());
+  std::sort(stray.begin(), stray.end());
+  for (const auto& file : stray) {
+    std::string example = "alternatives/<adaptable>/" + file.filename().string();
+    if (!m.adaptables.empty() && !m.adaptables.front().id.empty())
+      example = "alternatives/" + m.adaptables.front().id + "/" + file.filename().string();
+    Finding f = make_finding("load-ignored-file",
+                             display_path(file, m.dir) +
+                                 " lies directly in alternatives/ and is not read: an alternative "
+                                 "belongs to one adaptable node",
+                             {display_path(file, m.dir), 0, 0});
+    f.notes.push_back("move it to " + example);
+    m.findings.push_back(std::move(f));
+  }
 }
 
 }  // namespace
@@ -228,11 +286,15 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
     load_nodes(m, *layout->nodes, read_options);
 
   load_alternatives(m, layout->alternatives, read_options);
+  report_layout_mistakes(m, *layout);
   for (const auto& uplink : options.uplinks) merge_uplink(m, uplink, read_options);
   m.selections = fretish::classify_selection(m.requirements, m.findings);
+  check_vocabulary(m, vocabulary_uses(m));
   infer_condition_variables(m);
+  mark_unknowable(m);
   check_references(m);
   check_all_structure(m);
+  check_registered_nodes(m);
   sort_findings(m.findings);
   return m;
 }
