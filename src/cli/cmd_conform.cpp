@@ -55,7 +55,7 @@ void register_conform(CLI::App& app, int& exit_code) {
     }
     // Every finding's file is relative to the mission directory, this one's too.
     relocate_findings(compiled_findings, display_path(compiled_path, read_options.display_base),
-                      relative_to_mission(compiled_path, mission->dir));
+                      relative_path(compiled_path, mission->dir));
     input.findings.insert(input.findings.end(), compiled_findings.begin(), compiled_findings.end());
     sort_findings(input.findings);
     input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);

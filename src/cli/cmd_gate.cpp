@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
@@ -53,8 +54,8 @@ void register_gate(CLI::App& app, int& exit_code) {
     if (!outcome.report.compiled_tree_file.empty())
       relocate_findings(
           outcome.report.findings, outcome.report.compiled_tree_file,
-          relative_to_mission(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
-                              outcome.mission->dir));
+          relative_path(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
+                        outcome.mission->dir));
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
     exit_code = write_findings(outcome.report, args->format, args->output);
   });

@@ -18,16 +18,6 @@ std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
   return mission;
 }
 
-std::string relative_to_mission(const std::filesystem::path& file,
-                                const std::filesystem::path& mission_dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path abs_file = fs::weakly_canonical(fs::absolute(file, ec), ec);
-  const fs::path rel =
-      abs_file.lexically_relative(fs::weakly_canonical(fs::absolute(mission_dir, ec), ec));
-  return rel.empty() ? abs_file.generic_string() : rel.generic_string();
-}
-
 void relocate_findings(std::vector<Finding>& findings, const std::string& from,
                        const std::string& to) {
   for (auto& f : findings)

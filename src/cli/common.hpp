@@ -21,11 +21,6 @@ const char* tool_version();
 std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
                                               const load::LoadOptions& options);
 
-// `file` relative to the mission directory (with ".." where it lies outside it), the form every
-// finding's file takes, so that one prefix makes them all openable (TextOptions::path_prefix).
-std::string relative_to_mission(const std::filesystem::path& file,
-                                const std::filesystem::path& mission_dir);
-
 // Points the findings located in `from` (a displayed name) at `to` instead.
 void relocate_findings(std::vector<Finding>& findings, const std::string& from,
                        const std::string& to);

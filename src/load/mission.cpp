@@ -117,8 +117,15 @@ void load_domain(Mission& m, const fs::path& path) {
 }
 
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
+  const std::size_t first = m.findings.size();
   auto doc = bt::read_document(path, read_options, m.findings);
   if (doc) m.nodes = doc->node_models;
+  // A --nodes file outside the mission is named relative to the mission directory too, like
+  // every finding's file, so that the mission's path in front of it opens it.
+  const std::string shown = display_path(path, m.dir);
+  for (std::size_t k = first; k < m.findings.size(); ++k)
+    if (m.findings[k].location.file == shown)
+      m.findings[k].location.file = relative_path(path, m.dir);
 }
 
 void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,

@@ -155,6 +155,13 @@ void report_unused(Mission& m) {
   }
 }
 
+std::string without_digits(const std::string& name) {
+  std::string out;
+  for (const char c : name)
+    if (!std::isdigit(static_cast<unsigned char>(c))) out += c;
+  return out;
+}
+
 // Without a declared vocabulary every new name is a fresh condition: a name within two edits
 // of another one is most likely a typo of it.
 void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
@@ -185,6 +192,7 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
   std::set<std::pair<std::string, std::string>> reported;
   for (const auto& name : names) {
     for (const auto& other : closest_names(name, candidates)) {
+      if (without_digits(name) == without_digits(other)) continue;  // Zone1, Zone2: a series
       const auto pair = std::minmax(name, other);
       if (!reported.insert(pair).second) continue;
       // Reported at the likelier typo: the rarer name, else the one used later.

@@ -133,3 +133,17 @@ TEST(Vocabulary, UplinkWithItsOwnDeclarationLoads) {
 
 }  // namespace
 }  // namespace uabt::load
+
+namespace uabt::load {
+namespace {
+
+TEST(Vocabulary, NumberedSeriesAreNotTypos) {
+  uabt::testing::TempMission dir(uabt::testing::navigation_files(
+      "Req1: In navigation if Zone1 Mission shall satisfy selected_alt = on_dust\n"
+      "Req2: In navigation if Zone2 Mission shall satisfy selected_alt = on_rocks\n"));
+  Mission m = uabt::testing::load_dir(dir.dir());
+  EXPECT_TRUE(m.findings.empty()) << format_text(m.findings);
+}
+
+}  // namespace
+}  // namespace uabt::load
