@@ -25,7 +25,7 @@ void register_explain(CLI::App& app, int& exit_code) {
       std::vector<std::string> ids;
       for (const auto& known : check_catalogue()) ids.push_back(known.id);
       const std::string hint = did_you_mean(*id, ids);
-      std::cerr << "uabt: unknown check '" << *id << "'" << (hint.empty() ? "" : "; " + hint)
+      std::cerr << "uabt: unknown check '" << *id << "'" << (hint.empty() ? "" : " (" + hint + ")")
                 << "; `uabt checks` lists them\n";
       exit_code = kExitUsage;
       return;

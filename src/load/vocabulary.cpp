@@ -30,6 +30,11 @@ SourceLocation at(const Expr& e, const SourceLocation& owner) {
   return {owner.file, e.range.begin_line, e.range.begin_column};
 }
 
+std::string fs_name(const std::string& file) {
+  const auto slash = file.rfind('/');
+  return slash == std::string::npos ? file : file.substr(slash + 1);
+}
+
 std::string source_of(const VocabularyUse& use) {
   return use.requirement.empty() ? "assumption '" + use.assumption + "'"
                                  : "requirement " + use.requirement;
@@ -99,7 +104,17 @@ std::string vocabulary_files(const Mission& m) {
   return m.has_domain_file ? "domain.fret" : "nodes.xml";
 }
 
+// A line of domain.fret that does not parse may declare any name: "" when there is none,
+// else where it is.
+std::string unparsed_declaration(const Mission& m) {
+  for (const auto& f : m.findings)
+    if (f.check == "fretish-syntax" && fs_name(f.location.file) == "domain.fret")
+      return f.location.file + ":" + std::to_string(f.location.line);
+  return {};
+}
+
 void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
+  const std::string unparsed = unparsed_declaration(m);
   const std::vector<std::string> declared = declared_names(m);
   const std::set<std::string> known(declared.begin(), declared.end());
   const std::string files = vocabulary_files(m);
@@ -111,6 +126,16 @@ void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
     for (const Expr* id : ids) {
       if (known.count(id->text) || !reported.insert(id->text).second) continue;
       m.undeclared.insert(id->text);
+      if (!unparsed.empty()) {  // unknowable: the broken line may declare it
+        const std::string why = source_of(use) + " reads '" + id->text +
+                                "', which the line of domain.fret that does not parse (" +
+                                unparsed + ") may declare";
+        for (const auto& site : m.adaptables)
+          if (!site.id.empty() && (use.adaptable.empty() || use.adaptable == site.id))
+            m.not_verified.emplace(site.id, why);
+        if (use.requirement.empty()) broken_assumptions.insert(use.assumption);
+        continue;
+      }
       Finding f =
           make_finding("ref-undeclared",
                        "'" + id->text + "' in " + source_of(use) + " is not declared in " + files,

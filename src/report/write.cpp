@@ -9,8 +9,12 @@ namespace uabt::report {
 
 void write_reports(const ReportInput& input, const std::filesystem::path& out_dir,
                    const std::string& compiled_xml) {
-  TextOptions text;  // findings.txt reads like the terminal: paths open from where uabt ran
+  // findings.txt reads like the terminal (paths open from where uabt ran), but a report
+  // never carries a path of the machine: a mission outside the working directory keeps
+  // mission-relative paths.
+  TextOptions text;
   if (input.mission != nullptr) text.path_prefix = path_prefix_for(input.mission->dir);
+  if (text.path_prefix.starts_with('/')) text.path_prefix.clear();
   write_file_atomically(out_dir / "findings.txt", format_text(input.findings, text));
   write_file_atomically(out_dir / "findings.json", to_json(input));
   write_file_atomically(out_dir / "findings.sarif", to_sarif(input));

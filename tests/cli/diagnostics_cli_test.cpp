@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -147,19 +148,43 @@ TEST(Diagnostics, PathsOpenFromWhereUabtRuns) {
   replace_in(m / "requirements.fret", "if OnRocks", "if OnRokcs");
   fs::create_directories(ws.root() / "elsewhere");
   const std::string at = "requirements.fret:4:24: error: 'OnRokcs'";
-  EXPECT_NE(uabt_in(ws.root(), "verify msl_typo").out.find("msl_typo/" + at), std::string::npos);
+  // The first line is the node's verification-skipped warning; the error follows.
+  EXPECT_NE(uabt_in(ws.root(), "verify msl_typo").out.find("\nmsl_typo/" + at), std::string::npos);
   EXPECT_NE(uabt_in(ws.root(), "verify ./msl_typo/").out.find("\nmsl_typo/" + at),
             std::string::npos);
-  EXPECT_EQ(uabt_in(m, "verify .").out.find(at), 0u);
-  EXPECT_NE(uabt_in(ws.root() / "elsewhere", "verify ../msl_typo").out.find("../msl_typo/" + at),
+  EXPECT_NE(uabt_in(m, "verify .").out.find("\n" + at), std::string::npos);
+  EXPECT_NE(uabt_in(ws.root() / "elsewhere", "verify ../msl_typo").out.find("\n../msl_typo/" + at),
             std::string::npos);
   // An absolute mission path inside the working directory prints relative to it.
   EXPECT_NE(uabt_in(ws.root(), "verify '" + m.string() + "'").out.find("\nmsl_typo/" + at),
             std::string::npos);
   // findings.txt of the gate reads like the terminal.
   uabt_in(ws.root(), "gate msl_typo --out report");
-  EXPECT_EQ(read(ws.root() / "report/findings.txt").find("msl_typo/" + at), 0u)
+  EXPECT_NE(read(ws.root() / "report/findings.txt").find("\nmsl_typo/" + at), std::string::npos)
       << read(ws.root() / "report/findings.txt");
+}
+
+TEST(Diagnostics, ATerminalGetsTheSourceLineWithACaret) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity", "msl_typo");
+  replace_in(m / "requirements.fret", "if OnRocks", "if OnRokcs");
+  // script(1) gives uabt a terminal as its standard error.
+  const std::string command = "cd '" + ws.root().string() + "' && script -qc \"'" +
+                              std::string(UABT_BINARY) + "' verify msl_typo\" /dev/null";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) out += buffer.data();
+  ::pclose(pipe);
+  EXPECT_NE(out.find("msl_typo/requirements.fret:4:24: error: 'OnRokcs' in requirement Req2 is "
+                     "not declared in domain.fret [ref-undeclared]\r\n"
+                     "   4 | Req2: In navigation if OnRokcs Mission shall satisfy selected_alt = "
+                     "on_rocks\r\n"
+                     "     |                        ^\r\n"),
+            std::string::npos)
+      << out;
 }
 
 nlohmann::json sarif_of(const fs::path& dir, const std::string& args) {

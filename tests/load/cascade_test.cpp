@@ -120,3 +120,18 @@ TEST(Cascade, StrayAlternativeAndSecondRequirementsFileAreReported) {
 
 }  // namespace
 }  // namespace uabt::load
+
+namespace uabt::load {
+namespace {
+
+TEST(Cascade, ABrokenDomainLineIsNotFollowedByUndeclaredNames) {
+  uabt::testing::TempMission dir(uabt::testing::navigation_files(
+      uabt::testing::kTwoTerrains, "boolean OnDust,\nbolean OnRocks\n"));
+  Mission m = uabt::testing::load_dir(dir.dir());
+  EXPECT_TRUE(uabt::testing::with_check(m, "ref-undeclared").empty()) << format_text(m.findings);
+  EXPECT_FALSE(uabt::testing::with_check(m, "fretish-syntax").empty());
+  EXPECT_EQ(m.not_verified.count("navigation"), 1u);
+}
+
+}  // namespace
+}  // namespace uabt::load
