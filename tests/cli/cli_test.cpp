@@ -1,33 +1,21 @@
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
+#include "cli/cli_support.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;  // stdout and stderr together
-};
+using uabt::testing::CliRun;
 
 // Runs the real binary from the source directory, as a user or CI would.
 CliRun uabt(const std::string& args) {
-  const std::string command = "cd '" + uabt::testing::source_dir().string() + "' && '" +
-                              UABT_BINARY + "' " + args + " 2>&1";
-  CliRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.out += buffer.data();
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return uabt::testing::run_shell("cd '" + uabt::testing::source_dir().string() + "' && '" +
+                                  UABT_BINARY + "' " + args + " 2>&1");
 }
 
 std::string read(const std::filesystem::path& p) {

@@ -2,8 +2,6 @@
 // the mission's, compared with golden output (tests/cli/golden/).
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -11,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_support.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
@@ -18,23 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct UabtRun {
-  int exit_code = -1;
-  std::string out;
-};
+using UabtRun = uabt::testing::CliRun;
 
 // `uabt ARGS` in `dir`; `streams` picks what is captured ("2>&1": both, "2>/dev/null": stdout).
 UabtRun uabt_in(const fs::path& dir, const std::string& args, const std::string& streams = "2>&1") {
-  const std::string command =
-      "cd '" + dir.string() + "' && '" + UABT_BINARY + "' " + args + " " + streams;
-  UabtRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.out += buffer.data();
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return uabt::testing::run_shell("cd '" + dir.string() + "' && '" + UABT_BINARY + "' " + args +
+                                  " " + streams);
 }
 
 std::string read(const fs::path& p) {
@@ -172,12 +160,7 @@ TEST(Diagnostics, ATerminalGetsTheSourceLineWithACaret) {
   // script(1) gives uabt a terminal as its standard error.
   const std::string command = "cd '" + ws.root().string() + "' && script -qc \"'" +
                               std::string(UABT_BINARY) + "' verify msl_typo\" /dev/null";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) out += buffer.data();
-  ::pclose(pipe);
+  const std::string out = uabt::testing::run_shell(command).out;
   EXPECT_NE(out.find("msl_typo/requirements.fret:4:24: error: 'OnRokcs' in requirement Req2 is "
                      "not declared in domain.fret [ref-undeclared]\r\n"
                      "   4 | Req2: In navigation if OnRokcs Mission shall satisfy selected_alt = "

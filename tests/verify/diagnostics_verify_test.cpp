@@ -13,7 +13,8 @@ TEST(VerifyDiagnostics, GapSpansTheNodesRequirements) {
       "# comment\n"
       "Req1: In navigation if OnDust Mission shall satisfy selected_alt = on_dust\n"
       "Req2: In navigation if OnRocks Mission shall satisfy selected_alt = on_rocks\n");
-  const auto gaps = findings_of(verify_checked(m), "guard-gap");
+  const verify::Result r = verify_checked(m);
+  const auto gaps = findings_of(r, "guard-gap");
   ASSERT_EQ(gaps.size(), 1u);
   EXPECT_EQ(gaps[0]->location.line, 2) << "the node's first requirement";
   EXPECT_EQ(gaps[0]->location.end_line, 3) << "to its last";
@@ -26,7 +27,8 @@ TEST(VerifyDiagnostics, OverlapNamesTheOtherRequirementAndItsRegion) {
       "selected_alt = slow\n"
       "Safe: In exploration Mission shall satisfy selected_alt = slow\n",
       "integer battery in [0, 100]\ninteger slope in [0, 30]\n");
-  const auto overlaps = findings_of(verify_checked(m), "guard-overlap");
+  const verify::Result r = verify_checked(m);
+  const auto overlaps = findings_of(r, "guard-overlap");
   ASSERT_EQ(overlaps.size(), 1u);
   const Finding& f = *overlaps[0];
   EXPECT_EQ(f.location.line, 2);
@@ -47,7 +49,8 @@ TEST(VerifyDiagnostics, AlwaysTrueLoneAtomIsVacuous) {
       "R2: In n if x = -2 Mission shall satisfy selected_alt = b\n"
       "Safe: In n Mission shall satisfy selected_alt = c\n",
       "integer x in [-3, 0]\n");
-  const auto vacuous = findings_of(verify_checked(m), "guard-vacuous-atom");
+  const verify::Result r = verify_checked(m);
+  const auto vacuous = findings_of(r, "guard-vacuous-atom");
   ASSERT_EQ(vacuous.size(), 1u);
   EXPECT_EQ(vacuous[0]->requirements, std::vector<std::string>{"R1"});
   EXPECT_NE(vacuous[0]->message.find("'x = 1'"), std::string::npos) << vacuous[0]->message;
@@ -62,7 +65,8 @@ TEST(VerifyDiagnostics, LoneAtomThatCanFailIsNotVacuous) {
       "R1: In n if !(x = 0) Mission shall satisfy selected_alt = a\n"
       "Safe: In n Mission shall satisfy selected_alt = c\n",
       "integer x in [-3, 0]\n");
-  EXPECT_TRUE(findings_of(verify_checked(m), "guard-vacuous-atom").empty());
+  const verify::Result r = verify_checked(m);
+  EXPECT_TRUE(findings_of(r, "guard-vacuous-atom").empty());
 }
 
 TEST(VerifyDiagnostics, NotVerifiedNodeIsReportedOnceAndNothingElse) {
