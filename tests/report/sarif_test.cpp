@@ -90,8 +90,9 @@ TEST(SarifReport, ResultsPointAtTheirRulesAndLines) {
     if (finding.location.line > 0) {
       EXPECT_EQ(physical["region"]["startLine"], finding.location.line);
       EXPECT_EQ(physical["region"]["startColumn"], finding.location.column);
-      if (finding.location.end_line > finding.location.line)
+      if (finding.location.end_line > finding.location.line) {
         EXPECT_EQ(physical["region"]["endLine"], finding.location.end_line);
+      }
     } else {
       EXPECT_FALSE(physical.contains("region")) << finding.message;
     }
