@@ -1,10 +1,12 @@
+#include <unistd.h>
+
 #include <iostream>
 
+#include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "compile/compile.hpp"
-#include "report/text.hpp"
 
 namespace uabt::cli {
 
@@ -41,7 +43,11 @@ void register_compile(CLI::App& app, int& exit_code) {
     compile::Result result = compile::compile_mission(*mission, options);
     std::vector<Finding> shown = mission->findings;
     shown.insert(shown.end(), result.findings.begin(), result.findings.end());
-    std::cerr << report::format_text(shown);
+    TextOptions text;
+    text.path_prefix = path_prefix_for(mission->dir);
+    text.source_dir = mission->dir;
+    text.show_source = ::isatty(STDERR_FILENO) != 0;
+    std::cerr << format_text(shown, text);
     if (has_errors(mission->findings) || !result.ok) {
       std::cerr << "uabt: " << mission->name << ": not compiled\n";
       exit_code = kExitFail;
@@ -50,6 +56,9 @@ void register_compile(CLI::App& app, int& exit_code) {
     bt::WriteOptions write_options;
     write_options.format = args->bt_format;
     emit(args->output, bt::write_document(result.document, write_options));
+    // compile emits whatever loads; deciding what may fly is the gate's job.
+    std::cerr << "uabt: " << mission->name
+              << ": compiled, not verified: `uabt gate` proves the guards and the tree\n";
     exit_code = kExitPass;
   });
 }

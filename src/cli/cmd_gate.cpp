@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
@@ -12,8 +13,8 @@ namespace uabt::cli {
 
 void register_gate(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, out = "uabt-report", nodes, selection = "sequence", format = "text",
-                         output, uplink;
+    std::string mission, source_root, out = "uabt-report", nodes, selection = "sequence",
+                                      format = "text", output, uplink;
     bool allow_overlap = false;
     unsigned timeout_ms = 10000;
   };
@@ -37,6 +38,7 @@ void register_gate(CLI::App& app, int& exit_code) {
                   "each requirement went and the behaviour change, OUT/merged/ the merged mission")
       ->check(CLI::ExistingDirectory);
   add_findings_output_options(*cmd, args->format, args->output);
+  add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
@@ -64,7 +66,13 @@ void register_gate(CLI::App& app, int& exit_code) {
     gate::Outcome outcome =
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());
-    outcome.report.uri_prefix = uri_prefix_of(args->mission);
+    outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
+    // What conform says about the compiled tree points at its file in the report directory.
+    if (!outcome.report.compiled_tree_file.empty())
+      relocate_findings(
+          outcome.report.findings, outcome.report.compiled_tree_file,
+          relative_path(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
+                        outcome.mission->dir));
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
     if (running)
       gate::write_merged_mission(*outcome.mission, std::filesystem::path(args->out) / "merged");

@@ -7,6 +7,7 @@ namespace uabt::cli {
 // code. Registration keeps main() free of per-command details.
 void register_compile(CLI::App& app, int& exit_code);
 void register_explain(CLI::App& app, int& exit_code);
+void register_checks(CLI::App& app, int& exit_code);
 void register_verify(CLI::App& app, int& exit_code);
 void register_gate(CLI::App& app, int& exit_code);
 void register_conform(CLI::App& app, int& exit_code);

@@ -18,6 +18,12 @@ std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
   return mission;
 }
 
+void relocate_findings(std::vector<Finding>& findings, const std::string& from,
+                       const std::string& to) {
+  for (auto& f : findings)
+    if (f.location.file == from) f.location.file = to;
+}
+
 void emit(const std::string& path, const std::string& content) {
   if (path.empty() || path == "-") {
     std::cout << content;

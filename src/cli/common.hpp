@@ -21,6 +21,10 @@ const char* tool_version();
 std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
                                               const load::LoadOptions& options);
 
+// Points the findings located in `from` (a displayed name) at `to` instead.
+void relocate_findings(std::vector<Finding>& findings, const std::string& from,
+                       const std::string& to);
+
 // Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
 void emit(const std::string& path, const std::string& content);
 

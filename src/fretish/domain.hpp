@@ -22,6 +22,9 @@ struct Variable {
   std::vector<std::string> enum_values;  // enumeration literals, declaration order
   SourceLocation location;
   bool declared = true;  // false: inferred (an undeclared identifier used as a condition)
+  // Why the declaration cannot be used as written (an empty range…), reported as
+  // domain-invalid; "" when it is fine. Guard checks over such a variable are not made.
+  std::string invalid;
 };
 
 // An expression that always holds (domain.fret `assume`, or a FRET "assumption" requirement).

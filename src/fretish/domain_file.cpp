@@ -118,15 +118,18 @@ class DomainBuilder {
     const std::string first_name = names.name_of(*declared.front());
     if (!bounds_valid(prototype.type, is_unsigned, first_name, lower_written, upper_written,
                       lower_at, upper_at)) {
-      lower_written.clear();  // reported; leave the variable unbounded
+      lower_written.clear();  // reported; leave the variable unbounded, its checks unmade
       upper_written.clear();
+      prototype.invalid = findings_.back().message;
     }
     prototype.lower = lower_written;
     prototype.upper = upper_written;
     if (is_unsigned && prototype.lower.empty()) prototype.lower = "0";
     if (prototype.type == VarType::enumeration) {
-      if (literals.empty())
+      if (literals.empty()) {
         invalid("enum '" + first_name + "' has no literals", map.location(declared.front()->begin));
+        prototype.invalid = findings_.back().message;
+      }
       for (std::size_t i = 0; i < literals.size(); ++i) {
         bool repeated = false;
         for (std::size_t j = 0; j < prototype.enum_values.size(); ++j)

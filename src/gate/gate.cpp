@@ -1,6 +1,7 @@
 #include "gate/gate.hpp"
 
 #include "bt/xml_io.hpp"
+#include "report/reports.hpp"
 
 namespace uabt::gate {
 
@@ -49,6 +50,13 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
       report.findings.insert(report.findings.end(), out.conformance.findings.begin(),
                              out.conformance.findings.end());
     }
+  }
+  // A failing gate keeps the candidate as compiled.rejected.xml: what it says
+  // about the tree points there.
+  if (out.compiled.ok && !report.passed()) {
+    report.compiled_tree_file = report::kRejectedTree;
+    for (auto& f : report.findings)
+      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
   }
   sort_findings(report.findings);
   return out;

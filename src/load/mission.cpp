@@ -8,7 +8,10 @@
 #include "fretish/parse.hpp"
 #include "load/layout.hpp"
 #include "load/references.hpp"
+#include "load/registered_nodes.hpp"
+#include "load/unknowable.hpp"
 #include "load/uplink.hpp"
+#include "load/vocabulary.hpp"
 
 namespace uabt::load {
 
@@ -96,6 +99,17 @@ void collect_adaptables(const bt::Node& node, const std::string& tree_id, const 
   }
 }
 
+// Line `number` (1-based) of `text`, "" when there is none.
+std::string line_of(const std::string& text, int number) {
+  std::size_t begin = 0;
+  for (int k = 1; k < number && begin != std::string::npos; ++k) {
+    begin = text.find('\n', begin);
+    if (begin != std::string::npos) ++begin;
+  }
+  if (number < 1 || begin == std::string::npos) return {};
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
 // Parses a requirements file: the mission's own, or an uplink package's (then the caller
 // merges it).
 std::optional<std::vector<fretish::Requirement>> parse_requirements(Mission& m,
@@ -106,6 +120,9 @@ std::optional<std::vector<fretish::Requirement>> parse_requirements(Mission& m,
   fretish::ParseResult parsed = path.extension() == ".json"
                                     ? fretish::parse_fret_json(*text, shown, m.domain)
                                     : fretish::parse_requirements_file(*text, shown);
+  for (const auto& f : parsed.findings)
+    if (f.check == "fretish-syntax")
+      m.unparsed_requirements.emplace_back(f.location, line_of(*text, f.location.line));
   m.findings.insert(m.findings.end(), parsed.findings.begin(), parsed.findings.end());
   return std::move(parsed.requirements);
 }
@@ -114,6 +131,7 @@ void load_domain(Mission& m, const fs::path& path) {
   const std::string shown = display_path(path, m.dir);
   auto text = read_or_report(path, shown, m.findings);
   if (!text) return;
+  m.has_domain_file = true;
   fretish::Domain declared = fretish::parse_domain_file(*text, shown, m.findings);
   // Declarations from a FRET export (already in m.domain) come first; domain.fret adds to them.
   for (auto& v : declared.variables) {
@@ -123,15 +141,27 @@ void load_domain(Mission& m, const fs::path& path) {
 }
 
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
+  const std::size_t first = m.findings.size();
   auto doc = bt::read_document(path, read_options, m.findings);
   if (doc) m.nodes = doc->node_models;
+  // A --nodes file outside the mission is named relative to the mission directory too, like
+  // every finding's file, so that the mission's path in front of it opens it.
+  const std::string shown = display_path(path, m.dir);
+  for (std::size_t k = first; k < m.findings.size(); ++k)
+    if (m.findings[k].location.file == shown)
+      m.findings[k].location.file = relative_path(path, m.dir);
 }
 
 void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
                        const bt::ReadOptions& read_options) {
   for (const auto& file : files) {
+    const std::string key = file.adaptable + "/" + file.name;
     auto doc = bt::read_document(file.path, read_options, m.findings);
-    if (!doc) continue;
+    if (!doc) {
+      m.unreadable_alternatives[key] = display_path(file.path, m.dir);
+      continue;
+    }
+    m.unreadable_alternatives.erase(key);  // an uplink's readable version replaces it
     Alternative alt;
     alt.adaptable = file.adaptable;
     alt.name = file.name;
@@ -145,6 +175,7 @@ void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
           "alternative '" + file.name + "' has no tree named '" + file.name +
               "', its main_tree_to_execute names no tree here, and it has more than one tree",
           {alt.file, doc->root_line, 1}));
+      m.unreadable_alternatives[key] = alt.file;
       continue;
     }
     alt.tree_id = main->id;
@@ -227,6 +258,40 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
                                       {shown, 0, 0}));
 }
 
+// Files uabt would otherwise pass over in silence: a second requirements file, and an
+// alternative left directly in alternatives/ instead of alternatives/<adaptable>/.
+void report_layout_mistakes(Mission& m, const MissionLayout& layout) {
+  std::error_code ec;
+  if (layout.kind != "uabt") return;
+  if (fs::is_regular_file(m.dir / "requirements.fret", ec) &&
+      fs::is_regular_file(m.dir / "requirements.json", ec)) {
+    Finding f = make_finding("load-ignored-file",
+                             "both requirements.fret and requirements.json exist: uabt reads "
+                             "requirements.fret and ignores requirements.json",
+                             {"requirements.json", 0, 0});
+    f.notes.push_back("keep one of them, so that what is verified is what the team reads");
+    m.findings.push_back(std::move(f));
+  }
+  const fs::path root = m.dir / "alternatives";
+  if (!fs::is_directory(root, ec)) return;
+  std::vector<fs::path> stray;
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && it->path().extension() == ".xml") stray.push_back(it->path());
+  std::sort(stray.begin(), stray.end());
+  for (const auto& file : stray) {
+    std::string example = "alternatives/<adaptable>/" + file.filename().string();
+    if (!m.adaptables.empty() && !m.adaptables.front().id.empty())
+      example = "alternatives/" + m.adaptables.front().id + "/" + file.filename().string();
+    Finding f = make_finding("load-ignored-file",
+                             display_path(file, m.dir) +
+                                 " lies directly in alternatives/ and is not read: an alternative "
+                                 "belongs to one adaptable node",
+                             {display_path(file, m.dir), 0, 0});
+    f.notes.push_back("move it to " + example);
+    m.findings.push_back(std::move(f));
+  }
+}
+
 }  // namespace
 
 std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& options,
@@ -265,12 +330,16 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
     load_nodes(m, *layout->nodes, read_options);
 
   load_alternatives(m, layout->alternatives, read_options);
+  report_layout_mistakes(m, *layout);
   for (const auto& uplink : options.uplinks) merge_uplink(m, uplink, read_options);
   m.selections = fretish::classify_selection(m.requirements, m.findings);
   describe_merges(m);
+  check_vocabulary(m, vocabulary_uses(m));
   infer_condition_variables(m);
+  mark_unknowable(m);
   check_references(m);
   check_all_structure(m);
+  check_registered_nodes(m);
   sort_findings(m.findings);
   return m;
 }

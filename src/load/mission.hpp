@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,20 @@ struct Mission {
 
   // Everything the loader found wrong (syntax, references, structure, types).
   std::vector<Finding> findings;
+
+  bool has_domain_file = false;      // a domain.fret was read (the mission's or an uplink's)
+  std::set<std::string> undeclared;  // names reported as ref-undeclared: never inferred
+  // Adaptable nodes whose guard checks a broken input makes meaningless, each with the reason
+  // ("requirements.fret:3 does not parse"): verify reports each once as not verified instead
+  // of findings that would pretend to know (DESIGN §7: one mistake, one finding).
+  std::map<std::string, std::string> not_verified;
+  // Alternatives whose file exists but could not be read ("adaptable/name" → displayed path).
+  std::map<std::string, std::string> unreadable_alternatives;
+  // Adaptable nodes that a requirement which does not parse may belong to: which
+  // alternatives they select, and whether they have a requirement at all, is unknown.
+  std::set<std::string> requirements_incomplete;
+  // Requirements that do not parse: where, and the text of their line.
+  std::vector<std::pair<SourceLocation, std::string>> unparsed_requirements;
 
   const Alternative* find_alternative(const std::string& adaptable, const std::string& name) const;
   // The selection requirements of one adaptable node in priority order (default last).

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <set>
 
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
@@ -222,8 +223,22 @@ void coverage_html(const ReportInput& input, const std::string& adaptable, std::
         "run for this node.</p>\n";
     return;
   }
-  if (!coverage->variables.empty())
-    out += "<p>The guards range over " + code_list(coverage->variables) + ".</p>\n";
+  if (!coverage->variables.empty()) {
+    // Say which variables the guards read and which only enter through an assumption.
+    std::set<std::string> read;
+    if (input.mission != nullptr)
+      for (const auto* r : input.mission->selections_for(adaptable))
+        if (r->guard)
+          for (const auto& name : fretish::identifiers_of(*r->guard)) read.insert(name);
+    std::vector<std::string> guards, assumed;
+    for (const auto& v : coverage->variables) (read.count(v) ? guards : assumed).push_back(v);
+    out += "<p>" + (guards.empty() ? std::string("The guards read no variable")
+                                   : "The guards read " + code_list(guards));
+    if (!assumed.empty())
+      out += "; the domain's assumptions tie them to " + code_list(assumed) +
+             ", which the counts include";
+    out += ".</p>\n";
+  }
   if (coverage->counted) {
     out += "<p>The domain has " + states_text(coverage->states) + ". ";
     std::string parts;

@@ -27,7 +27,11 @@ void check_overlaps(Node& node, Session& session) {
         continue;
       }
       if (both == Answer::unsat) continue;
-      const State witness = session.encoder().state_of(session.model());
+      const z3::model model = session.model();
+      const State witness = session.encoder().state_of(model);
+      const RegionCubes region =
+          describe_region(node, session, model, {a.literal, b.literal},
+                          session.define(!(a.literal && b.literal), "notboth"));
       Finding f =
           node_finding(node, "guard-overlap",
                        label(a) + " and " + label(b) + " can both hold: the Fallback picks " +
@@ -44,6 +48,10 @@ void check_overlaps(Node& node, Session& session) {
       f.requirements = {a.requirement->id, b.requirement->id};
       f.alternatives = {a.requirement->alternative, b.requirement->alternative};
       f.witness = witness;
+      const SourceLocation& other = a.requirement->location;
+      f.related.push_back({other, "the other requirement, " + label(a)});
+      for (const auto& cube : region.cubes) f.notes.push_back("both hold: " + cube);
+      if (!region.more.empty()) f.notes.push_back("both hold: " + region.more);
       f.notes.push_back("if " + a.requirement->alternative +
                         " fails there, the Fallback falls through to " +
                         b.requirement->alternative);
