@@ -289,6 +289,36 @@ bool evaluate_on_cell(const SelectionSpace& space, const CellExpr& e, std::size_
   return false;
 }
 
+std::optional<State> cell_state(const SelectionSpace& space, std::size_t cell) {
+  State state;
+  for (std::size_t d = 0; d < space.dimensions.size(); ++d) {
+    const Dimension& dim = space.dimensions[d];
+    const Dimension::Piece& p = dim.pieces[space.piece(cell, d)];
+    switch (dim.kind) {
+      case Dimension::Kind::opaque: return std::nullopt;
+      case Dimension::Kind::boolean:
+        state.emplace_back(dim.name, Value::of_bool(p.text == "true"));
+        break;
+      case Dimension::Kind::enumeration:
+        state.emplace_back(dim.name, Value::of_enum(p.text));
+        break;
+      case Dimension::Kind::ordered: {
+        if (dim.integer) {
+          const double v = p.point        ? p.at
+                           : p.open_below ? std::ceil(p.above) - 1
+                                          : std::floor(p.below) + 1;
+          state.emplace_back(dim.name, Value::of_int(static_cast<std::int64_t>(v)));
+        } else {
+          const double v = representative(p);
+          state.emplace_back(dim.name, Value::of_real(v, p.point ? p.text : std::to_string(v)));
+        }
+        break;
+      }
+    }
+  }
+  return state;
+}
+
 std::optional<SelectionSpace> build_selection_space(const std::vector<fretish::ExprPtr>& guards,
                                                     const fretish::Domain& domain,
                                                     std::size_t max_cells) {

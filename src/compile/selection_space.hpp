@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "base/value.hpp"
 #include "fretish/domain.hpp"
 #include "fretish/expr.hpp"
 
@@ -74,6 +75,10 @@ struct SelectionSpace {
 };
 
 bool evaluate_on_cell(const SelectionSpace& space, const CellExpr& e, std::size_t cell);
+
+// A state of the cell: one value per variable dimension (inside the piece; integers whole).
+// nullopt when a dimension is an opaque atom (no single variable to set).
+std::optional<State> cell_state(const SelectionSpace& space, std::size_t cell);
 
 // Builds the space of `guards` (nullptr: a default) under `domain`. nullopt when it has more
 // than `max_cells` cells before the assumptions are applied.
