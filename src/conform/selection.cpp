@@ -423,62 +423,57 @@ class SelectionCheck {
 namespace {
 
 // A selection tree of another shape than Fig. 4: it conforms when its one-tick meaning equals
-// the requirements' (DESIGN §6); the shape findings then only describe its style.
-void check_by_meaning(Context& ctx, Prover& prover, const std::string& adaptable,
-                      std::vector<Finding> shape_findings,
+// the requirements' (DESIGN §6); the shape findings then only describe its style. When its
+// meaning cannot be read, the shape findings stand and a Fig. 4-like tree gets the per-branch
+// checks. Returns false in that case.
+bool check_by_meaning(Context& ctx, Prover& prover, const std::string& adaptable,
+                      std::vector<Finding>& shape_findings,
                       std::set<std::string>& checked_alternatives) {
   const bt::TreeDef* tree = ctx.compiled().find_tree(adaptable);
-  SelectionMeaning meaning;
-  if (tree != nullptr && !tree->root.tag.empty())
-    meaning = prove_selection_meaning(ctx, prover, adaptable, *tree);
-  else
-    meaning.reason = "there is no selection tree";
-  const bool decided = meaning.verdict == SelectionMeaning::Verdict::equal ||
-                       meaning.verdict == SelectionMeaning::Verdict::differs;
-  for (Finding& f : shape_findings) {
-    if (decided) {
-      f.severity = Severity::note;
-      f.notes.push_back(meaning.verdict == SelectionMeaning::Verdict::equal
-                            ? "a matter of style: the selection is proved to select the same "
-                              "alternative as the requirements in every state of the domain"
-                            : "the selection's meaning was checked instead of its shape");
-    } else if (!meaning.reason.empty()) {
-      f.notes.push_back("its meaning could not be checked either: " + meaning.reason);
-    }
-    ctx.findings().push_back(std::move(f));
-  }
-  if (tree == nullptr || tree->root.tag.empty()) return;
+  if (tree == nullptr || tree->root.tag.empty()) return false;
+  const SelectionMeaning meaning = prove_selection_meaning(ctx, prover, adaptable, *tree);
   const std::string path = root_path(*tree);
   switch (meaning.verdict) {
-    case SelectionMeaning::Verdict::equal:
-      for (const auto& call : meaning.calls)
-        check_alternative_trees(ctx, adaptable, call.alternative, call.node, checked_alternatives);
-      return;
-    case SelectionMeaning::Verdict::differs: {
-      Finding& f =
-          ctx.report("compiled-selection-mismatch",
-                     "the selection tree '" + adaptable +
-                         "' does not select what the requirements select: in the "
-                         "state " +
-                         describe(meaning.witness) + " it selects " + meaning.compiled_selects +
-                         " where the requirements select " + meaning.required_selects,
-                     tree->root, path);
-      f.adaptable = adaptable;
-      f.witness = meaning.witness;
-      if (!meaning.required_by.empty()) f.requirements = {meaning.required_by};
-      f.alternatives = meaning.alternatives;
-      return;
-    }
+    case SelectionMeaning::Verdict::unreadable:
+      for (Finding& f : shape_findings)
+        f.notes.push_back("its meaning could not be read either: " + meaning.reason);
+      return false;
     case SelectionMeaning::Verdict::unknown: {
       Finding& f = ctx.report("verification-inconclusive",
                               "could not decide whether the selection tree '" + adaptable +
                                   "' selects what the requirements select: " + meaning.reason,
                               tree->root, path);
       f.adaptable = adaptable;
-      return;
+      return false;
     }
-    case SelectionMeaning::Verdict::unreadable: return;  // the shape findings stand
+    case SelectionMeaning::Verdict::equal:
+    case SelectionMeaning::Verdict::differs: break;
   }
+  for (Finding& f : shape_findings) {
+    f.severity = Severity::note;
+    f.notes.push_back(meaning.verdict == SelectionMeaning::Verdict::equal
+                          ? "a matter of style: the selection is proved to select the same "
+                            "alternative as the requirements in every state of the domain"
+                          : "the selection's meaning was checked instead of its shape");
+    ctx.findings().push_back(std::move(f));
+  }
+  if (meaning.verdict == SelectionMeaning::Verdict::equal) {
+    for (const auto& call : meaning.calls)
+      check_alternative_trees(ctx, adaptable, call.alternative, call.node, checked_alternatives);
+    return true;
+  }
+  Finding& f = ctx.report("compiled-selection-mismatch",
+                          "the selection tree '" + adaptable +
+                              "' does not select what the requirements select: in the state " +
+                              describe(meaning.witness) + " it selects " +
+                              meaning.compiled_selects + " where the requirements select " +
+                              meaning.required_selects,
+                          tree->root, path);
+  f.adaptable = adaptable;
+  f.witness = meaning.witness;
+  if (!meaning.required_by.empty()) f.requirements = {meaning.required_by};
+  f.alternatives = meaning.alternatives;
+  return true;
 }
 
 }  // namespace
@@ -492,7 +487,10 @@ void check_selection(Context& ctx, Prover& prover, const std::string& adaptable,
     SelectionCheck(ctx, prover, adaptable, std::move(*selector), checked_alternatives).run();
     return;
   }
-  check_by_meaning(ctx, prover, adaptable, std::move(shape.findings()), checked_alternatives);
+  if (check_by_meaning(ctx, prover, adaptable, shape.findings(), checked_alternatives)) return;
+  for (Finding& f : shape.findings()) ctx.findings().push_back(std::move(f));
+  if (selector)
+    SelectionCheck(ctx, prover, adaptable, std::move(*selector), checked_alternatives).run();
 }
 
 }  // namespace uabt::conform
