@@ -2,10 +2,12 @@
 #include "compile/selection_space.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
 #include "compile/guard_rewrite.hpp"
+#include "fretish/relation.hpp"
 
 namespace uabt::compile {
 
@@ -14,8 +16,9 @@ using fretish::ExprKind;
 
 namespace {
 
+// A decimal literal a double holds exactly enough to order the cuts: at most 15 digits.
 std::optional<double> parse_number(const std::string& text) {
-  if (text.empty()) return std::nullopt;
+  if (text.empty() || std::count_if(text.begin(), text.end(), ::isdigit) > 15) return std::nullopt;
   try {
     std::size_t used = 0;
     const double v = std::stod(text, &used);
@@ -35,16 +38,6 @@ std::optional<std::pair<double, std::string>> constant_of(const Expr& e) {
     if (auto v = parse_number(e.args[0]->text)) return std::make_pair(-*v, "-" + e.args[0]->text);
   }
   return std::nullopt;
-}
-
-ExprKind mirrored(ExprKind k) {
-  switch (k) {
-    case ExprKind::lt: return ExprKind::gt;
-    case ExprKind::le: return ExprKind::ge;
-    case ExprKind::gt: return ExprKind::lt;
-    case ExprKind::ge: return ExprKind::le;
-    default: return k;
-  }
 }
 
 bool compare(double x, ExprKind op, double c) {
@@ -88,7 +81,7 @@ Atom classify(const fretish::ExprPtr& e, const fretish::Domain& domain) {
       if (!c) continue;
       a.kind = Dimension::Kind::ordered;
       a.variable = v->name;
-      a.op = side == 0 ? e->kind : mirrored(e->kind);
+      a.op = side == 0 ? e->kind : fretish::mirrored_relation(e->kind);
       a.constant = c->first;
       a.constant_text = c->second;
       return a;
