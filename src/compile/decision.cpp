@@ -9,6 +9,9 @@ namespace uabt::compile {
 
 namespace {
 
+// Literals one enum test may name (BT.CPP parses `a == 'x' || a == 'y' || …` recursively).
+constexpr std::size_t kMaxLiterals = 32;
+
 double xlogx(double x) {
   return x > 0 ? x * std::log(x) : 0;
 }
@@ -116,11 +119,15 @@ class Greedy {
           return per_piece[a].weight + per_piece[a].count * 1e-9 >
                  per_piece[b].weight + per_piece[b].count * 1e-9;
         });
+        // A test names at most kMaxLiterals literals (one ScriptCondition): on a larger enum
+        // the "half" is the heaviest kMaxLiterals.
+        const bool halves = present.size() <= 2 * kMaxLiterals;
         std::vector<bool> half(n, false);
         double yes = 0, no = 0;
+        std::size_t taken = 0;
         for (std::size_t p : order) {
           const double w = per_piece[p].weight + per_piece[p].count * 1e-9;
-          if (yes <= no) {
+          if (halves ? yes <= no : taken++ < kMaxLiterals) {
             half[p] = true;
             yes += w;
           } else {
@@ -137,8 +144,10 @@ class Greedy {
         }
         add(std::move(half));
         for (auto& [label, group] : by_label) {
-          const auto members = std::count(group.begin(), group.end(), true);
-          if (members > 1 && static_cast<std::size_t>(members) < present.size())
+          const auto members =
+              static_cast<std::size_t>(std::count(group.begin(), group.end(), true));
+          if (members > 1 && members < present.size() &&
+              std::min(members, present.size() - members) <= kMaxLiterals)
             add(std::move(group));
         }
         return;

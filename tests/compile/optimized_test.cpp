@@ -101,6 +101,27 @@ TEST(OptimizedSelection, EnumTestsHalvesOfTheLiterals) {
   expect_counts_match_engine(m, "drive");
 }
 
+TEST(OptimizedSelection, LargeEnumTestsNameAtMost32Literals) {
+  TempMission t(testing::terrain_enum_files(100));
+  const load::Mission m = load_clean(t.dir());
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  const SelectionStats& s = r.selection_stats.front();
+  EXPECT_TRUE(s.optimized_used) << s.reason;
+  EXPECT_LE(s.optimized.average, s.algorithm1.average / 2);
+  std::size_t most = 0;
+  count_nodes(selection_root(r, "drive"), [&](const bt::Node& n) {
+    if (const std::string* code = n.attribute("code")) {
+      std::size_t literals = 1, at = 0;
+      while ((at = code->find("||", at)) != std::string::npos) ++literals, at += 2;
+      most = std::max(most, literals);
+    }
+    return false;
+  });
+  EXPECT_GT(most, 1u);
+  EXPECT_LE(most, 32u);
+  expect_counts_match_engine(m, "drive");
+}
+
 TEST(OptimizedSelection, AssumptionsDropChecks) {
   TempMission t(testing::assumed_cover_files());
   const load::Mission m = load_clean(t.dir());
