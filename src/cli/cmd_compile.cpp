@@ -25,7 +25,7 @@ void register_compile(CLI::App& app, int& exit_code) {
   cmd->add_option("--bt-format", args->bt_format, "BehaviorTree.CPP XML format")
       ->check(CLI::IsMember({3, 4}));
   cmd->add_option("--selection", args->selection, "selector style")
-      ->check(CLI::IsMember({"sequence", "reactive"}));
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
   cmd->callback([args, &exit_code] {
@@ -38,8 +38,7 @@ void register_compile(CLI::App& app, int& exit_code) {
     }
     compile::Options options;
     options.bt_format = args->bt_format;
-    options.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
-                                                      : compile::SelectionStyle::sequence;
+    options.selection = selection_style(args->selection);
     compile::Result result = compile::compile_mission(*mission, options);
     std::vector<Finding> shown = mission->findings;
     shown.insert(shown.end(), result.findings.begin(), result.findings.end());

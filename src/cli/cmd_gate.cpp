@@ -28,7 +28,7 @@ void register_gate(CLI::App& app, int& exit_code) {
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
   cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
-      ->check(CLI::IsMember({"sequence", "reactive"}));
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
   cmd->add_option("--timeout-ms", args->timeout_ms,
@@ -61,8 +61,7 @@ void register_gate(CLI::App& app, int& exit_code) {
     options.verify.allow_overlap = args->allow_overlap;
     options.verify.timeout_ms = args->timeout_ms;
     options.conform.timeout_ms = args->timeout_ms;
-    options.compile.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
-                                                              : compile::SelectionStyle::sequence;
+    options.compile.selection = selection_style(args->selection);
     gate::Outcome outcome =
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());

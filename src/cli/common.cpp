@@ -33,4 +33,10 @@ void emit(const std::string& path, const std::string& content) {
   write_file_atomically(path, content);
 }
 
+compile::SelectionStyle selection_style(const std::string& name) {
+  if (name == "reactive") return compile::SelectionStyle::reactive;
+  if (name == "optimized") return compile::SelectionStyle::optimized;
+  return compile::SelectionStyle::sequence;
+}
+
 }  // namespace uabt::cli
