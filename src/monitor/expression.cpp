@@ -69,8 +69,7 @@ std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Exp
   return c;
 }
 
-int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
-                              std::string& error) {
+int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, std::string& error) {
   N n;
   switch (e.kind) {
     case ExprKind::bool_literal: n.constant = Val::of_bool(e.bool_value); break;
@@ -78,7 +77,7 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
     case ExprKind::identifier: {
       const Resolved r = resolve(e.text);
       if (r.kind == Resolved::Kind::unknown) {
-        error = "'" + e.text + "' is not a variable of the trace";
+        error = "the trace has no variable '" + e.text + "'";
         return -1;
       }
       if (r.kind == Resolved::Kind::literal) {
@@ -86,6 +85,7 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
       } else {
         n.kind = K::variable;
         n.slot = r.id;
+        n.name = e.text;
         bool known = false;
         for (int v : variables_) known = known || v == r.id;
         if (!known) variables_.push_back(r.id);
@@ -199,7 +199,7 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
     case K::constant: return n.constant;
     case K::variable: {
       const Val& v = frame[static_cast<std::size_t>(n.slot)];
-      if (v.kind == Val::Kind::missing) error = "a variable it reads has no value yet";
+      if (v.kind == Val::Kind::missing && error.empty()) error = "'" + n.name + "' has no value";
       return v;
     }
     case K::logical_not: {

@@ -71,15 +71,40 @@ class CompiledExpression {
 
  private:
   enum class K : std::uint8_t {
-    constant, variable, logical_not, logical_and, logical_or, logical_xor, implies, iff, eq, ne,
-    lt, le, gt, ge, add, sub, mul, div, mod, pow, negate, abs, min, max, ite, previous
+    constant,
+    variable,
+    logical_not,
+    logical_and,
+    logical_or,
+    logical_xor,
+    implies,
+    iff,
+    eq,
+    ne,
+    lt,
+    le,
+    gt,
+    ge,
+    add,
+    sub,
+    mul,
+    div,
+    mod,
+    pow,
+    negate,
+    abs,
+    min,
+    max,
+    ite,
+    previous
   };
   struct N {
     K kind = K::constant;
     std::vector<int> args;
     Val constant;
     int slot = -1;
-    int state = -1;  // previous: index into previous_
+    std::string name;  // variable: for messages
+    int state = -1;    // previous: index into previous_
   };
   int build(const fretish::Expr& e, const Resolver& resolve, std::string& error);
   Val eval(int node, const std::vector<Val>& frame, std::string& error);

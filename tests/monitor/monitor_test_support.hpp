@@ -64,9 +64,9 @@ inline nlohmann::json fret_semantics() {
 
 inline monitor::ScopeKind scope_from_key(const std::string& k) {
   using monitor::ScopeKind;
-  for (ScopeKind s : {ScopeKind::null, ScopeKind::in, ScopeKind::notin, ScopeKind::only_in,
-                      ScopeKind::after, ScopeKind::before, ScopeKind::only_after,
-                      ScopeKind::only_before})
+  for (ScopeKind s :
+       {ScopeKind::null, ScopeKind::in, ScopeKind::notin, ScopeKind::only_in, ScopeKind::after,
+        ScopeKind::before, ScopeKind::only_after, ScopeKind::only_before})
     if (k == monitor::scope_key(s)) return s;
   ADD_FAILURE() << "scope " << k;
   return ScopeKind::null;

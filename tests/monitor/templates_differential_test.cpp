@@ -61,15 +61,15 @@ TEST(MonitorSemantics, EveryFretTemplateAtEveryTick) {
     shape.condition = condition_from_key(parts[1]);
     shape.timing = timing_from_key(parts[2]);
     const bool timed = parts[2] == "within" || parts[2] == "for" || parts[2] == "after";
-    for (std::uint64_t d : timed ? std::vector<std::uint64_t>{0, 1, 2, 3, 5}
-                                 : std::vector<std::uint64_t>{1}) {
+    for (std::uint64_t d :
+         timed ? std::vector<std::uint64_t>{0, 1, 2, 3, 5} : std::vector<std::uint64_t>{1}) {
       shape.duration = d;
-      const std::string text = instantiate(entry["ptExpanded"].get<std::string>(),
-                                           {{"scope_mode", "m"},
-                                            {"regular_condition", "c"},
-                                            {"post_condition", "p"},
-                                            {"stop_condition", "s"},
-                                            {"duration", std::to_string(d)}});
+      const std::string text =
+          instantiate(entry["ptExpanded"].get<std::string>(), {{"scope_mode", "m"},
+                                                               {"regular_condition", "c"},
+                                                               {"post_condition", "p"},
+                                                               {"stop_condition", "s"},
+                                                               {"duration", std::to_string(d)}});
       Mismatch mismatch;
       compare(shape, text, rng, 120, mismatch);
       EXPECT_EQ(mismatch.count, 0) << key << " duration " << d << "\n" << mismatch.what;
