@@ -55,11 +55,13 @@ void register_run(CLI::App& app, int& exit_code) {
         manager.add_uplink(tick, spec.substr(colon + 1));
       }
       runtime::ManagerRun run = manager.run();
-      std::cout << runtime::trace_summary(run);
+      std::cout << runtime::trace_summary(run) << runtime::property_summary(run);
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
       exit_code =
-          run.finished && run.status == runtime::NodeStatus::success ? kExitPass : kExitFail;
+          run.finished && run.status == runtime::NodeStatus::success && !run.guarantees_failed
+              ? kExitPass
+              : kExitFail;
     } catch (const std::exception& e) {
       std::cerr << "uabt: " << e.what() << "\n";
       exit_code = kExitFail;

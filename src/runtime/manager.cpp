@@ -8,6 +8,7 @@
 
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
+#include "runtime/property_monitor.hpp"
 #include "runtime/runner.hpp"
 #include "runtime/selection.hpp"
 
@@ -53,6 +54,16 @@ std::string alternative_name(const load::Mission& m, const std::string& adaptabl
   return tree_id;
 }
 
+TraceEvent violation_event(const PropertyViolation& v) {
+  TraceEvent e;
+  e.tick = v.tick;
+  e.event = "violation";
+  e.requirement = v.result.id;
+  e.role = v.result.assumption ? "assumption" : "guarantee";
+  e.values = v.result.values;
+  return e;
+}
+
 }  // namespace
 
 BehaviorTreeManager::BehaviorTreeManager(fs::path mission_dir, Scenario scenario,
@@ -83,6 +94,7 @@ ManagerRun BehaviorTreeManager::run() {
   std::vector<bt::NodeModel> robot_nodes;
   if (running.outcome.mission->nodes) robot_nodes = *running.outcome.mission->nodes;
   Runner runner(running.document, scenario_, run_options, robot_nodes);
+  PropertyMonitor properties(*running.outcome.mission, runner.engine());
 
   SelectionObserver selections(runner.engine(), [&](const Selection& s) {
     TraceEvent e;
@@ -91,9 +103,11 @@ ManagerRun BehaviorTreeManager::run() {
     e.adaptable = s.adaptable;
     e.requirement = s.requirement;
     e.alternative = alternative_name(*running.outcome.mission, s.adaptable, s.alternative);
+    properties.select(e.adaptable, e.alternative);
     result.trace.push_back(std::move(e));
   });
   runner.engine().add_observer(&selections);
+  runner.engine().add_observer(&properties);
 
   runner.on_uplink = [&](const ScenarioEvent& event, Runner& r) {
     const auto started = std::chrono::steady_clock::now();
@@ -136,14 +150,22 @@ ManagerRun BehaviorTreeManager::run() {
   NodeStatus last = NodeStatus::idle;
   while (!runner.done()) {
     const NodeStatus now = runner.step();
-    if (now == last) continue;
-    TraceEvent e;
-    e.tick = runner.ticks();
-    e.event = "status";
-    e.status = lower_case(status_name(now));
-    result.trace.push_back(std::move(e));
-    last = now;
+    if (now != last) {
+      TraceEvent e;
+      e.tick = runner.ticks();
+      e.event = "status";
+      e.status = lower_case(status_name(now));
+      result.trace.push_back(std::move(e));
+      last = now;
+    }
+    for (const PropertyViolation& v : properties.after_tick(runner.ticks()))
+      result.trace.push_back(violation_event(v));
   }
+  for (const PropertyViolation& v : properties.at_end(runner.ticks()))
+    result.trace.push_back(violation_event(v));
+  result.properties = properties.results();
+  result.guarantees_failed = properties.guarantees_failed();
+  runner.engine().remove_observer(&properties);
   runner.engine().remove_observer(&selections);
 
   result.ticks = runner.ticks();
@@ -170,6 +192,12 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
     if (!e.uplink.empty()) j["uplink"] = e.uplink;
     if (!e.verdict.empty()) j["verdict"] = e.verdict;
     if (!e.status.empty()) j["status"] = e.status;
+    if (e.event == "violation") {
+      j["role"] = e.role;
+      nlohmann::ordered_json values = nlohmann::ordered_json::object();
+      for (const auto& [name, value] : e.values) values[name] = value;
+      j["values"] = std::move(values);
+    }
     if (e.event == "uplink") {
       if (e.verdict == "accepted") {
         j["swapped"] = e.swapped;
@@ -203,6 +231,12 @@ std::string trace_summary(const ManagerRun& run) {
       } else {
         for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
       }
+    } else if (e.event == "violation") {
+      out += e.role + " " + e.requirement + " violated";
+      std::string values;
+      for (const auto& [name, value] : e.values)
+        values += (values.empty() ? "" : ", ") + name + "=" + value;
+      if (!values.empty()) out += " (" + values + ")";
     } else if (e.event == "status") {
       out += "mission " + e.status;
     } else if (e.event == "done") {
@@ -210,6 +244,18 @@ std::string trace_summary(const ManagerRun& run) {
     } else {
       out += e.event;
     }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string property_summary(const ManagerRun& run) {
+  std::string out;
+  for (const monitor::PropertyResult& p : run.properties) {
+    out += std::string(p.assumption ? "assumption " : "property ") + p.id + ": " +
+           monitor::verdict_name(p.verdict);
+    if (p.first_violation) out += " from tick " + std::to_string(*p.first_violation);
+    if (!p.reason.empty()) out += ": " + p.reason;
     out += "\n";
   }
   return out;

@@ -7,6 +7,7 @@
 #include "base/finding.hpp"
 #include "compile/compile.hpp"
 #include "gate/gate.hpp"
+#include "monitor/property_set.hpp"
 #include "runtime/scenario.hpp"
 #include "runtime/status.hpp"
 
@@ -25,6 +26,9 @@ struct TraceEvent {
   std::uint64_t halted = 0;          // uplink accepted: running instances halted by the swap
   double latency_ms = 0.0;           // uplink: from receipt to the new tree being in place
   std::string status;                // status: the root's status after the tick
+  // violation: the property (requirement), its role and the values it read at `tick`
+  std::string role;
+  std::vector<std::pair<std::string, std::string>> values;
 };
 
 struct ManagerOptions {
@@ -38,6 +42,8 @@ struct ManagerRun {
   bool finished = false;
   std::vector<TraceEvent> trace;
   std::vector<std::string> accepted_uplinks;
+  std::vector<monitor::PropertyResult> properties;  // the mission properties' verdicts
+  bool guarantees_failed = false;                   // a guarantee violated or not monitored
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's
@@ -67,5 +73,7 @@ class BehaviorTreeManager {
 // The trace as JSON lines, and as a short text summary for a terminal.
 std::string trace_json_lines(const std::vector<TraceEvent>& trace);
 std::string trace_summary(const ManagerRun& run);
+// One line per mission property: its verdict at the end of the run.
+std::string property_summary(const ManagerRun& run);
 
 }  // namespace uabt::runtime
