@@ -16,7 +16,7 @@ std::optional<Val> to_val(const TraceValue& v, const fretish::Variable* declared
   switch (v.kind) {
     case TraceValue::Kind::boolean: out = Val::of_bool(v.boolean); break;
     case TraceValue::Kind::number: out = Val::of_number(v.number); break;
-    case TraceValue::Kind::text: out = Val::of_symbol(symbols.intern(v.text)); break;
+    case TraceValue::Kind::text: out = Val::of_symbol(symbols.id(v.text)); break;
   }
   if (declared == nullptr) return out;
   const bool fits = (declared->type == VarType::boolean && v.kind == TraceValue::Kind::boolean) ||
@@ -41,7 +41,7 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
                         const std::string& trace_file, std::vector<Finding>& findings) {
   Variables variables;
   Symbols symbols;
-  for (const std::string& name : trace.names) variables.slot(name);
+  for (const std::string& name : trace.names) variables.id(name);
   Vocabulary vocabulary{&variables, &symbols, trace.strings};
   for (const fretish::Variable& v : domain.variables)
     for (const std::string& literal : v.enum_values) vocabulary.literals.insert(literal);

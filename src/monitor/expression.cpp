@@ -5,27 +5,15 @@
 
 namespace uabt::monitor {
 
-int Symbols::intern(const std::string& name) {
+int NameTable::id(const std::string& name) {
   const auto [it, inserted] = ids_.emplace(name, static_cast<int>(names_.size()));
   if (inserted) names_.push_back(name);
   return it->second;
 }
 
-std::optional<int> Symbols::find(const std::string& name) const {
+std::optional<int> NameTable::find(const std::string& name) const {
   const auto it = ids_.find(name);
   if (it == ids_.end()) return std::nullopt;
-  return it->second;
-}
-
-int Variables::slot(const std::string& name) {
-  const auto [it, inserted] = slots_.emplace(name, static_cast<int>(names_.size()));
-  if (inserted) names_.push_back(name);
-  return it->second;
-}
-
-std::optional<int> Variables::find(const std::string& name) const {
-  const auto it = slots_.find(name);
-  if (it == slots_.end()) return std::nullopt;
   return it->second;
 }
 
@@ -59,6 +47,10 @@ const char* kind_name(Val::Kind k) {
 }
 
 }  // namespace
+
+bool is_monitored_function(const std::string& name) {
+  return function_arity(name).has_value();
+}
 
 std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Expr& e,
                                                               const Resolver& resolve,
@@ -95,7 +87,13 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
     case ExprKind::call: {
       const auto arity = function_arity(e.text);
       if (!arity) {
-        error = "function '" + e.text + "' has no meaning on a trace";
+        // FRET's temporal predicates need the scope's interval; not monitored (yet).
+        static const char* const temporal[] = {"persisted", "occurred", "persists",
+                                               "occurs",    "prevOcc",  "nextOcc"};
+        bool is_temporal = false;
+        for (const char* t : temporal) is_temporal = is_temporal || e.text == t;
+        error = is_temporal ? "FRET's temporal function '" + e.text + "' is not monitored"
+                            : "'" + e.text + "' is not one of FRET's functions";
         return -1;
       }
       if (static_cast<int>(e.args.size()) != *arity) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "monitor/expression.hpp"
 #include "monitor/monitor.hpp"
 
 namespace uabt::monitor {
@@ -94,6 +95,10 @@ class PartChecker {
         return std::nullopt;
       }
       case ExprKind::call: {
+        if (!is_monitored_function(e.text)) {
+          report("property-reference", "function '" + e.text + "' is not monitored on a run", e);
+          return std::nullopt;
+        }
         std::optional<Type> result = Type::number;
         for (const auto& a : e.args) {
           const auto t = type_of(*a);

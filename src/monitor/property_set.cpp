@@ -27,7 +27,7 @@ PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
     if (const auto slot = vocabulary_.variables->find(name))
       return {Resolved::Kind::variable, *slot};
     if (vocabulary_.literals.count(name) != 0)
-      return {Resolved::Kind::literal, vocabulary_.symbols->intern(name)};
+      return {Resolved::Kind::literal, vocabulary_.symbols->id(name)};
     return {};
   };
   const auto add = [&](const fretish::Requirement& r, bool assumption) {

@@ -67,7 +67,7 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
       auto it = std::find_if(nodes_.begin(), nodes_.end(),
                              [&](const NodeObservable& o) { return o.nodes == nodes; });
       if (it == nodes_.end()) it = nodes_.insert(nodes_.end(), make_node_observable(nodes));
-      const int slot = variables_.slot(name);
+      const int slot = variables_.id(name);
       (suffix[1] == 's' ? it->success : suffix[1] == 'f' ? it->failure : it->running) = slot;
     }
     if (variables_.find(name)) continue;
@@ -81,14 +81,14 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
         it = adaptables_.insert(adaptables_.end(), make_adaptable(adaptable));
         it->calls = engine.subtree_calls(adaptable);
       }
-      (selected ? it->selected : it->mode) = variables_.slot(name);
+      (selected ? it->selected : it->mode) = variables_.id(name);
       continue;
     }
     // A variable of the world: declared, a robot leaf, or set on the blackboard.
     const fretish::Variable* declared = mission.domain.find(name);
     if (declared != nullptr || leaf_kinds.count(name) != 0 ||
         engine.blackboard().get(name) != nullptr) {
-      blackboard_.emplace_back(variables_.slot(name), name);
+      blackboard_.emplace_back(variables_.id(name), name);
       boolean_variable_[name] = declared == nullptr || declared->type == fretish::VarType::boolean;
     }
   }
@@ -142,8 +142,7 @@ std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
                                  : ticked && !a.running.empty() ? a.running
                                                                 : std::string("none");
     if (a.selected >= 0)
-      frame_[static_cast<std::size_t>(a.selected)] =
-          monitor::Val::of_symbol(symbols_.intern(selected));
+      frame_[static_cast<std::size_t>(a.selected)] = monitor::Val::of_symbol(symbols_.id(selected));
     a.chosen.clear();
     if (!still_running) a.running.clear();
   }
@@ -157,7 +156,7 @@ std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
     } else if (v->is_number()) {
       value = monitor::Val::of_number(v->as_double());
     } else {
-      value = monitor::Val::of_symbol(symbols_.intern(v->text));
+      value = monitor::Val::of_symbol(symbols_.id(v->text));
     }
     frame_[static_cast<std::size_t>(slot)] = value;
   }

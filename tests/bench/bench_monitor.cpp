@@ -54,7 +54,7 @@ void BM_MonitorTiming(benchmark::State& state) {
       with_duration(kTimings[state.range(0)], static_cast<int>(state.range(1)));
   const auto requirements = parse("R: in m upon c the sw shall " + timing + " satisfy p\n");
   Setup setup;
-  for (const char* n : {"m", "c", "p", "s"}) setup.variables.slot(n);
+  for (const char* n : {"m", "c", "p", "s"}) setup.variables.id(n);
   uabt::monitor::PropertySet set(requirements, {}, {&setup.variables, &setup.symbols, {}}, {});
   const auto frames = random_frames(4, 4096);
   std::uint64_t tick = 0;
@@ -90,7 +90,7 @@ void BM_MonitorTrace(benchmark::State& state) {
   }
   const auto requirements = parse(text);
   Setup setup;
-  for (int k = 0; k < 20; ++k) setup.variables.slot("v" + std::to_string(k));
+  for (int k = 0; k < 20; ++k) setup.variables.id("v" + std::to_string(k));
   const auto frames = random_frames(20, ticks);
   for (auto _ : state) {
     uabt::monitor::PropertySet set(requirements, {}, {&setup.variables, &setup.symbols, {}}, {});

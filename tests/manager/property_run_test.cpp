@@ -83,19 +83,25 @@ TEST(MissionProperties, UnknownTerrainNeedsTheReactiveSelection) {
   EXPECT_EQ(found[0]->values, values);
 }
 
-// An assumption that fails is traced, but only guarantees decide the run.
-TEST(MissionProperties, AssumptionsAreTracedGuaranteesDecide) {
-  uabt::testing::TempMission m({
+// Sequence[Adaptable nav, Drill] with one alternative `go` (MoveForward), the selection
+// requirement Go, then `properties` and a scenario s.json.
+std::map<std::string, std::string> drill_mission(const std::string& properties,
+                                                 const std::string& scenario) {
+  return {
       {"mission.xml",
        uabt::testing::mission_with("    <Sequence><Adaptable ID=\"nav\"/><Drill/></Sequence>")},
       {"alternatives/nav/go.xml", uabt::testing::alternative_tree("go", "<MoveForward/>")},
-      {"requirements.fret",
-       "Go: In nav Mission shall satisfy selected_alt = go\n"
-       "Done: the rover shall eventually satisfy Drill.success\n"
-       "Picked: In nav the rover shall immediately satisfy nav.selected = go\n"
-       "World: the Environment shall always satisfy !Drill.running\n"},
-      {"scenarios/s.json", "{\"max_ticks\": 10, \"actions\": {\"Drill\": {\"ticks\": 2}}}"},
-  });
+      {"requirements.fret", "Go: In nav Mission shall satisfy selected_alt = go\n" + properties},
+      {"scenarios/s.json", scenario}};
+}
+
+// An assumption that fails is traced, but only guarantees decide the run.
+TEST(MissionProperties, AssumptionsAreTracedGuaranteesDecide) {
+  uabt::testing::TempMission m(
+      drill_mission("Done: the rover shall eventually satisfy Drill.success\n"
+                    "Picked: In nav the rover shall immediately satisfy nav.selected = go\n"
+                    "World: the Environment shall always satisfy !Drill.running\n",
+                    "{\"max_ticks\": 10, \"actions\": {\"Drill\": {\"ticks\": 2}}}"));
   const ManagerRun run = run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
   EXPECT_EQ(run.status, NodeStatus::success) << trace_summary(run);
   EXPECT_EQ(property(run, "Done").verdict, monitor::Verdict::held);
@@ -111,17 +117,11 @@ TEST(MissionProperties, AssumptionsAreTracedGuaranteesDecide) {
 
 // A property that names what the run cannot observe never reaches a run: the gate refuses it.
 TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
-  uabt::testing::TempMission m({
-      {"mission.xml",
-       uabt::testing::mission_with("    <Sequence><Adaptable ID=\"nav\"/><Drill/></Sequence>")},
-      {"alternatives/nav/go.xml", uabt::testing::alternative_tree("go", "<MoveForward/>")},
-      {"requirements.fret",
-       "Go: In nav Mission shall satisfy selected_alt = go\n"
-       "Typo: the rover shall always satisfy !Dril.running\n"
-       "Kind: the rover shall always satisfy nav.selected < 3\n"
-       "Secs: the rover shall within 2 seconds satisfy Drill.success\n"},
-      {"scenarios/s.json", "{\"max_ticks\": 10}"},
-  });
+  uabt::testing::TempMission m(
+      drill_mission("Typo: the rover shall always satisfy !Dril.running\n"
+                    "Kind: the rover shall always satisfy nav.selected < 3\n"
+                    "Secs: the rover shall within 2 seconds satisfy Drill.success\n",
+                    "{\"max_ticks\": 10}"));
   try {
     run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
     FAIL() << "the gate passed";
