@@ -101,4 +101,18 @@ inline std::vector<std::string> split_key(const std::string& key) {
   return parts;
 }
 
+// The shape a semantics.json key "scope,condition,timing,response" names (duration 0).
+inline monitor::Shape shape_from_key(const std::string& key) {
+  const auto parts = split_key(key);
+  monitor::Shape shape;
+  if (parts.size() < 3) {
+    ADD_FAILURE() << "key " << key;
+    return shape;
+  }
+  shape.scope = scope_from_key(parts[0]);
+  shape.condition = condition_from_key(parts[1]);
+  shape.timing = timing_from_key(parts[2]);
+  return shape;
+}
+
 }  // namespace uabt::testing
