@@ -98,7 +98,7 @@ void register_run(CLI::App& app, int& exit_code) {
       runtime::BehaviorTreeManager manager(args->mission, std::move(scenario), options);
       for (const auto& [tick, package] : uplinks) manager.add_uplink(tick, package);
       runtime::ManagerRun run = manager.run();
-      std::cout << runtime::trace_summary(run);
+      std::cout << runtime::trace_summary(run) << runtime::property_summary(run);
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
       if (run.error) {
@@ -114,7 +114,7 @@ void register_run(CLI::App& app, int& exit_code) {
         if (!run.error->script.empty())
           std::cerr << "  note: script `" << run.error->script << "`\n";
       }
-      exit_code = run.verdict == "success" ? kExitPass : kExitFail;
+      exit_code = run.verdict == "success" && !run.guarantees_failed ? kExitPass : kExitFail;
     } catch (const runtime::ScenarioError& e) {
       std::cerr << e.what() << "\n";  // file:line:col: error: … lines
       exit_code = kExitFail;

@@ -37,6 +37,9 @@ struct Assumption {
 struct Domain {
   std::vector<Variable> variables;
   std::vector<Assumption> assumptions;
+  // `tick 100 ms`: seconds per tick, so that durations in time units become ticks.
+  std::optional<double> tick_seconds;
+  SourceLocation tick_location;
 
   const Variable* find(const std::string& name) const;
   Variable* find(const std::string& name);

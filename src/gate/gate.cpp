@@ -1,6 +1,7 @@
 #include "gate/gate.hpp"
 
 #include "bt/xml_io.hpp"
+#include "gate/properties.hpp"
 #include "report/reports.hpp"
 
 namespace uabt::gate {
@@ -22,6 +23,8 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
   }
   report.findings = m.findings;
   report.stages = {"load"};
+  const std::vector<Finding> properties = check_mission_properties(m);
+  report.findings.insert(report.findings.end(), properties.begin(), properties.end());
 
   out.verification = verify::verify_mission(m, options.verify);
   report.stages.push_back("verify");

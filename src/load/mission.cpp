@@ -138,6 +138,10 @@ void load_domain(Mission& m, const fs::path& path) {
     if (m.domain.find(v.name) == nullptr) m.domain.variables.push_back(std::move(v));
   }
   for (auto& a : declared.assumptions) m.domain.assumptions.push_back(std::move(a));
+  if (declared.tick_seconds && !m.domain.tick_seconds) {
+    m.domain.tick_seconds = declared.tick_seconds;
+    m.domain.tick_location = declared.tick_location;
+  }
 }
 
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
@@ -332,7 +336,9 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
   load_alternatives(m, layout->alternatives, read_options);
   report_layout_mistakes(m, *layout);
   for (const auto& uplink : options.uplinks) merge_uplink(m, uplink, read_options);
-  m.selections = fretish::classify_selection(m.requirements, m.findings);
+  fretish::Classification classified = fretish::classify_requirements(m.requirements, m.findings);
+  m.selections = std::move(classified.selections);
+  m.properties = std::move(classified.properties);
   describe_merges(m);
   check_vocabulary(m, vocabulary_uses(m));
   infer_condition_variables(m);

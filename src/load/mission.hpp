@@ -63,6 +63,7 @@ struct Mission {
   std::string requirements_file;                          // displayed path
   std::vector<fretish::Requirement> requirements;         // every parsed requirement
   std::vector<fretish::SelectionRequirement> selections;  // the selection subset, file order
+  std::vector<fretish::Requirement> properties;  // mission properties (DESIGN §10), file order
   fretish::Domain domain;                                 // declared + inferred booleans
 
   std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present

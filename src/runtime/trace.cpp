@@ -92,6 +92,12 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
       for (const auto& [key, value] : e.reads) reads[key] = value_json(value);
       j["reads"] = std::move(reads);
     }
+    if (e.event == "violation") {
+      j["role"] = e.role;
+      Json values = Json::object();
+      for (const auto& [name, value] : e.values) values[name] = value;
+      j["values"] = std::move(values);
+    }
     if (!e.message.empty()) j["message"] = e.message;
     if (!e.script.empty()) j["script"] = e.script;
     if (e.event == "uplink") {
@@ -129,6 +135,12 @@ std::string trace_summary(const std::vector<TraceEvent>& trace) {
       } else {
         for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
       }
+    } else if (e.event == "violation") {
+      out += e.role + " " + e.requirement + " violated";
+      std::string values;
+      for (const auto& [name, value] : e.values)
+        values += (values.empty() ? "" : ", ") + name + "=" + value;
+      if (!values.empty()) out += " (" + values + ")";
     } else if (e.event == "status") {
       out += "mission " + e.status;
     } else if (e.event == "node") {

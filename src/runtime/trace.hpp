@@ -17,7 +17,7 @@ namespace uabt::runtime {
 // One line of the trace, with tick, event and what it concerns.
 struct TraceEvent {
   std::uint64_t tick = 0;
-  std::string event;  // select | uplink | status | node | condition | error | done
+  std::string event;  // select | uplink | status | node | condition | error | violation | done
   std::string adaptable, alternative, requirement;
   std::string verdict;  // uplink: accepted | rejected; done: success | failure | timeout | error
   std::string uplink;   // the package, for uplink events
@@ -30,6 +30,9 @@ struct TraceEvent {
   std::string from, to;  // node: the status change
   std::vector<std::pair<std::string, ScriptValue>> reads;  // condition: what it read
   std::string message, script;                             // error: what BT.CPP would throw
+  // violation: the property (requirement), its role and the values it read at `tick`
+  std::string role;
+  std::vector<std::pair<std::string, std::string>> values;
 };
 
 // Records, into a trace, every status change of every node ("node" events, BT.CPP's
