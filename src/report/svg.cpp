@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
@@ -150,7 +151,7 @@ std::string coverage_svg(const verify::Coverage& coverage) {
     }
     const auto gap = detail::gap_share(coverage);
     const std::string gap_said =
-        boundary_gap ? std::string("only on a boundary (measure 0), see the regions")
+        boundary_gap ? std::string("only on a boundary (measure 0), see the decision table")
                      : amount(coverage.gap_states, gap);
     segments.push_back({gap ? gap->value : 0, boundary_gap, "url(#" + prefix + "-gap)", "",
                         "gap: no guard holds in " + gap_said, ""});
@@ -208,7 +209,7 @@ std::string coverage_svg(const verify::Coverage& coverage) {
     rows.push_back(
         {"url(#" + prefix + "-overlap)",
          "overlap — two or more guards hold (gauge under the bar): " +
-             (boundary_overlap ? std::string("only on a boundary (measure 0), see the regions")
+             (boundary_overlap ? std::string("on a boundary (measure 0), see the table")
                                : amount(coverage.overlap_states, overlap))});
   } else {
     const std::string why = coverage.counted || coverage.measured ? "the domain admits no state"
@@ -300,6 +301,7 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
   body += "<rect x=\"" + num(f.left) + "\" y=\"" + num(f.top) + "\" width=\"" + num(f.width) +
           "\" height=\"" + num(f.height) + "\" fill=\"#f4f4f4\"/>";
   std::string areas, lines, labels;
+  std::vector<std::tuple<double, double, double>> placed;  // labels: x, baseline, width
   for (const auto& shape : panel.shapes) {
     const bool gap =
         std::find(shape.outcomes.begin(), shape.outcomes.end(), -1) != shape.outcomes.end();
@@ -342,11 +344,21 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
                fill_of(shape.outcomes[k], prefix) + "\"/>";
         g += "</g>";
         (tiny ? lines : areas) += g;
-        if (tiny && gap)
-          labels +=
-              text_at(x1 + 3, (y0 + y1) / 2 + 4,
-                      "gap " + detail::share_text({shape.gap_share.value, shape.gap_share.text}),
-                      " font-size=\"11\" fill=\"#d62728\"");
+        if (tiny && gap) {
+          // Beside the shape: right of a thin column, above a thin row; never on another label.
+          const std::string text =
+              "gap " + detail::share_text({shape.gap_share.value, shape.gap_share.text});
+          const bool column = x1 - x0 <= y1 - y0;
+          const double lx = column ? x1 + 3 : x0 + 2, ly = column ? (y0 + y1) / 2 + 4 : y0 - 2;
+          const double lw = 6.0 * static_cast<double>(text.size());
+          bool clear = true;
+          for (const auto& [ax, ay, aw] : placed)
+            clear = clear && (ly < ay - 11 || ly > ay + 11 || lx + lw < ax || lx > ax + aw);
+          if (clear) {
+            placed.emplace_back(lx, ly, lw);
+            labels += text_at(lx, ly, text, " font-size=\"11\" fill=\"#d62728\"");
+          }
+        }
       } else {
         std::string pts;
         for (const auto& [x, y] : shape.points)
@@ -432,7 +444,7 @@ std::string coverage_map_svg(const load::Mission&, const verify::Coverage& cover
   const std::size_t rows_of_panels = (n + columns - 1) / columns;
   const double pw = columns == 1 ? 440 : columns == 2 ? 300 : 210;
   const double ph = map.y ? (columns == 1 ? 300 : pw * 0.8) : 44;
-  const double left = 64, top = 52, gap_x = 90, gap_y = 70;
+  const double left = 64, top = 52, gap_x = 150, gap_y = 70;
   std::string body;
   MapLegend seen;
   for (std::size_t k = 0; k < n; ++k) {

@@ -2,6 +2,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include "verify/coverage_parts.hpp"
 
@@ -161,36 +162,59 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     if (panel) map.panels[k].label = describe_range(space, *panel, k, k, domain).text;
 
   // Runs of equal integer positions along y (else x) merge into one shape.
-  const bool merge_y = py && !joint && py->axis < 0 && dims[py->dim].sort == smt::Sort::integer;
-  const bool merge_x = !merge_y && !joint && px.axis < 0 && dims[px.dim].sort == smt::Sort::integer;
+  const bool merge_y = py && !joint;
+  const bool merge_x = !joint && px.axis < 0 && dims[px.dim].sort == smt::Sort::integer;
   std::set<std::uint64_t> x_starts, y_starts;
   auto same = [](const Aggregate& a, const Aggregate& b) {
     return a.outcomes == b.outcomes && a.overlap == b.overlap && a.uncertain == b.uncertain;
   };
+  // Runs: rectangles of equal outcome, first along y (keys are ordered panel, x, y), then
+  // neighbouring runs along x with the same y extent merge too.
+  struct Run {
+    std::uint64_t pk, xk, x_end, yk, y_end;
+    Aggregate agg;
+  };
+  std::vector<Run> runs;
   for (auto it = cells.begin(); it != cells.end();) {
     auto [pk, xk, yk] = it->first;
-    Aggregate agg = it->second;
-    std::uint64_t x_end = xk, y_end = yk;
+    Run run{pk, xk, xk, yk, yk, it->second};
     auto next = std::next(it);
-    // Keys are ordered (panel, x, y): a run along y is consecutive; along x it is not.
-    if (merge_y) {
-      while (next != cells.end() && std::get<0>(next->first) == pk &&
-             std::get<1>(next->first) == xk && std::get<2>(next->first) == y_end + 1 &&
-             same(next->second, agg)) {
-        agg.gap += next->second.gap;
-        y_end = std::get<2>(next->first);
-        ++next;
-      }
-    } else if (merge_x) {
-      while (true) {
-        auto n = cells.find({pk, x_end + 1, yk});
-        if (n == cells.end() || !same(n->second, agg)) break;
-        agg.gap += n->second.gap;
-        ++x_end;
-        cells.erase(n);
-      }
-      next = std::next(it);
+    while (merge_y && next != cells.end() && std::get<0>(next->first) == pk &&
+           std::get<1>(next->first) == xk && std::get<2>(next->first) == run.y_end + 1 &&
+           same(next->second, run.agg)) {
+      run.agg.gap += next->second.gap;
+      run.y_end = std::get<2>(next->first);
+      ++next;
     }
+    runs.push_back(std::move(run));
+    it = next;
+  }
+  if (!joint) {
+    std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+      return std::tie(a.pk, a.yk, a.y_end, a.xk) < std::tie(b.pk, b.yk, b.y_end, b.xk);
+    });
+    std::vector<Run> merged;
+    for (auto& r : runs) {
+      if (!merged.empty()) {
+        Run& last = merged.back();
+        if (last.pk == r.pk && last.yk == r.yk && last.y_end == r.y_end &&
+            last.x_end + 1 == r.xk && same(last.agg, r.agg)) {
+          last.x_end = r.x_end;
+          last.agg.gap += r.agg.gap;
+          continue;
+        }
+      }
+      merged.push_back(std::move(r));
+    }
+    runs = std::move(merged);
+    std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+      return std::tie(a.pk, a.xk, a.yk) < std::tie(b.pk, b.xk, b.yk);
+    });
+  }
+  for (const Run& run : runs) {
+    const std::uint64_t pk = run.pk, xk = run.xk, x_end = run.x_end, yk = run.yk,
+                        y_end = run.y_end;
+    const Aggregate& agg = run.agg;
     MapShape shape;
     shape.outcomes.assign(agg.outcomes.begin(), agg.outcomes.end());
     shape.overlap = agg.overlap;
@@ -241,7 +265,6 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     if (panel && !map.panels[pk].label.empty())
       shape.where += (shape.where.empty() ? "" : " & ") + map.panels[pk].label;
     map.panels[pk].shapes.push_back(std::move(shape));
-    it = next;
   }
   // Integer axes: a tick at each end and where a run starts.
   auto integer_ticks = [&](const Place& p, MapAxis& a, const std::set<std::uint64_t>& starts) {

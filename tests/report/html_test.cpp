@@ -283,14 +283,25 @@ TEST(CoverageMapSvg, RealVariablesAreDrawnAtTheirExactBoundaries) {
   EXPECT_TRUE(has(svg, "over slope and battery"));
   EXPECT_TRUE(has(svg, ">5</text>"));
   EXPECT_TRUE(has(svg, ">10</text>"));
-  EXPECT_TRUE(has(svg,
-                  "<title>slope in (5, 10) &amp; battery in [31, 100]: sand_alternative; two "
-                  "or more guards hold</title>"));
-  EXPECT_TRUE(has(svg, "<title>slope in (-45, 5) &amp; battery in [0, 30]: gap (no guard holds)"));
-  // The boundary slope = 5 belongs to the overlap: drawn as a line, not hidden by its width 0.
-  EXPECT_TRUE(has(svg,
-                  "<title>slope = 5 &amp; battery in [31, 100]: sand_alternative; two or "
-                  "more guards hold</title></line>"));
+  // Equal neighbours merge: the overlap from slope = 5 up to 10, the gap below battery 31.
+  EXPECT_TRUE(has(svg, "<title>slope in [5, 10) &amp; battery in [31, 100]: sand_alternative; two "
+                       "or more guards hold</title>"));
+  EXPECT_TRUE(has(svg, "<title>slope in [-45, 5) &amp; battery in [0, 30]: gap (no guard holds)"));
+}
+
+TEST(CoverageMapSvg, BoundaryOverlapIsALine) {
+  load::Mission mission = exploration_mission();
+  mission.selections[0].guard =
+      make_expr(ExprKind::le, {make_identifier("slope"), make_number("10")});
+  mission.selections[1].guard =
+      make_expr(ExprKind::ge, {make_identifier("slope"), make_number("10")});
+  const auto coverage = verified(mission, "exploration");
+  EXPECT_EQ(coverage.overlap_share.text, "0");
+  const std::string svg = coverage_map_svg(mission, coverage);
+  // slope = 10 has width 0: drawn as a line, not hidden.
+  EXPECT_TRUE(
+      has(svg, "<title>slope = 10: sand_alternative; two or more guards hold</title></line>"))
+      << svg;
 }
 
 TEST(CoverageMapSvg, OnePanelPerEnumValue) {
