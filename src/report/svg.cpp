@@ -206,11 +206,10 @@ std::string coverage_svg(const verify::Coverage& coverage) {
     legend_top = gauge_y + gauge_h + 14;
     rows.push_back(
         {"url(#" + prefix + "-gap)", "gap — no guard holds, the node fails: " + gap_said});
-    rows.push_back(
-        {"url(#" + prefix + "-overlap)",
-         "overlap — two or more guards hold (gauge under the bar): " +
-             (boundary_overlap ? std::string("on a boundary (measure 0), see the table")
-                               : amount(coverage.overlap_states, overlap))});
+    rows.push_back({"url(#" + prefix + "-overlap)",
+                    "overlap — two or more guards hold (gauge under the bar): " +
+                        (boundary_overlap ? std::string("on a boundary (measure 0), see the table")
+                                          : amount(coverage.overlap_states, overlap))});
   } else {
     const std::string why = coverage.counted || coverage.measured ? "the domain admits no state"
                             : coverage.bounded
@@ -356,7 +355,9 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
             clear = clear && (ly < ay - 11 || ly > ay + 11 || lx + lw < ax || lx > ax + aw);
           if (clear) {
             placed.emplace_back(lx, ly, lw);
-            labels += text_at(lx, ly, text, " font-size=\"11\" fill=\"#d62728\"");
+            labels += text_at(lx, ly, text,
+                              " font-size=\"11\" fill=\"#d62728\" stroke=\"#fff\" "
+                              "stroke-width=\"3\" paint-order=\"stroke\"");
           }
         }
       } else {

@@ -197,8 +197,8 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     for (auto& r : runs) {
       if (!merged.empty()) {
         Run& last = merged.back();
-        if (last.pk == r.pk && last.yk == r.yk && last.y_end == r.y_end &&
-            last.x_end + 1 == r.xk && same(last.agg, r.agg)) {
+        if (last.pk == r.pk && last.yk == r.yk && last.y_end == r.y_end && last.x_end + 1 == r.xk &&
+            same(last.agg, r.agg)) {
           last.x_end = r.x_end;
           last.agg.gap += r.agg.gap;
           continue;
@@ -212,8 +212,7 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     });
   }
   for (const Run& run : runs) {
-    const std::uint64_t pk = run.pk, xk = run.xk, x_end = run.x_end, yk = run.yk,
-                        y_end = run.y_end;
+    const std::uint64_t pk = run.pk, xk = run.xk, x_end = run.x_end, yk = run.yk, y_end = run.y_end;
     const Aggregate& agg = run.agg;
     MapShape shape;
     shape.outcomes.assign(agg.outcomes.begin(), agg.outcomes.end());

@@ -284,8 +284,9 @@ TEST(CoverageMapSvg, RealVariablesAreDrawnAtTheirExactBoundaries) {
   EXPECT_TRUE(has(svg, ">5</text>"));
   EXPECT_TRUE(has(svg, ">10</text>"));
   // Equal neighbours merge: the overlap from slope = 5 up to 10, the gap below battery 31.
-  EXPECT_TRUE(has(svg, "<title>slope in [5, 10) &amp; battery in [31, 100]: sand_alternative; two "
-                       "or more guards hold</title>"));
+  EXPECT_TRUE(has(svg,
+                  "<title>slope in [5, 10) &amp; battery in [31, 100]: sand_alternative; two "
+                  "or more guards hold</title>"));
   EXPECT_TRUE(has(svg, "<title>slope in [-45, 5) &amp; battery in [0, 30]: gap (no guard holds)"));
 }
 

@@ -34,7 +34,8 @@ double coordinate(const verify::MapAxis& axis, const fretish::Domain& domain, co
 // Closed containment in a convex polygon, a segment or a point.
 bool holds_point(const std::vector<std::pair<double, double>>& pts, double x, double y) {
   constexpr double eps = 1e-9;
-  if (pts.size() == 1) return std::fabs(pts[0].first - x) < eps && std::fabs(pts[0].second - y) < eps;
+  if (pts.size() == 1)
+    return std::fabs(pts[0].first - x) < eps && std::fabs(pts[0].second - y) < eps;
   if (pts.size() == 2) {
     const auto [ax, ay] = pts[0];
     const auto [bx, by] = pts[1];
@@ -81,7 +82,8 @@ void expect_reported_states_drawn(const std::string& name) {
       const Value* v = find_value(f.witness, map.panel_variable);
       ASSERT_NE(v, nullptr);
       panel_label = map.panel_variable + " = " + v->to_string();
-      if (v->kind == Value::Kind::boolean) panel_label = (v->boolean ? "" : "!") + map.panel_variable;
+      if (v->kind == Value::Kind::boolean)
+        panel_label = (v->boolean ? "" : "!") + map.panel_variable;
     }
     const verify::MapShape* drawn = nullptr;
     for (const auto& panel : map.panels) {

@@ -70,7 +70,8 @@ TEST(ShippedMissions, PlanetaryLandingPartitionsItsSpaceExactly) {
 
 TEST(ShippedMissions, UnsafeLandingListsTheBoundaryOverlapAndBothGaps) {
   std::string error;
-  const load::Mission m = load::load_mission(mission_dir("planetary_landing_unsafe"), {}, error).value();
+  const load::Mission m =
+      load::load_mission(mission_dir("planetary_landing_unsafe"), {}, error).value();
   const verify::Result r = verify_checked(m);
   const auto& c = r.coverage.at(0);
   ASSERT_TRUE(c.measured) << c.not_measured_reason;
@@ -83,8 +84,9 @@ TEST(ShippedMissions, UnsafeLandingListsTheBoundaryOverlapAndBothGaps) {
   std::vector<std::string> gaps;
   for (const auto& g : c.gap_regions) gaps.push_back(g.text() + " : " + g.share.text);
   std::sort(gaps.begin(), gaps.end());
-  EXPECT_EQ(gaps, (std::vector<std::string>{"battery = 10 : 1/101",
-                                            "wind in (39.96, 40] & battery in [10, 100] : 91/101000"}));
+  EXPECT_EQ(gaps,
+            (std::vector<std::string>{"battery = 10 : 1/101",
+                                      "wind in (39.96, 40] & battery in [10, 100] : 91/101000"}));
 }
 
 }  // namespace
