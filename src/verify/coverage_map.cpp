@@ -163,7 +163,6 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
 
   // Runs of equal integer positions along y (else x) merge into one shape.
   const bool merge_y = py && !joint;
-  const bool merge_x = !joint && px.axis < 0 && dims[px.dim].sort == smt::Sort::integer;
   std::set<std::uint64_t> x_starts, y_starts;
   auto same = [](const Aggregate& a, const Aggregate& b) {
     return a.outcomes == b.outcomes && a.overlap == b.overlap && a.uncertain == b.uncertain;
@@ -248,8 +247,8 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
             y_end != yk ? describe_range(space, py->dim, yk, y_end, domain).text : ey0.where.text;
         if (!yw.empty()) where += (where.empty() ? "" : " & ") + yw;
       }
-      if (merge_y) y_starts.insert(yk);
-      if (merge_x) x_starts.insert(xk);
+      y_starts.insert(yk);
+      x_starts.insert(xk);
       const double x0 = ex0.from, x1 = ex1.to;
       if (x0 == x1 && y0 == y1)
         shape.points = {{x0, y0}};
@@ -276,13 +275,7 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
       a.ticks.emplace_back(static_cast<double>(v), std::to_string(v));
     }
   };
-  if (!merge_x && px.axis < 0 && dims[px.dim].sort == smt::Sort::integer) {
-    std::set<std::uint64_t> all;
-    for (std::uint64_t k = 0; k < dims[px.dim].radix && k < 64; ++k) all.insert(k);
-    integer_ticks(px, map.x, dims[px.dim].radix <= 16 ? all : std::set<std::uint64_t>{});
-  } else {
-    integer_ticks(px, map.x, x_starts);
-  }
+  integer_ticks(px, map.x, x_starts);
   if (py && !joint) integer_ticks(*py, *map.y, y_starts);
   coverage.map = std::move(map);
 }
