@@ -202,7 +202,8 @@ TEST(Measure, RealAgainstIntegerAtomBreaksAtEveryValue) {
       "R1: In nav if wind > battery Mission shall satisfy selected_alt = a\n"
       "R2: In nav Mission shall satisfy selected_alt = d\n",
       "real wind in [0, 4]\ninteger battery in [0, 4]\n");
-  const auto& c = only_coverage(verify_checked(m));
+  const auto r = verify_checked(m);
+  const auto& c = only_coverage(r);
   ASSERT_TRUE(c.measured) << c.not_measured_reason;
   EXPECT_EQ(share_of(c, "R1"), "1/2");
   EXPECT_EQ(share_of(c, "R2"), "1/2");
@@ -213,7 +214,8 @@ TEST(Measure, NonlinearAtomIsNotMeasuredButBounded) {
       "R1: In nav if x < 5 Mission shall satisfy selected_alt = a\n"
       "R2: In nav if x * y > 50 Mission shall satisfy selected_alt = b\n",
       "real x in [0, 10]\nreal y in [0, 10]\n");
-  const auto& c = only_coverage(verify_checked(m));
+  const auto r = verify_checked(m);
+  const auto& c = only_coverage(r);
   EXPECT_FALSE(c.measured);
   EXPECT_TRUE(c.bounded);
   EXPECT_NE(c.not_measured_reason.find("`x * y > 50` is not linear"), std::string::npos)
@@ -232,7 +234,8 @@ TEST(Measure, ThreeVariablesInOneAtomAreNotMeasured) {
   const auto m =
       make_mission("R1: In nav if x + y + z > 1 Mission shall satisfy selected_alt = a\n",
                    "real x in [0, 1]\nreal y in [0, 1]\nreal z in [0, 1]\n");
-  const auto& c = only_coverage(verify_checked(m));
+  const auto r = verify_checked(m);
+  const auto& c = only_coverage(r);
   EXPECT_FALSE(c.measured);
   EXPECT_NE(c.not_measured_reason.find("more than two variables"), std::string::npos);
   EXPECT_EQ(c.alternatives[0].share_lower.text, "0");
@@ -242,7 +245,8 @@ TEST(Measure, ThreeVariablesInOneAtomAreNotMeasured) {
 TEST(Measure, UnboundedRealIsNotMeasured) {
   const auto m =
       make_mission("R1: In nav if x > 1 Mission shall satisfy selected_alt = a\n", "real x\n");
-  const auto& c = only_coverage(verify_checked(m));
+  const auto r = verify_checked(m);
+  const auto& c = only_coverage(r);
   EXPECT_FALSE(c.measured);
   EXPECT_FALSE(c.bounded);
   EXPECT_NE(c.not_measured_reason.find("no lower bound"), std::string::npos);
