@@ -3,6 +3,7 @@
 
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
+#include "report/coverage_view.hpp"
 #include "report/reports.hpp"
 #include "report/uplink_sections.hpp"
 
@@ -53,6 +54,10 @@ caption { text-align: left; font-size: 13px; color: #57606a; }
 .swatch { display: inline-block; width: 12px; height: 12px; border: 1px solid #333;
           vertical-align: -1px; margin-right: 6px; }
 .swatch.gap { background: repeating-linear-gradient(45deg, #d62728 0 3px, #fde0e0 3px 6px); }
+table.decision tr.gap td { background: #ffebe9; }
+table.decision tr.overlap td { background: #eaeef2; }
+table.decision tr.gap td:first-child { border-left: 4px solid #d62728; }
+table.decision tr.overlap td:first-child { border-left: 4px solid #4d4d4d; }
 .callout { border-left: 4px solid #cf222e; background: #fff5f5; padding: 6px 12px; }
 .callout.info { border-color: #0969da; background: #f1f8ff; }
 svg { max-width: 100%; height: auto; display: block; margin: 8px 0; }
@@ -97,10 +102,6 @@ std::string inline_svg(std::string svg) {
   const auto at = svg.find(xmlns);
   if (at != std::string::npos) svg.erase(at, xmlns.size());
   return svg;
-}
-
-std::string states_text(std::uint64_t n) {
-  return std::to_string(n) + (n == 1 ? " state" : " states");
 }
 
 void finding_html(const Finding& finding, std::string& out) {
@@ -239,74 +240,13 @@ void coverage_html(const ReportInput& input, const std::string& adaptable, std::
              ", which the counts include";
     out += ".</p>\n";
   }
-  if (coverage->counted) {
-    out += "<p>The domain has " + states_text(coverage->states) + ". ";
-    std::string parts;
-    for (const auto& a : coverage->alternatives)
-      parts += (parts.empty() ? "" : "; ") + code(a.name) + " (" + code(a.requirement) +
-               ") is selected in " + std::to_string(a.states) + " (" +
-               detail::percent(a.states, coverage->states) + ")";
-    if (!parts.empty()) out += parts + ". ";
-    out += coverage->gap_states == 0 ? std::string("Every state selects an alternative.")
-                                     : "In " + states_text(coverage->gap_states) + " (" +
-                                           detail::percent(coverage->gap_states, coverage->states) +
-                                           ") no guard holds: the adaptable node fails there.";
-    if (coverage->overlap_states > 0)
-      out += " In " + states_text(coverage->overlap_states) + " (" +
-             detail::percent(coverage->overlap_states, coverage->states) +
-             ") two or more guards hold: the first in priority order is selected, and when its "
-             "alternative fails the Fallback runs the next one.";
-    out += "</p>\n";
-  } else {
-    out += "<p class=\"callout info\">The state space was not counted: " +
-           html_escape(coverage->not_counted_reason.empty() ? "no reason given"
-                                                            : coverage->not_counted_reason) +
-           ". The solver still decided which alternatives can be selected.</p>\n";
-  }
-  out += inline_svg(coverage_svg(*coverage)) + "\n";
-
-  out += "<table>\n<thead><tr><th>Alternative</th><th>Requirement</th>";
-  if (coverage->counted)
-    out += "<th>Selected in</th><th>Share</th><th>Guard holds in</th>";
-  else
-    out += "<th>Selected in some state</th>";
-  out += "</tr></thead><tbody>\n";
-  for (std::size_t i = 0; i < coverage->alternatives.size(); ++i) {
-    const auto& a = coverage->alternatives[i];
-    out += std::string("<tr><td><span class=\"swatch\" style=\"background:") +
-           detail::alternative_colour(i) + "\"></span>" + code(a.name) + "</td><td>" +
-           code(a.requirement) + "</td>";
-    if (coverage->counted)
-      out += "<td class=\"num\">" + std::to_string(a.states) + "</td><td class=\"num\">" +
-             detail::percent(a.states, coverage->states) + "</td><td class=\"num\">" +
-             std::to_string(a.enabled_states) + "</td>";
-    else
-      out += std::string("<td>") + (a.reachable ? "yes" : "<strong>no, never</strong>") + "</td>";
-    out += "</tr>\n";
-  }
-  if (coverage->counted) {
-    out +=
-        "<tr><td><span class=\"swatch gap\"></span>gap: no guard holds</td><td></td>"
-        "<td class=\"num\">" +
-        std::to_string(coverage->gap_states) + "</td><td class=\"num\">" +
-        detail::percent(coverage->gap_states, coverage->states) + "</td><td></td></tr>\n";
-    out += "<tr><td>overlap: two or more guards hold</td><td></td><td class=\"num\">" +
-           std::to_string(coverage->overlap_states) + "</td><td class=\"num\">" +
-           detail::percent(coverage->overlap_states, coverage->states) + "</td><td></td></tr>\n";
-  }
-  out += "</tbody></table>\n";
-
-  if (!coverage->gap_region.empty()) {
-    out += "<p>The uncovered region, where the node fails:</p>\n<ul>\n";
-    for (const auto& cube : coverage->gap_region) out += "<li>" + code(cube) + "</li>\n";
-    out += "</ul>\n";
-  }
+  out += detail::coverage_html(*coverage);
   witness_examples(input, adaptable, out);
 
   if (input.mission != nullptr) {
     const std::string map = coverage_map_svg(*input.mission, *coverage);
     if (!map.empty()) {
-      out += "<h4>Selected alternative over two variables</h4>\n" + inline_svg(map) + "\n";
+      out += "<h4>Where each alternative is selected</h4>\n" + inline_svg(map) + "\n";
     }
   }
 }

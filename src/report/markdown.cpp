@@ -1,6 +1,7 @@
 #include <cctype>
 
 #include "report/common.hpp"
+#include "report/coverage_view.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
 #include "report/uplink_sections.hpp"
@@ -67,7 +68,30 @@ std::string state_words(const State& state) {
 
 void coverage_section(const verify::Coverage& coverage, std::string& out) {
   out += "\n### Coverage of " + code(coverage.adaptable) + "\n\n";
-  if (!coverage.counted) {
+  if (!coverage.counted && (coverage.measured || coverage.bounded)) {
+    out += coverage.measured
+               ? "Measured exactly: the domain measures " + code(coverage.measure.text) +
+                     " (the real variables' length, area or volume, summed over the discrete "
+                     "values).\n\n"
+               : "Shares " + md(detail::not_measured_text(coverage)) +
+                     "; certified bounds instead.\n\n";
+    out += "| Alternative | Requirement | Share |\n|---|---|---:|\n";
+    auto row = [&](const std::string& name, const std::string& requirement,
+                   const std::optional<detail::ShownShare>& share, const verify::Exact& lo,
+                   const verify::Exact& hi) {
+      out += "| " + name + " | " + requirement + " | " +
+             md(share ? detail::share_text(*share) : detail::bounds_text(lo, hi)) + " |\n";
+    };
+    for (std::size_t i = 0; i < coverage.alternatives.size(); ++i) {
+      const auto& a = coverage.alternatives[i];
+      row(md(a.name) + (a.reachable ? "" : " (never selected)"), md(a.requirement),
+          detail::alternative_share(coverage, i), a.share_lower, a.share_upper);
+    }
+    row("*gap: none selected*", "", detail::gap_share(coverage), coverage.gap_share_lower,
+        coverage.gap_share_upper);
+    row("*overlap: two or more guards hold*", "", detail::overlap_share(coverage),
+        coverage.overlap_share_lower, coverage.overlap_share_upper);
+  } else if (!coverage.counted) {
     out +=
         "Not counted: " +
         md(coverage.not_counted_reason.empty() ? "no reason given" : coverage.not_counted_reason) +
@@ -95,10 +119,13 @@ void coverage_section(const verify::Coverage& coverage, std::string& out) {
            detail::percent(coverage.overlap_states, coverage.states) + ")" +
            (coverage.overlap_states > 0 ? " are claimed by two or more guards." : ".") + "\n";
   }
-  if (!coverage.gap_region.empty()) {
+  if (!coverage.gap_region.empty() && coverage.gap_regions.empty()) {
     out += "\nUncovered region:\n\n";
     for (const auto& cube : coverage.gap_region) out += "- " + code(cube) + "\n";
   }
+  if (!coverage.alternatives.empty())
+    out += "\nDecision table (priority order, then the gap and overlap regions):\n\n" +
+           detail::decision_table_markdown(coverage);
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 #include <limits>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
+#include "report/coverage_view.hpp"
 #include "report/reports.hpp"
 #include "smt/evaluate.hpp"
 
@@ -102,135 +104,6 @@ std::string legend(const std::vector<LegendRow>& rows, double top) {
   return out;
 }
 
-// ---- the map over two variables ----------------------------------------------------------
-
-// One column or row of the map: the value drawn there and its label.
-struct AxisCell {
-  Value value;
-  std::string label;
-};
-
-struct Axis {
-  const fretish::Variable* variable = nullptr;
-  std::vector<AxisCell> cells;
-  bool sampled = false;  // cells stand for intervals, evaluated at their centre
-};
-
-std::optional<double> parse_double(const std::string& text) {
-  double out = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-  if (ec != std::errc() || ptr != text.data() + text.size() || !std::isfinite(out))
-    return std::nullopt;
-  return out;
-}
-
-std::string short_number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.4g", value);
-  return buffer;
-}
-
-Value real_value(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", x);
-  return Value::of_real(x, buffer);
-}
-
-constexpr std::size_t kMaxCells = 32;
-
-// The cells of a variable along an axis; nullopt when it cannot be drawn (unbounded number).
-std::optional<Axis> make_axis(const fretish::Variable& variable) {
-  Axis axis;
-  axis.variable = &variable;
-  switch (variable.type) {
-    case fretish::VarType::boolean:
-      axis.cells = {{Value::of_bool(false), "false"}, {Value::of_bool(true), "true"}};
-      return axis;
-    case fretish::VarType::enumeration:
-      if (variable.enum_values.empty() || variable.enum_values.size() > kMaxCells)
-        return std::nullopt;
-      for (const auto& literal : variable.enum_values)
-        axis.cells.push_back({Value::of_enum(literal), literal});
-      return axis;
-    case fretish::VarType::integer:
-    case fretish::VarType::real: {
-      const auto lo = parse_double(variable.lower), hi = parse_double(variable.upper);
-      if (!lo || !hi || *hi < *lo) return std::nullopt;
-      if (variable.type == fretish::VarType::integer) {
-        const double first = std::ceil(*lo), last = std::floor(*hi);
-        if (last < first || last - first > 1e15) return std::nullopt;
-        const double count = last - first + 1;
-        if (count <= static_cast<double>(kMaxCells)) {
-          for (double v = first; v <= last; v += 1) {
-            const auto i = static_cast<std::int64_t>(v);
-            axis.cells.push_back({Value::of_int(i), std::to_string(i)});
-          }
-          return axis;
-        }
-        axis.sampled = true;
-        for (std::size_t k = 0; k < kMaxCells; ++k) {
-          const double from = first + count * static_cast<double>(k) / kMaxCells;
-          const double to = first + count * static_cast<double>(k + 1) / kMaxCells;
-          const auto centre = static_cast<std::int64_t>(std::floor((from + to) / 2));
-          axis.cells.push_back({Value::of_int(centre), std::to_string(centre)});
-        }
-        return axis;
-      }
-      axis.sampled = true;
-      const double span = *hi - *lo;
-      for (std::size_t k = 0; k < kMaxCells; ++k) {
-        const double centre = *lo + span * (static_cast<double>(k) + 0.5) / kMaxCells;
-        axis.cells.push_back({real_value(centre), short_number(centre)});
-      }
-      return axis;
-    }
-  }
-  return std::nullopt;
-}
-
-// Values tried for a variable that is not on an axis: all of a small discrete set, else its
-// bounds and centre (what the map says it does).
-std::vector<Value> sample_values(const fretish::Variable& variable) {
-  std::vector<Value> out;
-  switch (variable.type) {
-    case fretish::VarType::boolean: return {Value::of_bool(false), Value::of_bool(true)};
-    case fretish::VarType::enumeration:
-      for (const auto& literal : variable.enum_values) out.push_back(Value::of_enum(literal));
-      return out;
-    case fretish::VarType::integer:
-    case fretish::VarType::real: {
-      const auto lo = parse_double(variable.lower), hi = parse_double(variable.upper);
-      std::vector<double> points;
-      if (lo) points.push_back(*lo);
-      if (lo && hi) points.push_back((*lo + *hi) / 2);
-      if (hi) points.push_back(*hi);
-      if (points.empty()) points.push_back(0);
-      for (double p : points) {
-        if (variable.type == fretish::VarType::integer) {
-          const Value v = Value::of_int(static_cast<std::int64_t>(std::floor(p)));
-          if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
-        } else {
-          const Value v = real_value(p);
-          if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
-        }
-      }
-      return out;
-    }
-  }
-  return out;
-}
-
-constexpr std::size_t kMaxOtherStates = 256;
-constexpr int kGap = std::numeric_limits<int>::max();  // sorts after every alternative
-
-// What one cell of the map shows: the outcomes (alternative index or kGap) of the domain's
-// states that project onto it, and whether two guards hold in one of them.
-struct CellResult {
-  std::set<int> outcomes;
-  bool overlap = false;
-  bool unknown = false;  // a guard has no value (e.g. division by zero) in some state
-};
-
 }  // namespace
 
 std::string coverage_svg(const verify::Coverage& coverage) {
@@ -239,73 +112,108 @@ std::string coverage_svg(const verify::Coverage& coverage) {
   std::string body;
   std::vector<LegendRow> rows;
   double legend_top = bar_y + bar_h + 16;
+  // Counted nodes say states; measured ones the share of the space (exact beside it).
+  auto amount = [&](std::uint64_t states, const std::optional<detail::ShownShare>& share) {
+    if (coverage.counted)
+      return states_text(states) + " (" + detail::percent(states, coverage.states) + ")";
+    return share ? detail::share_text(*share) + " of the space" : std::string("?");
+  };
+  const bool boundary_gap =
+      coverage.gap_share.text == "0" && !coverage.gap_regions.empty() && coverage.measured;
+  const bool boundary_overlap =
+      coverage.overlap_share.text == "0" && !coverage.overlap_regions.empty() && coverage.measured;
 
-  if (coverage.counted && coverage.states > 0) {
-    // Cumulative edges, so that rounding never leaves a hair-line between segments.
-    std::uint64_t before = 0;
-    auto edge = [&](std::uint64_t n) {
-      return bar_x + bar_w * static_cast<double>(n) / static_cast<double>(coverage.states);
+  if (detail::has_shares(coverage)) {
+    struct Segment {
+      double share;
+      bool force;  // drawn even at share 0 (a boundary the gate reported)
+      std::string fill, ink, tooltip, label;
     };
-    auto segment = [&](std::uint64_t n, const std::string& fill, const std::string& ink,
-                       const std::string& tooltip) {
-      if (n == 0) return;
-      const double x0 = edge(before), x1 = edge(before + n);
-      body += "<rect x=\"" + num(x0) + "\" y=\"" + num(bar_y) + "\" width=\"" + num(x1 - x0) +
-              "\" height=\"" + num(bar_h) + "\" fill=\"" + fill +
-              "\" stroke=\"#fff\" stroke-width=\"1\"><title>" + detail::html_escape(tooltip) +
-              "</title></rect>";
-      if (x1 - x0 >= 48 && !ink.empty())
-        body += text_at((x0 + x1) / 2, bar_y + bar_h / 2 + 4.5, detail::percent(n, coverage.states),
-                        (" text-anchor=\"middle\" fill=\"" + ink + "\"").c_str());
-      before += n;
-    };
+    std::vector<Segment> segments;
     for (std::size_t i = 0; i < coverage.alternatives.size(); ++i) {
       const auto& alternative = coverage.alternatives[i];
+      const auto share = detail::alternative_share(coverage, i);
       const std::string colour = detail::alternative_colour(i);
-      const std::string share = states_text(alternative.states) + " (" +
-                                detail::percent(alternative.states, coverage.states) + ")";
-      segment(alternative.states, colour, text_colour_on(colour),
-              alternative.name + " (" + alternative.requirement + "): " + share);
+      const std::string said = amount(alternative.states, share);
+      segments.push_back({share ? share->value : 0, false, colour, text_colour_on(colour),
+                          alternative.name + " (" + alternative.requirement + "): " + said,
+                          share ? detail::share_text(*share) : ""});
       std::string text =
-          alternative.name + " — " + alternative.requirement + ": selected in " + share;
-      if (!alternative.reachable || alternative.states == 0) text += ", never selected";
-      // enabled_states counts the states where the guard holds, selected or not.
-      if (alternative.enabled_states > alternative.states)
+          alternative.name + " — " + alternative.requirement + ": selected in " + said;
+      if (!alternative.reachable || (share && share->exact == "0")) text += ", never selected";
+      if (coverage.counted && alternative.enabled_states > alternative.states)
         text += "; its guard holds in " + std::to_string(alternative.enabled_states) + " (" +
                 detail::percent(alternative.enabled_states, coverage.states) + ")";
+      else if (!coverage.counted && alternative.enabled_share.value > (share ? share->value : 0))
+        text += "; its guard holds in " + detail::share_text({alternative.enabled_share.value,
+                                                              alternative.enabled_share.text});
       rows.push_back({colour, text});
     }
-    segment(coverage.gap_states, "url(#" + prefix + "-gap)", "",
-            "gap: no guard holds in " + states_text(coverage.gap_states) + " (" +
-                detail::percent(coverage.gap_states, coverage.states) + ")");
+    const auto gap = detail::gap_share(coverage);
+    const std::string gap_said =
+        boundary_gap ? std::string("only on a boundary (measure 0), see the decision table")
+                     : amount(coverage.gap_states, gap);
+    segments.push_back({gap ? gap->value : 0, boundary_gap, "url(#" + prefix + "-gap)", "",
+                        "gap: no guard holds in " + gap_said, ""});
+    // Widths: every part that is there gets at least a few pixels, the others give way.
+    constexpr double kMinVisible = 4;
+    double fixed = 0, rest = 0;
+    for (const auto& sg : segments) {
+      if (sg.share * bar_w < kMinVisible && (sg.share > 0 || sg.force))
+        fixed += kMinVisible;
+      else
+        rest += sg.share;
+    }
+    double x = bar_x;
+    for (const auto& sg : segments) {
+      if (sg.share <= 0 && !sg.force) continue;
+      const bool tiny = sg.share * bar_w < kMinVisible;
+      const double w = tiny ? kMinVisible : (rest > 0 ? sg.share / rest * (bar_w - fixed) : 0);
+      body += "<rect x=\"" + num(x) + "\" y=\"" + num(bar_y) + "\" width=\"" + num(w) +
+              "\" height=\"" + num(bar_h) + "\" fill=\"" + sg.fill +
+              "\" stroke=\"#fff\" stroke-width=\"1\"><title>" + detail::html_escape(sg.tooltip) +
+              "</title></rect>";
+      if (w >= 48 && !sg.ink.empty())
+        body += text_at(x + w / 2, bar_y + bar_h / 2 + 4.5,
+                        coverage.counted
+                            ? detail::percent(static_cast<std::uint64_t>(std::llround(
+                                                  sg.share * static_cast<double>(coverage.states))),
+                                              coverage.states)
+                            : sg.label.substr(0, sg.label.find(' ')),
+                        (" text-anchor=\"middle\" fill=\"" + sg.ink + "\"").c_str());
+      x += w;
+    }
     body += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(bar_y) + "\" width=\"" + num(bar_w) +
             "\" height=\"" + num(bar_h) + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"1\"/>";
 
-    // The overlap states are inside the alternatives' segments (the first guard wins there),
-    // so they get their own gauge under the bar rather than a place in it.
+    // The overlap lies inside the alternatives' segments (the first guard wins there), so it
+    // gets its own gauge under the bar rather than a place in it.
+    const auto overlap = detail::overlap_share(coverage);
     const double gauge_y = bar_y + bar_h + 8, gauge_h = 10;
     body += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(gauge_y) + "\" width=\"" + num(bar_w) +
             "\" height=\"" + num(gauge_h) +
             "\" fill=\"#f2f2f2\" stroke=\"#999\" "
             "stroke-width=\"0.5\"/>";
-    if (coverage.overlap_states > 0)
+    const double overlap_value = overlap ? overlap->value : 0;
+    if (overlap_value > 0 || boundary_overlap)
       body += "<rect x=\"" + num(bar_x) + "\" y=\"" + num(gauge_y) + "\" width=\"" +
-              num(edge(coverage.overlap_states) - bar_x) + "\" height=\"" + num(gauge_h) +
+              num(std::max(bar_w * overlap_value, kMinVisible)) + "\" height=\"" + num(gauge_h) +
               "\" fill=\"url(#" + prefix + "-overlap)\" stroke=\"" + kOverlapColour +
               "\" stroke-width=\"0.5\"><title>overlap: " +
-              detail::html_escape(states_text(coverage.overlap_states)) +
+              detail::html_escape(boundary_overlap ? std::string("on a boundary (measure 0)")
+                                                   : amount(coverage.overlap_states, overlap)) +
               " where two or more guards hold</title></rect>";
     legend_top = gauge_y + gauge_h + 14;
-    rows.push_back({"url(#" + prefix + "-gap)",
-                    "gap — no guard holds, the node fails: " + states_text(coverage.gap_states) +
-                        " (" + detail::percent(coverage.gap_states, coverage.states) + ")"});
+    rows.push_back(
+        {"url(#" + prefix + "-gap)", "gap — no guard holds, the node fails: " + gap_said});
     rows.push_back({"url(#" + prefix + "-overlap)",
                     "overlap — two or more guards hold (gauge under the bar): " +
-                        states_text(coverage.overlap_states) + " (" +
-                        detail::percent(coverage.overlap_states, coverage.states) + ")"});
+                        (boundary_overlap ? std::string("on a boundary (measure 0), see the table")
+                                          : amount(coverage.overlap_states, overlap))});
   } else {
-    const std::string why = coverage.counted
-                                ? "the domain admits no state"
+    const std::string why = coverage.counted || coverage.measured ? "the domain admits no state"
+                            : coverage.bounded
+                                ? "shares " + detail::not_measured_text(coverage)
                                 : "not counted: " + (coverage.not_counted_reason.empty()
                                                          ? std::string("no reason given")
                                                          : coverage.not_counted_reason);
@@ -317,10 +225,19 @@ std::string coverage_svg(const verify::Coverage& coverage) {
                     " text-anchor=\"middle\" fill=\"#333\"");
     for (std::size_t i = 0; i < coverage.alternatives.size(); ++i) {
       const auto& alternative = coverage.alternatives[i];
+      std::string text = alternative.name + " — " + alternative.requirement +
+                         (alternative.reachable ? ": selected in some state" : ": never selected");
+      if (coverage.bounded)
+        text += ", " + detail::bounds_text(alternative.share_lower, alternative.share_upper);
+      rows.push_back({detail::alternative_colour(i), text});
+    }
+    if (coverage.bounded) {
       rows.push_back(
-          {detail::alternative_colour(i),
-           alternative.name + " — " + alternative.requirement +
-               (alternative.reachable ? ": selected in some state" : ": never selected")});
+          {"url(#" + prefix + "-gap)",
+           "gap — " + detail::bounds_text(coverage.gap_share_lower, coverage.gap_share_upper)});
+      rows.push_back({"url(#" + prefix + "-overlap)",
+                      "overlap — " + detail::bounds_text(coverage.overlap_share_lower,
+                                                         coverage.overlap_share_upper)});
     }
   }
 
@@ -329,7 +246,9 @@ std::string coverage_svg(const verify::Coverage& coverage) {
   out += patterns(prefix);
   std::string heading = coverage.adaptable + ": ";
   heading += coverage.counted ? states_text(coverage.states) + " in the domain"
-                              : std::string("state space not counted");
+             : coverage.measured
+                 ? "the domain measured exactly (measure " + coverage.measure.text + ")"
+                 : std::string("state space not measured");
   out += text_at(kMargin, 18, heading, " font-weight=\"600\"");
   out += body;
   out += legend(rows, legend_top);
@@ -339,281 +258,242 @@ std::string coverage_svg(const verify::Coverage& coverage) {
 
 namespace {
 
-// The map of one pair of axes: the outcome of every cell.
-struct Map {
-  const Axis* x = nullptr;
-  const Axis* y = nullptr;
-  std::vector<CellResult> cells;  // row-major from the bottom row: cells[iy * nx + ix]
-  bool other_variables = false;   // some variable off the axes was tried at several values
-  std::size_t mixed = 0;          // cells whose outcome depends on the other variables
+// ---- the map: the selected alternative over the exact cells ---------------------------------
+
+constexpr double kMinVisible = 3;  // pixels: a gap or overlap is never thinner than this
+
+struct Frame {
+  double left, top, width, height;
+  const verify::MapAxis* x;
+  const verify::MapAxis* y;  // null: a strip
+  double px(double v) const { return left + (v - x->lower) / (x->upper - x->lower) * width; }
+  double py(double v) const {
+    if (y == nullptr) return top + height - v * height;
+    return top + height - (v - y->lower) / (y->upper - y->lower) * height;
+  }
 };
 
-struct MapContext {
-  const fretish::Domain& domain;
-  const std::vector<const fretish::SelectionRequirement*>& selections;
-  const std::vector<int>& colour_of;      // selection index → alternative (colour) index
-  const std::set<std::string>& relevant;  // variables a guard or an assumption reads
-};
-
-// States a map may evaluate over all pairs of axes: bounds the report's time whatever the
-// domain, and counts work rather than time so that the chosen map is deterministic.
-constexpr std::size_t kMapBudget = std::size_t{1} << 20;
-
-std::optional<Map> compute_map(const MapContext& context, const Axis& x_axis, const Axis& y_axis,
-                               std::size_t& budget) {
-  const fretish::Domain& domain = context.domain;
-  // Every other variable: all its sample values when a guard or an assumption reads it (it
-  // can change the outcome), one value otherwise (the state must still be complete).
-  std::vector<std::pair<std::size_t, std::vector<Value>>> others;  // state slot, values
-  std::size_t other_states = 1;
-  State state;
-  std::size_t x_slot = 0, y_slot = 0;
-  for (const auto& variable : domain.variables) {
-    if (&variable == x_axis.variable) x_slot = state.size();
-    if (&variable == y_axis.variable) y_slot = state.size();
-    if (&variable != x_axis.variable && &variable != y_axis.variable) {
-      std::vector<Value> values = sample_values(variable);
-      if (values.empty()) return std::nullopt;
-      if (!context.relevant.count(variable.name)) values.resize(1);
-      other_states *= values.size();
-      if (other_states > kMaxOtherStates) return std::nullopt;
-      others.emplace_back(state.size(), std::move(values));
-    }
-    state.emplace_back(variable.name, Value());
-  }
-
-  const std::size_t work = x_axis.cells.size() * y_axis.cells.size() * other_states;
-  if (work > budget) return std::nullopt;
-  budget -= work;
-
-  Map map;
-  map.x = &x_axis;
-  map.y = &y_axis;
-  map.other_variables = other_states > 1;
-  const std::size_t nx = x_axis.cells.size(), ny = y_axis.cells.size();
-  map.cells.resize(nx * ny);
-  for (std::size_t iy = 0; iy < ny; ++iy) {
-    for (std::size_t ix = 0; ix < nx; ++ix) {
-      CellResult& cell = map.cells[iy * nx + ix];
-      state[x_slot].second = x_axis.cells[ix].value;
-      state[y_slot].second = y_axis.cells[iy].value;
-      for (std::size_t combination = 0; combination < other_states; ++combination) {
-        std::size_t rest = combination;
-        for (const auto& [slot, values] : others) {
-          state[slot].second = values[rest % values.size()];
-          rest /= values.size();
-        }
-        if (!smt::satisfies_domain(domain, state)) continue;
-        int outcome = kGap;
-        int guards_holding = 0;
-        for (std::size_t k = 0; k < context.selections.size(); ++k) {
-          bool holds = true;
-          if (context.selections[k]->guard) {
-            const auto value = smt::try_evaluate(*context.selections[k]->guard, domain, state);
-            if (!value) cell.unknown = true;
-            holds = value.value_or(false);
-            if (holds) ++guards_holding;
-          }
-          if (holds && outcome == kGap) outcome = context.colour_of[k];
-        }
-        cell.outcomes.insert(outcome);
-        if (guards_holding >= 2) cell.overlap = true;
-      }
-      if (cell.outcomes.size() > 1) ++map.mixed;
-    }
-  }
-  return map;
+std::string fill_of(int outcome, const std::string& prefix) {
+  return outcome < 0 ? "url(#" + prefix + "-gap)"
+                     : detail::alternative_colour(static_cast<std::size_t>(outcome));
 }
 
-// Where a tick stands along an axis (0 = first edge, 1 = last edge) and what it says. A
-// short discrete axis labels every cell; a sampled one its bounds and centre.
-std::vector<std::pair<double, std::string>> ticks(const Axis& axis) {
-  std::vector<std::pair<double, std::string>> out;
-  const auto n = static_cast<double>(axis.cells.size());
-  if (axis.sampled) {
-    const auto lo = parse_double(axis.variable->lower), hi = parse_double(axis.variable->upper);
-    if (lo && hi) {
-      return {
-          {0.0, short_number(*lo)}, {0.5, short_number((*lo + *hi) / 2)}, {1.0, short_number(*hi)}};
+std::string outcome_names(const verify::MapShape& shape, const verify::Coverage& coverage) {
+  std::string names;
+  for (int o : shape.outcomes) {
+    names += names.empty() ? "" : " or ";
+    names += o < 0 ? std::string("gap (no guard holds)")
+             : static_cast<std::size_t>(o) < coverage.alternatives.size()
+                 ? coverage.alternatives[static_cast<std::size_t>(o)].name
+                 : "alternative " + std::to_string(o + 1);
+  }
+  return names;
+}
+
+struct MapLegend {
+  bool gap = false, overlap = false, mixed = false, uncertain = false, boundary = false;
+};
+
+void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, const Frame& f,
+                const verify::Coverage& coverage, const std::string& prefix, MapLegend& seen,
+                std::string& body) {
+  body += "<rect x=\"" + num(f.left) + "\" y=\"" + num(f.top) + "\" width=\"" + num(f.width) +
+          "\" height=\"" + num(f.height) + "\" fill=\"#f4f4f4\"/>";
+  std::string areas, lines, labels;
+  std::vector<std::tuple<double, double, double>> placed;  // labels: x, baseline, width
+  for (const auto& shape : panel.shapes) {
+    const bool gap =
+        std::find(shape.outcomes.begin(), shape.outcomes.end(), -1) != shape.outcomes.end();
+    std::string tooltip = shape.where + ": " + outcome_names(shape, coverage);
+    if (shape.outcomes.size() > 1) tooltip += " (depends on the variables off the map)";
+    if (shape.overlap) tooltip += "; two or more guards hold";
+    if (shape.uncertain) tooltip += "; not measured exactly here";
+    if (gap && shape.gap_share.text != "0")
+      tooltip += "; gap share " + detail::share_text({shape.gap_share.value, shape.gap_share.text});
+    const std::string title = "<title>" + detail::html_escape(tooltip) + "</title>";
+    if (shape.points.size() >= 3) {
+      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+      for (const auto& [x, y] : shape.points) {
+        x0 = std::min(x0, f.px(x));
+        x1 = std::max(x1, f.px(x));
+        y0 = std::min(y0, f.py(y));
+        y1 = std::max(y1, f.py(y));
+      }
+      const bool rect = shape.points.size() == 4 &&
+                        shape.points[0].second == shape.points[1].second &&
+                        shape.points[1].first == shape.points[2].first;
+      const bool tiny = (gap || shape.overlap) && (x1 - x0 < kMinVisible || y1 - y0 < kMinVisible);
+      if (rect || tiny) {
+        // Too thin to see: widened to the minimum around its centre, its share written beside.
+        if (x1 - x0 < kMinVisible) {
+          const double c = (x0 + x1) / 2;
+          x0 = c - kMinVisible / 2;
+          x1 = c + kMinVisible / 2;
+        }
+        if (y1 - y0 < kMinVisible) {
+          const double c = (y0 + y1) / 2;
+          y0 = c - kMinVisible / 2;
+          y1 = c + kMinVisible / 2;
+        }
+        const double band = (y1 - y0) / static_cast<double>(shape.outcomes.size());
+        std::string g = "<g>" + title;
+        for (std::size_t k = 0; k < shape.outcomes.size(); ++k)
+          g += "<rect x=\"" + num(x0) + "\" y=\"" + num(y0 + band * static_cast<double>(k)) +
+               "\" width=\"" + num(x1 - x0) + "\" height=\"" + num(band) + "\" fill=\"" +
+               fill_of(shape.outcomes[k], prefix) + "\"/>";
+        g += "</g>";
+        (tiny ? lines : areas) += g;
+        if (tiny && gap) {
+          // Beside the shape: right of a thin column, above a thin row; never on another label.
+          const std::string text =
+              "gap " + detail::share_text({shape.gap_share.value, shape.gap_share.text});
+          const bool column = x1 - x0 <= y1 - y0;
+          const double lx = column ? x1 + 3 : x0 + 2, ly = column ? (y0 + y1) / 2 + 4 : y0 - 2;
+          const double lw = 6.0 * static_cast<double>(text.size());
+          bool clear = true;
+          for (const auto& [ax, ay, aw] : placed)
+            clear = clear && (ly < ay - 11 || ly > ay + 11 || lx + lw < ax || lx > ax + aw);
+          if (clear) {
+            placed.emplace_back(lx, ly, lw);
+            labels += text_at(lx, ly, text,
+                              " font-size=\"11\" fill=\"#d62728\" stroke=\"#fff\" "
+                              "stroke-width=\"3\" paint-order=\"stroke\"");
+          }
+        }
+      } else {
+        std::string pts;
+        for (const auto& [x, y] : shape.points)
+          pts += (pts.empty() ? "" : " ") + num(f.px(x)) + "," + num(f.py(y));
+        areas += "<polygon points=\"" + pts + "\" fill=\"" +
+                 fill_of(shape.outcomes.front(), prefix) + "\" stroke=\"" +
+                 fill_of(shape.outcomes.front(), prefix) + "\" stroke-width=\"0.3\">" + title +
+                 "</polygon>";
+        if (shape.outcomes.size() > 1)
+          areas += "<polygon points=\"" + pts + "\" fill=\"url(#" + prefix + "-mixed)\"/>";
+      }
+      if (shape.outcomes.size() > 1) seen.mixed = true;
+      if (shape.overlap) {
+        seen.overlap = true;
+        double cx = 0, cy = 0;
+        for (const auto& [x, y] : shape.points) {
+          cx += f.px(x);
+          cy += f.py(y);
+        }
+        cx /= static_cast<double>(shape.points.size());
+        cy /= static_cast<double>(shape.points.size());
+        const double r = std::clamp(std::min(x1 - x0, y1 - y0) / 5, 1.5, 5.0);
+        lines += "<circle cx=\"" + num(cx) + "\" cy=\"" + num(cy) + "\" r=\"" + num(r) +
+                 "\" fill=\"" + kOverlapColour + "\" stroke=\"#fff\" stroke-width=\"0.75\">" +
+                 title + "</circle>";
+      }
+      if (gap) seen.gap = true;
+      if (shape.uncertain) seen.uncertain = true;
+      continue;
+    }
+    // A boundary: drawn only where the gate has something to say (a gap or an overlap).
+    if (!gap && !shape.overlap) continue;
+    seen.boundary = true;
+    const char* colour = gap ? kGapColour : kOverlapColour;
+    if (shape.points.size() == 2) {
+      lines += "<line x1=\"" + num(f.px(shape.points[0].first)) + "\" y1=\"" +
+               num(f.py(shape.points[0].second)) + "\" x2=\"" + num(f.px(shape.points[1].first)) +
+               "\" y2=\"" + num(f.py(shape.points[1].second)) + "\" stroke=\"" + colour +
+               "\" stroke-width=\"3\" stroke-linecap=\"round\">" + title + "</line>";
+    } else {
+      lines += "<circle cx=\"" + num(f.px(shape.points[0].first)) + "\" cy=\"" +
+               num(f.py(shape.points[0].second)) + "\" r=\"3.5\" fill=\"" + colour + "\">" + title +
+               "</circle>";
     }
   }
-  if (axis.cells.size() <= 12) {
-    for (std::size_t i = 0; i < axis.cells.size(); ++i)
-      out.emplace_back((static_cast<double>(i) + 0.5) / n, axis.cells[i].label);
-    return out;
+  body += "<g shape-rendering=\"crispEdges\">" + areas + "</g>" + lines + labels;
+  body += "<rect x=\"" + num(f.left) + "\" y=\"" + num(f.top) + "\" width=\"" + num(f.width) +
+          "\" height=\"" + num(f.height) + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"1\"/>";
+  // Ticks at every boundary; labels where they do not collide.
+  double last = -1e300;
+  for (const auto& [at, label] : map.x.ticks) {
+    const double x = f.px(at);
+    body += "<line x1=\"" + num(x) + "\" y1=\"" + num(f.top + f.height) + "\" x2=\"" + num(x) +
+            "\" y2=\"" + num(f.top + f.height + 4) + "\" stroke=\"#333\"/>";
+    if (x - last < 6.5 * static_cast<double>(label.size()) + 6) continue;
+    body += text_at(x, f.top + f.height + 15, label, " text-anchor=\"middle\" font-size=\"10\"");
+    last = x;
   }
-  for (std::size_t i : {std::size_t{0}, axis.cells.size() / 2, axis.cells.size() - 1})
-    out.emplace_back((static_cast<double>(i) + 0.5) / n, axis.cells[i].label);
-  return out;
+  if (f.y != nullptr) {
+    last = 1e300;
+    for (const auto& [at, label] : f.y->ticks) {
+      const double y = f.py(at);
+      body += "<line x1=\"" + num(f.left - 4) + "\" y1=\"" + num(y) + "\" x2=\"" + num(f.left) +
+              "\" y2=\"" + num(y) + "\" stroke=\"#333\"/>";
+      if (last - y < 12) continue;
+      body += text_at(f.left - 6, y + 3.5, label, " text-anchor=\"end\" font-size=\"10\"");
+      last = y;
+    }
+  }
+  if (!panel.label.empty())
+    body += text_at(f.left + f.width / 2, f.top - 6, panel.label,
+                    " text-anchor=\"middle\" font-weight=\"600\"");
 }
 
 }  // namespace
 
-std::string coverage_map_svg(const load::Mission& mission, const verify::Coverage& coverage) {
-  const auto selections = detail::selections_of(mission, coverage.adaptable);
-  if (selections.empty()) return {};
-  const fretish::Domain& domain = mission.domain;
-
-  std::set<std::string> used;
-  for (const auto* selection : selections)
-    if (selection->guard)
-      for (const auto& name : fretish::identifiers_of(*selection->guard)) used.insert(name);
-  std::set<std::string> relevant = used;
-  for (const auto& assumption : domain.assumptions)
-    if (assumption.expr)
-      for (const auto& name : fretish::identifiers_of(*assumption.expr)) relevant.insert(name);
-
-  // Candidate axes: the drawable variables the guards read, in declaration order.
-  constexpr std::size_t kMaxCandidates = 6;
-  std::vector<Axis> axes;
-  for (const auto& variable : domain.variables) {
-    if (axes.size() == kMaxCandidates || !used.count(variable.name)) continue;
-    if (auto axis = make_axis(variable)) axes.push_back(std::move(*axis));
-  }
-  if (axes.size() < 2) return {};
-
-  // Colours follow the coverage's alternative order (the bar's), matched by requirement.
-  std::vector<int> colour_of(selections.size());
-  for (std::size_t k = 0; k < selections.size(); ++k) {
-    colour_of[k] = static_cast<int>(k);
-    for (std::size_t i = 0; i < coverage.alternatives.size(); ++i)
-      if (coverage.alternatives[i].requirement == selections[k]->id)
-        colour_of[k] = static_cast<int>(i);
-  }
-
-  // The pair of axes that leaves the fewest cells depending on the other variables (by share
-  // of cells); ties go to declaration order.
-  const MapContext context{domain, selections, colour_of, relevant};
-  std::optional<Map> best;
-  std::size_t budget = kMapBudget;
-  for (std::size_t a = 0; a < axes.size(); ++a) {
-    for (std::size_t b = a + 1; b < axes.size(); ++b) {
-      auto map = compute_map(context, axes[a], axes[b], budget);
-      if (!map) continue;
-      if (!best || map->mixed * best->cells.size() < best->mixed * map->cells.size())
-        best = std::move(map);
-    }
-  }
-  if (!best) return {};
-  const Map& map = *best;
-  const Axis& x_axis = *map.x;
-  const Axis& y_axis = *map.y;
-  const std::size_t nx = x_axis.cells.size(), ny = y_axis.cells.size();
-
+std::string coverage_map_svg(const load::Mission&, const verify::Coverage& coverage) {
+  if (!coverage.map || coverage.map->panels.empty()) return {};
+  const verify::CoverageMap& map = *coverage.map;
   const std::string prefix = id_prefix(coverage.adaptable, "map");
-  // Cells at most 80 px a side, so that a 2 × 2 map stays a compact picture.
-  const double left = 110, top = 34;
-  const double plot_w = std::min(360.0, 80.0 * static_cast<double>(nx));
-  const double plot_h = std::min(360.0, 80.0 * static_cast<double>(ny));
-  const double cw = plot_w / static_cast<double>(nx), ch = plot_h / static_cast<double>(ny);
-  // Crisp edges: anti-aliased seams between neighbouring cells would read as grid lines.
-  std::string body = "<g shape-rendering=\"crispEdges\">";
-  bool any_mixed = false, any_outside = false, any_overlap = false, any_gap = false;
-  for (std::size_t iy = 0; iy < ny; ++iy) {
-    for (std::size_t ix = 0; ix < nx; ++ix) {
-      const CellResult& cell = map.cells[iy * nx + ix];
-      // y grows upward, as on a plot: the first value at the bottom.
-      const double x = left + cw * static_cast<double>(ix);
-      const double y = top + plot_h - ch * static_cast<double>(iy + 1);
-      std::string tooltip = x_axis.variable->name + " = " + x_axis.cells[ix].label + ", " +
-                            y_axis.variable->name + " = " + y_axis.cells[iy].label + ": ";
-      if (cell.outcomes.empty()) {
-        any_outside = true;
-        tooltip += "outside the domain";
-        body += "<rect x=\"" + num(x) + "\" y=\"" + num(y) + "\" width=\"" + num(cw) +
-                "\" height=\"" + num(ch) +
-                "\" fill=\"#f4f4f4\" stroke=\"#fff\" "
-                "stroke-width=\"0.5\"><title>" +
-                detail::html_escape(tooltip) + "</title></rect>";
-        continue;
-      }
-      // A cell whose outcome depends on the other variables is split into equal bands.
-      std::string names;
-      const double band = ch / static_cast<double>(cell.outcomes.size());
-      std::size_t k = 0;
-      std::string bands;
-      for (int outcome : cell.outcomes) {
-        const std::string fill = outcome == kGap ? "url(#" + prefix + "-gap)"
-                                                 : std::string(detail::alternative_colour(outcome));
-        bands += "<rect x=\"" + num(x) + "\" y=\"" + num(y + band * static_cast<double>(k)) +
-                 "\" width=\"" + num(cw) + "\" height=\"" + num(band) + "\" fill=\"" + fill +
-                 "\"/>";
-        if (!names.empty()) names += " or ";
-        names += outcome == kGap ? std::string("gap")
-                 : static_cast<std::size_t>(outcome) < coverage.alternatives.size()
-                     ? coverage.alternatives[outcome].name
-                     : "alternative " + std::to_string(outcome + 1);
-        ++k;
-      }
-      if (cell.outcomes.size() > 1) any_mixed = true;
-      if (cell.outcomes.count(kGap)) any_gap = true;
-      tooltip += names;
-      if (cell.outcomes.size() > 1) tooltip += " (depends on the other variables)";
-      if (cell.overlap) tooltip += "; two or more guards hold";
-      if (cell.unknown) tooltip += "; a guard has no value in some state";
-      body += "<g><title>" + detail::html_escape(tooltip) + "</title>" + bands;
-      if (cell.overlap) {
-        any_overlap = true;
-        const double r = std::clamp(std::min(cw, ch) / 5, 1.5, 6.0);
-        body += "<circle cx=\"" + num(x + cw / 2) + "\" cy=\"" + num(y + ch / 2) + "\" r=\"" +
-                num(r) + "\" fill=\"" + kOverlapColour +
-                "\" stroke=\"#fff\" stroke-width=\"0.75\"/>";
-      }
-      body += "</g>";
-    }
+  const std::size_t n = map.panels.size();
+  const std::size_t columns = std::min<std::size_t>(n, 3);
+  const std::size_t rows_of_panels = (n + columns - 1) / columns;
+  const double pw = columns == 1 ? 440 : columns == 2 ? 300 : 210;
+  const double ph = map.y ? (columns == 1 ? 300 : pw * 0.8) : 44;
+  const double left = 64, top = 52, gap_x = 150, gap_y = 70;
+  std::string body;
+  MapLegend seen;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = left + static_cast<double>(k % columns) * (pw + gap_x);
+    const double y = top + static_cast<double>(k / columns) * (ph + gap_y);
+    Frame f{x, y, pw, ph, &map.x, map.y ? &*map.y : nullptr};
+    draw_panel(map, map.panels[k], f, coverage, prefix, seen, body);
+    body += text_at(x + pw / 2, y + ph + 30, map.x.variable,
+                    " text-anchor=\"middle\" font-size=\"12\" font-weight=\"600\"");
+    if (map.y && k % columns == 0)
+      body += "<text x=\"14\" y=\"" + num(y + ph / 2) + "\" transform=\"rotate(-90 14 " +
+              num(y + ph / 2) + ")\" text-anchor=\"middle\" font-size=\"12\" font-weight=\"600\">" +
+              detail::html_escape(map.y->variable) + "</text>";
   }
-  body += "</g>";
-  body += "<rect x=\"" + num(left) + "\" y=\"" + num(top) + "\" width=\"" + num(plot_w) +
-          "\" height=\"" + num(plot_h) + "\" fill=\"none\" stroke=\"#333\" stroke-width=\"1\"/>";
-
-  for (const auto& [at, label] : ticks(x_axis))
-    body += text_at(left + plot_w * at, top + plot_h + 16, label,
-                    " text-anchor=\"middle\" font-size=\"11\"");
-  for (const auto& [at, label] : ticks(y_axis))
-    body += text_at(left - 6, top + plot_h - plot_h * at + 4, label,
-                    " text-anchor=\"end\" font-size=\"11\"");
-  body += text_at(left + plot_w / 2, top + plot_h + 34, x_axis.variable->name,
-                  " text-anchor=\"middle\" font-weight=\"600\"");
-  body += "<text x=\"14\" y=\"" + num(top + plot_h / 2) + "\" transform=\"rotate(-90 14 " +
-          num(top + plot_h / 2) + ")\" text-anchor=\"middle\" font-weight=\"600\">" +
-          detail::html_escape(y_axis.variable->name) + "</text>";
-
   std::vector<LegendRow> rows;
   for (std::size_t i = 0; i < coverage.alternatives.size(); ++i)
     rows.push_back({detail::alternative_colour(i),
                     coverage.alternatives[i].name + " — " + coverage.alternatives[i].requirement});
-  if (any_gap) rows.push_back({"url(#" + prefix + "-gap)", "gap — no guard holds"});
-  if (any_overlap) rows.push_back({kOverlapColour, "dot: two or more guards hold"});
-  if (any_outside) rows.push_back({"#f4f4f4", "outside the domain (assumptions)"});
-  double legend_top = top + plot_h + 52;
-  std::string notes;
-  std::string note;
-  if (map.other_variables) note += "other variables tried at a few values each; ";
-  if (any_mixed) note += "a banded cell's alternative depends on them; ";
-  if (x_axis.sampled || y_axis.sampled) note += "numeric cells evaluated at their centre; ";
-  if (!note.empty()) {
-    note.resize(note.size() - 2);
-    notes = text_at(kMargin, legend_top + 10, note, " font-size=\"11\" fill=\"#555\"");
-    legend_top += 20;
-  }
+  if (seen.gap)
+    rows.push_back({"url(#" + prefix + "-gap)", "gap — no guard holds, the node fails"});
+  if (seen.overlap) rows.push_back({kOverlapColour, "dot: two or more guards hold"});
+  if (seen.boundary)
+    rows.push_back({kGapColour,
+                    "thick line or point: a boundary (measure 0) in the gap (red) or "
+                    "where guards overlap (grey)"});
+  if (seen.mixed)
+    rows.push_back({"url(#" + prefix + "-mixed)",
+                    "striped: the alternative depends on variables off the map"});
+  if (seen.uncertain)
+    rows.push_back({"#f4f4f4", "not measured exactly: a nonlinear atom decides inside"});
+  const double legend_top = top + static_cast<double>(rows_of_panels) * (ph + gap_y) - 14;
+  const double width = std::max(kWidth, left + static_cast<double>(columns) * (pw + gap_x));
   const double height = legend_top + kLegendRow * static_cast<double>(rows.size()) + 4;
-  // As wide as the plot or the longest line needs (about 7 px a character at 13 px).
-  std::size_t longest = (x_axis.variable->name.size() + y_axis.variable->name.size() +
-                         coverage.adaptable.size() + 36) *
-                        7 / 6;
-  for (const auto& row : rows) longest = std::max(longest, row.text.size() + 4);
-  const double width = std::min(
-      kWidth, std::max({left + plot_w + 30, kMargin + 22 + 7.0 * static_cast<double>(longest),
-                        kMargin + 6.0 * static_cast<double>(note.size())}));
-  std::string out = svg_open(width, height,
-                             "Selected alternative of " + coverage.adaptable + " over " +
-                                 x_axis.variable->name + " and " + y_axis.variable->name);
+  std::string title = "Selected alternative of " + coverage.adaptable + " over " + map.x.variable +
+                      (map.y ? " and " + map.y->variable : "");
+  if (!map.panel_variable.empty()) title += ", one panel per value of " + map.panel_variable;
+  std::string out = svg_open(width, height, title);
   out += patterns(prefix);
-  out += text_at(kMargin, 18,
-                 coverage.adaptable + ": selected alternative over " + x_axis.variable->name +
-                     " × " + y_axis.variable->name,
-                 " font-weight=\"600\"");
-  out += body + notes + legend(rows, legend_top) + "</svg>";
+  out += "<defs><pattern id=\"" + prefix +
+         "-mixed\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" "
+         "patternTransform=\"rotate(45)\"><rect width=\"2\" height=\"6\" fill=\"#fff\" "
+         "fill-opacity=\"0.7\"/></pattern></defs>";
+  out += text_at(kMargin, 18, title, " font-weight=\"600\"");
+  out += text_at(kMargin, 34,
+                 "Cells follow the exact boundaries of the guards; thin gaps are widened to " +
+                     num(kMinVisible) + " px and labelled with their exact share.",
+                 " font-size=\"11\" fill=\"#555\"");
+  out += body + legend(rows, legend_top) + "</svg>";
   return out;
 }
 

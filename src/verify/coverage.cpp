@@ -1,278 +1,107 @@
 #include "verify/coverage.hpp"
 
-#include <bit>
-#include <cmath>
-#include <cstdint>
-#include <cstdlib>
 #include <map>
 #include <set>
 #include <string>
 
 #include "smt/atoms.hpp"
 #include "smt/evaluate.hpp"
-#include "smt/rational.hpp"
-#include "verify/compiled_condition.hpp"
+#include "verify/coverage_parts.hpp"
+#include "verify/region.hpp"
+#include "verify/space.hpp"
 
 namespace uabt::verify::detail {
 
 using fretish::Expr;
-using fretish::ExprKind;
+
+Exact exact_of(const Fraction& f) {
+  return {f.text(), f.to_double()};
+}
 
 namespace {
 
-constexpr std::uint64_t kMaxCountedStates = std::uint64_t{1} << 24;
+Fraction ratio(const Fraction& part, const Fraction& whole) {
+  return whole.is_zero() ? Fraction(0) : part / whole;
+}
 
-// A set of states as one bit per state of the enumerated space.
-class Bits {
- public:
-  Bits() = default;
-  Bits(std::uint64_t size, bool value)
-      : size_(size), words_((size + 63) / 64, value ? ~std::uint64_t{0} : 0) {
-    clear_tail();
-  }
-  void set(std::uint64_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
-  std::uint64_t count() const {
-    std::uint64_t n = 0;
-    for (auto w : words_) n += static_cast<std::uint64_t>(std::popcount(w));
-    return n;
-  }
-  Bits operator&(const Bits& o) const {
-    return zip(o, [](auto a, auto b) { return a & b; });
-  }
-  Bits operator|(const Bits& o) const {
-    return zip(o, [](auto a, auto b) { return a | b; });
-  }
-  Bits operator^(const Bits& o) const {
-    return zip(o, [](auto a, auto b) { return a ^ b; });
-  }
-  Bits operator~() const {
-    Bits r = *this;
-    for (auto& w : r.words_) w = ~w;
-    r.clear_tail();
-    return r;
-  }
+// Certified bounds of a share when some atom is not measured: the part that surely belongs
+// over the largest possible domain, and the part that may belong over the smallest.
+void bounds(const Space& space, const Truth& part, const Truth& domain, Exact& lower,
+            Exact& upper) {
+  const Fraction dl = space.measure(domain.sure), du = space.measure(domain.maybe);
+  lower = exact_of(ratio(space.measure(part.sure), du));
+  Fraction hi = dl.is_zero() ? Fraction(1) : space.measure(part.maybe) / dl;
+  if (hi > Fraction(1)) hi = Fraction(1);
+  upper = exact_of(hi);
+}
 
- private:
-  std::uint64_t size_ = 0;
-  std::vector<std::uint64_t> words_;
-
-  void clear_tail() {
-    if (size_ % 64 != 0 && !words_.empty()) words_.back() &= (std::uint64_t{1} << (size_ % 64)) - 1;
-  }
-  template <typename F>
-  Bits zip(const Bits& o, F f) const {
-    Bits r = *this;
-    for (std::size_t i = 0; i < r.words_.size(); ++i) r.words_[i] = f(r.words_[i], o.words_[i]);
-    return r;
-  }
-};
-
-// A condition over the space: where it holds, and where it has no value (a division by zero
-// that reaches it). `holds` is meaningless where `none` is set.
-struct Truth {
-  Bits holds;
-  Bits none;
-};
-
-// One enumerated variable: its values are digit 0 … radix-1.
-struct Dimension {
-  std::string name;
-  const fretish::Variable* declaration = nullptr;  // nullptr: implicit boolean
-  smt::Sort sort = smt::Sort::boolean;
-  std::int64_t lowest = 0;  // integers: the value of digit 0
-  std::uint64_t radix = 2;
-
-  // The value as CompiledCondition reads it: 0/1, the literal index, or the integer.
-  std::int64_t number(std::uint64_t digit) const {
-    return sort == smt::Sort::integer ? lowest + static_cast<std::int64_t>(digit)
-                                      : static_cast<std::int64_t>(digit);
-  }
-};
-
-void variables_of(const Expr& e, const smt::Typing& typing, std::set<std::string>& out) {
-  if (e.kind == ExprKind::identifier) {
-    if (const smt::TypeInfo* t = typing.find(e); t && (t->variable || t->implicit_boolean))
-      out.insert(e.text);
+void conjuncts(const Expr& e, const smt::Typing& typing, std::vector<const Expr*>& out) {
+  if (e.kind == fretish::ExprKind::logical_and && smt::is_boolean_structure(e, typing)) {
+    for (const auto& a : e.args) conjuncts(*a, typing, out);
     return;
   }
-  for (const auto& arg : e.args) variables_of(*arg, typing, out);
+  out.push_back(&e);
 }
 
-std::optional<std::int64_t> integer_end(const std::string& text, bool lower) {
-  const auto r = smt::parse_rational(text);
-  if (!r || r->numerator.size() > 15 || r->denominator.size() > 16) return std::nullopt;
-  const double v = std::strtod(text.c_str(), nullptr);
-  return static_cast<std::int64_t>(lower ? std::ceil(v) : std::floor(v));
+// A guard as cells of a decision table: each conjunct over one variable goes to its column.
+void decision_cells(const Expr& guard, const fretish::Domain& domain, const smt::Typing& typing,
+                    const std::vector<std::string>& columns, AlternativeCoverage& alt) {
+  std::vector<const Expr*> parts;
+  conjuncts(guard, typing, parts);
+  std::map<std::string, std::vector<CubeLiteral>> by_variable;
+  for (const Expr* p : parts) {
+    const Expr* atom = p;
+    bool positive = true;
+    while (atom->kind == fretish::ExprKind::logical_not &&
+           smt::is_boolean_structure(*atom, typing)) {
+      atom = atom->args[0].get();
+      positive = !positive;
+    }
+    std::set<std::string> vars;
+    variables_of(*atom, typing, vars);
+    if (vars.size() == 1 && !smt::is_boolean_structure(*atom, typing)) {
+      by_variable[*vars.begin()].push_back({atom, positive});
+      continue;
+    }
+    alt.other_condition += (alt.other_condition.empty() ? "" : " & ") + fretish::to_fretish(*p);
+  }
+  for (const auto& name : columns) {
+    auto it = by_variable.find(name);
+    if (it == by_variable.end()) continue;
+    std::string cell = render_cube(it->second, domain, typing);
+    if (cell == name)
+      cell = "true";
+    else if (cell == "!" + name)
+      cell = "false";
+    else if (cell.rfind(name + " ", 0) == 0 && cell.find(" & ") == std::string::npos)
+      cell = cell.substr(name.size() + 1);
+    alt.cells.emplace_back(name, cell);
+  }
 }
 
-class Counter {
- public:
-  Counter(const fretish::Domain& domain, const smt::Typing& typing)
-      : domain_(domain), typing_(typing) {}
-
-  // Sets up the space; returns the reason when it cannot be enumerated.
-  std::string plan(const std::set<std::string>& names) {
-    std::set<std::string> remaining = names;
-    for (const auto& v : domain_.variables) {  // declaration order, then implicit booleans
-      if (!remaining.erase(v.name)) continue;
-      Dimension d;
-      d.name = v.name;
-      d.declaration = &v;
-      switch (v.type) {
-        case fretish::VarType::boolean: break;
-        case fretish::VarType::real: return "the guards range over the real variable " + v.name;
-        case fretish::VarType::enumeration:
-          d.sort = smt::Sort::enumeration;
-          d.radix = v.enum_values.size();
-          break;
-        case fretish::VarType::integer: {
-          d.sort = smt::Sort::integer;
-          if (v.lower.empty() || v.upper.empty())
-            return "the integer " + v.name + " has no " + (v.lower.empty() ? "lower" : "upper") +
-                   " bound";
-          const auto lo = integer_end(v.lower, true), hi = integer_end(v.upper, false);
-          if (!lo || !hi) return "the bounds of " + v.name + " are too large to enumerate";
-          d.lowest = *lo;
-          d.radix = *hi < *lo ? 0 : static_cast<std::uint64_t>(*hi - *lo) + 1;
-          break;
-        }
-      }
-      dims_.push_back(d);
-    }
-    for (const auto& name : remaining) dims_.push_back(Dimension{name});
-    size_ = 1;
-    for (const auto& d : dims_) {
-      if (d.radix == 0) {
-        size_ = 0;
-        break;
-      }
-      if (size_ > kMaxCountedStates / d.radix) return "the guards range over more than 2^24 states";
-      size_ *= d.radix;
-    }
-    return {};
+// Nothing but the reason, the variables and the decision table survive a failed count.
+void give_up(Coverage& cov, const std::string& reason) {
+  Coverage fresh;
+  fresh.adaptable = cov.adaptable;
+  fresh.not_counted_reason = fresh.not_measured_reason = reason;
+  fresh.variables = cov.variables;
+  for (const auto& a : cov.alternatives) {
+    AlternativeCoverage b;
+    b.name = a.name;
+    b.requirement = a.requirement;
+    b.cells = a.cells;
+    b.other_condition = a.other_condition;
+    fresh.alternatives.push_back(std::move(b));
   }
-
-  std::uint64_t size() const { return size_; }
-  const std::vector<Dimension>& dimensions() const { return dims_; }
-
-  // Where a condition holds and where it has no value. A definite false decides a
-  // conjunction (and a definite true a disjunction) even where another operand has no value,
-  // as in `battery != 0 & 10 / battery > 2`.
-  Truth truth(const Expr& e) {
-    if (smt::is_boolean_structure(e, typing_)) {
-      std::vector<Truth> args;
-      for (const auto& a : e.args) args.push_back(truth(*a));
-      Bits any_none(size_, false);
-      for (const auto& a : args) any_none = any_none | a.none;
-      switch (e.kind) {
-        case ExprKind::logical_not: return {~args[0].holds, args[0].none};
-        case ExprKind::logical_and:
-        case ExprKind::logical_or: return junction(e.kind == ExprKind::logical_and, args);
-        case ExprKind::logical_xor:
-        case ExprKind::ne:
-        case ExprKind::iff:
-        case ExprKind::eq: {
-          const bool is_xor = e.kind == ExprKind::logical_xor || e.kind == ExprKind::ne;
-          Bits acc = args[0].holds;
-          for (std::size_t k = 1; k < args.size(); ++k)
-            acc = is_xor ? acc ^ args[k].holds : ~(acc ^ args[k].holds);
-          return {acc, any_none};
-        }
-        case ExprKind::implies: {  // a -> (b -> c) is !a | (!b | c)
-          Truth acc = args.back();
-          for (std::size_t k = args.size() - 1; k-- > 0;)
-            acc = junction(false, {Truth{~args[k].holds, args[k].none}, acc});
-          return acc;
-        }
-        default: break;
-      }
-    }
-    if (e.kind == ExprKind::bool_literal) return {Bits(size_, e.bool_value), Bits(size_, false)};
-    return atom(e);
-  }
-
- private:
-  const fretish::Domain& domain_;
-  const smt::Typing& typing_;
-  std::vector<Dimension> dims_;
-  std::uint64_t size_ = 0;
-  std::map<std::string, Truth> atoms_;  // by FRETISH text: repeated atoms are evaluated once
-
-  Truth junction(bool is_and, const std::vector<Truth>& args) const {
-    // Where some operand is definitely false (and) / true (or), the result is decided.
-    Bits decided(size_, false), any_none(size_, false);
-    for (const auto& a : args) {
-      decided = decided | ((is_and ? ~a.holds : a.holds) & ~a.none);
-      any_none = any_none | a.none;
-    }
-    return {is_and ? ~decided : decided, any_none & ~decided};
-  }
-
-  // Evaluates the atom once per assignment of its own variables, then spreads the table over
-  // the space with an odometer that tracks the index into the table.
-  Truth atom(const Expr& e) {
-    const std::string key = fretish::to_fretish(e);
-    if (auto it = atoms_.find(key); it != atoms_.end()) return it->second;
-    std::set<std::string> names;
-    variables_of(e, typing_, names);
-    std::vector<std::size_t> own;  // indices into dims_
-    std::vector<std::uint64_t> sub_stride(dims_.size(), 0);
-    std::uint64_t table_size = 1;
-    for (std::size_t k = 0; k < dims_.size(); ++k) {
-      if (!names.count(dims_[k].name)) continue;
-      own.push_back(k);
-      sub_stride[k] = table_size;
-      table_size *= dims_[k].radix;
-    }
-    std::map<std::string, std::size_t> slot_of;
-    std::vector<std::int64_t> assignment(own.size());
-    for (std::size_t k = 0; k < own.size(); ++k) {
-      slot_of[dims_[own[k]].name] = k;
-      assignment[k] = dims_[own[k]].number(0);
-    }
-    const CompiledCondition condition(e, typing_, slot_of);
-    std::vector<std::uint64_t> digits(own.size(), 0);
-    std::vector<std::uint8_t> table(table_size);  // 0 false, 1 true, 2 no value
-    for (std::uint64_t t = 0; t < table_size; ++t) {
-      const auto v = condition.value(assignment.data());
-      table[t] = v ? (*v ? 1 : 0) : 2;
-      for (std::size_t k = 0; k < own.size(); ++k) {  // next assignment, first variable fastest
-        if (++digits[k] < dims_[own[k]].radix) {
-          assignment[k] = dims_[own[k]].number(digits[k]);
-          break;
-        }
-        digits[k] = 0;
-        assignment[k] = dims_[own[k]].number(0);
-      }
-    }
-    Truth bits{Bits(size_, false), Bits(size_, false)};
-    std::vector<std::uint64_t> odometer(dims_.size(), 0);
-    std::uint64_t index = 0;
-    for (std::uint64_t s = 0; s < size_; ++s) {
-      if (table[index] == 1)
-        bits.holds.set(s);
-      else if (table[index] == 2)
-        bits.none.set(s);
-      for (std::size_t k = 0; k < dims_.size(); ++k) {
-        if (++odometer[k] < dims_[k].radix) {
-          index += sub_stride[k];
-          break;
-        }
-        odometer[k] = 0;
-        index -= (dims_[k].radix - 1) * sub_stride[k];
-      }
-    }
-    atoms_.emplace(key, bits);
-    return bits;
-  }
-};
+  cov = std::move(fresh);
+}
 
 }  // namespace
 
 Coverage count_coverage(const std::string& adaptable,
                         const std::vector<const fretish::SelectionRequirement*>& requirements,
                         const std::vector<const Expr*>& assumptions, const fretish::Domain& domain,
-                        const smt::Typing& typing) {
+                        const smt::Typing& typing, const std::vector<Finding>& findings) {
   Coverage cov;
   cov.adaptable = adaptable;
   for (const auto* r : requirements) {
@@ -282,10 +111,14 @@ Coverage count_coverage(const std::string& adaptable,
     cov.alternatives.push_back(a);
   }
   // The guards' variables, closed under "an assumption links them": other assumptions only
-  // constrain other variables and, the domain being consistent, do not change the counts.
+  // constrain other variables and, the domain being consistent, do not change the shares.
   std::set<std::string> names;
-  for (const auto* r : requirements)
-    if (r->guard) variables_of(*r->guard, typing, names);
+  std::vector<const Expr*> atoms;
+  for (const auto* r : requirements) {
+    if (!r->guard) continue;
+    variables_of(*r->guard, typing, names);
+    for (const Expr* a : smt::atom_occurrences(*r->guard, typing)) atoms.push_back(a);
+  }
   std::vector<const Expr*> linked;
   std::vector<bool> used(assumptions.size(), false);
   for (bool grew = true; grew;) {
@@ -300,51 +133,100 @@ Coverage count_coverage(const std::string& adaptable,
       used[k] = grew = true;
       linked.push_back(assumptions[k]);
       names.insert(own.begin(), own.end());
+      for (const Expr* a : smt::atom_occurrences(*assumptions[k], typing)) atoms.push_back(a);
     }
   }
-  Counter counter(domain, typing);
-  const std::string reason = counter.plan(names);
-  for (const auto& d : counter.dimensions()) cov.variables.push_back(d.name);
+  for (const auto& v : domain.variables)
+    if (names.count(v.name)) cov.variables.push_back(v.name);
+  for (const auto& n : names)
+    if (domain.find(n) == nullptr) cov.variables.push_back(n);
+  for (std::size_t k = 0; k < requirements.size(); ++k)
+    if (requirements[k]->guard)
+      decision_cells(*requirements[k]->guard, domain, typing, cov.variables, cov.alternatives[k]);
+
+  Space space(domain, typing);
+  std::string reason;
+  try {
+    reason = space.plan(names, atoms);
+  } catch (const FractionOverflow& e) {
+    reason = e.what();
+  }
   if (!reason.empty()) {
-    cov.not_counted_reason = reason;
+    cov.not_counted_reason = cov.not_measured_reason = reason;
     return cov;
   }
+  const std::uint64_t size = space.size();
   try {
+    NodeTruths t;
     // Enum membership and ranges are built into the enumeration; assumptions are filtered.
-    Bits in_domain(counter.size(), true);
+    t.domain = Truth::exactly(Bits(size, true), Bits(size, false));
     for (const Expr* a : linked) {
-      const Truth t = counter.truth(*a);
-      if ((in_domain & t.none).count() > 0)
+      const Truth at = space.truth(*a);
+      if ((t.domain.maybe & at.none).any())
         throw smt::EvaluationError("an assumption has no value in some state (division by zero)");
-      in_domain = in_domain & t.holds;
+      t.domain = junction(true, {t.domain, at}, size);
     }
-    Bits any(counter.size(), false), two_or_more(counter.size(), false);
-    Bits claimed(counter.size(), false);  // an earlier guard (or the default) holds
+    const Truth none_yet = Truth::exactly(Bits(size, false), Bits(size, false));
+    Truth any = none_yet, claimed = none_yet;
+    t.overlap = none_yet;
     for (std::size_t k = 0; k < requirements.size(); ++k) {
       const auto* r = requirements[k];
-      Bits enabled = in_domain;
+      Truth enabled = t.domain;
       if (r->guard) {
-        const Truth t = counter.truth(*r->guard);
-        if ((in_domain & t.none).count() > 0)
+        const Truth g = space.truth(*r->guard);
+        if ((t.domain.maybe & g.none).any())
           throw smt::EvaluationError("the guard of " + r->id +
                                      " has no value in some state (division by zero)");
-        enabled = t.holds & in_domain;
+        enabled = junction(true, {g, t.domain}, size);
       }
-      cov.alternatives[k].enabled_states = enabled.count();
-      cov.alternatives[k].states = (enabled & ~claimed).count();
-      claimed = claimed | enabled;
+      const Truth selected = junction(true, {enabled, negation(claimed)}, size);
+      auto& alt = cov.alternatives[k];
+      alt.enabled_states = enabled.sure.count();
+      alt.states = selected.sure.count();
+      alt.measure = exact_of(space.measure(selected.sure));
+      bounds(space, selected, t.domain, alt.share_lower, alt.share_upper);
+      alt.share = alt.share_lower;
+      alt.enabled_share =
+          exact_of(ratio(space.measure(enabled.sure), space.measure(t.domain.sure)));
+      t.enabled.push_back(enabled);
+      claimed = junction(false, {claimed, enabled}, size);
       if (r->guard) {
-        two_or_more = two_or_more | (any & enabled);
-        any = any | enabled;
+        t.overlap = junction(false, {t.overlap, junction(true, {any, enabled}, size)}, size);
+        any = junction(false, {any, enabled}, size);
       }
     }
-    cov.states = in_domain.count();
-    cov.gap_states = (in_domain & ~claimed).count();
-    cov.overlap_states = two_or_more.count();
-    cov.counted = true;
+    t.gap = junction(true, {t.domain, negation(claimed)}, size);
+    const Fraction total = space.measure(t.domain.sure);
+    cov.measure = exact_of(total);
+    cov.gap_measure = exact_of(space.measure(t.gap.sure));
+    cov.overlap_measure = exact_of(space.measure(t.overlap.sure));
+    bounds(space, t.gap, t.domain, cov.gap_share_lower, cov.gap_share_upper);
+    bounds(space, t.overlap, t.domain, cov.overlap_share_lower, cov.overlap_share_upper);
+    cov.gap_share = cov.gap_share_lower;
+    cov.overlap_share = cov.overlap_share_lower;
+    cov.measured = space.unmeasured().empty();
+    cov.bounded = !cov.measured;
+    if (!cov.measured) cov.not_measured_reason = space.unmeasured();
+    if (!space.has_reals()) {
+      cov.counted = true;
+      cov.states = t.domain.sure.count();
+      cov.gap_states = t.gap.sure.count();
+      cov.overlap_states = t.overlap.sure.count();
+    } else {
+      for (auto& a : cov.alternatives) a.states = a.enabled_states = 0;
+      for (const auto& d : space.dimensions())
+        if (d.component >= 0) {
+          const auto& axes = space.components()[static_cast<std::size_t>(d.component)].axes;
+          cov.not_counted_reason = "the guards range over the real variable " + axes[0].variable;
+          break;
+        }
+    }
+    fill_regions(space, requirements, t, findings, cov);
+    fill_map(space, domain, t, requirements.size(), cov);
   } catch (const smt::EvaluationError& e) {
-    for (auto& a : cov.alternatives) a.states = a.enabled_states = 0;
-    cov.not_counted_reason = e.what();
+    give_up(cov, e.what());
+  } catch (const FractionOverflow& e) {
+    give_up(cov, e.what());
   }
   return cov;
 }

@@ -47,6 +47,38 @@ bool build_guards(detail::Node& node, const std::vector<const fretish::Selection
   return true;
 }
 
+// A space that cannot be enumerated still lists its regions (DESIGN §5): the gap as the
+// solver's cubes, each overlap as the conjunction of the two guards.
+void regions_from_findings(Coverage& cov, const std::vector<Finding>& findings,
+                           const std::vector<const fretish::SelectionRequirement*>& reqs) {
+  auto constraint = [](std::string text) {
+    RegionConstraint c;
+    c.kind = RegionConstraint::Kind::linear;
+    c.text = std::move(text);
+    return c;
+  };
+  for (const auto& cube : cov.gap_region) {
+    if (cube.rfind("\u2026", 0) == 0) continue;  // "… and more"
+    Region r;
+    r.exact = r.measured = false;
+    if (cube != "every state of the domain") r.constraints.push_back(constraint(cube));
+    for (const auto* q : reqs) r.requirements.push_back(q->id);
+    cov.gap_regions.push_back(std::move(r));
+  }
+  for (const auto& f : findings) {
+    if (f.check != "guard-overlap" || f.adaptable != cov.adaptable || f.requirements.size() != 2)
+      continue;
+    Region r;
+    r.exact = r.measured = false;
+    for (const auto& id : f.requirements)
+      for (const auto* q : reqs)
+        if (q->id == id && q->guard)
+          r.constraints.push_back(constraint("(" + fretish::to_fretish(*q->guard) + ")"));
+    r.requirements = f.requirements;
+    cov.overlap_regions.push_back(std::move(r));
+  }
+}
+
 // One adaptable node to analyse and its requirements in priority order (empty: none names it).
 struct NodeJob {
   std::string adaptable;
@@ -118,10 +150,12 @@ NodeOutcome analyse_node(const load::Mission& mission, const NodeJob& job, const
   detail::check_gap(node, session, region);
   detail::check_vacuous_atoms(node, session, assumed_names);
 
-  cov = detail::count_coverage(job.adaptable, reqs, assumptions, mission.domain, encoder.typing());
+  cov = detail::count_coverage(job.adaptable, reqs, assumptions, mission.domain, encoder.typing(),
+                               result.findings);
   for (std::size_t k = 0; k < node.guards.size() && k < cov.alternatives.size(); ++k)
     cov.alternatives[k].reachable = node.guards[k].selectable == Answer::sat;
   cov.gap_region = std::move(region);
+  if (!cov.measured && !cov.bounded) regions_from_findings(cov, result.findings, reqs);
   result.coverage.push_back(std::move(cov));
   return out;
 }

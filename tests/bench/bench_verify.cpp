@@ -15,6 +15,15 @@ namespace {
 
 using namespace uabt::bench;
 
+// Whether a node's shares are exact; coverage before the exact measure had no such field.
+template <typename C>
+std::uint64_t measured_flag(const C& c) {
+  if constexpr (requires { c.measured; })
+    return c.measured ? 1 : 0;
+  else
+    return 0;
+}
+
 void BM_Verify(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const int k = static_cast<int>(state.range(1));
@@ -39,6 +48,32 @@ void BM_Verify(benchmark::State& state) {
   state.counters["solver_queries"] = static_cast<double>(result.statistics.solver_queries);
   state.counters["prefiltered"] = static_cast<double>(result.statistics.prefiltered);
   state.counters["states"] = static_cast<double>(states);
+}
+
+// Real-valued nodes (range(2): 0 intervals over one real, 1 bounds on r + s): the cost of
+// measuring the coverage exactly. `measured` counts the nodes whose shares are exact.
+void BM_VerifyReal(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const int k = static_cast<int>(state.range(1));
+  const auto mode = state.range(2) == 0 ? GeneratorMode::real : GeneratorMode::real_sum;
+  const Loaded& l = loaded(n, k, mode);
+  if (!l.mission || !l.error.empty()) {
+    state.SkipWithError(l.error.c_str());
+    return;
+  }
+  uabt::verify::Result result;
+  for (auto _ : state) {
+    result = uabt::verify::verify_mission(*l.mission, {});
+    benchmark::DoNotOptimize(result);
+  }
+  if (auto msg = check_findings(result.findings, {}); !msg.empty()) {
+    state.SkipWithError(msg.c_str());
+    return;
+  }
+  std::uint64_t measured = 0;
+  for (const auto& c : result.coverage) measured += measured_flag(c);
+  state.counters["solver_queries"] = static_cast<double>(result.statistics.solver_queries);
+  state.counters["measured"] = static_cast<double>(measured);
 }
 
 void BM_NaiveVerify(benchmark::State& state) {
@@ -103,6 +138,13 @@ BENCHMARK(BM_Verify)
     ->Args({100, 32, 1})
     ->Args({1, 2048, 0})
     ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+// Args: nodes, alternatives, layout (0: intervals of one real, 1: bounds on r + s).
+BENCHMARK(BM_VerifyReal)
+    ->Args({1, 32, 0})
+    ->Args({1, 32, 1})
+    ->Args({100, 32, 0})
+    ->Args({100, 32, 1})
     ->Unit(benchmark::kMillisecond);
 // Args: nodes, alternatives, solver (0: Z3's default strategy, 1: the SMT core uabt uses).
 BENCHMARK(BM_NaiveVerify)

@@ -34,10 +34,14 @@ std::string req_id(int i, int j) {
 }
 
 // Guard of alternative j (j < K-1) of node i: pairwise disjoint over the node's variable.
-std::string guard(int i, int j) {
+// `kind` is the layout (i mod 4 for mixed missions; 2 or 4 for the real-valued ones).
+std::string guard(int i, int j, int kind) {
   const std::string n = std::to_string(i);
   const std::string a = std::to_string(j);
-  switch (i % 4) {
+  switch (kind) {
+    case 4:
+      return "r_" + n + " + s_" + n + " >= " + a + " & r_" + n + " + s_" + n + " < " +
+             std::to_string(j + 1);
     case 0: return "mode_" + n + " = m" + n + "_l" + a;
     case 1:
       return "x_" + n + " >= " + std::to_string(10 * j) + " & x_" + n + " < " +
@@ -49,16 +53,19 @@ std::string guard(int i, int j) {
 
 // Domain declarations of node i; each leaves room for the default (a literal, or values
 // outside every interval).
-std::string declarations(int i, int k) {
+std::string declarations(int i, int k, int kind) {
   const std::string n = std::to_string(i);
-  switch (i % 4) {
+  switch (kind) {
+    case 4:
+      return "real r_" + n + " in [-1, " + std::to_string(k) + "]\nreal s_" + n + " in [0, " +
+             std::to_string(k) + "]\n";
     case 1: return "integer x_" + n + " in [-1, " + std::to_string(10 * k) + "]\n";
     case 2: return "real r_" + n + " in [-1, " + std::to_string(k) + "]\n";
     default: {
       std::string s = "enum mode_" + n + " in {";
       for (int j = 0; j < k; ++j) s += (j ? ", m" : "m") + n + "_l" + std::to_string(j);
       s += "}\n";
-      if (i % 4 == 3) s += "boolean ok_" + n + "\n";
+      if (kind == 3) s += "boolean ok_" + n + "\n";
       return s;
     }
   }
@@ -89,8 +96,13 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
     throw std::invalid_argument("planted missions need nodes >= 3 and alternatives >= 4");
 
   GeneratedMission result;
-  result.dir = parent / cat({"gen_", planted ? "planted_" : "partition_", std::to_string(nodes),
-                             "x", std::to_string(k), "x", std::to_string(tree_nodes)});
+  const int fixed_kind = mode == GeneratorMode::real ? 2 : mode == GeneratorMode::real_sum ? 4 : -1;
+  const char* const label = planted                           ? "planted_"
+                            : mode == GeneratorMode::real     ? "real_"
+                            : mode == GeneratorMode::real_sum ? "realsum_"
+                                                              : "partition_";
+  result.dir = parent / cat({"gen_", label, std::to_string(nodes), "x", std::to_string(k), "x",
+                             std::to_string(tree_nodes)});
   std::filesystem::remove_all(result.dir);
 
   std::ostringstream mission, requirements, domain;
@@ -98,7 +110,8 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
           << "  <BehaviorTree ID=\"MainTree\">\n    <Sequence>\n";
   for (int i = 0; i < nodes; ++i) {
     mission << "      <Adaptable ID=\"" << node_name(i) << "\"/>\n";
-    domain << declarations(i, k);
+    const int kind = fixed_kind >= 0 ? fixed_kind : i % 4;
+    domain << declarations(i, k, kind);
     const bool overlap_node = planted && i == 0;
     const bool gap_node = planted && i == 1;
     const bool shadow_node = planted && i == 2;
@@ -106,9 +119,10 @@ GeneratedMission generate_mission(const std::filesystem::path& parent, int nodes
       const bool is_default = j == k - 1;
       if (is_default && gap_node) continue;  // no default: the last literal/interval is a gap
       std::string g;
-      if (!is_default) g = guard(i, j);
-      if (overlap_node && j == 1) g = cat({"(", guard(i, 1), ") | (", guard(i, 0), ")"});
-      if (shadow_node && j == k - 2) g = guard(i, 0);  // hidden by alternative 0
+      if (!is_default) g = guard(i, j, kind);
+      if (overlap_node && j == 1)
+        g = cat({"(", guard(i, 1, kind), ") | (", guard(i, 0, kind), ")"});
+      if (shadow_node && j == k - 2) g = guard(i, 0, kind);  // hidden by alternative 0
       requirements << req_id(i, j) << ": In " << node_name(i);
       if (!g.empty()) requirements << " if " << g;
       requirements << " Mission shall satisfy selected_alt = " << alt_name(i, j) << "\n";

@@ -9,6 +9,8 @@ namespace uabt::bench {
 enum class GeneratorMode {
   partition,  // every node: K-1 pairwise disjoint guards plus a default, no finding
   planted,    // as partition, with one overlap, one gap and one shadowed guard planted
+  real,       // a partition where every node ranges over a real variable (intervals)
+  real_sum,   // a partition where every node's guards bound r + s (two reals: polygons)
 };
 
 // A finding the verifier must report for a planted mission.

@@ -5,6 +5,7 @@
 #include "fretish/expr.hpp"
 #include "report/reports.hpp"
 #include "report_fixtures.hpp"
+#include "verify/verify.hpp"
 
 namespace uabt::report {
 namespace {
@@ -106,8 +107,8 @@ verify::Coverage exploration_coverage() {
   c.adaptable = "exploration";
   c.counted = false;
   c.not_counted_reason = "slope is a real variable";
-  c.alternatives = {{"sand_alternative", "Sand", 0, 0, true},
-                    {"rocks_alternative", "Rocks", 0, 0, true}};
+  c.alternatives = {testing::alternative("sand_alternative", "Sand", 0, 0, true),
+                    testing::alternative("rocks_alternative", "Rocks", 0, 0, true)};
   c.variables = {"battery", "slope"};
   return c;
 }
@@ -160,20 +161,35 @@ TEST(HtmlReport, FindingsGroupedByNodeWithWitnessTables) {
 
 TEST(HtmlReport, CoverageInWords) {
   const std::string html = to_html(testing::failing_input());
-  EXPECT_TRUE(has(html, "In 1 state (25.0%) no guard holds: the adaptable node fails there."));
-  EXPECT_TRUE(has(html, "<li><code>!OnDust &amp; !OnRocks</code></li>"));
+  EXPECT_TRUE(has(html, "In 25.0% of the domain no guard holds: the adaptable node fails there."));
+  // The gap and the overlap are highlighted rows of the decision table.
+  EXPECT_TRUE(has(html,
+                  "<tr class=\"gap\"><td><strong>gap</strong> <code>Req1</code> "
+                  "<code>Req2</code></td><td><code>false</code></td><td><code>false</code></td>"));
+  EXPECT_TRUE(has(html, "<tr class=\"overlap\"><td><strong>overlap</strong>"));
+  EXPECT_TRUE(has(html, "table.decision tr.gap td { background"));
   EXPECT_TRUE(has(html,
                   "For example, no alternative is selected when <code>OnDust</code> = "
                   "<code>false</code>, <code>OnRocks</code> = <code>false</code>."));
-  EXPECT_TRUE(has(html, "The state space was not counted: slope is a real variable."));
+  EXPECT_TRUE(has(html, "The state space was not measured, because slope is a real variable."));
   EXPECT_TRUE(has(html, "<strong>no, never</strong>"));
   EXPECT_TRUE(has(html, "The mission could not be loaded"));
 }
 
+// The map is drawn from what the verifier measured: verify the hand-built mission first.
+verify::Coverage verified(load::Mission& mission, const std::string& adaptable) {
+  load::AdaptableSite site;
+  site.id = adaptable;
+  site.tree_id = "MainTree";
+  mission.adaptables = {site};
+  return verify::verify_mission(mission, {}).coverage.at(0);
+}
+
 TEST(HtmlReport, RequirementsInPriorityOrderFromTheMission) {
-  const load::Mission mission = msl_mission(false);
+  load::Mission mission = msl_mission(false);
   ReportInput input = testing::failing_input();
   input.mission = &mission;
+  input.coverage[0] = verified(mission, "navigation");
   const std::string html = to_html(input);
   const auto req1 = html.find("<code>Req1</code>: In navigation if OnDust Mission shall");
   const auto req2 = html.find("<code>Req2</code>: In navigation if OnRocks Mission shall");
@@ -181,7 +197,7 @@ TEST(HtmlReport, RequirementsInPriorityOrderFromTheMission) {
   ASSERT_NE(req2, std::string::npos);
   EXPECT_LT(req1, req2);
   EXPECT_TRUE(has(html, "No selection requirement names this node")) << "arm has none";
-  EXPECT_TRUE(has(html, "Selected alternative over two variables"));
+  EXPECT_TRUE(has(html, "<h4>Where each alternative is selected</h4>"));
   EXPECT_FALSE(has(html, "http://"));
 }
 
@@ -241,71 +257,88 @@ TEST(CoverageSvg, EscapesNames) {
 }
 
 TEST(CoverageMapSvg, BooleanNodeShowsEachState) {
-  const load::Mission mission = msl_mission(false);
-  const std::string svg = coverage_map_svg(mission, testing::failing_input().coverage[0]);
+  load::Mission mission = msl_mission(false);
+  const std::string svg = coverage_map_svg(mission, verified(mission, "navigation"));
   ASSERT_FALSE(svg.empty());
   EXPECT_TRUE(well_formed_xml(svg));
-  EXPECT_TRUE(has(svg, "OnDust = true, OnRocks = true: on_dust; two or more guards hold"));
-  EXPECT_TRUE(has(svg, "OnDust = false, OnRocks = true: on_rocks<"));
-  EXPECT_TRUE(has(svg, "OnDust = false, OnRocks = false: gap<"));
+  EXPECT_TRUE(has(svg, "<title>OnDust &amp; OnRocks: on_dust; two or more guards hold</title>"));
+  EXPECT_TRUE(has(svg, "<title>!OnDust &amp; OnRocks: on_rocks</title>"));
+  EXPECT_TRUE(has(svg, "<title>!OnDust &amp; !OnRocks: gap (no guard holds)"));
   EXPECT_TRUE(has(svg, "<circle")) << "the overlap cell is marked";
 }
 
-TEST(CoverageMapSvg, AssumptionsGreyOutImpossibleStates) {
-  const load::Mission mission = msl_mission(true);
-  const std::string svg = coverage_map_svg(mission, testing::failing_input().coverage[0]);
-  EXPECT_TRUE(has(svg, "OnDust = true, OnRocks = true: outside the domain"));
+TEST(CoverageMapSvg, AssumptionsLeaveImpossibleStatesEmpty) {
+  load::Mission mission = msl_mission(true);
+  const std::string svg = coverage_map_svg(mission, verified(mission, "navigation"));
+  EXPECT_FALSE(has(svg, "<title>OnDust &amp; OnRocks:"));
   EXPECT_FALSE(has(svg, "<circle"));
 }
 
-TEST(CoverageMapSvg, NumericGuardsAreSampled) {
-  const load::Mission mission = exploration_mission();
-  const std::string svg = coverage_map_svg(mission, exploration_coverage());
+TEST(CoverageMapSvg, RealVariablesAreDrawnAtTheirExactBoundaries) {
+  load::Mission mission = exploration_mission();
+  const std::string svg = coverage_map_svg(mission, verified(mission, "exploration"));
   ASSERT_FALSE(svg.empty());
   EXPECT_TRUE(well_formed_xml(svg));
-  // 32 x 32 cells over battery [0, 100] and slope [-45, 45].
-  EXPECT_EQ(count(svg, "<g><title>battery = "), 32u * 32u);
-  EXPECT_TRUE(has(svg, ": sand_alternative<"));
-  EXPECT_TRUE(has(svg, ": rocks_alternative<"));
-  EXPECT_TRUE(has(svg, ": gap<"));
-  EXPECT_TRUE(has(svg, "sand_alternative; two or more guards hold"));
-  EXPECT_TRUE(has(svg, "numeric cells evaluated at their centre"));
-  // battery 1 (cell 0 of 0..100 in 32 steps) and slope -43.59 (cell 0): no guard holds there.
-  EXPECT_TRUE(has(svg, "battery = 1, slope = -43.59: gap<"));
+  // slope on x with cells cut at 5 and 10, battery on y cut between 30 and 31.
+  EXPECT_TRUE(has(svg, "over slope and battery"));
+  EXPECT_TRUE(has(svg, ">5</text>"));
+  EXPECT_TRUE(has(svg, ">10</text>"));
+  // Equal neighbours merge: the overlap from slope = 5 up to 10, the gap below battery 31.
+  EXPECT_TRUE(has(svg,
+                  "<title>slope in [5, 10) &amp; battery in [31, 100]: sand_alternative; two "
+                  "or more guards hold</title>"));
+  EXPECT_TRUE(has(svg, "<title>slope in [-45, 5) &amp; battery in [0, 30]: gap (no guard holds)"));
 }
 
-TEST(CoverageMapSvg, ChoosesTheAxesThatExplainMostCells) {
-  // The shipped exploration mission: terrain decides between sand and rocks, slope bounds both,
-  // battery matters only on sand. Over slope x terrain only a few cells depend on battery.
+TEST(CoverageMapSvg, BoundaryOverlapIsALine) {
+  load::Mission mission = exploration_mission();
+  mission.selections[0].guard =
+      make_expr(ExprKind::le, {make_identifier("slope"), make_number("10")});
+  mission.selections[1].guard =
+      make_expr(ExprKind::ge, {make_identifier("slope"), make_number("10")});
+  const auto coverage = verified(mission, "exploration");
+  EXPECT_EQ(coverage.overlap_share.text, "0");
+  const std::string svg = coverage_map_svg(mission, coverage);
+  // slope = 10 has width 0: drawn as a line, not hidden.
+  EXPECT_TRUE(
+      has(svg, "<title>slope = 10: sand_alternative; two or more guards hold</title></line>"))
+      << svg;
+}
+
+TEST(CoverageMapSvg, OnePanelPerEnumValue) {
   load::Mission mission = exploration_mission();
   fretish::Variable terrain = variable("terrain", fretish::VarType::enumeration);
   terrain.enum_values = {"sand", "rocks", "unknown"};
   mission.domain.variables.push_back(terrain);
-  auto is = [](const char* literal) {
-    return make_expr(ExprKind::eq, {make_identifier("terrain"), make_identifier(literal)});
-  };
   mission.selections[0].guard =
       make_expr(ExprKind::logical_and,
-                {is("sand"), make_expr(ExprKind::le, {make_identifier("slope"), make_number("15")}),
-                 make_expr(ExprKind::ge, {make_identifier("battery"), make_number("40")})});
-  mission.selections[1].guard = make_expr(
-      ExprKind::logical_or,
-      {is("rocks"), make_expr(ExprKind::gt, {make_identifier("slope"), make_number("15")})});
-  const std::string svg = coverage_map_svg(mission, exploration_coverage());
-  ASSERT_FALSE(svg.empty());
-  EXPECT_TRUE(has(svg, "<title>Selected alternative of exploration over slope and terrain</title>"))
-      << svg.substr(0, 400);
-  EXPECT_TRUE(has(svg,
-                  "slope = -1.406, terrain = sand: sand_alternative or gap (depends on the "
-                  "other variables)"));
-  EXPECT_TRUE(has(svg, "slope = -1.406, terrain = rocks: rocks_alternative<"));
-  EXPECT_TRUE(has(svg, "slope = 43.59, terrain = sand: rocks_alternative<"));
+                {make_expr(ExprKind::eq, {make_identifier("terrain"), make_identifier("sand")}),
+                 mission.selections[0].guard});
+  const std::string svg = coverage_map_svg(mission, verified(mission, "exploration"));
+  EXPECT_TRUE(has(svg, "one panel per value of terrain"));
+  for (const char* panel :
+       {">terrain = sand</text>", ">terrain = rocks</text>", ">terrain = unknown</text>"})
+    EXPECT_TRUE(has(svg, panel)) << panel;
+  EXPECT_TRUE(has(svg, "&amp; terrain = rocks: gap (no guard holds)"));
 }
 
-TEST(CoverageMapSvg, NeedsTwoVariables) {
+TEST(CoverageMapSvg, TinyGapIsWidenedAndLabelledWithItsExactShare) {
+  load::Mission mission = exploration_mission();
+  mission.selections[0].guard =
+      make_expr(ExprKind::lt, {make_identifier("slope"), make_number("44.991")});
+  mission.selections[1].guard =
+      make_expr(ExprKind::ge, {make_identifier("battery"), make_number("200")});
+  const auto coverage = verified(mission, "exploration");
+  EXPECT_EQ(coverage.gap_share.text, "1/10000");
+  const std::string svg = coverage_map_svg(mission, coverage);
+  EXPECT_TRUE(has(svg, ">gap &lt;0.1% (1/10000)</text>")) << svg;
+}
+
+TEST(CoverageMapSvg, OneVariableGivesAStrip) {
   load::Mission mission = msl_mission(false);
   mission.selections.pop_back();
-  EXPECT_EQ(coverage_map_svg(mission, testing::failing_input().coverage[0]), "");
+  const std::string svg = coverage_map_svg(mission, verified(mission, "navigation"));
+  EXPECT_TRUE(has(svg, "<title>Selected alternative of navigation over OnDust</title>"));
 }
 
 }  // namespace

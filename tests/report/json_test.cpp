@@ -123,14 +123,33 @@ TEST(JsonReport, CoverageFields) {
   const auto& navigation = doc["coverage"][0];
   std::vector<std::string> keys;
   for (const auto& [key, value] : navigation.items()) keys.push_back(key);
-  EXPECT_EQ(keys, (std::vector<std::string>{"adaptable", "states", "counted", "alternatives",
-                                            "gap_states", "overlap_states", "gap_region"}));
+  EXPECT_EQ(keys,
+            (std::vector<std::string>{
+                "adaptable", "states", "counted", "measured", "measure", "measure_exact",
+                "alternatives", "gap_states", "overlap_states", "gap_share", "gap_share_exact",
+                "overlap_share", "overlap_share_exact", "regions", "gap_region"}));
   EXPECT_EQ(navigation["adaptable"], "navigation");
   EXPECT_EQ(navigation["states"], 4);
   EXPECT_EQ(navigation["counted"], true);
-  EXPECT_EQ(navigation["alternatives"][0],
-            (ordered_json{
-                {"name", "on_dust"}, {"requirement", "Req1"}, {"states", 2}, {"reachable", true}}));
+  EXPECT_EQ(navigation["measured"], true);
+  EXPECT_EQ(navigation["measure"], 4.0);
+  EXPECT_EQ(navigation["alternatives"][0], (ordered_json{{"name", "on_dust"},
+                                                         {"requirement", "Req1"},
+                                                         {"states", 2},
+                                                         {"reachable", true},
+                                                         {"measure", 2.0},
+                                                         {"share", 0.5},
+                                                         {"share_exact", "1/2"}}));
+  EXPECT_EQ(navigation["gap_share"], 0.25);
+  EXPECT_EQ(navigation["overlap_share_exact"], "1/4");
+  const auto& gap = navigation["regions"]["gap"];
+  ASSERT_EQ(gap.size(), 1u);
+  EXPECT_EQ(gap[0]["text"], "!OnDust & !OnRocks");
+  EXPECT_EQ(gap[0]["requirements"], (ordered_json{"Req1", "Req2"}));
+  EXPECT_EQ(gap[0]["constraints"][0],
+            (ordered_json{{"variable", "OnDust"}, {"values", {"false"}}, {"text", "!OnDust"}}));
+  EXPECT_EQ(gap[0]["share_exact"], "1/4");
+  EXPECT_EQ(navigation["regions"]["overlap"][0]["text"], "OnDust & OnRocks");
   EXPECT_EQ(navigation["gap_states"], 1);
   EXPECT_EQ(navigation["overlap_states"], 1);
   EXPECT_EQ(navigation["gap_region"], (ordered_json{"!OnDust & !OnRocks"}));
@@ -139,6 +158,12 @@ TEST(JsonReport, CoverageFields) {
   EXPECT_EQ(arm["counted"], false);
   EXPECT_EQ(arm["not_counted_reason"], "slope is a real variable");
   EXPECT_EQ(arm["alternatives"][1]["reachable"], false);
+  // Not measured and not bounded: no share at all, rather than a wrong one.
+  EXPECT_EQ(arm["measured"], false);
+  EXPECT_TRUE(arm["alternatives"][0]["share"].is_null());
+  EXPECT_TRUE(arm["gap_share"].is_null());
+  EXPECT_FALSE(arm.contains("gap_share_bounds"));
+  EXPECT_TRUE(arm["regions"]["gap"].empty());
   EXPECT_FALSE(arm.contains("gap_region"));
 }
 

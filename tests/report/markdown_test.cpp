@@ -54,7 +54,12 @@ TEST(MarkdownReport, CoverageTables) {
   EXPECT_TRUE(has(text, "| *gap: none selected* | | 1 | 25.0% |\n"));
   EXPECT_TRUE(has(text, "Gap: 1 of 4 states (25.0%) select no alternative"));
   EXPECT_TRUE(has(text, "Overlap: 1 of 4 states (25.0%) are claimed by two or more guards."));
-  EXPECT_TRUE(has(text, "- `!OnDust & !OnRocks`\n"));
+  // The decision table: the requirements, then the gap and overlap regions.
+  EXPECT_TRUE(has(text, "| # | OnDust | OnRocks | selects | share |\n")) << text;
+  EXPECT_TRUE(has(text, "| 1 Req1 | true | - | on\\_dust | 50.0% |\n"));
+  EXPECT_TRUE(has(text, "| **gap** Req1 Req2 | false | false | none: the node fails | 25.0% |\n"));
+  EXPECT_TRUE(
+      has(text, "| **overlap** Req1 Req2 | true | true | the first in priority order | 25.0% |\n"));
   EXPECT_TRUE(has(text, "### Coverage of `arm`\n\nNot counted: slope is a real variable."));
   EXPECT_TRUE(has(text, "| retract | Arm2 | **no** |"));
 }
