@@ -131,8 +131,13 @@ void load_domain(Mission& m, const fs::path& path) {
   const std::string shown = display_path(path, m.dir);
   auto text = read_or_report(path, shown, m.findings);
   if (!text) return;
-  m.has_domain_file = true;
+  const std::size_t first = m.findings.size();
   fretish::Domain declared = fretish::parse_domain_file(*text, shown, m.findings);
+  // A domain.fret declares the vocabulary when it declares a variable, or when a line of it
+  // does not parse (that line may be a declaration); one with only assumptions does not.
+  for (std::size_t k = first; k < m.findings.size(); ++k)
+    m.has_domain_file |= m.findings[k].check == "fretish-syntax";
+  m.has_domain_file |= !declared.variables.empty();
   // Declarations from a FRET export (already in m.domain) come first; domain.fret adds to them.
   for (auto& v : declared.variables) {
     if (m.domain.find(v.name) == nullptr) m.domain.variables.push_back(std::move(v));

@@ -73,7 +73,9 @@ struct Mission {
   // Everything the loader found wrong (syntax, references, structure, types).
   std::vector<Finding> findings;
 
-  bool has_domain_file = false;      // a domain.fret was read (the mission's or an uplink's)
+  // A domain.fret (the mission's or an uplink's) declares variables, or has a line that does
+  // not parse: the mission declares its vocabulary.
+  bool has_domain_file = false;
   std::set<std::string> undeclared;  // names reported as ref-undeclared: never inferred
   // Adaptable nodes whose guard checks a broken input makes meaningless, each with the reason
   // ("requirements.fret:3 does not parse"): verify reports each once as not verified instead

@@ -214,10 +214,26 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
   std::vector<std::string> candidates = names;
   for (const auto& v : m.domain.variables)
     if (v.declared) candidates.push_back(v.name);
+  // Names of one numbered series (Zone1, Zone2: equal once digits are dropped) are never each
+  // other's typos, so only names of different series are compared. The comparisons are bounded
+  // so that a generated mission with thousands of unrelated names stays fast.
+  std::map<std::string, std::vector<std::string>> series;
+  for (const auto& c : candidates) series[without_digits(c)].push_back(c);
+  constexpr std::size_t kMaxComparisons = 4'000'000;
+  std::size_t comparisons = 0;
   std::set<std::pair<std::string, std::string>> reported;
   for (const auto& name : names) {
-    for (const auto& other : closest_names(name, candidates)) {
-      if (without_digits(name) == without_digits(other)) continue;  // Zone1, Zone2: a series
+    const std::string own = without_digits(name);
+    std::vector<std::string> others;
+    for (const auto& [skeleton, members] : series) {
+      if (skeleton == own) continue;
+      const auto size_gap = [&](const std::string& c) {
+        return c.size() > name.size() ? c.size() - name.size() : name.size() - c.size();
+      };
+      for (const auto& c : members)
+        if (size_gap(c) <= 2 && comparisons++ < kMaxComparisons) others.push_back(c);
+    }
+    for (const auto& other : closest_names(name, others)) {
       const auto pair = std::minmax(name, other);
       if (!reported.insert(pair).second) continue;
       // Reported at the likelier typo: the rarer name, else the one used later.

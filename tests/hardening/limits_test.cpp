@@ -260,6 +260,8 @@ TEST(Limits, GuardWithTenThousandAtoms) {
   for (const char* op : {"|", "&"}) {
     SCOPED_TRACE(op);
     auto files = good_mission_files();
+    // The mission declares its vocabulary, so the guard's 10,000 conditions are declared too.
+    files["domain.fret"] += "boolean " + atoms(",", 10000) + "\n";
     files["requirements.fret"] =
         requirement_with_guard(atoms(op, 10000)) +
         "Req2: In navigation if OnRocks Mission shall satisfy selected_alt = on_rocks\n"
