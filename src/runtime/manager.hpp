@@ -18,6 +18,8 @@ struct ManagerOptions {
   gate::Options gate;          // also chooses the selector style of every compiled version
   std::int64_t max_ticks = 0;  // 0: the scenario's
   bool trace_nodes = false;    // --trace-level nodes: every node status change, condition read
+  // --smart-selection: EngineOptions::smart_selection (not BT.CPP's tick; same selections).
+  bool smart_selection = false;
 };
 
 struct ManagerRun {
@@ -29,6 +31,7 @@ struct ManagerRun {
   std::optional<TickError> error;
   std::vector<TraceEvent> trace;
   std::vector<std::string> accepted_uplinks;
+  std::uint64_t condition_ticks = 0;  // ConditionCounter over the whole run
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's
