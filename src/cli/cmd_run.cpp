@@ -108,12 +108,12 @@ void register_run(CLI::App& app, int& exit_code) {
       std::cout << runtime::trace_summary(run);
       if (args->stats) {
         char per_tick[32];
-        std::snprintf(per_tick, sizeof per_tick, "%.2f",
-                      run.ticks ? static_cast<double>(run.condition_ticks) /
-                                      static_cast<double>(run.ticks)
-                                : 0.0);
-        std::cout << "condition ticks: " << run.condition_ticks << " in " << run.ticks
-                  << " ticks (" << per_tick << " per tick)\n";
+        std::snprintf(
+            per_tick, sizeof per_tick, "%.2f",
+            run.ticks ? static_cast<double>(run.condition_ticks) / static_cast<double>(run.ticks)
+                      : 0.0);
+        std::cout << "condition ticks: " << run.condition_ticks << " in " << run.ticks << " ticks ("
+                  << per_tick << " per tick)\n";
       }
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));

@@ -95,8 +95,8 @@ std::uint32_t smart_start(Core& core, NodeId fallback, SmartSelector& s, bool wa
   return s.running;
 }
 
-void smart_done(Core& core, SmartSelector& s, NodeStatus result, std::uint32_t branch,
-                bool clean, Reads&& reads_before) {
+void smart_done(Core& core, SmartSelector& s, NodeStatus result, std::uint32_t branch, bool clean,
+                Reads&& reads_before) {
   core.smart->skip_guards_of = kNoNode;
   if (result != NodeStatus::running || !clean) return;
   // The guards of later branches saw the state the earlier bodies left; a body that ran and

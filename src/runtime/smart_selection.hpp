@@ -50,8 +50,8 @@ std::uint32_t smart_start(Core& core, NodeId fallback, SmartSelector& s, bool wa
                           Reads& reads_now);
 // After the fallback's tick: keeps the snapshot when the tick ended RUNNING in `branch`, with
 // every branch before it failed in a guard and no guard read changed during the tick.
-void smart_done(Core& core, SmartSelector& s, NodeStatus result, std::uint32_t branch,
-                bool clean, Reads&& reads_before);
+void smart_done(Core& core, SmartSelector& s, NodeStatus result, std::uint32_t branch, bool clean,
+                Reads&& reads_before);
 // For a ReactiveSequence: the child its tick starts at (its last one when the fallback vouched
 // for its guards in this tick).
 std::uint32_t smart_sequence_start(Core& core, NodeId sequence);

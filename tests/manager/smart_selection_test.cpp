@@ -19,8 +19,7 @@ struct Outcome {
   std::uint64_t conditions = 0;
 };
 
-Outcome run(const std::filesystem::path& dir, Scenario scenario, SelectionStyle style,
-            bool smart) {
+Outcome run(const std::filesystem::path& dir, Scenario scenario, SelectionStyle style, bool smart) {
   ManagerOptions options;
   options.gate.compile.selection = style;
   options.smart_selection = smart;
