@@ -2,6 +2,7 @@
 // and end with the same verdict as BT.CPP's tick; only condition ticks may drop.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "runtime/manager.hpp"
@@ -45,6 +46,13 @@ std::pair<std::uint64_t, std::uint64_t> compare(const std::filesystem::path& dir
   EXPECT_EQ(plain.verdict, smart.verdict) << label;
   EXPECT_LE(smart.conditions, plain.conditions) << label;
   return {plain.conditions, smart.conditions};
+}
+
+// Events by tick, as load_scenario leaves them.
+void order_events(Scenario& s) {
+  std::stable_sort(s.events.begin(), s.events.end(),
+                   [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
+  for (int i = 0; i < static_cast<int>(s.events.size()); ++i) s.events[i].index = i;
 }
 
 std::filesystem::path curiosity() {
@@ -98,9 +106,7 @@ TEST(SmartSelection, RandomTerrainScenariosSelectTheSame) {
       e.uplink = "uplinks/on_mud";
       s.events.push_back(std::move(e));
     }
-    std::stable_sort(s.events.begin(), s.events.end(),
-                     [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
-    for (int i = 0; i < static_cast<int>(s.events.size()); ++i) s.events[i].index = i;
+    order_events(s);
     const auto [p, q] =
         compare(curiosity(), s, SelectionStyle::reactive, "round " + std::to_string(round));
     plain += p;
@@ -126,9 +132,7 @@ TEST(SmartSelection, RandomBatteryScenariosSelectTheSame) {
       e.set.emplace_back("battery", ScriptValue::of_int(static_cast<std::int64_t>(rng() % 80)));
       s.events.push_back(std::move(e));
     }
-    std::stable_sort(s.events.begin(), s.events.end(),
-                     [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
-    for (int i = 0; i < static_cast<int>(s.events.size()); ++i) s.events[i].index = i;
+    order_events(s);
     const auto [p, q] =
         compare(mission.dir(), s, SelectionStyle::reactive, "round " + std::to_string(round));
     plain += p;
