@@ -17,14 +17,14 @@ const char* kSelection =
     "  <ReactiveSequence name=\"Default\"><Action ID=\"Hold\"/></ReactiveSequence>"
     "</ReactiveFallback>";
 
-struct Run {
+struct Trial {
   std::uint64_t conditions = 0;
   std::string events;
   std::vector<NodeStatus> results;
 };
 
 // Five ticks; before tick 4 the reading becomes `later`.
-Run run(const std::string& guard, bool smart, std::int64_t later) {
+Trial run(const std::string& guard, bool smart, std::int64_t later) {
   std::string body = kSelection;
   body.replace(body.find("%GUARD%"), 7, guard);
   ScriptedWorld world;
@@ -37,7 +37,7 @@ Run run(const std::string& guard, bool smart, std::int64_t later) {
   engine.blackboard().set("n", ScriptValue::of_int(0));
   ConditionCounter counter(engine);
   engine.add_observer(&counter);
-  Run out;
+  Trial out;
   for (int t = 1; t <= 5; ++t) {
     if (t == 4) engine.blackboard().set("battery", ScriptValue::of_int(later));
     out.results.push_back(engine.tick());
@@ -48,8 +48,8 @@ Run run(const std::string& guard, bool smart, std::int64_t later) {
 }
 
 TEST(SmartSelection, GuardsAreSkippedWhileTheirReadingDoesNotChange) {
-  const Run plain = run("battery < 20", false, 10);
-  const Run smart = run("battery < 20", true, 10);
+  const Trial plain = run("battery < 20", false, 10);
+  const Trial smart = run("battery < 20", true, 10);
   EXPECT_EQ(plain.events, smart.events);
   EXPECT_EQ(plain.results, smart.results);
   EXPECT_EQ(plain.conditions, 5u);
@@ -57,8 +57,8 @@ TEST(SmartSelection, GuardsAreSkippedWhileTheirReadingDoesNotChange) {
 }
 
 TEST(SmartSelection, AChangedReadingRerunsTheGuardsAndPreempts) {
-  const Run plain = run("battery < 20", false, 50);
-  const Run smart = run("battery < 20", true, 50);
+  const Trial plain = run("battery < 20", false, 50);
+  const Trial smart = run("battery < 20", true, 50);
   EXPECT_EQ(plain.events, smart.events);  // Drive halted at tick 4, Hold started
   EXPECT_NE(smart.events.find("~Drive Hold"), std::string::npos) << smart.events;
   EXPECT_EQ(plain.conditions, 5u);
@@ -66,8 +66,8 @@ TEST(SmartSelection, AChangedReadingRerunsTheGuardsAndPreempts) {
 }
 
 TEST(SmartSelection, AGuardThatAssignsIsNeverSkipped) {
-  const Run plain = run("n += 1; battery < 20", false, 10);
-  const Run smart = run("n += 1; battery < 20", true, 10);
+  const Trial plain = run("n += 1; battery < 20", false, 10);
+  const Trial smart = run("n += 1; battery < 20", true, 10);
   EXPECT_EQ(smart.conditions, plain.conditions);
   EXPECT_EQ(plain.events, smart.events);
 }
