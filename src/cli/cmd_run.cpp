@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -52,6 +53,7 @@ void register_run(CLI::App& app, int& exit_code) {
     std::string mission, scenario, trace, selection = "sequence", trace_level = "events";
     std::vector<std::string> uplinks;
     std::int64_t max_ticks = 0;
+    bool smart_selection = false, stats = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -72,6 +74,10 @@ void register_run(CLI::App& app, int& exit_code) {
   cmd->add_option("--max-ticks", args->max_ticks,
                   "stop after this many ticks, verdict timeout (default: the scenario's)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--smart-selection", args->smart_selection,
+                "reactive selections re-run their guards only when a variable the guards read "
+                "changed (not BT.CPP's tick; same selections, fewer condition ticks)");
+  cmd->add_flag("--stats", args->stats, "print condition ticks per mission tick");
   cmd->add_option("--trace-level", args->trace_level,
                   "events, or nodes: also every node status change and condition read")
       ->check(CLI::IsMember({"events", "nodes"}));
@@ -92,6 +98,7 @@ void register_run(CLI::App& app, int& exit_code) {
       runtime::ManagerOptions options;
       options.max_ticks = args->max_ticks;
       options.trace_nodes = args->trace_level == "nodes";
+      options.smart_selection = args->smart_selection;
       options.gate.compile.selection = args->selection == "reactive"
                                            ? compile::SelectionStyle::reactive
                                            : compile::SelectionStyle::sequence;
@@ -99,6 +106,15 @@ void register_run(CLI::App& app, int& exit_code) {
       for (const auto& [tick, package] : uplinks) manager.add_uplink(tick, package);
       runtime::ManagerRun run = manager.run();
       std::cout << runtime::trace_summary(run) << runtime::property_summary(run);
+      if (args->stats) {
+        char per_tick[32];
+        std::snprintf(
+            per_tick, sizeof per_tick, "%.2f",
+            run.ticks ? static_cast<double>(run.condition_ticks) / static_cast<double>(run.ticks)
+                      : 0.0);
+        std::cout << "condition ticks: " << run.condition_ticks << " in " << run.ticks << " ticks ("
+                  << per_tick << " per tick)\n";
+      }
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
       if (run.error) {

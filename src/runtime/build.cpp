@@ -7,6 +7,7 @@
 #include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
 #include "runtime/core.hpp"
+#include "runtime/smart_selection.hpp"
 
 namespace uabt::runtime {
 
@@ -383,6 +384,7 @@ Engine Engine::build(const bt::Document& doc, const std::string& main_tree, Worl
   auto core = std::make_unique<detail::Core>();
   core->world = &world;
   core->options = options;
+  if (options.smart_selection) core->smart = std::make_shared<detail::SmartSelection>();
   core->file = doc.file;
   for (const bt::TreeDef& tree : doc.trees) {
     auto [it, inserted] = core->defs.emplace(tree.id, std::make_shared<bt::TreeDef>(tree));

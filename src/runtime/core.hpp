@@ -93,9 +93,12 @@ struct Instance {
   std::shared_ptr<const bt::TreeDef> pending;  // a deferred swap
 };
 
+struct SmartSelection;
+
 struct Core {
   World* world = nullptr;
   EngineOptions options;
+  std::shared_ptr<SmartSelection> smart;  // EngineOptions::smart_selection (smart_selection.hpp)
 
   Blackboard bb;
   std::vector<RtNode> nodes;

@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include "runtime/core.hpp"
+#include "runtime/smart_selection.hpp"
 
 namespace uabt::runtime {
 
@@ -353,17 +354,8 @@ std::vector<NodeId> Engine::subtree_calls(std::string_view tree_id) const {
 }
 
 std::vector<std::pair<std::string, ScriptValue>> Engine::condition_reads(NodeId node) const {
-  const detail::RtNode& n = core_->nodes.at(node);
-  std::vector<std::pair<std::string, ScriptValue>> out;
-  if (n.kind == detail::Kind::world_leaf)
-    return core_->world->condition_reads(core_->leaf_context(node));
-  if (n.kind != detail::Kind::script_condition) return out;
-  const script::Program& program = core_->programs[core_->params[n.params].program];
-  for (const std::string& key : program.names()) {
-    const auto slot = core_->bb.find(scope(node), key);
-    out.emplace_back(key, slot ? core_->bb.value(*slot) : ScriptValue{});
-  }
-  return out;
+  (void)core_->nodes.at(node);  // range check
+  return detail::condition_reads(*core_, node);
 }
 
 void Engine::add_observer(Observer* observer) {

@@ -113,6 +113,12 @@ struct EngineOptions {
   int max_subtree_nesting = 64;
   // TickErrors kept; later ones are only counted (Stats::errors).
   std::size_t max_recorded_errors = 1000;
+  // Not BT.CPP: a RUNNING ReactiveFallback of guarded ReactiveSequences (the compiler's
+  // reactive selection) does not re-run its guards while none of the variables they read
+  // (condition_reads) has changed; it goes straight to the running branch. Same selections,
+  // results and actions as BT.CPP, fewer condition ticks and status changes. Assumes a
+  // condition answers from its reads only (smart_selection.hpp).
+  bool smart_selection = false;
 };
 
 // BehaviorTree.CPP 4.x tick engine over a bt::Document (DESIGN §8). Nodes live in flat

@@ -7,6 +7,7 @@
 
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
+#include "runtime/condition_count.hpp"
 #include "runtime/property_monitor.hpp"
 #include "runtime/runner.hpp"
 #include "runtime/scenario_check.hpp"
@@ -112,6 +113,7 @@ ManagerRun BehaviorTreeManager::run() {
   RunOptions run_options;
   run_options.max_ticks = options_.max_ticks;
   run_options.log_conditions = false;  // the leaf log is not kept (see the loop below)
+  run_options.engine.smart_selection = options_.smart_selection;
   std::vector<bt::NodeModel> robot_nodes;
   if (running.outcome.mission->nodes) robot_nodes = *running.outcome.mission->nodes;
   Runner runner(running.document, scenario_, run_options, robot_nodes);
@@ -168,6 +170,9 @@ ManagerRun BehaviorTreeManager::run() {
     result.trace.push_back(std::move(e));
   };
 
+  ConditionCounter conditions(runner.engine());
+  runner.engine().add_observer(&conditions);
+
   NodeTracer tracer(runner.engine(), result.trace);
   if (options_.trace_nodes) runner.engine().add_observer(&tracer);
 
@@ -194,6 +199,8 @@ ManagerRun BehaviorTreeManager::run() {
   result.guarantees_failed = properties.guarantees_failed();
   runner.engine().remove_observer(&properties);
   runner.engine().remove_observer(&selections);
+  runner.engine().remove_observer(&conditions);
+  result.condition_ticks = conditions.count();
 
   result.ticks = runner.ticks();
   result.status = runner.engine().last_result();

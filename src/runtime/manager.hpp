@@ -19,6 +19,8 @@ struct ManagerOptions {
   gate::Options gate;          // also chooses the selector style of every compiled version
   std::int64_t max_ticks = 0;  // 0: the scenario's
   bool trace_nodes = false;    // --trace-level nodes: every node status change, condition read
+  // --smart-selection: EngineOptions::smart_selection (not BT.CPP's tick; same selections).
+  bool smart_selection = false;
 };
 
 struct ManagerRun {
@@ -32,6 +34,7 @@ struct ManagerRun {
   std::vector<std::string> accepted_uplinks;
   std::vector<monitor::PropertyResult> properties;  // the mission properties' verdicts
   bool guarantees_failed = false;                   // a guarantee violated or not monitored
+  std::uint64_t condition_ticks = 0;  // ConditionCounter over the whole run
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's

@@ -297,6 +297,11 @@ std::vector<std::string> Program::names() const {
   return out;
 }
 
+bool Program::writes() const {
+  return std::any_of(nodes_.begin(), nodes_.end(),
+                     [](const Expr& e) { return e.op >= Op::assign_create; });
+}
+
 void Program::bind(Blackboard& blackboard, ScopeId scope) {
   for (Expr& e : nodes_)
     if (e.op == Op::name) e.slot = blackboard.resolve(scope, e.name);

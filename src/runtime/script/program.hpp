@@ -75,6 +75,8 @@ class Program {
   bool empty() const { return statements_.empty(); }
   // The blackboard keys the script names, in first-use order.
   std::vector<std::string> names() const;
+  // True when a statement assigns (the script may change the blackboard).
+  bool writes() const;
 
   // Resolves every name in `scope` (creating empty entries, which read as undefined).
   void bind(Blackboard& blackboard, ScopeId scope);
