@@ -462,13 +462,13 @@ bool check_by_meaning(Context& ctx, Prover& prover, const std::string& adaptable
       check_alternative_trees(ctx, adaptable, call.alternative, call.node, checked_alternatives);
     return true;
   }
-  Finding& f = ctx.report("compiled-selection-mismatch",
-                          "the selection tree '" + adaptable +
-                              "' does not select what the requirements select: in the state " +
-                              describe(meaning.witness) + " it selects " +
-                              meaning.compiled_selects + " where the requirements select " +
-                              meaning.required_selects,
-                          tree->root, path);
+  Finding& f =
+      ctx.report("compiled-selection-mismatch",
+                 "the selection tree '" + adaptable +
+                     "' does not select what the requirements select: in the state " +
+                     describe(meaning.witness) + " it selects " + meaning.compiled_selects +
+                     " where the requirements select " + meaning.required_selects,
+                 tree->root, path);
   f.adaptable = adaptable;
   f.witness = meaning.witness;
   if (!meaning.required_by.empty()) f.requirements = {meaning.required_by};

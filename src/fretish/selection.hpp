@@ -13,11 +13,11 @@ struct SelectionRequirement {
   std::string id;
   std::string adaptable;
   std::string alternative;
-  ExprPtr guard;               // nullptr: the node's default
-  SourceLocation location;     // the requirement's start
+  ExprPtr guard;                        // nullptr: the node's default
+  SourceLocation location;              // the requirement's start
   SourceLocation guard_location;        // first condition, or the requirement's start
   SourceLocation alternative_location;  // the alternative's name in the response
-  int source_index = 0;        // position in the requirement set (priority order)
+  int source_index = 0;                 // position in the requirement set (priority order)
 };
 
 struct Classification {

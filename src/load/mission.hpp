@@ -64,7 +64,7 @@ struct Mission {
   std::vector<fretish::Requirement> requirements;         // every parsed requirement
   std::vector<fretish::SelectionRequirement> selections;  // the selection subset, file order
   std::vector<fretish::Requirement> properties;  // mission properties (DESIGN §10), file order
-  fretish::Domain domain;                                 // declared + inferred booleans
+  fretish::Domain domain;                        // declared + inferred booleans
 
   std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present
   std::vector<std::string> uplinks;  // uplink packages merged on top, in order (displayed)

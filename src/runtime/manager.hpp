@@ -34,7 +34,7 @@ struct ManagerRun {
   std::vector<std::string> accepted_uplinks;
   std::vector<monitor::PropertyResult> properties;  // the mission properties' verdicts
   bool guarantees_failed = false;                   // a guarantee violated or not monitored
-  std::uint64_t condition_ticks = 0;  // ConditionCounter over the whole run
+  std::uint64_t condition_ticks = 0;                // ConditionCounter over the whole run
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's

@@ -8,10 +8,10 @@ namespace {
 
 fretish::Domain exploration_domain() {
   fretish::Domain d;
-  fretish::Variable battery{"battery", fretish::VarType::integer, "0", "100", {}, {}, true};
-  fretish::Variable slope{"slope", fretish::VarType::real, "-45", "45", {}, {}, true};
-  fretish::Variable terrain{"terrain", fretish::VarType::enumeration, "", "", {"sand", "rocks"}, {},
-                            true};
+  fretish::Variable battery{"battery", fretish::VarType::integer, "0", "100", {}, {}, true, ""};
+  fretish::Variable slope{"slope", fretish::VarType::real, "-45", "45", {}, {}, true, ""};
+  fretish::Variable terrain{
+      "terrain", fretish::VarType::enumeration, "", "", {"sand", "rocks"}, {}, true, ""};
   d.variables = {battery, slope, terrain};
   return d;
 }
