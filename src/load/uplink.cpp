@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/files.hpp"
+#include "base/suggest.hpp"
 #include "fretish/json_positions.hpp"
 
 namespace uabt::load {
@@ -134,21 +135,6 @@ std::string adaptable_of(const fretish::Requirement& r) {
   return r.scope ? r.scope->mode : std::string();
 }
 
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 std::vector<std::string> closest_names(const std::string& name,
@@ -157,7 +143,7 @@ std::vector<std::string> closest_names(const std::string& name,
   std::vector<std::pair<std::size_t, std::string>> scored;
   for (const auto& c : candidates) {
     if (c == name) continue;
-    const std::size_t d = edit_distance(name, c);
+    const std::size_t d = static_cast<std::size_t>(uabt::edit_distance(name, c));
     if (d <= limit) scored.emplace_back(d, c);
   }
   std::sort(scored.begin(), scored.end());

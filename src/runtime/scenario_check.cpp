@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "base/suggest.hpp"
 #include "bt/node_kinds.hpp"
 #include "runtime/script/program.hpp"
 
@@ -11,28 +12,13 @@ namespace uabt::runtime {
 
 namespace {
 
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 // " (did you mean 'x'?)" for the closest names within two edits (a third of the name at most).
 std::string did_you_mean(const std::string& name, const std::set<std::string>& known) {
   const std::size_t limit = std::min<std::size_t>(2, std::max<std::size_t>(1, name.size() / 3));
   std::size_t best = limit + 1;
   std::vector<std::string> closest;
   for (const std::string& k : known) {
-    const std::size_t d = edit_distance(name, k);
+    const std::size_t d = static_cast<std::size_t>(uabt::edit_distance(name, k));
     if (d < best) {
       best = d;
       closest = {k};
