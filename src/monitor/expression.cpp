@@ -1,0 +1,304 @@
+#include "monitor/expression.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace uabt::monitor {
+
+int Symbols::intern(const std::string& name) {
+  const auto [it, inserted] = ids_.emplace(name, static_cast<int>(names_.size()));
+  if (inserted) names_.push_back(name);
+  return it->second;
+}
+
+std::optional<int> Symbols::find(const std::string& name) const {
+  const auto it = ids_.find(name);
+  if (it == ids_.end()) return std::nullopt;
+  return it->second;
+}
+
+int Variables::slot(const std::string& name) {
+  const auto [it, inserted] = slots_.emplace(name, static_cast<int>(names_.size()));
+  if (inserted) names_.push_back(name);
+  return it->second;
+}
+
+std::optional<int> Variables::find(const std::string& name) const {
+  const auto it = slots_.find(name);
+  if (it == slots_.end()) return std::nullopt;
+  return it->second;
+}
+
+namespace {
+
+using fretish::ExprKind;
+
+struct Function {
+  const char* name;
+  int arity;
+};
+
+// FRET's built-in functions (its LTL.g4 / SMV translation), by the name FRETISH writes.
+std::optional<int> function_arity(const std::string& name) {
+  static const Function functions[] = {
+      {"absReal", 1}, {"absInt", 1}, {"minReal", 2}, {"minInt", 2}, {"maxReal", 2},
+      {"maxInt", 2},  {"ite", 3},    {"preBool", 2}, {"preInt", 2}, {"preReal", 2}};
+  for (const Function& f : functions)
+    if (name == f.name) return f.arity;
+  return std::nullopt;
+}
+
+const char* kind_name(Val::Kind k) {
+  switch (k) {
+    case Val::Kind::missing: return "no value";
+    case Val::Kind::boolean: return "a boolean";
+    case Val::Kind::number: return "a number";
+    case Val::Kind::symbol: return "a name";
+  }
+  return "no value";
+}
+
+}  // namespace
+
+std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Expr& e,
+                                                              const Resolver& resolve,
+                                                              std::string& error) {
+  CompiledExpression c;
+  c.root_ = c.build(e, resolve, error);
+  if (c.root_ < 0) return std::nullopt;
+  return c;
+}
+
+int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
+                              std::string& error) {
+  N n;
+  switch (e.kind) {
+    case ExprKind::bool_literal: n.constant = Val::of_bool(e.bool_value); break;
+    case ExprKind::number: n.constant = Val::of_number(std::strtod(e.text.c_str(), nullptr)); break;
+    case ExprKind::identifier: {
+      const Resolved r = resolve(e.text);
+      if (r.kind == Resolved::Kind::unknown) {
+        error = "'" + e.text + "' is not a variable of the trace";
+        return -1;
+      }
+      if (r.kind == Resolved::Kind::literal) {
+        n.constant = Val::of_symbol(r.id);
+      } else {
+        n.kind = K::variable;
+        n.slot = r.id;
+        bool known = false;
+        for (int v : variables_) known = known || v == r.id;
+        if (!known) variables_.push_back(r.id);
+      }
+      break;
+    }
+    case ExprKind::call: {
+      const auto arity = function_arity(e.text);
+      if (!arity) {
+        error = "function '" + e.text + "' has no meaning on a trace";
+        return -1;
+      }
+      if (static_cast<int>(e.args.size()) != *arity) {
+        error = "function '" + e.text + "' takes " + std::to_string(*arity) + " arguments";
+        return -1;
+      }
+      const std::string& f = e.text;
+      n.kind = f.rfind("abs", 0) == 0   ? K::abs
+               : f.rfind("min", 0) == 0 ? K::min
+               : f.rfind("max", 0) == 0 ? K::max
+               : f == "ite"             ? K::ite
+                                        : K::previous;
+      break;
+    }
+    case ExprKind::logical_not: n.kind = K::logical_not; break;
+    case ExprKind::logical_and: n.kind = K::logical_and; break;
+    case ExprKind::logical_or: n.kind = K::logical_or; break;
+    case ExprKind::logical_xor: n.kind = K::logical_xor; break;
+    case ExprKind::implies: n.kind = K::implies; break;
+    case ExprKind::iff: n.kind = K::iff; break;
+    case ExprKind::eq: n.kind = K::eq; break;
+    case ExprKind::ne: n.kind = K::ne; break;
+    case ExprKind::lt: n.kind = K::lt; break;
+    case ExprKind::le: n.kind = K::le; break;
+    case ExprKind::gt: n.kind = K::gt; break;
+    case ExprKind::ge: n.kind = K::ge; break;
+    case ExprKind::add: n.kind = K::add; break;
+    case ExprKind::sub: n.kind = K::sub; break;
+    case ExprKind::mul: n.kind = K::mul; break;
+    case ExprKind::div: n.kind = K::div; break;
+    case ExprKind::mod: n.kind = K::mod; break;
+    case ExprKind::pow: n.kind = K::pow; break;
+    case ExprKind::negate: n.kind = K::negate; break;
+  }
+  for (const auto& arg : e.args) {
+    const int a = build(*arg, resolve, error);
+    if (a < 0) return -1;
+    n.args.push_back(a);
+  }
+  if (n.kind == K::previous) {
+    n.state = static_cast<int>(previous_.size());
+    previous_.push_back({});
+  }
+  nodes_.push_back(std::move(n));
+  const int id = static_cast<int>(nodes_.size()) - 1;
+  if (nodes_[static_cast<std::size_t>(id)].kind == K::previous) previous_nodes_.push_back(id);
+  return id;
+}
+
+Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& error) {
+  const Val v = eval(root_, frame, error);
+  // pre*: read this tick's argument values first, then store them all, so nested ones and
+  // short-circuited branches see the same previous values.
+  std::vector<Val> now;
+  now.reserve(previous_nodes_.size());
+  for (int p : previous_nodes_) {
+    std::string ignored;
+    now.push_back(eval(nodes_[static_cast<std::size_t>(p)].args[1], frame, ignored));
+  }
+  for (std::size_t i = 0; i < previous_nodes_.size(); ++i) {
+    Previous& state = previous_[static_cast<std::size_t>(
+        nodes_[static_cast<std::size_t>(previous_nodes_[i])].state)];
+    state.seen = true;
+    state.value = now[i];
+  }
+  return v;
+}
+
+bool CompiledExpression::evaluate_bool(const std::vector<Val>& frame, std::string& error) {
+  const Val v = evaluate(frame, error);
+  if (!error.empty()) return false;
+  if (v.kind != Val::Kind::boolean) {
+    error = std::string("the expression is ") + kind_name(v.kind) + ", not a boolean";
+    return false;
+  }
+  return v.number != 0;
+}
+
+Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string& error) {
+  const N& n = nodes_[static_cast<std::size_t>(id)];
+  const auto arg = [&](std::size_t i) { return eval(n.args[i], frame, error); };
+  const auto boolean = [&](std::size_t i) -> std::optional<bool> {
+    const Val v = arg(i);
+    if (!error.empty()) return std::nullopt;
+    if (v.kind != Val::Kind::boolean) {
+      error = std::string("a boolean is needed, got ") + kind_name(v.kind);
+      return std::nullopt;
+    }
+    return v.number != 0;
+  };
+  const auto number = [&](std::size_t i) -> std::optional<double> {
+    const Val v = arg(i);
+    if (!error.empty()) return std::nullopt;
+    if (v.kind != Val::Kind::number) {
+      error = std::string("a number is needed, got ") + kind_name(v.kind);
+      return std::nullopt;
+    }
+    return v.number;
+  };
+  switch (n.kind) {
+    case K::constant: return n.constant;
+    case K::variable: {
+      const Val& v = frame[static_cast<std::size_t>(n.slot)];
+      if (v.kind == Val::Kind::missing) error = "a variable it reads has no value yet";
+      return v;
+    }
+    case K::logical_not: {
+      const auto a = boolean(0);
+      return a ? Val::of_bool(!*a) : Val{};
+    }
+    case K::logical_and:
+    case K::logical_or: {
+      const bool is_and = n.kind == K::logical_and;
+      for (std::size_t i = 0; i < n.args.size(); ++i) {
+        const auto a = boolean(i);
+        if (!a) return {};
+        if (*a != is_and) return Val::of_bool(!is_and);
+      }
+      return Val::of_bool(is_and);
+    }
+    case K::implies: {
+      const auto a = boolean(0);
+      if (!a) return {};
+      if (!*a) return Val::of_bool(true);
+      const auto b = boolean(1);
+      return b ? Val::of_bool(*b) : Val{};
+    }
+    case K::logical_xor:
+    case K::iff: {
+      const auto a = boolean(0);
+      const auto b = a ? boolean(1) : std::nullopt;
+      if (!b) return {};
+      return Val::of_bool(n.kind == K::iff ? *a == *b : *a != *b);
+    }
+    case K::eq:
+    case K::ne: {
+      const Val a = arg(0);
+      const Val b = error.empty() ? arg(1) : Val{};
+      if (!error.empty()) return {};
+      if (a.kind != b.kind) {
+        error = std::string("compares ") + kind_name(a.kind) + " with " + kind_name(b.kind);
+        return {};
+      }
+      const bool same = a.kind == Val::Kind::symbol ? a.symbol == b.symbol : a.number == b.number;
+      return Val::of_bool(n.kind == K::eq ? same : !same);
+    }
+    case K::lt:
+    case K::le:
+    case K::gt:
+    case K::ge: {
+      const auto a = number(0);
+      const auto b = a ? number(1) : std::nullopt;
+      if (!b) return {};
+      switch (n.kind) {
+        case K::lt: return Val::of_bool(*a < *b);
+        case K::le: return Val::of_bool(*a <= *b);
+        case K::gt: return Val::of_bool(*a > *b);
+        default: return Val::of_bool(*a >= *b);
+      }
+    }
+    case K::negate:
+    case K::abs: {
+      const auto a = number(0);
+      if (!a) return {};
+      return Val::of_number(n.kind == K::negate ? -*a : std::fabs(*a));
+    }
+    case K::add:
+    case K::sub:
+    case K::mul:
+    case K::div:
+    case K::mod:
+    case K::pow:
+    case K::min:
+    case K::max: {
+      const auto a = number(0);
+      const auto b = a ? number(1) : std::nullopt;
+      if (!b) return {};
+      switch (n.kind) {
+        case K::add: return Val::of_number(*a + *b);
+        case K::sub: return Val::of_number(*a - *b);
+        case K::mul: return Val::of_number(*a * *b);
+        case K::pow: return Val::of_number(std::pow(*a, *b));
+        case K::min: return Val::of_number(std::fmin(*a, *b));
+        case K::max: return Val::of_number(std::fmax(*a, *b));
+        default: break;
+      }
+      if (*b == 0) {
+        error = "division by zero";
+        return {};
+      }
+      return Val::of_number(n.kind == K::div ? *a / *b : std::fmod(*a, *b));
+    }
+    case K::ite: {
+      const auto c = boolean(0);
+      if (!c) return {};
+      return arg(*c ? 1 : 2);
+    }
+    case K::previous: {
+      const Previous& p = previous_[static_cast<std::size_t>(n.state)];
+      return p.seen ? p.value : arg(0);
+    }
+  }
+  return {};
+}
+
+}  // namespace uabt::monitor

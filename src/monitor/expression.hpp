@@ -1,0 +1,98 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "fretish/expr.hpp"
+
+namespace uabt::monitor {
+
+// The value of one variable at one tick. Enum literals and other names are interned symbols.
+struct Val {
+  enum class Kind : std::uint8_t { missing, boolean, number, symbol };
+  Kind kind = Kind::missing;
+  double number = 0;  // booleans as 0/1
+  int symbol = -1;
+
+  static Val of_bool(bool b) { return {Kind::boolean, b ? 1.0 : 0.0, -1}; }
+  static Val of_number(double x) { return {Kind::number, x, -1}; }
+  static Val of_symbol(int s) { return {Kind::symbol, 0, s}; }
+};
+
+class Symbols {
+ public:
+  int intern(const std::string& name);
+  const std::string& name(int id) const { return names_[static_cast<std::size_t>(id)]; }
+  std::optional<int> find(const std::string& name) const;
+
+ private:
+  std::unordered_map<std::string, int> ids_;
+  std::vector<std::string> names_;
+};
+
+// Where the variables of a trace live: one slot a name, shared by every monitor of a run.
+class Variables {
+ public:
+  int slot(const std::string& name);  // adds the name when new
+  std::optional<int> find(const std::string& name) const;
+  const std::string& name(int slot) const { return names_[static_cast<std::size_t>(slot)]; }
+  std::size_t size() const { return names_.size(); }
+
+ private:
+  std::unordered_map<std::string, int> slots_;
+  std::vector<std::string> names_;
+};
+
+// How an identifier of a requirement is read: a variable slot or a literal symbol.
+struct Resolved {
+  enum class Kind { variable, literal, unknown } kind = Kind::unknown;
+  int id = -1;
+};
+using Resolver = std::function<Resolved(const std::string&)>;
+
+// A FRETISH expression compiled for evaluation once per tick: FRET's operators, arithmetic,
+// absReal/absInt, minReal/maxReal/minInt/maxInt, ite, and preBool/preInt/preReal (the value at
+// the previous tick, or the first argument at the first tick).
+class CompiledExpression {
+ public:
+  // Fails (returns nullopt, with `error` set) for an unknown identifier or function.
+  static std::optional<CompiledExpression> compile(const fretish::Expr& e, const Resolver& resolve,
+                                                   std::string& error);
+
+  // Evaluates the expression at this tick; `error` is set on a type error (then the value is
+  // missing). Call exactly once per tick: pre* keep the previous tick's value.
+  Val evaluate(const std::vector<Val>& frame, std::string& error);
+  bool evaluate_bool(const std::vector<Val>& frame, std::string& error);
+
+  const std::vector<int>& variables() const { return variables_; }  // slots read
+
+ private:
+  enum class K : std::uint8_t {
+    constant, variable, logical_not, logical_and, logical_or, logical_xor, implies, iff, eq, ne,
+    lt, le, gt, ge, add, sub, mul, div, mod, pow, negate, abs, min, max, ite, previous
+  };
+  struct N {
+    K kind = K::constant;
+    std::vector<int> args;
+    Val constant;
+    int slot = -1;
+    int state = -1;  // previous: index into previous_
+  };
+  int build(const fretish::Expr& e, const Resolver& resolve, std::string& error);
+  Val eval(int node, const std::vector<Val>& frame, std::string& error);
+
+  std::vector<N> nodes_;
+  int root_ = -1;
+  std::vector<int> variables_;
+  struct Previous {
+    bool seen = false;
+    Val value;
+  };
+  std::vector<Previous> previous_;
+  std::vector<int> previous_nodes_;  // pre* nodes, outermost last
+};
+
+}  // namespace uabt::monitor

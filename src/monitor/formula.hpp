@@ -1,0 +1,85 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <vector>
+
+namespace uabt::monitor {
+
+// A past-time temporal formula as a DAG whose nodes refer only to earlier nodes, so one pass
+// over the nodes in index order evaluates a tick. Every operator keeps constant state: a bit,
+// or a counter that saturates at its bound. The one exception is `exactly_ago`, a ring of k+1
+// bits, which FRET's "only … after N" needs (see templates.cpp).
+enum class Op : std::uint8_t {
+  input,           // the boolean input `slot` of this tick
+  constant,        // `k` != 0
+  negation,        // !a
+  conjunction,     // a & b
+  disjunction,     // a | b
+  yesterday,       // Y a   (false at the first tick)
+  weak_yesterday,  // Z a   (true at the first tick)
+  historically,    // H a
+  once,            // O a
+  since,           // a S b
+  once_within,     // O[<=k] a: a held at distance 0..k
+  since_at_least,  // a S[>=k] b: b held at distance >= k and a at every point after it
+  exactly_ago,     // O[=k] a
+};
+
+struct Node {
+  Op op = Op::constant;
+  int a = -1, b = -1;
+  std::uint64_t k = 0;
+};
+
+class Formula {
+ public:
+  int input(int slot);
+  int constant(bool value);
+  int negation(int a);
+  int conjunction(int a, int b);
+  int disjunction(int a, int b);
+  int implication(int a, int b) { return disjunction(negation(a), b); }
+  int yesterday(int a);
+  int weak_yesterday(int a);
+  int historically(int a);
+  int once(int a);
+  int since(int a, int b);
+  int once_within(int a, std::uint64_t k);
+  // O[<k] a: distance 0..k-1 (false when k is 0).
+  int once_below(int a, std::uint64_t k);
+  int since_at_least(int a, int b, std::uint64_t k);
+  int exactly_ago(int a, std::uint64_t k);
+  int first_tick();  // FTP: !(Y true)
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+  int inputs() const { return inputs_; }
+
+ private:
+  int add(Node n);
+  std::vector<Node> nodes_;
+  std::map<std::tuple<Op, int, int, std::uint64_t>, int> index_;  // shares equal subformulas
+  int inputs_ = 0;
+};
+
+// The running state of one formula: call step() once per tick with that tick's inputs.
+class FormulaMonitor {
+ public:
+  explicit FormulaMonitor(const Formula& formula, int root);
+  bool step(const bool* inputs);
+  std::uint64_t ticks() const { return tick_; }
+
+ private:
+  struct State {
+    bool bit = false;            // Y/Z previous value, H/O/S accumulator, since_at_least live
+    std::uint64_t count = 0;     // once_within age, since_at_least age, exactly_ago write index
+    std::vector<bool> ring;      // exactly_ago
+  };
+  std::vector<Node> nodes_;
+  std::vector<State> state_;
+  std::vector<char> value_;
+  int root_ = 0;
+  std::uint64_t tick_ = 0;
+};
+
+}  // namespace uabt::monitor

@@ -1,0 +1,209 @@
+#include "monitor/monitor.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace uabt::monitor {
+
+namespace {
+
+bool contains(const std::string& text, const char* word) {
+  return text.find(word) != std::string::npos;
+}
+
+std::optional<ScopeKind> scope_kind(const fretish::Scope& s) {
+  const bool only = s.keyword.rfind("only", 0) == 0;
+  if (contains(s.keyword, "after")) return only ? ScopeKind::only_after : ScopeKind::after;
+  if (contains(s.keyword, "before")) return only ? ScopeKind::only_before : ScopeKind::before;
+  if (s.negated) return only ? std::nullopt : std::optional(ScopeKind::notin);
+  return only ? ScopeKind::only_in : ScopeKind::in;
+}
+
+// Seconds per unit as FRETISH writes them; nullopt for ticks.
+std::optional<double> unit_seconds(const std::string& unit) {
+  if (unit.empty() || unit.rfind("tick", 0) == 0) return std::nullopt;
+  if (unit.rfind("micro", 0) == 0) return 1e-6;
+  if (unit.rfind("milli", 0) == 0) return 1e-3;
+  if (unit.rfind("sec", 0) == 0) return 1.0;
+  if (unit.rfind("minute", 0) == 0) return 60.0;
+  if (unit.rfind("hour", 0) == 0) return 3600.0;
+  return std::nullopt;
+}
+
+std::optional<std::uint64_t> duration_ticks(const fretish::Timing& t,
+                                            std::optional<double> tick_seconds,
+                                            std::string& reason) {
+  const double value = std::strtod(t.duration.c_str(), nullptr);
+  const std::string written = t.keyword + " " + t.duration + (t.unit.empty() ? "" : " " + t.unit);
+  const std::optional<double> per_unit = unit_seconds(t.unit);
+  double ticks = value;
+  if (per_unit) {
+    if (!tick_seconds || *tick_seconds <= 0) {
+      reason = "timing '" + written +
+               "' is not in ticks and the domain declares no tick period (e.g. 'tick 100 ms' "
+               "in domain.fret)";
+      return std::nullopt;
+    }
+    // Rounded up to whole ticks; the small tolerance keeps 0.3 s / 100 ms at 3 ticks.
+    ticks = std::ceil(value * *per_unit / *tick_seconds - 1e-9);
+  } else if (value != std::floor(value)) {
+    reason = "timing '" + written + "' is not a whole number of ticks";
+    return std::nullopt;
+  }
+  if (!(ticks >= 0) || ticks > 1e12) {
+    reason = "timing '" + written + "' is out of range";
+    return std::nullopt;
+  }
+  return static_cast<std::uint64_t>(ticks);
+}
+
+std::optional<TimingKind> timing_kind(const std::string& k) {
+  if (k.empty() || k == "eventually") return TimingKind::eventually;
+  if (k == "immediately" || k == "initially" || k == "at the first timepoint" ||
+      k == "at the same timepoint")
+    return TimingKind::immediately;
+  if (k == "at the next timepoint" || k == "next") return TimingKind::next;
+  if (k == "finally" || k == "at the last timepoint") return TimingKind::finally;
+  if (k == "always") return TimingKind::always;
+  if (k == "never") return TimingKind::never;
+  if (k == "within") return TimingKind::within;
+  if (k == "for") return TimingKind::for_ticks;
+  if (k == "after") return TimingKind::after;
+  if (k == "until") return TimingKind::until;
+  if (k == "before") return TimingKind::before;
+  return std::nullopt;
+}
+
+// A ring of N+1 bits is the one state that grows with N; refuse absurd sizes.
+constexpr std::uint64_t kMaxRingTicks = std::uint64_t{1} << 26;
+
+}  // namespace
+
+Classified classify(const fretish::Requirement& r, std::optional<double> tick_seconds) {
+  Classified c;
+  if (r.freeform) {
+    c.reason = "freeform requirement: FRET does not formalize it";
+    return c;
+  }
+  if (r.probability) {
+    c.reason = "probability 'with probability " + r.probability->relop + " " +
+               r.probability->number + "': a run has no probability";
+    return c;
+  }
+  Shape s;
+  if (r.scope) {
+    const auto kind = scope_kind(*r.scope);
+    if (!kind) {
+      c.reason = "scope '" + r.scope->keyword + "': FRET gives 'only' with a negation no meaning";
+      return c;
+    }
+    s.scope = *kind;
+  }
+  if (!r.conditions.empty()) {
+    bool all_whenever = true;
+    for (const auto& cond : r.conditions) all_whenever = all_whenever && cond.qualifier == "whenever";
+    s.condition = all_whenever ? ConditionKind::holding : ConditionKind::regular;
+  }
+  const auto timing = timing_kind(r.timing.keyword);
+  if (!timing) {
+    c.reason = "timing '" + r.timing.keyword + "' is not one of FRET's";
+    return c;
+  }
+  s.timing = *timing;
+  if (!r.timing.duration.empty()) {
+    const auto ticks = duration_ticks(r.timing, tick_seconds, c.reason);
+    if (!ticks) return c;
+    s.duration = *ticks;
+  }
+  const bool ring = (s.scope == ScopeKind::only_in || s.scope == ScopeKind::only_after ||
+                     s.scope == ScopeKind::only_before) &&
+                    s.timing == TimingKind::after && s.condition != ConditionKind::null;
+  if (ring && s.duration >= kMaxRingTicks) {
+    c.reason = "timing 'after " + std::to_string(s.duration) +
+               " ticks' in an 'only' scope with a condition needs the last N ticks; N is too large";
+    return c;
+  }
+  c.shape = s;
+  return c;
+}
+
+std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(
+    const fretish::Requirement& r, const Resolver& resolve, std::optional<double> tick_seconds,
+    std::string& reason) {
+  const Classified c = classify(r, tick_seconds);
+  if (!c.shape) {
+    reason = c.reason;
+    return nullptr;
+  }
+  auto m = std::make_unique<RequirementMonitor>();
+  m->id_ = r.id;
+  m->shape_ = *c.shape;
+  fretish::ExprPtr mode;
+  if (r.scope) mode = r.scope->condition ? r.scope->condition : fretish::make_identifier(r.scope->mode);
+  const fretish::ExprPtr parts[] = {mode, r.folded_condition(), r.response,
+                                    r.timing.stop_condition};
+  const char* part_names[] = {"scope", "condition", "response", "stop condition"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (!parts[i]) {
+      m->parts_.emplace_back();
+      continue;
+    }
+    std::string error;
+    auto compiled = CompiledExpression::compile(*parts[i], resolve, error);
+    if (!compiled) {
+      reason = std::string(part_names[i]) + ": " + error;
+      return nullptr;
+    }
+    for (int v : compiled->variables()) {
+      bool known = false;
+      for (int w : m->variables_) known = known || v == w;
+      if (!known) m->variables_.push_back(v);
+    }
+    m->parts_.push_back(std::move(compiled));
+  }
+  const int root = build_requirement_formula(m->formula_, m->shape_, Slots{});
+  m->run_.emplace(m->formula_, root);
+  return m;
+}
+
+bool RequirementMonitor::step(const std::vector<Val>& frame) {
+  if (failed()) return holds_;
+  bool inputs[4] = {false, false, false, false};
+  static const char* part_names[] = {"scope", "condition", "response", "stop condition"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (!parts_[i]) continue;
+    std::string error;
+    inputs[i] = parts_[i]->evaluate_bool(frame, error);
+    if (!error.empty()) {
+      error_ = "at tick " + std::to_string(tick_) + ", the " + part_names[i] + ": " + error;
+      return holds_;
+    }
+  }
+  const bool now = run_->step(inputs);
+  if (!now && (holds_ || tick_ == 0)) violated_since_ = tick_;
+  holds_ = now;
+  ++tick_;
+  return now;
+}
+
+std::string value_text(const Val& v, const Symbols& symbols) {
+  switch (v.kind) {
+    case Val::Kind::missing: return "?";
+    case Val::Kind::boolean: return v.number != 0 ? "true" : "false";
+    case Val::Kind::symbol: return symbols.name(v.symbol);
+    case Val::Kind::number: {
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "%.17g", v.number);
+      // Shortest text that reads back the same number.
+      for (int precision = 1; precision <= 17; ++precision) {
+        std::snprintf(buffer, sizeof buffer, "%.*g", precision, v.number);
+        if (std::strtod(buffer, nullptr) == v.number) break;
+      }
+      return buffer;
+    }
+  }
+  return "?";
+}
+
+}  // namespace uabt::monitor

@@ -1,0 +1,74 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fretish/domain.hpp"
+#include "fretish/requirement.hpp"
+#include "monitor/expression.hpp"
+#include "monitor/formula.hpp"
+#include "monitor/templates.hpp"
+
+namespace uabt::monitor {
+
+// A requirement's FRET classification, or why it has none on a trace.
+struct Classified {
+  std::optional<Shape> shape;
+  std::string reason;  // when !shape: what has no meaning here, naming the field
+};
+
+// FRET's scope, condition kind and timing of a parsed requirement; durations in ticks
+// (`tick_seconds` is the tick period, needed for units other than ticks).
+Classified classify(const fretish::Requirement& r, std::optional<double> tick_seconds);
+
+// What the monitor saw wrong at one tick.
+struct Violation {
+  std::uint64_t tick = 0;
+  std::vector<std::pair<std::string, std::string>> values;  // name, value as text
+};
+
+// One requirement compiled into a synchronous monitor: step() once per tick, constant time.
+class RequirementMonitor {
+ public:
+  // nullopt with `reason` when the requirement cannot be monitored on this vocabulary.
+  static std::unique_ptr<RequirementMonitor> compile(const fretish::Requirement& r,
+                                                     const Resolver& resolve,
+                                                     std::optional<double> tick_seconds,
+                                                     std::string& reason);
+
+  // The verdict of the trace so far, read as a whole finite trace (FRET's formula at this
+  // tick). After an evaluation error the monitor stops (error() says why).
+  bool step(const std::vector<Val>& frame);
+
+  const std::string& id() const { return id_; }
+  const Shape& shape() const { return shape_; }
+  bool failed() const { return !error_.empty(); }
+  const std::string& error() const { return error_; }
+  bool holds() const { return holds_; }  // the value at the last tick
+  // The tick from which the verdict has been false without a break (set while !holds()).
+  std::uint64_t violated_since() const { return violated_since_; }
+  // True once the verdict turned false for good (safety properties: at once).
+  bool final_violation() const { return !holds_ && verdict_is_final_once_violated(shape_); }
+  // Slots of the variables the requirement reads, in first-use order.
+  const std::vector<int>& variables() const { return variables_; }
+
+ private:
+  std::string id_;
+  Shape shape_;
+  std::vector<std::optional<CompiledExpression>> parts_;  // mode, condition, response, stop
+  Formula formula_;
+  std::optional<FormulaMonitor> run_;
+  std::vector<int> variables_;
+  std::string error_;
+  bool holds_ = true;
+  std::uint64_t tick_ = 0;
+  std::uint64_t violated_since_ = 0;
+};
+
+// The text of a value for reports: true/false, a number as written, a symbol's name.
+std::string value_text(const Val& v, const Symbols& symbols);
+
+}  // namespace uabt::monitor

@@ -1,0 +1,44 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "monitor/formula.hpp"
+
+namespace uabt::monitor {
+
+// FRET's classification of a requirement (its semantics key "scope,condition,timing").
+enum class ScopeKind { null, in, notin, only_in, after, before, only_after, only_before };
+enum class ConditionKind { null, regular, holding };
+enum class TimingKind {
+  immediately, next, eventually, finally, always, never, within, for_ticks, after, until, before
+};
+
+struct Shape {
+  ScopeKind scope = ScopeKind::null;
+  ConditionKind condition = ConditionKind::null;
+  TimingKind timing = TimingKind::eventually;
+  std::uint64_t duration = 0;  // ticks, for within / for / after
+};
+
+// FRET's names, as in its semantics keys: "in", "onlyAfter", "regular", "for", ...
+const char* scope_key(ScopeKind s);
+const char* condition_key(ConditionKind c);
+const char* timing_key(TimingKind t);
+
+// Input slots of the formula: the scope's mode, the (folded) condition, the response and the
+// stop condition of until/before. Unused ones are ignored.
+struct Slots {
+  int mode = 0, condition = 1, response = 2, stop = 3;
+};
+
+// Builds the requirement's meaning at every tick: true at tick t exactly when the trace up to
+// t, read as a whole finite trace, satisfies the requirement under FRET's past-time
+// formalization. Returns the root node.
+int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots);
+
+// True when the verdict can only go from held to violated, never back (a safety property):
+// then a violation is final at the tick it appears. Otherwise (eventually, finally, …) the
+// verdict of a finite trace is its value at the last tick.
+bool verdict_is_final_once_violated(const Shape& shape);
+
+}  // namespace uabt::monitor
