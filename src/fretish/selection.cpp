@@ -43,6 +43,17 @@ bool is_selection_scope(const Scope& s) {
           s.keyword == "if in");
 }
 
+bool mentions_selected_alt(const Expr& e) {
+  if (e.kind == ExprKind::identifier && e.text == "selected_alt") return true;
+  for (const auto& a : e.args)
+    if (a && mentions_selected_alt(*a)) return true;
+  return false;
+}
+
+bool is_mission_property(const Requirement& r) {
+  return !r.freeform && r.response && !mentions_selected_alt(*r.response);
+}
+
 class Classifier {
  public:
   Classifier(const Requirement& r, std::vector<Finding>& findings) : r_(r), findings_(findings) {}
@@ -120,6 +131,19 @@ std::vector<SelectionRequirement> classify_selection(const std::vector<Requireme
   std::vector<SelectionRequirement> selections;
   for (std::size_t i = 0; i < requirements.size(); ++i) {
     const Requirement& r = requirements[i];
+    // A requirement that does not choose an alternative is a mission property (DESIGN §10),
+    // checked by the monitors and by prove; only its probability has no meaning there.
+    if (is_mission_property(r)) {
+      if (r.probability) {
+        Finding f = make_finding("fretish-unsupported",
+                                 "probability 'with probability " + r.probability->relop + " " +
+                                     r.probability->number + "': a run has no probability",
+                                 at(r, r.probability->range));
+        f.requirements = {r.id};
+        findings.push_back(std::move(f));
+      }
+      continue;
+    }
     Classifier classifier(r, findings);
     if (!classifier.check()) continue;
     const Expr* alternative = classifier.alternative();

@@ -102,10 +102,8 @@ TEST(FretishSelection, RejectsWithTheFieldNamed) {
       {"only in navigation Mission shall satisfy selected_alt = a", "scope 'only in", 4},
       {"while OnDust Mission shall satisfy selected_alt = a", "scope 'while OnDust'", 4},
       {"Mission shall satisfy selected_alt = a", "scope missing", 4},
-      {"if OnDust Mission shall satisfy x", "scope missing", 4},
       {"In navigation Mission shall satisfy selected_alt = 3", "response 'selected_alt = 3'", 32},
       {"In navigation Mission shall satisfy selected_alt != a", "response 'selected_alt != a'", 32},
-      {"In navigation Mission shall satisfy chosen = a", "response 'chosen = a'", 32},
       {"In navigation Mission shall satisfy selected_alt = a & b", "response", 32},
       {"In navigation Rover shall satisfy selected_alt = a",
        "component 'Rover' is not supported in a selection requirement: only 'Mission'", 18},
@@ -134,7 +132,8 @@ TEST(FretishSelection, RejectsWithTheFieldNamed) {
 
 TEST(FretishSelection, EveryOffendingFieldIsReported) {
   const Classified c = classify(
-      "X: before navigation Rover shall with probability > 0.5 within 2 ticks satisfy go\n"
+      "X: before navigation Rover shall with probability > 0.5 within 2 ticks satisfy "
+      "selected_alt = go | x\n"
       "Ok: In navigation Mission shall satisfy selected_alt = a\n");
   ASSERT_EQ(c.selections.size(), 1u);
   EXPECT_EQ(c.selections[0].id, "Ok");
@@ -144,6 +143,22 @@ TEST(FretishSelection, EveryOffendingFieldIsReported) {
                                            "response"};
   for (std::size_t i = 0; i < fields.size(); ++i)
     EXPECT_EQ(c.findings[i].message.rfind(fields[i], 0), 0u) << c.findings[i].message;
+}
+
+// A requirement that does not choose an alternative is a mission property (DESIGN §10): not a
+// selection, not an error; only a probability has no meaning for it.
+TEST(FretishSelection, MissionPropertiesAreNotSelections) {
+  const Classified c = classify(
+      "P1: Mission shall always satisfy !(OnDust & OnRocks)\n"
+      "P2: In navigation Mission shall within 3 ticks satisfy IsInLocation\n"
+      "P3: Environment shall always satisfy battery >= 0\n"
+      "P4: Mission shall with probability > 0.9 satisfy IsDug\n"
+      "Ok: In navigation Mission shall satisfy selected_alt = a\n");
+  ASSERT_EQ(c.selections.size(), 1u);
+  ASSERT_EQ(c.findings.size(), 1u);
+  EXPECT_EQ(c.findings[0].check, "fretish-unsupported");
+  EXPECT_EQ(c.findings[0].requirements, std::vector<std::string>{"P4"});
+  EXPECT_EQ(c.findings[0].message.rfind("probability", 0), 0u);
 }
 
 }  // namespace
