@@ -4,6 +4,7 @@
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
+#include "prove/outcome.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
 
@@ -47,6 +48,8 @@ void register_gate(CLI::App& app, int& exit_code) {
     options.compile.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
                                                               : compile::SelectionStyle::sequence;
     gate::Outcome outcome = gate::run_gate(std::move(*mission), options, tool_version());
+    // A mission with guarantees passes only when each one is proved (DESIGN §10).
+    if (outcome.passed()) prove::add_proofs(outcome, prove::Options{});
     outcome.report.uri_prefix = uri_prefix_of(args->mission);
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
     exit_code = write_findings(outcome.report, args->format, args->output);
