@@ -105,7 +105,7 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
     return v.is_number() && v.as_double() != 0.0 ? NodeStatus::success : NodeStatus::failure;
   }
   std::int64_t& elapsed = elapsed_[context.handle];
-  if (elapsed == 0 && recorder) recorder->started(context.handle);
+  if (elapsed == 0 && recorder) recorder->started(context.handle, context.tick);
   const std::int64_t now = elapsed + 1;
   // Options: keep running (when the contract allows more ticks), or end with each result.
   const ActionContract* c = leaf.contract;
@@ -118,7 +118,7 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
   std::uint32_t pick = options > 1 ? chooser.choose(options) : 0;
   if (may_run) {
     if (pick == 0) {
-      elapsed = now;
+      elapsed = c ? now : 1;
       return NodeStatus::running;
     }
     --pick;
@@ -135,13 +135,13 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
                                ": " + e.what());
     }
   }
-  if (recorder) recorder->ended(context.handle, now, result);
+  if (recorder) recorder->ended(context.handle, context.tick, result);
   return result;
 }
 
 void ChoiceWorld::halt_leaf(const runtime::LeafContext& context) {
   if (leaves_[context.handle].condition) return;
-  if (recorder) recorder->halted(context.handle, elapsed_[context.handle]);
+  if (recorder) recorder->halted(context.handle, context.tick);
   elapsed_[context.handle] = 0;
 }
 

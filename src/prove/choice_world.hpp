@@ -31,9 +31,10 @@ class Chooser {
 class ActionRecorder {
  public:
   virtual ~ActionRecorder() = default;
-  virtual void started(std::uint32_t leaf) = 0;
-  virtual void ended(std::uint32_t leaf, std::int64_t ticks, runtime::NodeStatus result) = 0;
-  virtual void halted(std::uint32_t leaf, std::int64_t ticks) = 0;
+  // `tick`: the engine's tick in which it happened.
+  virtual void started(std::uint32_t leaf, std::uint64_t tick) = 0;
+  virtual void ended(std::uint32_t leaf, std::uint64_t tick, runtime::NodeStatus result) = 0;
+  virtual void halted(std::uint32_t leaf, std::uint64_t tick) = 0;
 };
 
 // The world `uabt prove` explores: conditions read the state as the simulated world does
@@ -63,7 +64,8 @@ class ChoiceWorld : public runtime::World {
     std::vector<std::string> writes;
   };
   const std::vector<Leaf>& leaves() const { return leaves_; }
-  // Progress of every action (ticks it has run in its current start): the world's state.
+  // Progress of every action (ticks it has run in its current start; for an action without
+  // contract only whether it runs, as nothing else about it matters): the world's state.
   const std::vector<std::int64_t>& elapsed() const { return elapsed_; }
   void set_elapsed(const std::vector<std::int64_t>& e) { elapsed_ = e; }
 

@@ -50,14 +50,15 @@ class RunRecorder : public ActionRecorder {
     for (std::uint32_t leaf = 0; leaf < m.choice->leaves().size(); ++leaf)
       if (!m.choice->leaves()[leaf].condition) runs_[label(leaf)];
   }
-  void started(std::uint32_t leaf) override {
+  void started(std::uint32_t leaf, std::uint64_t tick) override {
     auto& list = runs_[label(leaf)];
     list.push_back(Json::object());
     current_[leaf] = list.size() - 1;
+    started_[leaf] = tick;
   }
-  void ended(std::uint32_t leaf, std::int64_t ticks, NodeStatus result) override {
+  void ended(std::uint32_t leaf, std::uint64_t tick, NodeStatus result) override {
     Json& run = runs_[label(leaf)][current_[leaf]];
-    run["ticks"] = ticks;
+    run["ticks"] = tick - started_[leaf] + 1;
     run["result"] = result == NodeStatus::success ? "success" : "failure";
     const auto& writes = m_.choice->leaves()[leaf].writes;
     if (!writes.empty()) {
@@ -68,17 +69,18 @@ class RunRecorder : public ActionRecorder {
       run["effects"] = effects;
     }
   }
-  void halted(std::uint32_t leaf, std::int64_t ticks) override {
-    runs_[label(leaf)][current_[leaf]]["ticks"] = ticks + 1;  // halted before it would end
+  // A halted start must not end before its halt: one tick more than it could have run.
+  void halted(std::uint32_t leaf, std::uint64_t tick) override {
+    runs_[label(leaf)][current_[leaf]]["ticks"] = tick - started_[leaf] + 2;
   }
   // Actions still running when the path ends: they would end after it.
-  Json actions() {
+  Json actions(std::uint64_t last_tick) {
     const auto& elapsed = m_.choice->elapsed();
     for (std::size_t leaf = 0; leaf < elapsed.size(); ++leaf) {
       if (m_.choice->leaves()[leaf].condition) continue;
       auto& list = runs_[label(static_cast<std::uint32_t>(leaf))];
       if (elapsed[leaf] > 0 && !list.empty() && !list[current_[leaf]].contains("ticks"))
-        list[current_[leaf]]["ticks"] = elapsed[leaf] + 1;
+        list[current_[leaf]]["ticks"] = last_tick - started_[leaf] + 2;
     }
     Json out = Json::object();
     for (auto& [name, list] : runs_) {
@@ -93,6 +95,7 @@ class RunRecorder : public ActionRecorder {
   const std::string& label(std::uint32_t leaf) const { return m_.choice->leaves()[leaf].label; }
   Model& m_;
   std::vector<std::size_t> current_;
+  std::vector<std::uint64_t> started_ = std::vector<std::uint64_t>(current_.size(), 0);
   std::map<std::string, std::vector<Json>> runs_;
 };
 
@@ -124,7 +127,7 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
                      " found by uabt prove: violated at tick " + std::to_string(f.tick);
   s["max_ticks"] = f.tick;
   s["initial"] = initial;
-  s["actions"] = recorder.actions();
+  s["actions"] = recorder.actions(f.tick);
   if (!events.empty()) s["events"] = events;
   return s.dump(2) + "\n";
 }
