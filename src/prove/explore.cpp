@@ -178,6 +178,9 @@ class Search {
       f.path.push_back(step);
       result_.violations[i] = std::move(f);
     }
+    // The environment's values are chosen afresh before every tick: once the monitors have
+    // read them they do not matter, and states that differ only in them are one state.
+    for (const StateVar* v : env_.vars) m_.engine->blackboard().value(v->slot) = v->values.front();
     next.engine = EngineState::save(*m_.engine);
     next.elapsed = m_.choice->elapsed();
     std::string key = key_of(next, done);

@@ -204,3 +204,38 @@ TEST(Prove, MissionWithoutGuaranteesIsLeftAlone) {
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+TEST(ProveMsl, ShippedGuaranteesAreProved) {
+  const prove::Result r = prove_dir(mission_dir("msl_curiosity"));
+  EXPECT_TRUE(r.complete);
+  ASSERT_EQ(r.answers.size(), 3u);
+  for (const auto& a : r.answers) EXPECT_EQ(a.verdict, Verdict::proved) << a.requirement;
+}
+
+// The paper's sequence-style selection keeps running the alternative it started when the
+// terrain changes; the reactive style re-checks the guards every tick.
+TEST(ProveMsl, TerrainChangeNeedsTheReactiveStyle) {
+  auto files = mission_files("msl_curiosity");
+  files["requirements.fret"] +=
+      "RocksDrive: In navigation mode whenever OnRocks Mission shall immediately satisfy "
+      "navigation.selected = on_rocks\n";
+  TempMission m(files);
+  const prove::Result sequence = prove_dir(m.dir());
+  const prove::Answer& a = answer(sequence, "RocksDrive");
+  ASSERT_EQ(a.verdict, Verdict::violated);
+  ASSERT_EQ(a.counterexample->tick, 2u);
+  const auto& last = a.counterexample->rows.back().values;
+  EXPECT_EQ(
+      last,
+      (std::vector<std::pair<std::string, std::string>>{
+          {"navigation", "true"}, {"OnRocks", "true"}, {"navigation.selected", "hold_position"}}));
+  const prove::Result reactive = prove_dir(m.dir(), {}, compile::SelectionStyle::reactive);
+  EXPECT_EQ(answer(reactive, "RocksDrive").verdict, Verdict::proved);
+  EXPECT_TRUE(reactive.passed());
+}
+
+}  // namespace
+}  // namespace uabt::testing
