@@ -132,16 +132,6 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
   return s.dump(2) + "\n";
 }
 
-const char* status_text(NodeStatus s) {
-  switch (s) {
-    case NodeStatus::success: return "SUCCESS";
-    case NodeStatus::failure: return "FAILURE";
-    case NodeStatus::running: return "RUNNING";
-    case NodeStatus::skipped: return "SKIPPED";
-    default: return "IDLE";
-  }
-}
-
 // Runs the counterexample on the runtime's simulated world (what `uabt run` does) with the
 // monitoring stage's own monitor; it must violate the property first at the same tick.
 Counterexample replay(const Model& m, const Property& p, const Finding& f, std::string scenario) {
@@ -175,7 +165,7 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
       throw ProveError("internal error: replaying " + p.requirement->id + ": " + monitor->error());
     TickRow row;
     row.tick = t;
-    row.root = status_text(root);
+    row.root = runtime::status_name(root);
     for (int slot : monitor->variables())
       row.values.emplace_back(variables.name(slot), monitor::value_text(frame[slot], symbols));
     const auto& log = runner.world().log();
