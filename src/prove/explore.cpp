@@ -2,6 +2,7 @@
 
 #include <deque>
 #include <functional>
+#include <map>
 #include <unordered_set>
 
 namespace uabt::prove {
@@ -24,25 +25,49 @@ struct Node {
 // Mixed-radix enumeration of assignments to a set of variables.
 struct Product {
   std::vector<const StateVar*> vars;
+  std::vector<std::vector<runtime::ScriptValue>> values;  // per variable
   std::uint64_t size = 1;
   void set(Model& m, std::uint64_t index) const {
-    for (const StateVar* v : vars) {
-      m.engine->blackboard().value(v->slot) = v->values[index % v->values.size()];
-      index /= v->values.size();
+    for (std::size_t i = 0; i < vars.size(); ++i) {
+      m.engine->blackboard().value(vars[i]->slot) = values[i][index % values[i].size()];
+      index /= values[i].size();
     }
   }
 };
 
+// The values a conjunction of literals (`!X`, `X`, `x = 3`, `t = rocks`) fixes: the initial
+// condition usually fixes most of the state, and need not be enumerated for them.
+void fixed_values(const fretish::Expr& e, const Model& m,
+                  std::map<std::string, runtime::ScriptValue>& out) {
+  using K = fretish::ExprKind;
+  if (e.kind == K::logical_and) {
+    for (const auto& a : e.args) fixed_values(*a, m, out);
+  } else if (e.kind == K::identifier && m.state_names.contains(e.text)) {
+    out[e.text] = runtime::ScriptValue::of_bool(true);
+  } else if (e.kind == K::logical_not && e.args[0]->kind == K::identifier &&
+             m.state_names.contains(e.args[0]->text)) {
+    out[e.args[0]->text] = runtime::ScriptValue::of_bool(false);
+  }
+}
+
 Product product(const Model& m, bool initial) {
+  std::map<std::string, runtime::ScriptValue> fixed;
+  if (initial && m.world.initial) fixed_values(*m.world.initial, m, fixed);
   Product p;
   for (const StateVar& v : m.vars) {
     if (!v.relevant || (!initial && !v.env)) continue;
+    std::vector<runtime::ScriptValue> values = v.values;
+    // Only a boolean literal is fixed here; the initial condition is still checked on each.
+    if (const auto it = fixed.find(v.name); it != fixed.end() && values.size() == 2 &&
+                                            values[0].kind == runtime::ScriptValue::Kind::boolean)
+      values = {it->second};
     p.vars.push_back(&v);
-    if (p.size > (std::uint64_t{1} << 40) / v.values.size())
+    if (p.size > (std::uint64_t{1} << 40) / values.size())
       throw ProveError(
           "the explicit-state engine cannot enumerate the environment: more than 2^40 "
           "combinations of values per tick");
-    p.size *= v.values.size();
+    p.size *= values.size();
+    p.values.push_back(std::move(values));
   }
   return p;
 }
