@@ -2,7 +2,7 @@
 // domain.fret: one declaration a line (DESIGN §3). Rules only; EBNF in grammar/README.md.
 //   boolean A, B          integer n in [0, 100]     unsigned integer k
 //   real slope in [-45, 45]                          enum terrain in {dust, rocks}
-//   assume NAME: EXPR
+//   assume NAME: EXPR                                tick 100 ms
 #include "grammar/fretish.hpp"
 
 namespace uabt::grammar {
@@ -54,8 +54,16 @@ struct assumption_colon : one<':'> {};
 struct assumption_declaration
     : seq<kw_assume, ws, assumption_name, ws, assumption_colon, ws, expression> {};
 
+// The period of one tick, for durations written in time units (DESIGN §10).
+struct kw_tick : keyword<TAO_PEGTL_ISTRING("tick")> {};
+struct tick_period : number {};
+struct tick_unit : sor<kw_unit, keyword<TAO_PEGTL_ISTRING("ms")>, keyword<TAO_PEGTL_ISTRING("us")>,
+                       keyword<TAO_PEGTL_ISTRING("s")>, keyword<TAO_PEGTL_ISTRING("min")>,
+                       keyword<TAO_PEGTL_ISTRING("h")>> {};
+struct tick_declaration : seq<kw_tick, ws, tick_period, ws, tick_unit> {};
+
 struct declaration : sor<boolean_declaration, integer_declaration, real_declaration,
-                         enum_declaration, assumption_declaration> {};
+                         enum_declaration, assumption_declaration, tick_declaration> {};
 struct end_of_line : eof {};
 // One line with its `#` comment already removed.
 struct domain_line : seq<ws, opt<declaration>, ws, end_of_line> {};

@@ -71,4 +71,12 @@ std::string display_path(const fs::path& path, const fs::path& base) {
   return path.generic_string();
 }
 
+std::string relative_path(const fs::path& path, const fs::path& base) {
+  std::error_code ec;
+  const fs::path abs_path = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  const fs::path rel =
+      abs_path.lexically_relative(fs::weakly_canonical(fs::absolute(base, ec), ec));
+  return rel.empty() ? abs_path.generic_string() : rel.generic_string();
+}
+
 }  // namespace uabt

@@ -20,4 +20,9 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 // the path as given.
 std::string display_path(const std::filesystem::path& path, const std::filesystem::path& base);
 
+// `path` relative to `base` wherever it lies ("../out/compiled.xml"; generic form), the form
+// of every finding's file: relative to the mission directory, so that one prefix makes them
+// all openable from where uabt runs.
+std::string relative_path(const std::filesystem::path& path, const std::filesystem::path& base);
+
 }  // namespace uabt

@@ -24,6 +24,13 @@ struct Finding {
   State witness;                          // a full state that makes the finding true
   std::string node_path;                  // compiled-*: path of the node in the tree
   std::vector<std::string> notes;         // printed as "note:" lines under the finding
+  // Other places the finding concerns, each with what it is (an overlap: the other
+  // requirement); SARIF relatedLocations.
+  struct Related {
+    SourceLocation location;
+    std::string message;
+  };
+  std::vector<Related> related;
 };
 
 // Builds a finding with the check's default severity from the catalogue.

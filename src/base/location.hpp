@@ -10,6 +10,7 @@ struct SourceLocation {
   std::string file;
   int line = 0;
   int column = 0;
+  int end_line = 0;  // last line when the place spans several lines (a node's requirements)
 };
 
 // A span within one file (1-based, end inclusive of the last character).

@@ -184,7 +184,12 @@ class StructureChecker {
     }
     const std::string* id = node.attribute("ID");
     if (id == nullptr || id->empty()) {
-      report(tree, node, "<Adaptable> needs an ID");
+      std::string hint;  // `id="navigation"`: XML attribute names are case-sensitive
+      for (const auto& [name, value] : node.attributes)
+        if (name != "ID" && name.size() == 2 && (name[0] | 0x20) == 'i' && (name[1] | 0x20) == 'd')
+          hint = ": attribute names are case-sensitive, write ID=\"" + value + "\" instead of " +
+                 name + "=\"" + value + "\"";
+      report(tree, node, "<Adaptable> needs an ID" + hint);
     } else if (!is_valid_id(*id)) {
       report(tree, node, invalid_id_message("adaptable ID", *id));
     }

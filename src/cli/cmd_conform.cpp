@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "base/files.hpp"
 #include "bt/xml_io.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
@@ -10,7 +11,7 @@ namespace uabt::cli {
 
 void register_conform(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, compiled, nodes, format = "text", output;
+    std::string mission, source_root, compiled, nodes, format = "text", output;
     unsigned timeout_ms = 10000;
   };
   auto args = std::make_shared<Args>();
@@ -28,6 +29,7 @@ void register_conform(CLI::App& app, int& exit_code) {
   cmd->add_option("--timeout-ms", args->timeout_ms,
                   "solver time limit per query (inconclusive fails)");
   add_findings_output_options(*cmd, args->format, args->output);
+  add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
@@ -42,16 +44,22 @@ void register_conform(CLI::App& app, int& exit_code) {
     read_options.confine_to =
         compiled_path.parent_path().empty() ? "." : compiled_path.parent_path();
     read_options.display_base = std::filesystem::current_path();
-    auto compiled = bt::read_document(compiled_path, read_options, input.findings);
+    std::vector<Finding> compiled_findings;
+    auto compiled = bt::read_document(compiled_path, read_options, compiled_findings);
     if (compiled && !has_errors(mission->findings)) {
       conform::Options options;
       options.timeout_ms = args->timeout_ms;
       auto result = conform::conform_tree(*mission, *compiled, options);
-      input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
+      compiled_findings.insert(compiled_findings.end(), result.findings.begin(),
+                               result.findings.end());
     }
+    // Every finding's file is relative to the mission directory, this one's too.
+    relocate_findings(compiled_findings, display_path(compiled_path, read_options.display_base),
+                      relative_path(compiled_path, mission->dir));
+    input.findings.insert(input.findings.end(), compiled_findings.begin(), compiled_findings.end());
     sort_findings(input.findings);
-    input.uri_prefix = uri_prefix_of(args->mission);
-    exit_code = write_findings(input, args->format, args->output);
+    input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
+    exit_code = write_findings(input, args->format, args->output, {"conforms", "does not conform"});
   });
 }
 

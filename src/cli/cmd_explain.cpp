@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "base/catalogue.hpp"
+#include "base/suggest.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 
@@ -21,7 +22,11 @@ void register_explain(CLI::App& app, int& exit_code) {
     }
     const CheckInfo* info = find_check(*id);
     if (info == nullptr) {
-      std::cerr << "uabt: unknown check '" << *id << "'; `uabt explain` lists them\n";
+      std::vector<std::string> ids;
+      for (const auto& known : check_catalogue()) ids.push_back(known.id);
+      const std::string hint = did_you_mean(*id, ids);
+      std::cerr << "uabt: unknown check '" << *id << "'" << (hint.empty() ? "" : " (" + hint + ")")
+                << "; `uabt checks` lists them\n";
       exit_code = kExitUsage;
       return;
     }

@@ -1,9 +1,11 @@
 #include <iostream>
 
+#include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
+#include "gate/uplink.hpp"
 #include "prove/outcome.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
@@ -12,8 +14,8 @@ namespace uabt::cli {
 
 void register_gate(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, out = "uabt-report", nodes, selection = "sequence", format = "text",
-                         output;
+    std::string mission, source_root, out = "uabt-report", nodes, selection = "sequence",
+                                      format = "text", output, uplink;
     bool allow_overlap = false;
     unsigned timeout_ms = 10000;
   };
@@ -27,12 +29,17 @@ void register_gate(CLI::App& app, int& exit_code) {
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
   cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
-      ->check(CLI::IsMember({"sequence", "reactive"}));
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
   cmd->add_option("--timeout-ms", args->timeout_ms,
                   "solver time limit per query (inconclusive fails)");
+  cmd->add_option("--uplink", args->uplink,
+                  "an uplink package to merge and gate before it is sent; the reports add where "
+                  "each requirement went and the behaviour change, OUT/merged/ the merged mission")
+      ->check(CLI::ExistingDirectory);
   add_findings_output_options(*cmd, args->format, args->output);
+  add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
@@ -41,17 +48,36 @@ void register_gate(CLI::App& app, int& exit_code) {
       exit_code = kExitUsage;
       return;
     }
+    std::optional<load::Mission> running;
+    if (!args->uplink.empty()) {
+      running = std::move(mission);
+      load_options.uplinks.push_back(args->uplink);
+      mission = load_or_complain(args->mission, load_options);
+      if (!mission) {
+        exit_code = kExitUsage;
+        return;
+      }
+    }
     gate::Options options;
     options.verify.allow_overlap = args->allow_overlap;
     options.verify.timeout_ms = args->timeout_ms;
     options.conform.timeout_ms = args->timeout_ms;
-    options.compile.selection = args->selection == "reactive" ? compile::SelectionStyle::reactive
-                                                              : compile::SelectionStyle::sequence;
-    gate::Outcome outcome = gate::run_gate(std::move(*mission), options, tool_version());
+    options.compile.selection = selection_style(args->selection);
+    gate::Outcome outcome =
+        running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
+                : gate::run_gate(std::move(*mission), options, tool_version());
     // A mission with guarantees passes only when each one is proved (DESIGN §10).
     if (outcome.passed()) prove::add_proofs(outcome, prove::Options{});
-    outcome.report.uri_prefix = uri_prefix_of(args->mission);
+    outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
+    // What conform says about the compiled tree points at its file in the report directory.
+    if (!outcome.report.compiled_tree_file.empty())
+      relocate_findings(
+          outcome.report.findings, outcome.report.compiled_tree_file,
+          relative_path(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
+                        outcome.mission->dir));
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
+    if (running)
+      gate::write_merged_mission(*outcome.mission, std::filesystem::path(args->out) / "merged");
     exit_code = write_findings(outcome.report, args->format, args->output);
   });
 }

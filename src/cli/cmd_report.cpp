@@ -13,7 +13,7 @@ namespace uabt::cli {
 // where guards overlap and where none holds, as HTML with its SVG pictures and Markdown.
 void register_report(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, out = "uabt-report";
+    std::string mission, source_root, out = "uabt-report";
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
@@ -22,6 +22,7 @@ void register_report(CLI::App& app, int& exit_code) {
       ->required()
       ->check(CLI::ExistingPath);
   cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
+  add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
     auto mission = load_or_complain(args->mission, {});
     if (!mission) {
@@ -33,7 +34,7 @@ void register_report(CLI::App& app, int& exit_code) {
     input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
     sort_findings(input.findings);
     input.coverage = std::move(result.coverage);
-    input.uri_prefix = uri_prefix_of(args->mission);
+    input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     const std::filesystem::path out(args->out);
     write_file_atomically(out / "report.html", report::to_html(input));
     write_file_atomically(out / "summary.md", report::to_markdown(input));

@@ -1,4 +1,7 @@
+#include <filesystem>
 #include <iostream>
+#include <optional>
+#include <regex>
 
 #include "base/files.hpp"
 #include "cli/commands.hpp"
@@ -6,6 +9,39 @@
 #include "runtime/manager.hpp"
 
 namespace uabt::cli {
+
+namespace {
+
+// TICK:DIR → (tick, DIR as a path from the mission directory, which is how the manager
+// resolves a package). DIR is given from the current directory, as every path on the command
+// line. Prints why and returns nullopt when the argument is malformed or DIR is no directory.
+std::optional<std::pair<std::int64_t, std::string>> parse_uplink_argument(
+    const std::string& spec, const std::string& mission) {
+  namespace fs = std::filesystem;
+  const auto colon = spec.find(':');
+  std::int64_t tick = 0;
+  try {
+    if (colon == std::string::npos) throw std::invalid_argument("no ':'");
+    std::size_t used = 0;
+    tick = std::stoll(spec.substr(0, colon), &used);
+    if (used != colon || tick < 0) throw std::invalid_argument("not a tick");
+  } catch (const std::exception&) {
+    std::cerr << "uabt: --uplink " << spec
+              << ": expected TICK:DIR (a tick number, then the "
+                 "package directory)\n";
+    return std::nullopt;
+  }
+  const fs::path dir = spec.substr(colon + 1);
+  std::error_code ec;
+  if (dir.empty() || !fs::is_directory(dir, ec)) {
+    std::cerr << "uabt: --uplink " << spec << ": " << dir.generic_string()
+              << ": no such directory (paths are relative to the current directory)\n";
+    return std::nullopt;
+  }
+  return std::make_pair(tick, fs::proximate(dir, mission, ec).generic_string());
+}
+
+}  // namespace
 
 // The Behavior Tree Manager on a simulated world. Exit 0 when the mission completes with
 // SUCCESS; 1 when it fails, times out (max_ticks), stops on a tick error (verdict `error`:
@@ -28,7 +64,8 @@ void register_run(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingFile);
   cmd->add_option(
       "--uplink", args->uplinks,
-      "TICK:DIR — an uplink package, relative to the mission, arriving before tick TICK");
+      "TICK:DIR — an uplink package (a path from the current directory) arriving before tick "
+      "TICK");
   cmd->add_option("--trace", args->trace, "write the trace as JSON lines to FILE");
   cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
       ->check(CLI::IsMember({"sequence", "reactive"}));
@@ -39,6 +76,17 @@ void register_run(CLI::App& app, int& exit_code) {
                   "events, or nodes: also every node status change and condition read")
       ->check(CLI::IsMember({"events", "nodes"}));
   cmd->callback([args, &exit_code] {
+    // Every --uplink is checked before the run starts: a typo must not let a run go on
+    // without the uplink it was meant to test.
+    std::vector<std::pair<std::int64_t, std::string>> uplinks;
+    for (const auto& spec : args->uplinks) {
+      auto uplink = parse_uplink_argument(spec, args->mission);
+      if (!uplink) {
+        exit_code = kExitUsage;
+        return;
+      }
+      uplinks.push_back(std::move(*uplink));
+    }
     try {
       runtime::Scenario scenario = runtime::load_scenario(args->scenario);
       runtime::ManagerOptions options;
@@ -48,28 +96,25 @@ void register_run(CLI::App& app, int& exit_code) {
                                            ? compile::SelectionStyle::reactive
                                            : compile::SelectionStyle::sequence;
       runtime::BehaviorTreeManager manager(args->mission, std::move(scenario), options);
-      for (const auto& spec : args->uplinks) {
-        const auto colon = spec.find(':');
-        std::int64_t tick = 0;
-        try {
-          if (colon == std::string::npos) throw std::invalid_argument("no ':'");
-          tick = std::stoll(spec.substr(0, colon));
-        } catch (const std::exception&) {
-          std::cerr << "uabt: --uplink " << spec << ": expected TICK:DIR\n";
-          exit_code = kExitUsage;
-          return;
-        }
-        manager.add_uplink(tick, spec.substr(colon + 1));
-      }
+      for (const auto& [tick, package] : uplinks) manager.add_uplink(tick, package);
       runtime::ManagerRun run = manager.run();
-      std::cout << runtime::trace_summary(run);
+      std::cout << runtime::trace_summary(run) << runtime::property_summary(run);
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
-      if (run.error)
-        std::cerr << "uabt: tick " << run.error->tick << ": " << run.error->message
-                  << "\n  node: " << run.error->path
-                  << (run.error->script.empty() ? "" : "\n  script: " + run.error->script) << "\n";
-      exit_code = run.verdict == "success" ? kExitPass : kExitFail;
+      if (run.error) {
+        // GCC style: "file:line:col: error: …", then where in the running tree it happened.
+        static const std::regex located(R"(^([^:]+:\d+:\d+): (.*)$)");
+        std::smatch m;
+        const std::string& text = run.error->message;
+        if (std::regex_match(text, m, located))
+          std::cerr << m[1] << ": error: " << m[2] << "\n";
+        else
+          std::cerr << "uabt: error: " << text << "\n";
+        std::cerr << "  note: tick " << run.error->tick << ", node " << run.error->path << "\n";
+        if (!run.error->script.empty())
+          std::cerr << "  note: script `" << run.error->script << "`\n";
+      }
+      exit_code = run.verdict == "success" && !run.guarantees_failed ? kExitPass : kExitFail;
     } catch (const runtime::ScenarioError& e) {
       std::cerr << e.what() << "\n";  // file:line:col: error: … lines
       exit_code = kExitFail;

@@ -9,7 +9,7 @@ namespace uabt::cli {
 
 void register_verify(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, nodes, format = "text", output;
+    std::string mission, source_root, nodes, format = "text", output;
     bool allow_overlap = false;
     unsigned timeout_ms = 10000;
   };
@@ -22,6 +22,7 @@ void register_verify(CLI::App& app, int& exit_code) {
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
   add_findings_output_options(*cmd, args->format, args->output);
+  add_source_root_option(*cmd, args->source_root);
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
   cmd->add_option("--timeout-ms", args->timeout_ms,
@@ -42,7 +43,7 @@ void register_verify(CLI::App& app, int& exit_code) {
     input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
     sort_findings(input.findings);
     input.coverage = std::move(result.coverage);
-    input.uri_prefix = uri_prefix_of(args->mission);
+    input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     exit_code = write_findings(input, args->format, args->output);
   });
 }

@@ -7,6 +7,7 @@ namespace uabt::cli {
 // code. Registration keeps main() free of per-command details.
 void register_compile(CLI::App& app, int& exit_code);
 void register_explain(CLI::App& app, int& exit_code);
+void register_checks(CLI::App& app, int& exit_code);
 void register_verify(CLI::App& app, int& exit_code);
 void register_gate(CLI::App& app, int& exit_code);
 void register_conform(CLI::App& app, int& exit_code);
@@ -14,5 +15,6 @@ void register_report(CLI::App& app, int& exit_code);
 void register_diff(CLI::App& app, int& exit_code);
 void register_run(CLI::App& app, int& exit_code);
 void register_prove(CLI::App& app, int& exit_code);
+void register_monitor(CLI::App& app, int& exit_code);
 
 }  // namespace uabt::cli

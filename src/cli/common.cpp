@@ -18,6 +18,12 @@ std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
   return mission;
 }
 
+void relocate_findings(std::vector<Finding>& findings, const std::string& from,
+                       const std::string& to) {
+  for (auto& f : findings)
+    if (f.location.file == from) f.location.file = to;
+}
+
 void emit(const std::string& path, const std::string& content) {
   if (path.empty() || path == "-") {
     std::cout << content;
@@ -25,6 +31,12 @@ void emit(const std::string& path, const std::string& content) {
     return;
   }
   write_file_atomically(path, content);
+}
+
+compile::SelectionStyle selection_style(const std::string& name) {
+  if (name == "reactive") return compile::SelectionStyle::reactive;
+  if (name == "optimized") return compile::SelectionStyle::optimized;
+  return compile::SelectionStyle::sequence;
 }
 
 }  // namespace uabt::cli

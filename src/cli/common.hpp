@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "base/finding.hpp"
+#include "compile/compile.hpp"
 #include "load/mission.hpp"
 
 namespace uabt::cli {
@@ -20,6 +21,13 @@ const char* tool_version();
 // directory at all).
 std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
                                               const load::LoadOptions& options);
+
+// Points the findings located in `from` (a displayed name) at `to` instead.
+void relocate_findings(std::vector<Finding>& findings, const std::string& from,
+                       const std::string& to);
+
+// The compiler's selector style named by --selection (sequence, reactive, optimized).
+compile::SelectionStyle selection_style(const std::string& name);
 
 // Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
 void emit(const std::string& path, const std::string& content);

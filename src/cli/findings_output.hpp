@@ -1,6 +1,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "load/mission.hpp"
@@ -15,13 +16,20 @@ void add_findings_output_options(CLI::App& cmd, std::string& format, std::string
 // A report input holding the mission's own (load-stage) findings.
 report::ReportInput report_input(const load::Mission& mission, std::vector<std::string> stages);
 
-// The mission directory as SARIF should prefix its files ("missions/msl_curiosity/"), when it
-// was given as a relative path inside the current directory; "" otherwise.
-std::string uri_prefix_of(const std::string& mission_arg);
+// `--source-root DIR`, for every command whose output may be SARIF.
+void add_source_root_option(CLI::App& cmd, std::string& source_root);
+
+// The mission directory as SARIF prefixes its files: relative to the source root
+// ("missions/msl_curiosity/"; `source_root` when given, else the top of the git work tree
+// that holds the mission, else the current directory), or its absolute path when it lies
+// outside the root.
+std::string sarif_uri_prefix(const std::string& mission_arg, const std::string& source_root);
 
 // Writes the findings in the chosen format; text goes to stderr unless -o is given, the
-// machine formats to stdout. Returns the exit code (0 pass, 1 fail).
+// machine formats to stdout. The text ends with the mission's verdict in `verdict_words`
+// (passed, failed). Returns the exit code (0 pass, 1 fail).
 int write_findings(const report::ReportInput& input, const std::string& format,
-                   const std::string& output);
+                   const std::string& output,
+                   const std::pair<std::string, std::string>& verdict_words = {"pass", "fail"});
 
 }  // namespace uabt::cli

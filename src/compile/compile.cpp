@@ -78,8 +78,10 @@ void trace_guard(const bt::Node& node, const std::string& path, const std::strin
 // Fig. 4: Fallback[Sequence[guard_i, SubTree alt_i] …] in priority order, default last.
 bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
                            const Options& options, std::vector<TraceEntry>& trace,
-                           std::vector<Finding>& findings) {
+                           std::vector<Finding>& findings, std::vector<SelectionStats>& stats) {
   const bool reactive = options.selection == SelectionStyle::reactive;
+  const std::size_t trace_start = trace.size();
+  const std::size_t findings_start = findings.size();
   bt::TreeDef tree;
   tree.id = adaptable;
   tree.root.tag = reactive ? "ReactiveFallback" : "Fallback";
@@ -139,6 +141,16 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
                      "selected_alt = " + req->alternative, req->alternative_location});
     tree.root.children.push_back(std::move(branch));
   }
+  if (options.selection == SelectionStyle::optimized && findings.size() == findings_start) {
+    std::vector<TraceEntry> decision_trace;
+    SelectionStats& node_stats = stats.emplace_back();
+    if (auto root =
+            optimized_selector(m, adaptable, options.bt_format, decision_trace, node_stats)) {
+      tree.root = std::move(*root);
+      trace.resize(trace_start);
+      trace.insert(trace.end(), decision_trace.begin(), decision_trace.end());
+    }
+  }
   return tree;
 }
 
@@ -173,7 +185,8 @@ Result compile_mission(const load::Mission& m, const Options& options) {
   std::vector<bt::TreeDef> alternative_trees;
   for (const auto& site : m.adaptables) {
     if (!adaptables_done.insert(site.id).second) continue;
-    doc.trees.push_back(selection_tree(m, site.id, options, result.trace, result.findings));
+    doc.trees.push_back(
+        selection_tree(m, site.id, options, result.trace, result.findings, result.selection_stats));
     trees_done.insert(site.id);
     for (const fretish::SelectionRequirement* req : m.selections_for(site.id)) {
       const load::Alternative* alt = m.find_alternative(site.id, req->alternative);

@@ -1,16 +1,20 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "base/finding.hpp"
 #include "bt/tree.hpp"
+#include "compile/decision.hpp"
 #include "fretish/domain.hpp"
 #include "fretish/expr.hpp"
 #include "load/mission.hpp"
 
 namespace uabt::compile {
 
-enum class SelectionStyle { sequence, reactive };
+// sequence: Fig. 4; reactive: Fig. 4 with reactive controls; optimized: a decision structure
+// that selects the same alternative while ticking fewer conditions (optimized_selection.cpp).
+enum class SelectionStyle { sequence, reactive, optimized };
 
 struct Options {
   SelectionStyle selection = SelectionStyle::sequence;
@@ -26,9 +30,21 @@ struct TraceEntry {
   SourceLocation source;
 };
 
+// What one adaptable node's selection costs, in condition nodes ticked per selection.
+struct SelectionStats {
+  std::string adaptable;
+  std::size_t requirements = 0;
+  std::size_t cells = 0;        // states, grouped where every atom keeps its value
+  SelectionCost algorithm1;     // Fig. 4
+  SelectionCost optimized;      // the decision structure (equal to algorithm1 when not built)
+  bool optimized_used = false;  // the selection tree is the decision structure
+  std::string reason;           // why Fig. 4 was kept
+};
+
 struct Result {
   bt::Document document;
   std::vector<TraceEntry> trace;
+  std::vector<SelectionStats> selection_stats;  // --selection optimized: one per adaptable node
   std::vector<Finding> findings;  // errors that stopped compilation (e.g. v3 + ScriptCondition)
   bool ok = false;
 };
@@ -41,6 +57,13 @@ Result compile_mission(const load::Mission& mission, const Options& options);
 // ScriptCondition, ! → Inverter, | → Fallback, & → Sequence; xor, ->, <-> rewritten first.
 bt::Node guard_to_tree(const fretish::Expr& guard, const fretish::Domain& domain,
                        SelectionStyle style);
+
+// --selection optimized: the decision structure of one adaptable node's selection, when it ticks
+// fewer conditions than Fig. 4 (on average, then in the worst case); nullopt otherwise (the
+// reason is in `stats`). Appends its trace entries (every leaf names its requirement).
+std::optional<bt::Node> optimized_selector(const load::Mission& mission,
+                                           const std::string& adaptable, int bt_format,
+                                           std::vector<TraceEntry>& trace, SelectionStats& stats);
 
 // BT.CPP script text of a relational atom: "battery < 20", "terrain == 'rocks'".
 std::string atom_to_script(const fretish::Expr& atom, const fretish::Domain& domain);

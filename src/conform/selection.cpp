@@ -5,6 +5,7 @@
 #include <map>
 
 #include "conform/compare.hpp"
+#include "conform/meaning.hpp"
 #include "conform/readback.hpp"
 #include "conform/selector_shape.hpp"
 #include "smt/evaluate.hpp"
@@ -35,6 +36,58 @@ struct BranchSlot {
 
 std::string guard_text(const fretish::SelectionRequirement& r) {
   return r.guard ? fretish::to_fretish(*r.guard) : "true (the default: no condition)";
+}
+
+// The trees an alternative brings: its main tree and the trees it calls, in its own file.
+std::vector<const bt::TreeDef*> reachable_trees(const load::Alternative& alt) {
+  std::vector<const bt::TreeDef*> out;
+  const bt::TreeDef* main = alt.document.find_tree(alt.tree_id);
+  if (main == nullptr) return out;
+  std::vector<const bt::TreeDef*> pending{main};
+  std::set<std::string> seen{main->id};
+  while (!pending.empty()) {
+    const bt::TreeDef* t = pending.back();
+    pending.pop_back();
+    out.push_back(t);
+    std::vector<const bt::Node*> nodes{&t->root};
+    while (!nodes.empty()) {
+      const bt::Node* n = nodes.back();
+      nodes.pop_back();
+      const std::string* id = n->attribute("ID");
+      if ((n->kind() == "SubTree" || n->kind() == "SubTreePlus") && id)
+        if (const bt::TreeDef* called = alt.document.find_tree(*id))
+          if (seen.insert(called->id).second) pending.push_back(called);
+      for (const auto& c : n->children) nodes.push_back(&c);
+    }
+  }
+  return out;
+}
+
+// compiled-alternative-mismatch: the trees alternative `name` runs through `call` must equal
+// its source file's; once per alternative.
+void check_alternative_trees(Context& ctx, const std::string& adaptable, const std::string& name,
+                             const bt::Node* call, std::set<std::string>& checked) {
+  if (!checked.insert(adaptable + "/" + name).second) return;
+  const load::Alternative* alt = ctx.mission().find_alternative(adaptable, name);
+  if (alt == nullptr) return;
+  for (const bt::TreeDef* source : reachable_trees(*alt)) {
+    const bool is_main = source->id == alt->tree_id;
+    // A main tree matched by content may carry another ID; its call names it.
+    const std::string* call_id = call ? call->attribute("ID") : nullptr;
+    const std::string id = is_main && call_id ? *call_id : source->id;
+    const bt::TreeDef* compiled = ctx.compiled().find_tree(id);
+    // A missing tree is a SubTree call that dangles: compiled-dangling-subtree says so.
+    if (compiled == nullptr) continue;
+    auto diff = first_difference(source->root, compiled->root, root_path(*compiled), nullptr);
+    if (!diff) continue;
+    Finding& f = ctx.report("compiled-alternative-mismatch",
+                            "tree '" + compiled->id + "' differs from alternative " + name + " (" +
+                                alt->file + ") at " + diff->path + ": " + diff->what,
+                            *diff->node, diff->path);
+    f.adaptable = adaptable;
+    f.alternatives = {name};
+    break;  // the first difference of the alternative
+  }
 }
 
 class SelectionCheck {
@@ -347,55 +400,11 @@ class SelectionCheck {
     f.witness = witness;
   }
 
-  // The trees an alternative brings: its main tree and the trees it calls, in its own file.
-  static std::vector<const bt::TreeDef*> reachable_trees(const load::Alternative& alt) {
-    std::vector<const bt::TreeDef*> out;
-    const bt::TreeDef* main = alt.document.find_tree(alt.tree_id);
-    if (main == nullptr) return out;
-    std::vector<const bt::TreeDef*> pending{main};
-    std::set<std::string> seen{main->id};
-    while (!pending.empty()) {
-      const bt::TreeDef* t = pending.back();
-      pending.pop_back();
-      out.push_back(t);
-      std::vector<const bt::Node*> nodes{&t->root};
-      while (!nodes.empty()) {
-        const bt::Node* n = nodes.back();
-        nodes.pop_back();
-        const std::string* id = n->attribute("ID");
-        if ((n->kind() == "SubTree" || n->kind() == "SubTreePlus") && id)
-          if (const bt::TreeDef* called = alt.document.find_tree(*id))
-            if (seen.insert(called->id).second) pending.push_back(called);
-        for (const auto& c : n->children) nodes.push_back(&c);
-      }
-    }
-    return out;
-  }
-
   void check_alternatives() {
     for (const BranchSlot& b : branches_) {
       if (b.shape.alternatives.empty()) continue;
-      const std::string& name = b.shape.alternatives.front();
-      if (!checked_alternatives_.insert(adaptable_ + "/" + name).second) continue;
-      const load::Alternative* alt = ctx_.mission().find_alternative(adaptable_, name);
-      if (alt == nullptr) continue;
-      for (const bt::TreeDef* source : reachable_trees(*alt)) {
-        const bool is_main = source->id == alt->tree_id;
-        // A main tree matched by content may carry another ID; its call names it.
-        const std::string* call_id = b.shape.call ? b.shape.call->attribute("ID") : nullptr;
-        const std::string id = is_main && call_id ? *call_id : source->id;
-        const bt::TreeDef* compiled = ctx_.compiled().find_tree(id);
-        // A missing tree is a SubTree call that dangles: compiled-dangling-subtree says so.
-        if (compiled == nullptr) continue;
-        auto diff = first_difference(source->root, compiled->root, root_path(*compiled), nullptr);
-        if (!diff) continue;
-        Finding& f = report("compiled-alternative-mismatch",
-                            "tree '" + compiled->id + "' differs from alternative " + name + " (" +
-                                alt->file + ") at " + diff->path + ": " + diff->what,
-                            *diff->node, diff->path);
-        f.alternatives = {name};
-        break;  // the first difference of the alternative
-      }
+      check_alternative_trees(ctx_, adaptable_, b.shape.alternatives.front(), b.shape.call,
+                              checked_alternatives_);
     }
   }
 
@@ -411,11 +420,77 @@ class SelectionCheck {
 
 }  // namespace
 
+namespace {
+
+// A selection tree of another shape than Fig. 4: it conforms when its one-tick meaning equals
+// the requirements' (DESIGN §6); the shape findings then only describe its style. When its
+// meaning cannot be read, the shape findings stand and a Fig. 4-like tree gets the per-branch
+// checks. Returns false in that case.
+bool check_by_meaning(Context& ctx, Prover& prover, const std::string& adaptable,
+                      std::vector<Finding>& shape_findings,
+                      std::set<std::string>& checked_alternatives) {
+  const bt::TreeDef* tree = ctx.compiled().find_tree(adaptable);
+  if (tree == nullptr || tree->root.tag.empty()) return false;
+  const SelectionMeaning meaning = prove_selection_meaning(ctx, prover, adaptable, *tree);
+  const std::string path = root_path(*tree);
+  switch (meaning.verdict) {
+    case SelectionMeaning::Verdict::unreadable:
+      for (Finding& f : shape_findings)
+        f.notes.push_back("its meaning could not be read either: " + meaning.reason);
+      return false;
+    case SelectionMeaning::Verdict::unknown: {
+      Finding& f = ctx.report("verification-inconclusive",
+                              "could not decide whether the selection tree '" + adaptable +
+                                  "' selects what the requirements select: " + meaning.reason,
+                              tree->root, path);
+      f.adaptable = adaptable;
+      return false;
+    }
+    case SelectionMeaning::Verdict::equal:
+    case SelectionMeaning::Verdict::differs: break;
+  }
+  for (Finding& f : shape_findings) {
+    f.severity = Severity::note;
+    f.notes.push_back(meaning.verdict == SelectionMeaning::Verdict::equal
+                          ? "a matter of style: the selection is proved to select the same "
+                            "alternative as the requirements in every state of the domain"
+                          : "the selection's meaning was checked instead of its shape");
+    ctx.findings().push_back(std::move(f));
+  }
+  if (meaning.verdict == SelectionMeaning::Verdict::equal) {
+    for (const auto& call : meaning.calls)
+      check_alternative_trees(ctx, adaptable, call.alternative, call.node, checked_alternatives);
+    return true;
+  }
+  Finding& f = ctx.report("compiled-selection-mismatch",
+                          "the selection tree '" + adaptable +
+                              "' does not select what the requirements select: in the state " +
+                              describe(meaning.witness) + " it selects " +
+                              meaning.compiled_selects + " where the requirements select " +
+                              meaning.required_selects,
+                          tree->root, path);
+  f.adaptable = adaptable;
+  f.witness = meaning.witness;
+  if (!meaning.required_by.empty()) f.requirements = {meaning.required_by};
+  f.alternatives = meaning.alternatives;
+  return true;
+}
+
+}  // namespace
+
 void check_selection(Context& ctx, Prover& prover, const std::string& adaptable,
                      std::set<std::string>& checked_alternatives) {
-  std::optional<Selector> selector = read_selector(ctx, adaptable);
-  if (!selector) return;
-  SelectionCheck(ctx, prover, adaptable, std::move(*selector), checked_alternatives).run();
+  // Shape first, into a scratch context: a Fig. 4 tree gets the precise per-branch checks.
+  Context shape(ctx.mission(), ctx.compiled());
+  std::optional<Selector> selector = read_selector(shape, adaptable);
+  if (selector && shape.findings().empty()) {
+    SelectionCheck(ctx, prover, adaptable, std::move(*selector), checked_alternatives).run();
+    return;
+  }
+  if (check_by_meaning(ctx, prover, adaptable, shape.findings(), checked_alternatives)) return;
+  for (Finding& f : shape.findings()) ctx.findings().push_back(std::move(f));
+  if (selector)
+    SelectionCheck(ctx, prover, adaptable, std::move(*selector), checked_alternatives).run();
 }
 
 }  // namespace uabt::conform

@@ -22,6 +22,9 @@ struct Variable {
   std::vector<std::string> enum_values;  // enumeration literals, declaration order
   SourceLocation location;
   bool declared = true;  // false: inferred (an undeclared identifier used as a condition)
+  // Why the declaration cannot be used as written (an empty range…), reported as
+  // domain-invalid; "" when it is fine. Guard checks over such a variable are not made.
+  std::string invalid;
 };
 
 // An expression that always holds (domain.fret `assume`, or a FRET "assumption" requirement).
@@ -34,6 +37,9 @@ struct Assumption {
 struct Domain {
   std::vector<Variable> variables;
   std::vector<Assumption> assumptions;
+  // `tick 100 ms`: seconds per tick, so that durations in time units become ticks.
+  std::optional<double> tick_seconds;
+  SourceLocation tick_location;
 
   const Variable* find(const std::string& name) const;
   Variable* find(const std::string& name);

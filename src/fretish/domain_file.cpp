@@ -86,6 +86,10 @@ class DomainBuilder {
       assumption(d, text, map, names);
       return;
     }
+    if (d.is<g::tick_declaration>()) {
+      tick(d, text, map);
+      return;
+    }
     Variable prototype;
     std::string lower_written, upper_written;
     SourceLocation lower_at, upper_at;
@@ -118,15 +122,18 @@ class DomainBuilder {
     const std::string first_name = names.name_of(*declared.front());
     if (!bounds_valid(prototype.type, is_unsigned, first_name, lower_written, upper_written,
                       lower_at, upper_at)) {
-      lower_written.clear();  // reported; leave the variable unbounded
+      lower_written.clear();  // reported; leave the variable unbounded, its checks unmade
       upper_written.clear();
+      prototype.invalid = findings_.back().message;
     }
     prototype.lower = lower_written;
     prototype.upper = upper_written;
     if (is_unsigned && prototype.lower.empty()) prototype.lower = "0";
     if (prototype.type == VarType::enumeration) {
-      if (literals.empty())
+      if (literals.empty()) {
         invalid("enum '" + first_name + "' has no literals", map.location(declared.front()->begin));
+        prototype.invalid = findings_.back().message;
+      }
       for (std::size_t i = 0; i < literals.size(); ++i) {
         bool repeated = false;
         for (std::size_t j = 0; j < prototype.enum_values.size(); ++j)
@@ -182,6 +189,47 @@ class DomainBuilder {
       return false;
     }
     return true;
+  }
+
+  void tick(const SyntaxNode& d, std::string_view text, const TextMap& map) {
+    double value = 0;
+    std::optional<double> per_unit;
+    for (const auto& child : d.children) {
+      if (child->is<g::tick_period>())
+        value = std::strtod(std::string(child->text(text)).c_str(), nullptr);
+      if (child->is<g::tick_unit>()) per_unit = unit_seconds(child->text(text));
+    }
+    const SourceLocation where = map.location(d.begin);
+    if (!per_unit) {
+      invalid("the tick period needs a unit of time (e.g. 'tick 100 ms')", where);
+      return;
+    }
+    if (domain_.tick_seconds) {
+      invalid("the tick period is already declared" +
+                  (domain_.tick_location.line > 0
+                       ? " at line " + std::to_string(domain_.tick_location.line)
+                       : std::string()),
+              where);
+      return;
+    }
+    if (!(value > 0) || !std::isfinite(value)) {
+      invalid("the tick period must be greater than zero", where);
+      return;
+    }
+    domain_.tick_seconds = value * *per_unit;
+    domain_.tick_location = where;
+  }
+
+  // ms, us, s, min, h, or FRETISH's words (millisecond, secs, minutes, …).
+  static std::optional<double> unit_seconds(std::string_view unit) {
+    std::string u(unit);
+    for (char& c : u) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (u == "ms" || u.rfind("milli", 0) == 0) return 1e-3;
+    if (u == "us" || u.rfind("micro", 0) == 0) return 1e-6;
+    if (u == "min" || u.rfind("minute", 0) == 0) return 60;
+    if (u == "h" || u.rfind("hour", 0) == 0) return 3600;
+    if (u.rfind("tick", 0) == 0) return std::nullopt;
+    return 1;  // s, sec, second(s)
   }
 
   void assumption(const SyntaxNode& d, std::string_view text, const TextMap& map,

@@ -43,17 +43,6 @@ bool is_selection_scope(const Scope& s) {
           s.keyword == "if in");
 }
 
-bool mentions_selected_alt(const Expr& e) {
-  if (e.kind == ExprKind::identifier && e.text == "selected_alt") return true;
-  for (const auto& a : e.args)
-    if (a && mentions_selected_alt(*a)) return true;
-  return false;
-}
-
-bool is_mission_property(const Requirement& r) {
-  return !r.freeform && r.response && !mentions_selected_alt(*r.response);
-}
-
 class Classifier {
  public:
   Classifier(const Requirement& r, std::vector<Finding>& findings) : r_(r), findings_(findings) {}
@@ -61,12 +50,22 @@ class Classifier {
   // Reports every unsupported field; true when there was none.
   bool check() {
     if (r_.freeform) {
-      unsupported("freeform requirement '" + r_.text + "'" + kSubset +
-                      "write it as 'In <adaptable> [if <guard>] Mission shall satisfy "
-                      "selected_alt = <alternative>'",
+      unsupported("freeform requirement '" + r_.text +
+                      "' has no formal meaning: FRET does not formalize it; write it in "
+                      "FRETISH, e.g. 'In <adaptable> [if <guard>] Mission shall satisfy "
+                      "selected_alt = <alternative>' or a mission property",
                   r_.location);
       return false;
     }
+    if (r_.probability) {
+      unsupported("probability 'with probability " + r_.probability->relop + " " +
+                      r_.probability->number +
+                      "' has no meaning here: a selection is not probabilistic and a run has no "
+                      "probability",
+                  at(r_, r_.probability->range));
+    }
+    // Not meant as a selection requirement: a mission property (DESIGN §10).
+    if (!mentions_selected_alt()) return false;
     if (!r_.scope) {
       unsupported(
           "scope missing: a selection requirement needs 'In <adaptable>' (or "
@@ -81,11 +80,6 @@ class Classifier {
       unsupported("component '" + r_.component + "'" + kSubset + "only 'Mission'",
                   at(r_, r_.component_range));
     }
-    if (r_.probability) {
-      unsupported("probability 'with probability " + r_.probability->relop + " " +
-                      r_.probability->number + "'" + kSubset + "selection is not probabilistic",
-                  at(r_, r_.probability->range));
-    }
     if (!r_.timing.keyword.empty() && r_.timing.keyword != "immediately") {
       unsupported(
           "timing '" + timing_text(r_.timing) + "'" + kSubset + "only none or 'immediately'",
@@ -97,6 +91,15 @@ class Classifier {
                   at(r_, r_.response_range));
     }
     return ok_;
+  }
+
+  // `selected_alt` is the selection requirements' own word: a requirement that reads it was
+  // meant to select an alternative (a property names `<adaptable>.selected` instead).
+  bool mentions_selected_alt() const {
+    if (!r_.response) return false;
+    for (const std::string& name : identifiers_of(*r_.response))
+      if (name == "selected_alt") return true;
+    return false;
   }
 
   // The alternative's identifier when the response is exactly `selected_alt = <identifier>`.
@@ -128,24 +131,21 @@ class Classifier {
 
 std::vector<SelectionRequirement> classify_selection(const std::vector<Requirement>& requirements,
                                                      std::vector<Finding>& findings) {
-  std::vector<SelectionRequirement> selections;
+  return classify_requirements(requirements, findings).selections;
+}
+
+Classification classify_requirements(const std::vector<Requirement>& requirements,
+                                     std::vector<Finding>& findings) {
+  Classification out;
+  std::vector<SelectionRequirement>& selections = out.selections;
   for (std::size_t i = 0; i < requirements.size(); ++i) {
     const Requirement& r = requirements[i];
-    // A requirement that does not choose an alternative is a mission property (DESIGN §10),
-    // checked by the monitors and by prove; only its probability has no meaning there.
-    if (is_mission_property(r)) {
-      if (r.probability) {
-        Finding f = make_finding("fretish-unsupported",
-                                 "probability 'with probability " + r.probability->relop + " " +
-                                     r.probability->number + "': a run has no probability",
-                                 at(r, r.probability->range));
-        f.requirements = {r.id};
-        findings.push_back(std::move(f));
-      }
+    Classifier classifier(r, findings);
+    const std::size_t before = findings.size();
+    if (!classifier.check()) {
+      if (findings.size() == before) out.properties.push_back(r);
       continue;
     }
-    Classifier classifier(r, findings);
-    if (!classifier.check()) continue;
     const Expr* alternative = classifier.alternative();
     SelectionRequirement s;
     s.id = r.id;
@@ -158,7 +158,7 @@ std::vector<SelectionRequirement> classify_selection(const std::vector<Requireme
     s.source_index = static_cast<int>(i);
     selections.push_back(std::move(s));
   }
-  return selections;
+  return out;
 }
 
 }  // namespace uabt::fretish

@@ -20,8 +20,19 @@ struct SelectionRequirement {
   int source_index = 0;        // position in the requirement set (priority order)
 };
 
-// Classifies parsed requirements. Those outside the subset get a `fretish-unsupported`
-// error that names the field (scope, timing, response, component, probability).
+struct Classification {
+  std::vector<SelectionRequirement> selections;  // file order
+  std::vector<Requirement> properties;           // mission properties (DESIGN §10), file order
+};
+
+// Classifies parsed requirements. A requirement that reads `selected_alt` but is outside the
+// selection subset gets a `fretish-unsupported` error naming each field (scope, component,
+// timing, response); so do what has no meaning at all (a freeform sentence, `with
+// probability`). Every other requirement is a mission property.
+Classification classify_requirements(const std::vector<Requirement>& requirements,
+                                     std::vector<Finding>& findings);
+
+// The selection requirements of classify_requirements.
 std::vector<SelectionRequirement> classify_selection(const std::vector<Requirement>& requirements,
                                                      std::vector<Finding>& findings);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 
 namespace uabt::fretish::detail {
@@ -65,6 +66,42 @@ std::string previous_operator(std::string_view text, std::size_t offset) {
   return is_reserved_word(word) ? std::string(word) : std::string();
 }
 
+// The ASCII that FRETISH means by characters word processors and formula editors put in.
+struct AsciiForm {
+  char32_t code;
+  const char* ascii;
+};
+constexpr AsciiForm kAsciiForms[] = {
+    {U'\u2264', "<="},      {U'\u2265', ">="},  {U'\u2260', "!="}, {U'\u00AC', "!"},
+    {U'\u2227', "&"},       {U'\u2228', "|"},   {U'\u2192', "->"}, {U'\u21D2', "=>"},
+    {U'\u2194', "<->"},     {U'\u21D4', "<=>"}, {U'\u2212', "-"},  {U'\u2013', "-"},
+    {U'\u2014', "-"},       {U'\u00D7', "*"},   {U'\u00F7', "/"},  {U'\u201C', "\""},
+    {U'\u201D', "\""},      {U'\u2018', "'"},   {U'\u2019', "'"},  {U'\u00A0', "a space"},
+    {U'\u2009', "a space"}, {U'\u2261', "<->"}, {U'\u2295', "xor"}};
+
+// "'≤' (U+2264, not ASCII): write <=" for the UTF-8 character at the start of `text`.
+std::string describe_non_ascii(std::string_view text) {
+  const unsigned char lead = static_cast<unsigned char>(text[0]);
+  const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+  char32_t code = length == 1 ? lead : lead & (0x7F >> length);
+  bool valid = length > 1 && text.size() >= length;
+  for (std::size_t k = 1; valid && k < length; ++k) {
+    const unsigned char next = static_cast<unsigned char>(text[k]);
+    valid = (next & 0xC0) == 0x80;
+    code = (code << 6) | (next & 0x3F);
+  }
+  if (!valid) return "a byte that is not UTF-8 (FRETISH is ASCII)";
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "U+%04X", static_cast<unsigned>(code));
+  std::string out = "'" + std::string(text.substr(0, length)) + "' (" + hex + ", not ASCII)";
+  for (const auto& form : kAsciiForms)
+    if (form.code == code)
+      return out + ": write " +
+             (std::string_view(form.ascii) == "a space" ? std::string("a space")
+                                                        : "'" + std::string(form.ascii) + "'");
+  return out + ": FRETISH is ASCII";
+}
+
 }  // namespace
 
 bool is_reserved_word(std::string_view word) {
@@ -97,7 +134,8 @@ std::string describe_token(std::string_view text, std::size_t offset, const char
     while (end < text.size() && end - offset < 3 && is_operator_char(text[end])) ++end;
     return "'" + std::string(text.substr(offset, end - offset)) + "'";
   }
-  if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
+  if (static_cast<unsigned char>(c) >= 0x80) return describe_non_ascii(text.substr(offset));
+  if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) == 0x7f)
     return "a character that is not printable ASCII";
   return "'" + std::string(1, c) + "'";
 }

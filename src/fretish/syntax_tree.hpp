@@ -71,7 +71,8 @@ using NodeRules = RuleSet<
     // domain declarations
     g::boolean_declaration, g::integer_declaration, g::real_declaration, g::enum_declaration,
     g::assumption_declaration, g::integer_type, g::real_type, g::variable_name, g::lower_bound,
-    g::upper_bound, g::enum_literal, g::assumption_name>;
+    g::upper_bound, g::enum_literal, g::assumption_name, g::tick_declaration, g::tick_period,
+    g::tick_unit>;
 
 // What a rule is called in an "expected …" message; rules without a name are not reported.
 template <typename Rule>

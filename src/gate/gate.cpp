@@ -1,6 +1,8 @@
 #include "gate/gate.hpp"
 
 #include "bt/xml_io.hpp"
+#include "gate/properties.hpp"
+#include "report/reports.hpp"
 
 namespace uabt::gate {
 
@@ -21,6 +23,8 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
   }
   report.findings = m.findings;
   report.stages = {"load"};
+  const std::vector<Finding> properties = check_mission_properties(m);
+  report.findings.insert(report.findings.end(), properties.begin(), properties.end());
 
   out.verification = verify::verify_mission(m, options.verify);
   report.stages.push_back("verify");
@@ -49,6 +53,13 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
       report.findings.insert(report.findings.end(), out.conformance.findings.begin(),
                              out.conformance.findings.end());
     }
+  }
+  // A failing gate keeps the candidate as compiled.rejected.xml: what it says
+  // about the tree points there.
+  if (out.compiled.ok && !report.passed()) {
+    report.compiled_tree_file = report::kRejectedTree;
+    for (auto& f : report.findings)
+      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
   }
   sort_findings(report.findings);
   return out;

@@ -102,6 +102,14 @@ std::optional<MissionLayout> discover_layout(const fs::path& dir, std::string& e
   error =
       "no mission.xml (uabt layout) and no mission/mission.xml with resource/ (the "
       "replication package's layout)";
+  // An uplink package given where its mission belongs: say how to gate it.
+  auto without_slash = [](fs::path p) { return p.filename().empty() ? p.parent_path() : p; };
+  const fs::path parent = without_slash(fs::absolute(dir).lexically_normal()).parent_path();
+  if (is_file(dir / "uplink.json") || parent.filename() == "uplinks") {
+    const fs::path mission = without_slash((dir / ".." / "..").lexically_normal());
+    error += "; this looks like an uplink package: gate it against its mission with `uabt gate " +
+             mission.generic_string() + " --uplink " + dir.generic_string() + "`";
+  }
   return std::nullopt;
 }
 

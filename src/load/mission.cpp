@@ -8,6 +8,10 @@
 #include "fretish/parse.hpp"
 #include "load/layout.hpp"
 #include "load/references.hpp"
+#include "load/registered_nodes.hpp"
+#include "load/unknowable.hpp"
+#include "load/uplink.hpp"
+#include "load/vocabulary.hpp"
 
 namespace uabt::load {
 
@@ -35,6 +39,12 @@ std::vector<const fretish::SelectionRequirement*> Mission::selections_for(
   return guarded;
 }
 
+bool Mission::first_hit(const std::string& adaptable) const {
+  for (const auto& site : adaptables)
+    if (site.id == adaptable) return site.policy == "first";
+  return false;
+}
+
 namespace {
 
 std::optional<std::string> read_or_report(const fs::path& path, const std::string& shown,
@@ -45,8 +55,35 @@ std::optional<std::string> read_or_report(const fs::path& path, const std::strin
   return text;
 }
 
+// policy="unique|first" (DESIGN §11); one node id, one policy.
+void check_policy(const bt::Node& node, AdaptableSite& site, const std::vector<AdaptableSite>& seen,
+                  std::vector<Finding>& findings) {
+  if (const std::string* policy = node.attribute("policy")) {
+    if (*policy == "unique" || *policy == "first") {
+      site.policy = *policy;
+    } else {
+      findings.push_back(make_finding("bt-structure",
+                                      "<Adaptable> policy=\"" + *policy +
+                                          "\" is not a hit policy: use \"unique\" (the default: "
+                                          "an overlap is an error) or \"first\" (priority decides)",
+                                      site.location));
+    }
+  }
+  for (const auto& other : seen) {
+    if (other.id != site.id || other.policy == site.policy) continue;
+    Finding f = make_finding("bt-structure",
+                             "<Adaptable ID=\"" + site.id + "\"> has policy \"" + site.policy +
+                                 "\" here and \"" + other.policy +
+                                 "\" elsewhere: one node has one hit policy",
+                             site.location);
+    f.adaptable = site.id;
+    findings.push_back(std::move(f));
+    break;
+  }
+}
+
 void collect_adaptables(const bt::Node& node, const std::string& tree_id, const std::string& file,
-                        std::vector<AdaptableSite>& out) {
+                        std::vector<AdaptableSite>& out, std::vector<Finding>& findings) {
   // Iterative: trees may be deep, and the loader must not overflow the stack.
   std::vector<const bt::Node*> stack{&node};
   while (!stack.empty()) {
@@ -54,64 +91,86 @@ void collect_adaptables(const bt::Node& node, const std::string& tree_id, const 
     stack.pop_back();
     if (n->tag == "Adaptable") {
       const std::string* id = n->attribute("ID");
-      out.push_back({id ? *id : std::string(), tree_id, {file, n->line, n->column}});
+      AdaptableSite site{id ? *id : std::string(), tree_id, {file, n->line, n->column}};
+      check_policy(*n, site, out, findings);
+      out.push_back(std::move(site));
     }
     for (auto it = n->children.rbegin(); it != n->children.rend(); ++it) stack.push_back(&*it);
   }
 }
 
-// Parses a requirements file. The mission's own file fills the list; an uplink's file is
-// merged onto it: a requirement with a new id is appended (below the mission's, above the
-// default, since the default always goes last), one with an existing id replaces it in place.
-void load_requirements(Mission& m, const fs::path& path, bool from_uplink) {
+// Line `number` (1-based) of `text`, "" when there is none.
+std::string line_of(const std::string& text, int number) {
+  std::size_t begin = 0;
+  for (int k = 1; k < number && begin != std::string::npos; ++k) {
+    begin = text.find('\n', begin);
+    if (begin != std::string::npos) ++begin;
+  }
+  if (number < 1 || begin == std::string::npos) return {};
+  return text.substr(begin, text.find('\n', begin) - begin);
+}
+
+// Parses a requirements file: the mission's own, or an uplink package's (then the caller
+// merges it).
+std::optional<std::vector<fretish::Requirement>> parse_requirements(Mission& m,
+                                                                    const fs::path& path) {
   const std::string shown = display_path(path, m.dir);
-  if (!from_uplink) m.requirements_file = shown;
   auto text = read_or_report(path, shown, m.findings);
-  if (!text) return;
+  if (!text) return std::nullopt;
   fretish::ParseResult parsed = path.extension() == ".json"
                                     ? fretish::parse_fret_json(*text, shown, m.domain)
                                     : fretish::parse_requirements_file(*text, shown);
+  for (const auto& f : parsed.findings)
+    if (f.check == "fretish-syntax")
+      m.unparsed_requirements.emplace_back(f.location, line_of(*text, f.location.line));
   m.findings.insert(m.findings.end(), parsed.findings.begin(), parsed.findings.end());
-  if (!from_uplink) {
-    m.requirements = std::move(parsed.requirements);
-    return;
-  }
-  for (auto& r : parsed.requirements) {
-    auto same_id = std::find_if(m.requirements.begin(), m.requirements.end(),
-                                [&](const fretish::Requirement& old) { return old.id == r.id; });
-    if (same_id != m.requirements.end())
-      *same_id = std::move(r);
-    else
-      m.requirements.push_back(std::move(r));
-  }
+  return std::move(parsed.requirements);
 }
 
 void load_domain(Mission& m, const fs::path& path) {
   const std::string shown = display_path(path, m.dir);
   auto text = read_or_report(path, shown, m.findings);
   if (!text) return;
+  m.has_domain_file = true;
   fretish::Domain declared = fretish::parse_domain_file(*text, shown, m.findings);
   // Declarations from a FRET export (already in m.domain) come first; domain.fret adds to them.
   for (auto& v : declared.variables) {
     if (m.domain.find(v.name) == nullptr) m.domain.variables.push_back(std::move(v));
   }
   for (auto& a : declared.assumptions) m.domain.assumptions.push_back(std::move(a));
+  if (declared.tick_seconds && !m.domain.tick_seconds) {
+    m.domain.tick_seconds = declared.tick_seconds;
+    m.domain.tick_location = declared.tick_location;
+  }
 }
 
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
+  const std::size_t first = m.findings.size();
   auto doc = bt::read_document(path, read_options, m.findings);
   if (doc) m.nodes = doc->node_models;
+  // A --nodes file outside the mission is named relative to the mission directory too, like
+  // every finding's file, so that the mission's path in front of it opens it.
+  const std::string shown = display_path(path, m.dir);
+  for (std::size_t k = first; k < m.findings.size(); ++k)
+    if (m.findings[k].location.file == shown)
+      m.findings[k].location.file = relative_path(path, m.dir);
 }
 
 void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
                        const bt::ReadOptions& read_options) {
   for (const auto& file : files) {
+    const std::string key = file.adaptable + "/" + file.name;
     auto doc = bt::read_document(file.path, read_options, m.findings);
-    if (!doc) continue;
+    if (!doc) {
+      m.unreadable_alternatives[key] = display_path(file.path, m.dir);
+      continue;
+    }
+    m.unreadable_alternatives.erase(key);  // an uplink's readable version replaces it
     Alternative alt;
     alt.adaptable = file.adaptable;
     alt.name = file.name;
     alt.file = display_path(file.path, m.dir);
+    alt.source = file.path;
     const bt::TreeDef* main = doc->find_tree(file.name);
     if (main == nullptr) main = doc->main();
     if (main == nullptr) {
@@ -120,14 +179,15 @@ void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
           "alternative '" + file.name + "' has no tree named '" + file.name +
               "', its main_tree_to_execute names no tree here, and it has more than one tree",
           {alt.file, doc->root_line, 1}));
+      m.unreadable_alternatives[key] = alt.file;
       continue;
     }
     alt.tree_id = main->id;
     alt.document = std::move(*doc);
     // An uplinked alternative with the name of an existing one is its new version.
-    auto same = std::find_if(m.alternatives.begin(), m.alternatives.end(), [&](const Alternative& a) {
-      return a.adaptable == alt.adaptable && a.name == alt.name;
-    });
+    auto same = std::find_if(
+        m.alternatives.begin(), m.alternatives.end(),
+        [&](const Alternative& a) { return a.adaptable == alt.adaptable && a.name == alt.name; });
     if (same != m.alternatives.end())
       *same = std::move(alt);
     else
@@ -168,16 +228,25 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
   std::error_code ec;
   const std::string shown = display_path(uplink, m.dir);
   if (!fs::is_directory(uplink, ec)) {
-    m.findings.push_back(make_finding("load-file", shown + ": uplink package is not a directory",
-                                      {shown, 0, 0}));
+    m.findings.push_back(
+        make_finding("load-file", shown + ": uplink package is not a directory", {shown, 0, 0}));
     return;
   }
   m.uplinks.push_back(shown);
   bool has_content = false;
-  if (fs::is_regular_file(uplink / "requirements.fret", ec)) {
-    load_requirements(m, uplink / "requirements.fret", true);
+  UplinkPlan plan;
+  if (fs::exists(uplink / "uplink.json", ec)) {
+    plan = read_uplink_plan(uplink / "uplink.json", display_path(uplink / "uplink.json", m.dir),
+                            m.findings);
     has_content = true;
   }
+  std::vector<fretish::Requirement> incoming;
+  if (fs::is_regular_file(uplink / "requirements.fret", ec)) {
+    if (auto parsed = parse_requirements(m, uplink / "requirements.fret"))
+      incoming = std::move(*parsed);
+    has_content = true;
+  }
+  merge_requirements(m, std::move(incoming), plan, shown);
   if (fs::is_regular_file(uplink / "domain.fret", ec)) {
     load_domain(m, uplink / "domain.fret");
     has_content = true;
@@ -187,10 +256,44 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
     has_content = true;
   }
   if (!has_content)
-    m.findings.push_back(make_finding(
-        "load-file",
-        shown + ": uplink package holds no requirements.fret, domain.fret or alternatives/",
-        {shown, 0, 0}));
+    m.findings.push_back(make_finding("load-file",
+                                      shown + ": uplink package holds no requirements.fret, "
+                                              "domain.fret, alternatives/ or uplink.json",
+                                      {shown, 0, 0}));
+}
+
+// Files uabt would otherwise pass over in silence: a second requirements file, and an
+// alternative left directly in alternatives/ instead of alternatives/<adaptable>/.
+void report_layout_mistakes(Mission& m, const MissionLayout& layout) {
+  std::error_code ec;
+  if (layout.kind != "uabt") return;
+  if (fs::is_regular_file(m.dir / "requirements.fret", ec) &&
+      fs::is_regular_file(m.dir / "requirements.json", ec)) {
+    Finding f = make_finding("load-ignored-file",
+                             "both requirements.fret and requirements.json exist: uabt reads "
+                             "requirements.fret and ignores requirements.json",
+                             {"requirements.json", 0, 0});
+    f.notes.push_back("keep one of them, so that what is verified is what the team reads");
+    m.findings.push_back(std::move(f));
+  }
+  const fs::path root = m.dir / "alternatives";
+  if (!fs::is_directory(root, ec)) return;
+  std::vector<fs::path> stray;
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && it->path().extension() == ".xml") stray.push_back(it->path());
+  std::sort(stray.begin(), stray.end());
+  for (const auto& file : stray) {
+    std::string example = "alternatives/<adaptable>/" + file.filename().string();
+    if (!m.adaptables.empty() && !m.adaptables.front().id.empty())
+      example = "alternatives/" + m.adaptables.front().id + "/" + file.filename().string();
+    Finding f = make_finding("load-ignored-file",
+                             display_path(file, m.dir) +
+                                 " lies directly in alternatives/ and is not read: an alternative "
+                                 "belongs to one adaptable node",
+                             {display_path(file, m.dir), 0, 0});
+    f.notes.push_back("move it to " + example);
+    m.findings.push_back(std::move(f));
+  }
 }
 
 }  // namespace
@@ -204,6 +307,7 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
   m.dir = dir;
   m.name = fs::weakly_canonical(dir).filename().string();
   m.layout = layout->kind;
+  m.mission_xml = layout->mission_xml;
 
   bt::ReadOptions read_options;
   read_options.confine_to = dir;
@@ -211,15 +315,17 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
 
   if (auto doc = bt::read_document(layout->mission_xml, read_options, m.findings)) {
     m.tree = std::move(*doc);
-    for (const auto& t : m.tree.trees) collect_adaptables(t.root, t.id, t.file, m.adaptables);
+    for (const auto& t : m.tree.trees)
+      collect_adaptables(t.root, t.id, t.file, m.adaptables, m.findings);
   }
 
   if (layout->requirements.empty())
     m.findings.push_back(
         make_finding("load-file", "no requirements file (requirements.fret or requirements.json)",
                      {display_path(dir, dir), 0, 0}));
-  else
-    load_requirements(m, layout->requirements, false);
+  else if (auto parsed = parse_requirements(m, layout->requirements))
+    m.requirements = std::move(*parsed);
+  if (!layout->requirements.empty()) m.requirements_file = display_path(layout->requirements, dir);
 
   if (layout->domain) load_domain(m, *layout->domain);
   if (options.nodes_file)
@@ -228,11 +334,18 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
     load_nodes(m, *layout->nodes, read_options);
 
   load_alternatives(m, layout->alternatives, read_options);
+  report_layout_mistakes(m, *layout);
   for (const auto& uplink : options.uplinks) merge_uplink(m, uplink, read_options);
-  m.selections = fretish::classify_selection(m.requirements, m.findings);
+  fretish::Classification classified = fretish::classify_requirements(m.requirements, m.findings);
+  m.selections = std::move(classified.selections);
+  m.properties = std::move(classified.properties);
+  describe_merges(m);
+  check_vocabulary(m, vocabulary_uses(m));
   infer_condition_variables(m);
+  mark_unknowable(m);
   check_references(m);
   check_all_structure(m);
+  check_registered_nodes(m);
   sort_findings(m.findings);
   return m;
 }

@@ -1,5 +1,6 @@
 #include "load/references.hpp"
 
+#include "base/suggest.hpp"
 #include "bt/node_kinds.hpp"
 
 #include <cctype>
@@ -33,9 +34,12 @@ SourceLocation location_of(const Expr& e, const SourceLocation& owner) {
   return {owner.file, e.range.begin_line, e.range.begin_column};
 }
 
-void infer_from(const Expr& e, const SourceLocation& owner, fretish::Domain& domain) {
+void infer_from(const Expr& e, const SourceLocation& owner, fretish::Domain& domain,
+                const std::set<std::string>& undeclared) {
   for (const Expr* atom : boolean_atoms(e)) {
-    if (domain.find(atom->text) != nullptr || domain.enum_owning(atom->text) != nullptr) continue;
+    if (domain.find(atom->text) != nullptr || domain.enum_owning(atom->text) != nullptr ||
+        undeclared.count(atom->text))
+      continue;
     fretish::Variable v;
     v.name = atom->text;
     v.type = fretish::VarType::boolean;
@@ -109,15 +113,28 @@ void duplicate_tree_ids(Mission& m) {
     for (const auto& t : alt.document.trees) claim(t, "alternative '" + alt.name + "'");
 }
 
+// Where an alternative's file would be, for the message that says it is missing.
+std::string expected_file(const Mission& m, const std::string& adaptable, const std::string& alt) {
+  if (m.layout == "replication") return "resource/" + adaptable + "/" + alt + "/" + alt + ".xml";
+  return "alternatives/" + adaptable + "/" + alt + ".xml";
+}
+
 void selection_references(Mission& m) {
   std::set<std::string> adaptable_ids;
-  for (const auto& site : m.adaptables) adaptable_ids.insert(site.id);
+  bool id_missing = false;  // an <Adaptable> without ID: which node a scope means is unknown
+  for (const auto& site : m.adaptables) {
+    if (site.id.empty())
+      id_missing = true;
+    else
+      adaptable_ids.insert(site.id);
+  }
   std::set<std::pair<std::string, std::string>> selected;
   std::map<std::string, const fretish::SelectionRequirement*> defaults;
 
   for (const auto& s : m.selections) {
     selected.insert({s.adaptable, s.alternative});
     if (!adaptable_ids.count(s.adaptable)) {
+      if (id_missing) continue;  // bt-structure reports the <Adaptable> without an ID
       std::vector<std::string> known(adaptable_ids.begin(), adaptable_ids.end());
       Finding f =
           make_finding("ref-unknown-adaptable",
@@ -127,18 +144,27 @@ void selection_references(Mission& m) {
                        s.location);
       f.adaptable = s.adaptable;
       f.requirements = {s.id};
+      if (const std::string hint = did_you_mean(s.adaptable, known); !hint.empty())
+        f.notes.push_back(hint);
       m.findings.push_back(std::move(f));
       continue;
     }
-    if (m.find_alternative(s.adaptable, s.alternative) == nullptr) {
-      Finding f =
-          make_finding("ref-unknown-alternative",
-                       "requirement " + s.id + " selects '" + s.alternative +
-                           "', but there is no alternative file for it under '" + s.adaptable + "'",
-                       s.alternative_location.line ? s.alternative_location : s.location);
+    const std::string key = s.adaptable + "/" + s.alternative;
+    if (m.find_alternative(s.adaptable, s.alternative) == nullptr &&
+        !m.unreadable_alternatives.count(key)) {  // an unreadable file is reported already
+      Finding f = make_finding("ref-unknown-alternative",
+                               "requirement " + s.id + " selects '" + s.alternative +
+                                   "', but there is no file " +
+                                   expected_file(m, s.adaptable, s.alternative),
+                               s.alternative_location.line ? s.alternative_location : s.location);
       f.adaptable = s.adaptable;
       f.requirements = {s.id};
       f.alternatives = {s.alternative};
+      std::vector<std::string> names;
+      for (const auto& alt : m.alternatives)
+        if (alt.adaptable == s.adaptable) names.push_back(alt.name);
+      if (const std::string hint = did_you_mean(s.alternative, names); !hint.empty())
+        f.notes.push_back(hint);
       m.findings.push_back(std::move(f));
     }
     if (!s.guard) {
@@ -160,6 +186,7 @@ void selection_references(Mission& m) {
   std::set<std::string> reported;
   for (const auto& site : m.adaptables) {
     if (site.id.empty() || !reported.insert(site.id).second) continue;
+    if (m.requirements_incomplete.count(site.id)) continue;  // its requirement may not parse
     bool has_requirement = false;
     for (const auto& s : m.selections) has_requirement |= s.adaptable == site.id;
     if (!has_requirement) {
@@ -175,6 +202,8 @@ void selection_references(Mission& m) {
 
   for (const auto& alt : m.alternatives) {
     if (selected.count({alt.adaptable, alt.name})) continue;
+    // Unknowable: a requirement that does not parse, or a node without ID, may select it.
+    if (id_missing || m.requirements_incomplete.count(alt.adaptable)) continue;
     const bt::TreeDef* main = alt.document.find_tree(alt.tree_id);
     Finding f = make_finding(
         "ref-orphan-alternative",
@@ -225,6 +254,9 @@ void unknown_conditions(Mission& m) {
                                "condition '" + atom->text + "' in requirement " + s.id +
                                    " is not a node of nodes.xml; the robot cannot check it",
                                location_of(*atom, s.location));
+      std::vector<std::string> names(conditions.begin(), conditions.end());
+      if (const std::string hint = did_you_mean(atom->text, names); !hint.empty())
+        f.notes.push_back(hint);
       f.adaptable = s.adaptable;
       f.requirements = {s.id};
       m.findings.push_back(std::move(f));
@@ -236,9 +268,9 @@ void unknown_conditions(Mission& m) {
 
 void infer_condition_variables(Mission& m) {
   for (const auto& s : m.selections)
-    if (s.guard) infer_from(*s.guard, s.location, m.domain);
+    if (s.guard) infer_from(*s.guard, s.location, m.domain, m.undeclared);
   for (const auto& a : m.domain.assumptions)
-    if (a.expr) infer_from(*a.expr, a.location, m.domain);
+    if (a.expr) infer_from(*a.expr, a.location, m.domain, m.undeclared);
 }
 
 void check_references(Mission& m) {

@@ -5,27 +5,15 @@
 
 namespace uabt::monitor {
 
-int Symbols::intern(const std::string& name) {
+int NameTable::id(const std::string& name) {
   const auto [it, inserted] = ids_.emplace(name, static_cast<int>(names_.size()));
   if (inserted) names_.push_back(name);
   return it->second;
 }
 
-std::optional<int> Symbols::find(const std::string& name) const {
+std::optional<int> NameTable::find(const std::string& name) const {
   const auto it = ids_.find(name);
   if (it == ids_.end()) return std::nullopt;
-  return it->second;
-}
-
-int Variables::slot(const std::string& name) {
-  const auto [it, inserted] = slots_.emplace(name, static_cast<int>(names_.size()));
-  if (inserted) names_.push_back(name);
-  return it->second;
-}
-
-std::optional<int> Variables::find(const std::string& name) const {
-  const auto it = slots_.find(name);
-  if (it == slots_.end()) return std::nullopt;
   return it->second;
 }
 
@@ -60,6 +48,10 @@ const char* kind_name(Val::Kind k) {
 
 }  // namespace
 
+bool is_monitored_function(const std::string& name) {
+  return function_arity(name).has_value();
+}
+
 std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Expr& e,
                                                               const Resolver& resolve,
                                                               std::string& error) {
@@ -69,8 +61,7 @@ std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Exp
   return c;
 }
 
-int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
-                              std::string& error) {
+int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, std::string& error) {
   N n;
   switch (e.kind) {
     case ExprKind::bool_literal: n.constant = Val::of_bool(e.bool_value); break;
@@ -78,7 +69,7 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
     case ExprKind::identifier: {
       const Resolved r = resolve(e.text);
       if (r.kind == Resolved::Kind::unknown) {
-        error = "'" + e.text + "' is not a variable of the trace";
+        error = "the trace has no variable '" + e.text + "'";
         return -1;
       }
       if (r.kind == Resolved::Kind::literal) {
@@ -86,6 +77,7 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
       } else {
         n.kind = K::variable;
         n.slot = r.id;
+        n.name = e.text;
         bool known = false;
         for (int v : variables_) known = known || v == r.id;
         if (!known) variables_.push_back(r.id);
@@ -95,7 +87,13 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve,
     case ExprKind::call: {
       const auto arity = function_arity(e.text);
       if (!arity) {
-        error = "function '" + e.text + "' has no meaning on a trace";
+        // FRET's temporal predicates need the scope's interval; not monitored (yet).
+        static const char* const temporal[] = {"persisted", "occurred", "persists",
+                                               "occurs",    "prevOcc",  "nextOcc"};
+        bool is_temporal = false;
+        for (const char* t : temporal) is_temporal = is_temporal || e.text == t;
+        error = is_temporal ? "FRET's temporal function '" + e.text + "' is not monitored"
+                            : "'" + e.text + "' is not one of FRET's functions";
         return -1;
       }
       if (static_cast<int>(e.args.size()) != *arity) {
@@ -199,7 +197,7 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
     case K::constant: return n.constant;
     case K::variable: {
       const Val& v = frame[static_cast<std::size_t>(n.slot)];
-      if (v.kind == Val::Kind::missing) error = "a variable it reads has no value yet";
+      if (v.kind == Val::Kind::missing && error.empty()) error = "'" + n.name + "' has no value";
       return v;
     }
     case K::logical_not: {

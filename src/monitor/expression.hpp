@@ -22,29 +22,21 @@ struct Val {
   static Val of_symbol(int s) { return {Kind::symbol, 0, s}; }
 };
 
-class Symbols {
+// Names numbered in order of first use: the variables of a trace (one slot a name, shared by
+// every monitor of a run) and the symbols that are values (enum literals, alternatives).
+class NameTable {
  public:
-  int intern(const std::string& name);
-  const std::string& name(int id) const { return names_[static_cast<std::size_t>(id)]; }
+  int id(const std::string& name);  // adds the name when new
   std::optional<int> find(const std::string& name) const;
+  const std::string& name(int id) const { return names_[static_cast<std::size_t>(id)]; }
+  std::size_t size() const { return names_.size(); }
 
  private:
   std::unordered_map<std::string, int> ids_;
   std::vector<std::string> names_;
 };
-
-// Where the variables of a trace live: one slot a name, shared by every monitor of a run.
-class Variables {
- public:
-  int slot(const std::string& name);  // adds the name when new
-  std::optional<int> find(const std::string& name) const;
-  const std::string& name(int slot) const { return names_[static_cast<std::size_t>(slot)]; }
-  std::size_t size() const { return names_.size(); }
-
- private:
-  std::unordered_map<std::string, int> slots_;
-  std::vector<std::string> names_;
-};
+using Symbols = NameTable;
+using Variables = NameTable;
 
 // How an identifier of a requirement is read: a variable slot or a literal symbol.
 struct Resolved {
@@ -52,6 +44,9 @@ struct Resolved {
   int id = -1;
 };
 using Resolver = std::function<Resolved(const std::string&)>;
+
+// absReal, ite, preBool, …: FRET's functions the monitor evaluates.
+bool is_monitored_function(const std::string& name);
 
 // A FRETISH expression compiled for evaluation once per tick: FRET's operators, arithmetic,
 // absReal/absInt, minReal/maxReal/minInt/maxInt, ite, and preBool/preInt/preReal (the value at
@@ -71,15 +66,40 @@ class CompiledExpression {
 
  private:
   enum class K : std::uint8_t {
-    constant, variable, logical_not, logical_and, logical_or, logical_xor, implies, iff, eq, ne,
-    lt, le, gt, ge, add, sub, mul, div, mod, pow, negate, abs, min, max, ite, previous
+    constant,
+    variable,
+    logical_not,
+    logical_and,
+    logical_or,
+    logical_xor,
+    implies,
+    iff,
+    eq,
+    ne,
+    lt,
+    le,
+    gt,
+    ge,
+    add,
+    sub,
+    mul,
+    div,
+    mod,
+    pow,
+    negate,
+    abs,
+    min,
+    max,
+    ite,
+    previous
   };
   struct N {
     K kind = K::constant;
     std::vector<int> args;
     Val constant;
     int slot = -1;
-    int state = -1;  // previous: index into previous_
+    std::string name;  // variable: for messages
+    int state = -1;    // previous: index into previous_
   };
   int build(const fretish::Expr& e, const Resolver& resolve, std::string& error);
   Val eval(int node, const std::vector<Val>& frame, std::string& error);

@@ -18,7 +18,9 @@ int Formula::input(int slot) {
   return add({Op::input, -1, -1, static_cast<std::uint64_t>(slot)});
 }
 
-int Formula::constant(bool value) { return add({Op::constant, -1, -1, value ? 1u : 0u}); }
+int Formula::constant(bool value) {
+  return add({Op::constant, -1, -1, value ? 1u : 0u});
+}
 
 int Formula::negation(int a) {
   const Node& n = nodes_[a];
@@ -41,12 +43,24 @@ int Formula::disjunction(int a, int b) {
   return add({Op::disjunction, std::min(a, b), std::max(a, b), 0});
 }
 
-int Formula::yesterday(int a) { return add({Op::yesterday, a, -1, 0}); }
-int Formula::weak_yesterday(int a) { return add({Op::weak_yesterday, a, -1, 0}); }
-int Formula::historically(int a) { return add({Op::historically, a, -1, 0}); }
-int Formula::once(int a) { return add({Op::once, a, -1, 0}); }
-int Formula::since(int a, int b) { return add({Op::since, a, b, 0}); }
-int Formula::once_within(int a, std::uint64_t k) { return add({Op::once_within, a, -1, k}); }
+int Formula::yesterday(int a) {
+  return add({Op::yesterday, a, -1, 0});
+}
+int Formula::weak_yesterday(int a) {
+  return add({Op::weak_yesterday, a, -1, 0});
+}
+int Formula::historically(int a) {
+  return add({Op::historically, a, -1, 0});
+}
+int Formula::once(int a) {
+  return add({Op::once, a, -1, 0});
+}
+int Formula::since(int a, int b) {
+  return add({Op::since, a, b, 0});
+}
+int Formula::once_within(int a, std::uint64_t k) {
+  return add({Op::once_within, a, -1, k});
+}
 
 int Formula::once_below(int a, std::uint64_t k) {
   return k == 0 ? constant(false) : once_within(a, k - 1);
@@ -56,9 +70,13 @@ int Formula::since_at_least(int a, int b, std::uint64_t k) {
   return add({Op::since_at_least, a, b, k});
 }
 
-int Formula::exactly_ago(int a, std::uint64_t k) { return add({Op::exactly_ago, a, -1, k}); }
+int Formula::exactly_ago(int a, std::uint64_t k) {
+  return add({Op::exactly_ago, a, -1, k});
+}
 
-int Formula::first_tick() { return negation(yesterday(constant(true))); }
+int Formula::first_tick() {
+  return negation(yesterday(constant(true)));
+}
 
 FormulaMonitor::FormulaMonitor(const Formula& formula, int root)
     : nodes_(formula.nodes()), state_(nodes_.size()), value_(nodes_.size(), 0), root_(root) {

@@ -71,9 +71,9 @@ class FormulaMonitor {
 
  private:
   struct State {
-    bool bit = false;            // Y/Z previous value, H/O/S accumulator, since_at_least live
-    std::uint64_t count = 0;     // once_within age, since_at_least age, exactly_ago write index
-    std::vector<bool> ring;      // exactly_ago
+    bool bit = false;         // Y/Z previous value, H/O/S accumulator, since_at_least live
+    std::uint64_t count = 0;  // once_within age, since_at_least age, exactly_ago write index
+    std::vector<bool> ring;   // exactly_ago
   };
   std::vector<Node> nodes_;
   std::vector<State> state_;

@@ -102,7 +102,8 @@ Classified classify(const fretish::Requirement& r, std::optional<double> tick_se
   }
   if (!r.conditions.empty()) {
     bool all_whenever = true;
-    for (const auto& cond : r.conditions) all_whenever = all_whenever && cond.qualifier == "whenever";
+    for (const auto& cond : r.conditions)
+      all_whenever = all_whenever && cond.qualifier == "whenever";
     s.condition = all_whenever ? ConditionKind::holding : ConditionKind::regular;
   }
   const auto timing = timing_kind(r.timing.keyword);
@@ -128,9 +129,10 @@ Classified classify(const fretish::Requirement& r, std::optional<double> tick_se
   return c;
 }
 
-std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(
-    const fretish::Requirement& r, const Resolver& resolve, std::optional<double> tick_seconds,
-    std::string& reason) {
+std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::Requirement& r,
+                                                                const Resolver& resolve,
+                                                                std::optional<double> tick_seconds,
+                                                                std::string& reason) {
   const Classified c = classify(r, tick_seconds);
   if (!c.shape) {
     reason = c.reason;
@@ -140,7 +142,8 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(
   m->id_ = r.id;
   m->shape_ = *c.shape;
   fretish::ExprPtr mode;
-  if (r.scope) mode = r.scope->condition ? r.scope->condition : fretish::make_identifier(r.scope->mode);
+  if (r.scope)
+    mode = r.scope->condition ? r.scope->condition : fretish::make_identifier(r.scope->mode);
   const fretish::ExprPtr parts[] = {mode, r.folded_condition(), r.response,
                                     r.timing.stop_condition};
   const char* part_names[] = {"scope", "condition", "response", "stop condition"};
@@ -181,7 +184,11 @@ bool RequirementMonitor::step(const std::vector<Val>& frame) {
     }
   }
   const bool now = run_->step(inputs);
-  if (!now && (holds_ || tick_ == 0)) violated_since_ = tick_;
+  if (!now && (holds_ || tick_ == 0)) {
+    violated_since_ = tick_;
+    violation_values_.clear();
+    for (int slot : variables_) violation_values_.push_back(frame[static_cast<std::size_t>(slot)]);
+  }
   holds_ = now;
   ++tick_;
   return now;

@@ -24,12 +24,6 @@ struct Classified {
 // (`tick_seconds` is the tick period, needed for units other than ticks).
 Classified classify(const fretish::Requirement& r, std::optional<double> tick_seconds);
 
-// What the monitor saw wrong at one tick.
-struct Violation {
-  std::uint64_t tick = 0;
-  std::vector<std::pair<std::string, std::string>> values;  // name, value as text
-};
-
 // One requirement compiled into a synchronous monitor: step() once per tick, constant time.
 class RequirementMonitor {
  public:
@@ -52,8 +46,10 @@ class RequirementMonitor {
   std::uint64_t violated_since() const { return violated_since_; }
   // True once the verdict turned false for good (safety properties: at once).
   bool final_violation() const { return !holds_ && verdict_is_final_once_violated(shape_); }
-  // Slots of the variables the requirement reads, in first-use order.
+  // Slots of the variables the requirement reads, in first-use order, and their values at
+  // violated_since().
   const std::vector<int>& variables() const { return variables_; }
+  const std::vector<Val>& violation_values() const { return violation_values_; }
 
  private:
   std::string id_;
@@ -62,6 +58,7 @@ class RequirementMonitor {
   Formula formula_;
   std::optional<FormulaMonitor> run_;
   std::vector<int> variables_;
+  std::vector<Val> violation_values_;
   std::string error_;
   bool holds_ = true;
   std::uint64_t tick_ = 0;

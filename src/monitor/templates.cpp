@@ -69,7 +69,9 @@ struct Context {
   int start = -1;
 
   int first() const { return start >= 0 ? start : f.first_tick(); }
-  int H(int x) const { return start >= 0 ? f.since(x, f.conjunction(x, start)) : f.historically(x); }
+  int H(int x) const {
+    return start >= 0 ? f.since(x, f.conjunction(x, start)) : f.historically(x);
+  }
   int O(int x) const {
     if (start < 0) return f.once(x);
     const int nx = f.negation(x);
@@ -143,7 +145,7 @@ int base(const Context& c, const Shape& shape, const Inputs& in, bool dual) {
   }
   const bool regular = shape.condition == ConditionKind::regular;
   const int T = regular ? c.AND(C, c.Z(c.NOT(C))) : C;  // the trigger
-  const int never = c.H(c.NOT(C));                          // no trigger yet
+  const int never = c.H(c.NOT(C));                      // no trigger yet
   if (!dual) {
     switch (shape.timing) {
       case TimingKind::immediately: return c.H(c.IMP(T, P));
@@ -162,8 +164,8 @@ int base(const Context& c, const Shape& shape, const Inputs& in, bool dual) {
         return c.H(c.OR(never, c.IMP(f.since(nS, c.AND(nS, T)), P)));
       }
       case TimingKind::before: {
-        const int earlier = c.AND(c.AND(c.Y(f.constant(true)), c.NOT(T)),
-                                  c.Y(c.NOT(f.since(nP, c.AND(nP, T)))));
+        const int earlier =
+            c.AND(c.AND(c.Y(f.constant(true)), c.NOT(T)), c.Y(c.NOT(f.since(nP, c.AND(nP, T)))));
         return c.H(c.IMP(S, c.OR(never, earlier)));
       }
     }
@@ -181,8 +183,8 @@ int base(const Context& c, const Shape& shape, const Inputs& in, bool dual) {
         return c.H(c.IMP(f.exactly_ago(T, d + 1),
                          c.OR(c.OR(f.once_within(ftp, d), nP), c.Y(f.once_within(P, d)))));
       case TimingKind::until: {
-        const int earlier = c.AND(c.AND(c.Y(f.constant(true)), c.NOT(T)),
-                                  c.Y(c.NOT(f.since(P, c.AND(P, T)))));
+        const int earlier =
+            c.AND(c.AND(c.Y(f.constant(true)), c.NOT(T)), c.Y(c.NOT(f.since(P, c.AND(P, T)))));
         return c.H(c.IMP(S, c.OR(never, earlier)));
       }
       case TimingKind::before: {
@@ -208,7 +210,9 @@ int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots
   // First and one-past-last points of the intervals where `m` holds.
   const auto first_of = [&](int m) { return f.conjunction(m, f.weak_yesterday(f.negation(m))); };
   const auto past_end_of = [&](int m) { return f.conjunction(f.negation(m), f.yesterday(m)); };
-  const auto first_time = [&](int x) { return f.conjunction(x, f.yesterday(f.historically(f.negation(x)))); };
+  const auto first_time = [&](int x) {
+    return f.conjunction(x, f.yesterday(f.historically(f.negation(x))));
+  };
   // FRET's FFin: the first point where M holds; FLin: the first point after the first M interval.
   const int first_mode = f.conjunction(first_of(M), f.weak_yesterday(f.historically(nM)));
   const int after_first_interval = first_time(past_end_of(M));
@@ -236,11 +240,10 @@ int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots
     case ScopeKind::only_after: {
       const int whole = base(Context{f}, shape, in, dual);
       int end = shape.scope == ScopeKind::before ? first_mode : after_first_interval;
-      if (shape.scope == ScopeKind::before)
-        end = f.conjunction(end, f.yesterday(f.constant(true)));
+      if (shape.scope == ScopeKind::before) end = f.conjunction(end, f.yesterday(f.constant(true)));
       const int ended = f.historically(f.implication(end, f.yesterday(whole)));
-      const int not_yet = f.historically(f.negation(shape.scope == ScopeKind::before ? first_mode
-                                                                                    : after_first_interval));
+      const int not_yet = f.historically(
+          f.negation(shape.scope == ScopeKind::before ? first_mode : after_first_interval));
       return f.conjunction(ended, f.implication(not_yet, whole));
     }
   }

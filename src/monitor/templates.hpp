@@ -10,7 +10,17 @@ namespace uabt::monitor {
 enum class ScopeKind { null, in, notin, only_in, after, before, only_after, only_before };
 enum class ConditionKind { null, regular, holding };
 enum class TimingKind {
-  immediately, next, eventually, finally, always, never, within, for_ticks, after, until, before
+  immediately,
+  next,
+  eventually,
+  finally,
+  always,
+  never,
+  within,
+  for_ticks,
+  after,
+  until,
+  before
 };
 
 struct Shape {

@@ -6,6 +6,7 @@
 
 #include "fretish/expr.hpp"
 #include "monitor/monitor.hpp"
+#include "monitor/property_set.hpp"
 #include "prove/prove.hpp"
 
 namespace uabt::prove {
@@ -13,12 +14,6 @@ namespace uabt::prove {
 using runtime::ScriptValue;
 
 namespace {
-
-bool lower_equals(const std::string& a, const char* b) {
-  std::string l;
-  for (char c : a) l += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return l == b;
-}
 
 // The leaves of the tree as the engine binds them, learnt by building it once.
 struct ProbeWorld : runtime::World {
@@ -87,23 +82,9 @@ std::vector<ScriptValue> values_of(const fretish::Variable& v, std::string& why)
 
 }  // namespace
 
-bool is_environment(const fretish::Requirement& r) {
-  return lower_equals(r.component, "environment");
-}
-
-std::vector<const fretish::Requirement*> mission_properties(const load::Mission& mission) {
-  std::vector<const fretish::Requirement*> out;
-  for (const auto& r : mission.requirements) {
-    bool selection = false;
-    for (const auto& s : mission.selections) selection = selection || s.id == r.id;
-    if (!selection && !r.freeform && r.response) out.push_back(&r);
-  }
-  return out;
-}
-
 bool has_guarantees(const load::Mission& mission) {
-  for (const auto* r : mission_properties(mission))
-    if (!is_environment(*r)) return true;
+  for (const auto& r : mission.properties)
+    if (!monitor::is_assumption(r)) return true;
   return false;
 }
 
@@ -180,10 +161,11 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     if (e)
       for (const auto& id : fretish::identifiers_of(*e)) read.insert(id);
   };
-  for (const fretish::Requirement* r : mission_properties(mission)) {
+  for (const fretish::Requirement& property : mission.properties) {
+    const fretish::Requirement* r = &property;
     Property p;
     p.requirement = r;
-    p.assumption = is_environment(*r);
+    p.assumption = monitor::is_assumption(property);
     const monitor::Classified c = monitor::classify(*r, std::nullopt);
     fretish::ExprPtr mode;
     if (r->scope)

@@ -40,10 +40,6 @@ struct Property {
   std::string unsupported;
 };
 
-// Requirements that are mission properties: neither selection requirements nor freeform.
-std::vector<const fretish::Requirement*> mission_properties(const load::Mission& mission);
-bool is_environment(const fretish::Requirement& r);
-
 // The product the explorer walks: the runtime's engine over the compiled tree, the choice
 // world, the observables and every property's monitor.
 struct Model {

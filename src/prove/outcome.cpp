@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bt/xml_io.hpp"
+#include "report/reports.hpp"
 
 namespace uabt::prove {
 
@@ -139,6 +140,12 @@ void add_proofs(gate::Outcome& outcome, const Options& options) {
   }
   auto& findings = outcome.report.findings;
   findings.insert(findings.end(), found.begin(), found.end());
+  // Like any failing gate, a failed proof keeps the candidate as compiled.rejected.xml.
+  if (!outcome.report.passed()) {
+    outcome.report.compiled_tree_file = report::kRejectedTree;
+    for (auto& f : findings)
+      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
+  }
   sort_findings(findings);
   outcome.report.stages.push_back("prove");
 }

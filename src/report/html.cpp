@@ -1,8 +1,10 @@
 #include <algorithm>
+#include <set>
 
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
 #include "report/reports.hpp"
+#include "report/uplink_sections.hpp"
 
 namespace uabt::report {
 
@@ -221,8 +223,22 @@ void coverage_html(const ReportInput& input, const std::string& adaptable, std::
         "run for this node.</p>\n";
     return;
   }
-  if (!coverage->variables.empty())
-    out += "<p>The guards range over " + code_list(coverage->variables) + ".</p>\n";
+  if (!coverage->variables.empty()) {
+    // Say which variables the guards read and which only enter through an assumption.
+    std::set<std::string> read;
+    if (input.mission != nullptr)
+      for (const auto* r : input.mission->selections_for(adaptable))
+        if (r->guard)
+          for (const auto& name : fretish::identifiers_of(*r->guard)) read.insert(name);
+    std::vector<std::string> guards, assumed;
+    for (const auto& v : coverage->variables) (read.count(v) ? guards : assumed).push_back(v);
+    out += "<p>" + (guards.empty() ? std::string("The guards read no variable")
+                                   : "The guards read " + code_list(guards));
+    if (!assumed.empty())
+      out += "; the domain's assumptions tie them to " + code_list(assumed) +
+             ", which the counts include";
+    out += ".</p>\n";
+  }
   if (coverage->counted) {
     out += "<p>The domain has " + states_text(coverage->states) + ". ";
     std::string parts;
@@ -325,11 +341,13 @@ std::string to_html(const ReportInput& input) {
   out += "</p>\n</div>\n</header>\n";
 
   out += "<nav><a href=\"#findings\">Findings</a>";
+  if (input.uplink) out += "<a href=\"#uplink\">Uplink</a>";
   for (std::size_t i = 0; i < shown.size(); ++i)
     out += "<a href=\"#" + anchor(i, shown[i]) + "\">" + html_escape(shown[i]) + "</a>";
   out += "</nav>\n<main>\n";
 
   findings_section(input, shown, out);
+  if (input.uplink) out += detail::uplink_html(*input.uplink);
   for (std::size_t i = 0; i < shown.size(); ++i) {
     out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " + code(shown[i]) +
            "</h2>\n";

@@ -1,28 +1,49 @@
 #include "report/impact.hpp"
 
-#include <nlohmann/json.hpp>
+#include <algorithm>
+#include <numeric>
 
 #include "base/diagnostics.hpp"
+#include "report/common.hpp"
 
 namespace uabt::report {
 
 namespace {
 
+using Json = nlohmann::ordered_json;
+
 std::string shown(const std::string& alternative) {
   return alternative.empty() ? "(nothing: the node fails)" : alternative;
 }
 
-nlohmann::ordered_json value_json(const Value& v) {
-  switch (v.kind) {
-    case Value::Kind::boolean: return v.boolean;
-    case Value::Kind::integer: return v.integer;
-    case Value::Kind::real: return v.text;
-    case Value::Kind::enumeration: return v.text;
-  }
-  return nullptr;
+Json name_or_null(const std::string& name) {
+  return name.empty() ? Json(nullptr) : Json(name);
+}
+
+Json share_json(std::uint64_t part, std::uint64_t whole) {
+  return whole == 0 ? Json(nullptr) : Json(static_cast<double>(part) / static_cast<double>(whole));
+}
+
+std::string states_phrase(std::uint64_t n) {
+  return std::to_string(n) + (n == 1 ? " state" : " states");
+}
+
+// "hold_position (Safe) -> on_mud (Req3)"
+std::string move_text(const verify::SelectionChange& c) {
+  auto side = [](const std::string& alt, const std::string& req) {
+    return shown(alt) + (req.empty() ? "" : " (" + req + ")");
+  };
+  return side(c.from, c.from_requirement) + " -> " + side(c.to, c.to_requirement);
 }
 
 }  // namespace
+
+std::string exact_share(std::uint64_t part, std::uint64_t whole) {
+  if (part == 0 || whole == 0) return "0";
+  const std::uint64_t g = std::gcd(part, whole);
+  if (part == whole) return "1";
+  return std::to_string(part / g) + "/" + std::to_string(whole / g);
+}
 
 std::string impact_text(const verify::Impact& impact) {
   std::string out;
@@ -30,13 +51,15 @@ std::string impact_text(const verify::Impact& impact) {
     out += node.adaptable + ": " + node.status;
     if (node.counted)
       out += " (" + std::to_string(node.changed_states) + " of " + std::to_string(node.states) +
-             " states change their alternative)";
+             " states, " + exact_share(node.changed_states, node.states) +
+             ", change their alternative)";
     else if (!node.not_counted_reason.empty() && node.status == "changed")
       out += " (states not counted: " + node.not_counted_reason + ")";
     out += "\n";
     for (const auto& c : node.changes) {
-      out += "  " + shown(c.from) + " -> " + shown(c.to);
-      if (node.counted) out += ": " + std::to_string(c.states) + " states";
+      out += "  " + move_text(c);
+      if (node.counted)
+        out += ": " + states_phrase(c.states) + " (" + exact_share(c.states, node.states) + ")";
       out += "\n    e.g. " + format_state(c.example) + "\n";
     }
   }
@@ -44,43 +67,91 @@ std::string impact_text(const verify::Impact& impact) {
   return out;
 }
 
-std::string impact_json(const verify::Impact& impact) {
-  nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
+Json impact_nodes_json(const verify::Impact& impact) {
+  Json nodes = Json::array();
   for (const auto& node : impact.nodes) {
-    nlohmann::ordered_json changes = nlohmann::ordered_json::array();
+    const bool counted = node.counted;
+    Json changes = Json::array();
     for (const auto& c : node.changes) {
-      nlohmann::ordered_json example = nlohmann::ordered_json::object();
-      for (const auto& [name, value] : c.example) example[name] = value_json(value);
-      nlohmann::ordered_json j;
-      j["from"] = c.from.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.from);
-      j["to"] = c.to.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.to);
-      j["from_requirement"] = c.from_requirement;
-      j["to_requirement"] = c.to_requirement;
-      if (node.counted) j["states"] = c.states;
-      j["example"] = std::move(example);
+      Json j;
+      j["from"] = name_or_null(c.from);
+      j["to"] = name_or_null(c.to);
+      j["from_requirement"] = name_or_null(c.from_requirement);
+      j["to_requirement"] = name_or_null(c.to_requirement);
+      j["states"] = counted ? Json(c.states) : Json(nullptr);
+      j["share"] = counted ? share_json(c.states, node.states) : Json(nullptr);
+      j["share_exact"] = counted ? Json(exact_share(c.states, node.states)) : Json(nullptr);
+      j["example"] = detail::witness_json(c.example);
       changes.push_back(std::move(j));
     }
-    nlohmann::ordered_json j;
+    Json j;
     j["adaptable"] = node.adaptable;
     j["status"] = node.status;
-    j["counted"] = node.counted;
-    if (node.counted) {
-      j["states"] = node.states;
-      j["changed_states"] = node.changed_states;
-    } else if (!node.not_counted_reason.empty()) {
-      j["not_counted_reason"] = node.not_counted_reason;
-    }
+    j["counted"] = counted;
+    j["states"] = counted ? Json(node.states) : Json(nullptr);
+    j["changed_states"] = counted ? Json(node.changed_states) : Json(nullptr);
+    j["changed_share"] = counted ? share_json(node.changed_states, node.states) : Json(nullptr);
+    j["changed_share_exact"] =
+        counted ? Json(exact_share(node.changed_states, node.states)) : Json(nullptr);
+    j["not_counted_reason"] =
+        counted || node.not_counted_reason.empty() ? Json(nullptr) : Json(node.not_counted_reason);
     j["changes"] = std::move(changes);
     nodes.push_back(std::move(j));
   }
-  nlohmann::ordered_json findings = nlohmann::ordered_json::array();
+  return nodes;
+}
+
+std::string impact_json(const verify::Impact& impact) {
+  Json findings = Json::array();
   for (const auto& f : impact.findings)
     findings.push_back({{"check", f.check}, {"message", f.message}, {"adaptable", f.adaptable}});
-  nlohmann::ordered_json root;
+  Json root;
   root["tool"] = "uabt";
-  root["nodes"] = std::move(nodes);
+  root["changed"] =
+      std::any_of(impact.nodes.begin(), impact.nodes.end(),
+                  [](const verify::NodeImpact& n) { return n.status != "unchanged"; });
+  root["nodes"] = impact_nodes_json(impact);
   root["findings"] = std::move(findings);
-  return root.dump(2) + "\n";
+  return root.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
+                                               const load::Mission& mission) {
+  std::vector<Finding> out;
+  for (const auto& node : impact.nodes) {
+    if (node.status == "unchanged") continue;
+    SourceLocation where{mission.requirements_file, 0, 0};
+    for (const auto& site : mission.adaptables)
+      if (site.id == node.adaptable) {
+        where = site.location;
+        break;
+      }
+    std::string message = node.adaptable + ": ";
+    if (node.status == "added" || node.status == "removed")
+      message += "the uplink " + std::string(node.status == "added" ? "adds" : "removes") +
+                 " this adaptable node's requirements";
+    else if (node.counted)
+      message += std::to_string(node.changed_states) + " of " + states_phrase(node.states) + " (" +
+                 exact_share(node.changed_states, node.states) + ") change their alternative";
+    else
+      message +=
+          "some states change their alternative (not counted: " + node.not_counted_reason + ")";
+    Finding f = make_finding("uplink-behaviour-change", message, where);
+    f.adaptable = node.adaptable;
+    for (const auto& c : node.changes) {
+      std::string note = move_text(c);
+      if (node.counted)
+        note += ": " + states_phrase(c.states) + " (" + exact_share(c.states, node.states) + ")";
+      note += ", e.g. " + format_state(c.example);
+      f.notes.push_back(std::move(note));
+      for (const auto* alt : {&c.from, &c.to})
+        if (!alt->empty() &&
+            std::find(f.alternatives.begin(), f.alternatives.end(), *alt) == f.alternatives.end())
+          f.alternatives.push_back(*alt);
+    }
+    out.push_back(std::move(f));
+  }
+  return out;
 }
 
 }  // namespace uabt::report

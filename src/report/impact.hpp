@@ -1,12 +1,31 @@
 #pragma once
+#include <cstdint>
 #include <string>
+#include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "base/finding.hpp"
+#include "load/mission.hpp"
 #include "verify/impact.hpp"
 
 namespace uabt::report {
 
 // `uabt diff` output: per adaptable node, which states change their selected alternative.
+// JSON numbers are numbers; a space that was not counted gives null counts and shares.
 std::string impact_text(const verify::Impact& impact);
 std::string impact_json(const verify::Impact& impact);
+
+// The node list of impact_json, shared with the gate's report of an uplink.
+nlohmann::ordered_json impact_nodes_json(const verify::Impact& impact);
+
+// "1/4": the exact share `part` of `whole`, reduced ("0" when part is 0, "1" when equal).
+std::string exact_share(std::uint64_t part, std::uint64_t whole);
+
+// One `uplink-behaviour-change` note per adaptable node whose selection changes, located at
+// the node in `mission` (the merged version), each move as a note with its count, share and
+// example state.
+std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
+                                               const load::Mission& mission);
 
 }  // namespace uabt::report

@@ -2,6 +2,7 @@
 
 #include "report/common.hpp"
 #include "report/reports.hpp"
+#include "report/uplink_sections.hpp"
 
 namespace uabt::report {
 
@@ -67,6 +68,7 @@ std::string to_json(const ReportInput& input) {
   Json coverage = Json::array();
   for (const auto& entry : input.coverage) coverage.push_back(coverage_json(entry));
   out["coverage"] = std::move(coverage);
+  if (input.uplink) out["uplink"] = detail::uplink_json(*input.uplink);
   // A message with invalid UTF-8 (from a broken input file) must not abort the report.
   return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -3,6 +3,7 @@
 #include "report/common.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
+#include "report/uplink_sections.hpp"
 
 namespace uabt::report {
 
@@ -135,6 +136,7 @@ std::string to_markdown(const ReportInput& input) {
     }
     out += "\n`uabt explain CHECK-ID` says why a check matters and how to fix it.\n";
   }
+  if (input.uplink) out += detail::uplink_markdown(*input.uplink);
   for (const auto& coverage : input.coverage) coverage_section(coverage, out);
   return out;
 }

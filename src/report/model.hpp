@@ -1,12 +1,22 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "base/finding.hpp"
 #include "load/mission.hpp"
+#include "verify/impact.hpp"
 #include "verify/verify.hpp"
 
 namespace uabt::report {
+
+// What `gate --uplink` adds to a report (DESIGN §11): the package, where the merge put each
+// requirement, and the behaviour change from the running version to the merged one.
+struct UplinkChange {
+  std::string package;  // as given on the command line
+  std::vector<load::UplinkMerge> merges;
+  verify::Impact impact;
+};
 
 // Everything a report shows about one mission, gathered by the gate (or by `verify`).
 struct ReportInput {
@@ -28,6 +38,7 @@ struct ReportInput {
   // The loaded mission (requirements, domain, guards), for pictures and requirement text.
   // May be null when the mission could not be loaded at all.
   const load::Mission* mission = nullptr;
+  std::optional<UplinkChange> uplink;  // set by `gate --uplink`
 
   bool passed() const { return !has_errors(findings); }
 };

@@ -38,10 +38,16 @@ std::string coverage_svg(const verify::Coverage& coverage);
 // guards read fewer than two drawable variables.
 std::string coverage_map_svg(const load::Mission& mission, const verify::Coverage& coverage);
 
+// The compiled tree's file in a report directory: the tree to uplink (a passing gate), or the
+// candidate a failing gate rejected.
+inline constexpr const char* kCompiledTree = "compiled.xml";
+inline constexpr const char* kRejectedTree = "compiled.rejected.xml";
+
 // Writes findings.txt, findings.json, findings.sarif, junit.xml, summary.md, report.html and,
-// when `compiled_xml` is not empty, compiled.xml into `out_dir` (created if missing), each
-// atomically. A compiled.xml left by an earlier run is removed when none is given, so that the
-// directory always describes one run. Throws std::runtime_error when a file cannot be written.
+// when `compiled_xml` is not empty, compiled.xml (verdict pass) or compiled.rejected.xml
+// (fail) into `out_dir` (created if missing), each atomically. The other compiled file, left
+// by an earlier run, is removed, so that the directory always describes one run. Throws
+// std::runtime_error when a file cannot be written.
 void write_reports(const ReportInput& input, const std::filesystem::path& out_dir,
                    const std::string& compiled_xml);
 

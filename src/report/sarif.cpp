@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <tuple>
 
@@ -13,6 +14,9 @@ namespace uabt::report {
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+// The base of every artifact URI: the source root (--source-root, default the git work tree).
+constexpr const char* kSourceRoot = "%SRCROOT%";
 
 const char* sarif_level(Severity severity) {
   switch (severity) {
@@ -79,6 +83,29 @@ Json undocumented_rule_json(const std::string& id, Severity severity) {
   return rule;
 }
 
+// A file of the mission: relative to the source root with %SRCROOT% (GitHub places it in the
+// repository), or an absolute file URI when the mission lies outside the root.
+Json artifact_location(const std::string& uri_prefix, const std::string& file) {
+  std::string path = std::filesystem::path(uri_prefix + file).lexically_normal().generic_string();
+  if (!path.empty() && path.front() == '/') return Json{{"uri", "file://" + uri_encode(path)}};
+  return Json{{"uri", uri_encode(path)}, {"uriBaseId", kSourceRoot}};
+}
+
+Json physical_location(const std::string& uri_prefix, const SourceLocation& location,
+                       const std::string& fallback_file) {
+  Json physical;
+  physical["artifactLocation"] =
+      artifact_location(uri_prefix, location.file.empty() ? fallback_file : location.file);
+  if (location.line > 0) {
+    Json region;
+    region["startLine"] = location.line;
+    if (location.column > 0) region["startColumn"] = location.column;
+    if (location.end_line > location.line) region["endLine"] = location.end_line;
+    physical["region"] = std::move(region);
+  }
+  return physical;
+}
+
 }  // namespace
 
 std::string to_sarif(const ReportInput& input) {
@@ -114,17 +141,20 @@ std::string to_sarif(const ReportInput& input) {
     if (!finding.witness.empty()) text += " (witness: " + format_state(finding.witness) + ")";
     result["message"] = Json{{"text", text}};
 
-    const std::string& file = finding.location.file.empty() ? fallback_file : finding.location.file;
-    Json physical;
-    physical["artifactLocation"] =
-        Json{{"uri", uri_encode(input.uri_prefix + file)}, {"uriBaseId", "SRCROOT"}};
-    if (finding.location.line > 0) {
-      Json region;
-      region["startLine"] = finding.location.line;
-      if (finding.location.column > 0) region["startColumn"] = finding.location.column;
-      physical["region"] = std::move(region);
+    result["locations"] =
+        Json::array({Json{{"physicalLocation",
+                           physical_location(input.uri_prefix, finding.location, fallback_file)}}});
+    if (!finding.related.empty()) {
+      Json related = Json::array();
+      for (std::size_t k = 0; k < finding.related.size(); ++k) {
+        const auto& r = finding.related[k];
+        related.push_back(Json{
+            {"id", k},
+            {"physicalLocation", physical_location(input.uri_prefix, r.location, fallback_file)},
+            {"message", Json{{"text", r.message}}}});
+      }
+      result["relatedLocations"] = std::move(related);
     }
-    result["locations"] = Json::array({Json{{"physicalLocation", std::move(physical)}}});
 
     // Identity of a finding across commits: check, file and message, not the line, so that an
     // edit above it does not make code scanning see a new alert. Identical findings are told
@@ -158,9 +188,10 @@ std::string to_sarif(const ReportInput& input) {
   run["automationDetails"] = Json{{"id", "uabt/" + input.mission_name + "/"}};
   // The root is where the report is used, not where it was made: no absolute path here.
   run["originalUriBaseIds"] =
-      Json{{"SRCROOT", Json{{"description", Json{{"text",
-                                                  "The root of the repository that holds "
-                                                  "the mission."}}}}}};
+      Json{{kSourceRoot, Json{{"description", Json{{"text",
+                                                    "The source root: the top of the git "
+                                                    "work tree that holds the mission, or "
+                                                    "--source-root."}}}}}};
   run["results"] = std::move(results);
 
   Json sarif;

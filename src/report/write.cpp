@@ -9,21 +9,32 @@ namespace uabt::report {
 
 void write_reports(const ReportInput& input, const std::filesystem::path& out_dir,
                    const std::string& compiled_xml) {
-  write_file_atomically(out_dir / "findings.txt", format_text(input.findings));
+  // findings.txt reads like the terminal (paths open from where uabt ran), but a report
+  // never carries a path of the machine: a mission outside the working directory keeps
+  // mission-relative paths.
+  TextOptions text;
+  if (input.mission != nullptr) text.path_prefix = path_prefix_for(input.mission->dir);
+  if (text.path_prefix.starts_with('/')) text.path_prefix.clear();
+  write_file_atomically(out_dir / "findings.txt", format_text(input.findings, text));
   write_file_atomically(out_dir / "findings.json", to_json(input));
   write_file_atomically(out_dir / "findings.sarif", to_sarif(input));
   write_file_atomically(out_dir / "junit.xml", to_junit(input));
   write_file_atomically(out_dir / "summary.md", to_markdown(input));
   write_file_atomically(out_dir / "report.html", to_html(input));
-  const auto compiled = out_dir / "compiled.xml";
-  if (!compiled_xml.empty()) {
-    write_file_atomically(compiled, compiled_xml);
-  } else {
-    // A compiled tree from an earlier run would sit beside reports that say it was not built.
+  // compiled.xml is the tree to uplink: only a passing gate writes it. A failing one keeps the
+  // candidate as compiled.rejected.xml. A tree from an earlier run would sit beside reports
+  // that say something else, so the other name is removed.
+  const char* const kept = input.passed() ? kCompiledTree : kRejectedTree;
+  for (const char* name : {kCompiledTree, kRejectedTree}) {
+    const auto path = out_dir / name;
+    if (!compiled_xml.empty() && name == kept) {
+      write_file_atomically(path, compiled_xml);
+      continue;
+    }
     std::error_code error;
-    std::filesystem::remove(compiled, error);
+    std::filesystem::remove(path, error);
     if (error)
-      throw std::runtime_error("cannot remove " + compiled.filename().string() + ": " +
+      throw std::runtime_error("cannot remove " + path.filename().string() + ": " +
                                error.message());
   }
 }

@@ -284,14 +284,17 @@ NodeStatus Engine::wake_up_loop() {
 }
 
 void Engine::halt() {
+  // BT.CPP's Tree::haltTree: halt the root, then call halt on every node (so each node's
+  // own state is reset and every _onHalted runs, also on IDLE nodes), root first, children
+  // in order; a robot leaf hears halt only while it is RUNNING.
   core_->halt_node(core_->root);
-  // BT.CPP's haltTree then resets every status, also below nodes that were not RUNNING.
   std::vector<NodeId> stack{core_->root};
   while (!stack.empty()) {
     const NodeId n = stack.back();
     stack.pop_back();
-    core_->set_status(n, NodeStatus::idle);
-    for (NodeId c : children(n)) stack.push_back(c);
+    core_->halt_node(n);
+    const auto kids = children(n);
+    for (auto it = kids.rbegin(); it != kids.rend(); ++it) stack.push_back(*it);
   }
 }
 

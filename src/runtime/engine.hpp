@@ -137,7 +137,9 @@ class Engine {
   // is reset to IDLE. Deferred swaps whose instance is no longer RUNNING are applied at the
   // end of the tick. Throws TickException where BT.CPP's tick throws (see TickError).
   NodeStatus tick();
-  // Halts the whole tree: every RUNNING node is halted and every node is IDLE afterwards.
+  // Halts the whole tree as BT.CPP's Tree::haltTree: the root, then every node (each one's
+  // _onHalted runs; robot leaves hear halt only while RUNNING); every node is IDLE afterwards.
+  // An _onHalted script that fails throws TickException, as in BT.CPP.
   void halt();
 
   NodeId root() const;

@@ -7,9 +7,11 @@
 
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
+#include "runtime/property_monitor.hpp"
 #include "runtime/runner.hpp"
 #include "runtime/scenario_check.hpp"
 #include "runtime/selection.hpp"
+#include "runtime/source_map.hpp"
 
 namespace uabt::runtime {
 
@@ -51,6 +53,16 @@ std::string alternative_name(const load::Mission& m, const std::string& adaptabl
   for (const auto& alt : m.alternatives)
     if (alt.adaptable == adaptable && alt.tree_id == tree_id) return alt.name;
   return tree_id;
+}
+
+TraceEvent violation_event(const PropertyViolation& v) {
+  TraceEvent e;
+  e.tick = v.tick;
+  e.event = "violation";
+  e.requirement = v.result.id;
+  e.role = v.result.assumption ? "assumption" : "guarantee";
+  e.values = v.result.values;
+  return e;
 }
 
 }  // namespace
@@ -103,6 +115,7 @@ ManagerRun BehaviorTreeManager::run() {
   std::vector<bt::NodeModel> robot_nodes;
   if (running.outcome.mission->nodes) robot_nodes = *running.outcome.mission->nodes;
   Runner runner(running.document, scenario_, run_options, robot_nodes);
+  PropertyMonitor properties(*running.outcome.mission, runner.engine());
 
   SelectionObserver selections(runner.engine(), [&](const Selection& s) {
     TraceEvent e;
@@ -111,9 +124,11 @@ ManagerRun BehaviorTreeManager::run() {
     e.adaptable = s.adaptable;
     e.requirement = s.requirement;
     e.alternative = alternative_name(*running.outcome.mission, s.adaptable, s.alternative);
+    properties.select(e.adaptable, e.alternative);
     result.trace.push_back(std::move(e));
   });
   runner.engine().add_observer(&selections);
+  runner.engine().add_observer(&properties);
 
   runner.on_uplink = [&](const ScenarioEvent& event, Runner& r) {
     const auto started = std::chrono::steady_clock::now();
@@ -160,15 +175,24 @@ ManagerRun BehaviorTreeManager::run() {
   while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
     const NodeStatus now = runner.step();
     runner.world().clear_log();  // memory stays bounded however long the run
-    if (runner.error() || now == last) continue;
-    TraceEvent e;
-    e.tick = runner.ticks();
-    e.event = "status";
-    e.status = lower_case(status_name(now));
-    result.trace.push_back(std::move(e));
-    last = now;
+    if (runner.error()) continue;
+    if (now != last) {
+      TraceEvent e;
+      e.tick = runner.ticks();
+      e.event = "status";
+      e.status = lower_case(status_name(now));
+      result.trace.push_back(std::move(e));
+      last = now;
+    }
+    for (const PropertyViolation& v : properties.after_tick(runner.ticks()))
+      result.trace.push_back(violation_event(v));
   }
   runner.engine().remove_observer(&tracer);
+  for (const PropertyViolation& v : properties.at_end(runner.ticks()))
+    result.trace.push_back(violation_event(v));
+  result.properties = properties.results();
+  result.guarantees_failed = properties.guarantees_failed();
+  runner.engine().remove_observer(&properties);
   runner.engine().remove_observer(&selections);
 
   result.ticks = runner.ticks();
@@ -176,6 +200,18 @@ ManagerRun BehaviorTreeManager::run() {
   result.verdict = runner.verdict();
   result.finished = result.verdict != "timeout" && result.verdict != "error";
   result.error = runner.error();
+  if (result.error) {
+    // Point at the line the user wrote, not at the compiled tree held in memory.
+    const NodeInfo& info = runner.engine().info(result.error->node);
+    const std::string compiled_at = info.location.file + ":" + std::to_string(info.location.line) +
+                                    ":" + std::to_string(info.location.column);
+    const auto source = source_of(runner.engine().tree_path(result.error->node),
+                                  *running.outcome.mission, running.outcome.compiled.trace);
+    if (source && result.error->message.starts_with(compiled_at))
+      result.error->message = source->file + ":" + std::to_string(source->line) + ":" +
+                              std::to_string(source->column) +
+                              result.error->message.substr(compiled_at.size());
+  }
   result.accepted_uplinks = accepted;
   if (result.error) {
     TraceEvent e;
@@ -196,6 +232,18 @@ ManagerRun BehaviorTreeManager::run() {
 
 std::string trace_summary(const ManagerRun& run) {
   return trace_summary(run.trace);
+}
+
+std::string property_summary(const ManagerRun& run) {
+  std::string out;
+  for (const monitor::PropertyResult& p : run.properties) {
+    out += std::string(p.assumption ? "assumption " : "property ") + p.id + ": " +
+           monitor::verdict_name(p.verdict);
+    if (p.first_violation) out += " from tick " + std::to_string(*p.first_violation);
+    if (!p.reason.empty()) out += ": " + p.reason;
+    out += "\n";
+  }
+  return out;
 }
 
 }  // namespace uabt::runtime

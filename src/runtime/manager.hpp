@@ -8,6 +8,7 @@
 #include "base/finding.hpp"
 #include "compile/compile.hpp"
 #include "gate/gate.hpp"
+#include "monitor/property_set.hpp"
 #include "runtime/scenario.hpp"
 #include "runtime/status.hpp"
 #include "runtime/trace.hpp"
@@ -29,6 +30,8 @@ struct ManagerRun {
   std::optional<TickError> error;
   std::vector<TraceEvent> trace;
   std::vector<std::string> accepted_uplinks;
+  std::vector<monitor::PropertyResult> properties;  // the mission properties' verdicts
+  bool guarantees_failed = false;                   // a guarantee violated or not monitored
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's
@@ -62,5 +65,7 @@ class BehaviorTreeManager {
 
 // The trace as a short text summary for a terminal (trace.hpp has the JSON lines).
 std::string trace_summary(const ManagerRun& run);
+// One line per mission property: its verdict at the end of the run.
+std::string property_summary(const ManagerRun& run);
 
 }  // namespace uabt::runtime

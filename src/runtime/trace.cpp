@@ -1,7 +1,6 @@
 #include "runtime/trace.hpp"
 
 #include <cctype>
-#include <nlohmann/json.hpp>
 
 namespace uabt::runtime {
 
@@ -12,17 +11,6 @@ using Json = nlohmann::ordered_json;
 std::string lower_case(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
-}
-
-Json to_json(const ScriptValue& v) {
-  switch (v.kind) {
-    case ScriptValue::Kind::boolean: return v.boolean;
-    case ScriptValue::Kind::integer: return v.integer;
-    case ScriptValue::Kind::real: return v.real;
-    case ScriptValue::Kind::string: return v.text;
-    case ScriptValue::Kind::empty: break;
-  }
-  return nullptr;
 }
 
 std::string reads_text(const std::vector<std::pair<std::string, ScriptValue>>& reads) {
@@ -73,6 +61,17 @@ void NodeTracer::on_node_ticked(NodeId node, NodeStatus result) {
   trace_.push_back(std::move(e));
 }
 
+Json value_json(const ScriptValue& v) {
+  switch (v.kind) {
+    case ScriptValue::Kind::boolean: return v.boolean;
+    case ScriptValue::Kind::integer: return v.integer;
+    case ScriptValue::Kind::real: return v.real;
+    case ScriptValue::Kind::string: return v.text;
+    case ScriptValue::Kind::empty: break;
+  }
+  return nullptr;
+}
+
 std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
   std::string out;
   for (const auto& e : trace) {
@@ -90,8 +89,14 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
     if (!e.status.empty()) j["status"] = e.status;
     if (e.event == "condition") {
       Json reads = Json::object();
-      for (const auto& [key, value] : e.reads) reads[key] = to_json(value);
+      for (const auto& [key, value] : e.reads) reads[key] = value_json(value);
       j["reads"] = std::move(reads);
+    }
+    if (e.event == "violation") {
+      j["role"] = e.role;
+      Json values = Json::object();
+      for (const auto& [name, value] : e.values) values[name] = value;
+      j["values"] = std::move(values);
     }
     if (!e.message.empty()) j["message"] = e.message;
     if (!e.script.empty()) j["script"] = e.script;
@@ -130,6 +135,12 @@ std::string trace_summary(const std::vector<TraceEvent>& trace) {
       } else {
         for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
       }
+    } else if (e.event == "violation") {
+      out += e.role + " " + e.requirement + " violated";
+      std::string values;
+      for (const auto& [name, value] : e.values)
+        values += (values.empty() ? "" : ", ") + name + "=" + value;
+      if (!values.empty()) out += " (" + values + ")";
     } else if (e.event == "status") {
       out += "mission " + e.status;
     } else if (e.event == "node") {

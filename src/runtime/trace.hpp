@@ -3,6 +3,7 @@
 // nodes`.
 #pragma once
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,7 +17,7 @@ namespace uabt::runtime {
 // One line of the trace, with tick, event and what it concerns.
 struct TraceEvent {
   std::uint64_t tick = 0;
-  std::string event;  // select | uplink | status | node | condition | error | done
+  std::string event;  // select | uplink | status | node | condition | error | violation | done
   std::string adaptable, alternative, requirement;
   std::string verdict;  // uplink: accepted | rejected; done: success | failure | timeout | error
   std::string uplink;   // the package, for uplink events
@@ -29,6 +30,9 @@ struct TraceEvent {
   std::string from, to;  // node: the status change
   std::vector<std::pair<std::string, ScriptValue>> reads;  // condition: what it read
   std::string message, script;                             // error: what BT.CPP would throw
+  // violation: the property (requirement), its role and the values it read at `tick`
+  std::string role;
+  std::vector<std::pair<std::string, std::string>> values;
 };
 
 // Records, into a trace, every status change of every node ("node" events, BT.CPP's
@@ -51,6 +55,8 @@ class NodeTracer : public Observer {
 };
 
 std::string trace_json_lines(const std::vector<TraceEvent>& trace);
+// A state value as it appears in the trace: a JSON boolean, number or string; null when unset.
+nlohmann::ordered_json value_json(const ScriptValue& value);
 // One line per event; a completed root's status is left to the final "mission <verdict>"
 // line, so that the outcome is printed once.
 std::string trace_summary(const std::vector<TraceEvent>& trace);

@@ -9,8 +9,8 @@ namespace uabt::verify::detail {
 
 namespace {
 
-// How many cubes of the uncovered region a finding lists before it says "and more".
-constexpr std::size_t kMaxGapCubes = 5;
+// How many cubes of a region a finding lists before it says "and more".
+constexpr std::size_t kMaxRegionCubes = 5;
 
 bool contains(const std::vector<z3::expr>& v, const z3::expr& x) {
   return std::any_of(v.begin(), v.end(), [&](const z3::expr& y) { return z3::eq(x, y); });
@@ -43,6 +43,68 @@ AtomTable atom_table(const Node& node, Session& session) {
 
 }  // namespace
 
+RegionCubes describe_region(const Node& node, Session& session, z3::model model,
+                            const std::vector<z3::expr>& inside, const z3::expr& outside) {
+  // Generalise each model of the region to a cube over the guards' atoms that lies wholly in
+  // it (drop literals while D ∧ cube ∧ outside stays unsat), block it, repeat.
+  RegionCubes region;
+  const AtomTable table = atom_table(node, session);
+  const z3::expr blocking = session.encoder().fresh_literal("regionblock");
+  std::vector<z3::expr> search = inside;
+  search.push_back(blocking);
+  for (;;) {
+    std::vector<z3::expr> cube;
+    for (std::size_t k = 0; k < table.atoms.size(); ++k)
+      cube.push_back(model.eval(table.formulas[k], true).is_true() ? table.literals[k]
+                                                                   : !table.literals[k]);
+    // The full cube fixes every atom at values of a state of the region, so it lies in the
+    // region; the core and the minimisation only make it larger.
+    std::vector<z3::expr> query{outside};
+    query.insert(query.end(), cube.begin(), cube.end());
+    if (session.check(query) == Answer::unsat) {
+      const std::vector<z3::expr> core = session.core();
+      std::vector<z3::expr> needed;
+      for (const auto& l : cube)
+        if (contains(core, l)) needed.push_back(l);
+      cube = session.minimise({outside}, needed);
+    }
+    std::vector<CubeLiteral> literals;
+    for (std::size_t k = 0; k < table.atoms.size(); ++k) {
+      if (contains(cube, table.literals[k]))
+        literals.push_back({table.atoms[k], true});
+      else if (contains(cube, !table.literals[k]))
+        literals.push_back({table.atoms[k], false});
+    }
+    region.cubes.push_back(
+        render_cube(literals, session.encoder().domain(), session.encoder().typing()));
+    if (cube.empty()) break;  // the whole domain
+    z3::expr_vector conjunction(session.context());
+    for (const auto& l : cube) conjunction.push_back(l);
+    session.add(z3::implies(blocking, !z3::mk_and(conjunction)));
+    const Answer next = session.check(search);
+    if (next == Answer::unsat) break;
+    if (next == Answer::unknown) {
+      region.more = "… and possibly more (the solver could not tell)";
+      break;
+    }
+    if (region.cubes.size() == kMaxRegionCubes) {
+      region.more = "… and more";
+      break;
+    }
+    model = session.model();
+  }
+  return region;
+}
+
+SourceLocation requirements_span(const std::vector<const Guard*>& guards) {
+  SourceLocation span = guards.front()->requirement->location;
+  for (const Guard* g : guards) {
+    const SourceLocation& l = g->requirement->location;
+    if (l.file == span.file && l.line > std::max(span.line, span.end_line)) span.end_line = l.line;
+  }
+  return span;
+}
+
 void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
   region.clear();
   const bool has_default = std::any_of(node.guards.begin(), node.guards.end(),
@@ -53,89 +115,44 @@ void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
   }
   Session::Scope scope(session);
   std::vector<z3::expr> none_hold;
+  std::vector<const Guard*> all;
   for (const Guard& g : node.guards) {
     session.define(g.literal, g.formula);
     none_hold.push_back(!g.literal);
+    all.push_back(&g);
   }
-  const Guard& last = node.guards.back();
+  // The gap belongs to the node's requirements as a whole: it is located at their span.
+  const SourceLocation where = requirements_span(all);
   const Answer gap = session.check(none_hold);
   if (gap == Answer::unsat) return;
-  std::vector<const Guard*> all;
-  for (const Guard& g : node.guards) all.push_back(&g);
   if (gap == Answer::unknown) {
     report_inconclusive(node, session,
-                        "whether some state selects no alternative of " + node.adaptable,
-                        last.requirement->location, all);
+                        "whether some state selects no alternative of " + node.adaptable, where,
+                        all);
     return;
   }
-  z3::model model = session.model();
+  const z3::model model = session.model();
   const State witness = session.encoder().state_of(model);
-
-  // The region: generalise each gap model to a cube over the guards' atoms that lies wholly
-  // in the gap (drop literals while D ∧ cube ∧ (g1 ∨ … ∨ gn) stays unsat), block it, repeat.
-  const AtomTable table = atom_table(node, session);
   z3::expr_vector guard_literals(session.context());
   for (const Guard& g : node.guards) guard_literals.push_back(g.literal);
   const z3::expr some_holds = session.define(z3::mk_or(guard_literals), "any");
-  const z3::expr blocking = session.encoder().fresh_literal("gapblock");
-  std::vector<z3::expr> search = none_hold;
-  search.push_back(blocking);
-  std::string more;
-  for (;;) {
-    std::vector<z3::expr> cube;
-    for (std::size_t k = 0; k < table.atoms.size(); ++k)
-      cube.push_back(model.eval(table.formulas[k], true).is_true() ? table.literals[k]
-                                                                   : !table.literals[k]);
-    // The full cube fixes every atom at values where every guard is false, so it lies in the
-    // gap; the core and the minimisation only make it larger.
-    std::vector<z3::expr> query{some_holds};
-    query.insert(query.end(), cube.begin(), cube.end());
-    if (session.check(query) == Answer::unsat) {
-      const std::vector<z3::expr> core = session.core();
-      std::vector<z3::expr> needed;
-      for (const auto& l : cube)
-        if (contains(core, l)) needed.push_back(l);
-      cube = session.minimise({some_holds}, needed);
-    }
-    std::vector<CubeLiteral> literals;
-    for (std::size_t k = 0; k < table.atoms.size(); ++k) {
-      if (contains(cube, table.literals[k]))
-        literals.push_back({table.atoms[k], true});
-      else if (contains(cube, !table.literals[k]))
-        literals.push_back({table.atoms[k], false});
-    }
-    region.push_back(render_cube(literals, session.encoder().domain(), session.encoder().typing()));
-    if (cube.empty()) break;  // the whole domain is uncovered
-    z3::expr_vector conjunction(session.context());
-    for (const auto& l : cube) conjunction.push_back(l);
-    session.add(z3::implies(blocking, !z3::mk_and(conjunction)));
-    const Answer next = session.check(search);
-    if (next == Answer::unsat) break;
-    if (next == Answer::unknown) {
-      more = "… and possibly more (the solver could not tell)";
-      break;
-    }
-    if (region.size() == kMaxGapCubes) {
-      more = "… and more";
-      break;
-    }
-    model = session.model();
-  }
+  RegionCubes cubes = describe_region(node, session, model, none_hold, some_holds);
+  region = cubes.cubes;
 
   Finding f = node_finding(node, "guard-gap",
                            "no requirement of " + node.adaptable +
                                " holds in some states: there the Fallback fails and " +
                                node.adaptable + " returns FAILURE",
-                           last.requirement->location);
+                           where);
   for (const Guard& g : node.guards) {
     f.requirements.push_back(g.requirement->id);
     f.alternatives.push_back(g.requirement->alternative);
   }
   f.witness = witness;
   for (const auto& cube : region) f.notes.push_back("uncovered: " + cube);
-  if (!more.empty()) {
-    f.notes.push_back("uncovered: " + more);
-    region.push_back(more);
+  if (!cubes.more.empty()) {
+    f.notes.push_back("uncovered: " + cubes.more);
+    region.push_back(cubes.more);
   }
   f.notes.push_back("add a default requirement (no condition) or guards that cover these states");
   node.result->findings.push_back(std::move(f));

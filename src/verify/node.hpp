@@ -34,6 +34,7 @@ struct Node {
   std::vector<std::vector<std::size_t>> meeting;
   Result* result = nullptr;
   const Options* options = nullptr;
+  bool first_hit = false;  // policy="first": an overlap is a note, priority decides
 };
 
 // "Req1 (on_dust)"
@@ -47,6 +48,16 @@ Finding node_finding(const Node& node, const std::string& check, std::string mes
 // Reports that a question could not be decided.
 void report_inconclusive(Node& node, Session& session, const std::string& question,
                          const SourceLocation& location, const std::vector<const Guard*>& guards);
+
+// A region of the state space as a few readable cubes over the node's atoms.
+struct RegionCubes {
+  std::vector<std::string> cubes;
+  std::string more;  // "… and more" when the list is cut short, else ""
+};
+// Describes the region that `inside` (assumption literals, satisfied by `model`) selects;
+// `outside` is a literal that holds exactly outside it. Uses the session's current scope.
+RegionCubes describe_region(const Node& node, Session& session, z3::model model,
+                            const std::vector<z3::expr>& inside, const z3::expr& outside);
 
 // The checks, in the order verify_mission runs them.
 void check_satisfiable_and_shadowed(Node& node, Session& session);

@@ -27,17 +27,31 @@ void check_overlaps(Node& node, Session& session) {
         continue;
       }
       if (both == Answer::unsat) continue;
-      const State witness = session.encoder().state_of(session.model());
+      const z3::model model = session.model();
+      const State witness = session.encoder().state_of(model);
+      const RegionCubes region =
+          describe_region(node, session, model, {a.literal, b.literal},
+                          session.define(!(a.literal && b.literal), "notboth"));
       Finding f =
           node_finding(node, "guard-overlap",
                        label(a) + " and " + label(b) + " can both hold: the Fallback picks " +
                            a.requirement->alternative + " and " + b.requirement->alternative +
                            " is never considered in this state",
                        b.requirement->location);
-      if (node.options->allow_overlap) f.severity = Severity::warning;
+      if (node.first_hit) {
+        f.severity = Severity::note;
+        f.notes.push_back("policy=\"first\" on " + node.adaptable + ": priority decides, " +
+                          a.requirement->alternative + " runs in this state");
+      } else if (node.options->allow_overlap) {
+        f.severity = Severity::warning;
+      }
       f.requirements = {a.requirement->id, b.requirement->id};
       f.alternatives = {a.requirement->alternative, b.requirement->alternative};
       f.witness = witness;
+      const SourceLocation& other = a.requirement->location;
+      f.related.push_back({other, "the other requirement, " + label(a)});
+      for (const auto& cube : region.cubes) f.notes.push_back("both hold: " + cube);
+      if (!region.more.empty()) f.notes.push_back("both hold: " + region.more);
       f.notes.push_back("if " + a.requirement->alternative +
                         " fails there, the Fallback falls through to " +
                         b.requirement->alternative);

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "fretish/relation.hpp"
 #include "smt/rational.hpp"
 
 namespace uabt::verify::detail {
@@ -27,16 +28,6 @@ std::optional<std::pair<double, std::string>> exact_number(const Expr& e) {
   const auto r = smt::parse_rational(e.text);
   if (!r || r->numerator.size() > 15 || r->denominator.size() > 16) return std::nullopt;
   return std::make_pair(std::strtod(e.text.c_str(), nullptr), e.text);
-}
-
-ExprKind mirrored(ExprKind k) {
-  switch (k) {
-    case ExprKind::lt: return ExprKind::gt;
-    case ExprKind::le: return ExprKind::ge;
-    case ExprKind::gt: return ExprKind::lt;
-    case ExprKind::ge: return ExprKind::le;
-    default: return k;
-  }
 }
 
 bool intersect(VariableConstraint& into, const VariableConstraint& c) {
@@ -166,7 +157,7 @@ std::optional<Bound> bound_of(const Expr& e, const smt::Typing& typing) {
     if (!n) continue;
     Bound b;
     b.variable = var.text;
-    b.op = side == 0 ? e.kind : mirrored(e.kind);
+    b.op = side == 0 ? e.kind : fretish::mirrored_relation(e.kind);
     b.value = n->first;
     b.text = n->second;
     b.integer_variable = t->sort == Sort::integer;

@@ -68,7 +68,8 @@ void check_vacuous_atoms(Node& node, Session& session,
     if (g.is_default || g.satisfiable != Answer::sat) continue;
     const fretish::Expr& guard = *g.requirement->guard;
     const auto atoms = smt::atom_occurrences(guard, encoder.typing());
-    if (atoms.size() < 2) continue;  // a lone atom is the whole guard: it always matters
+    // A lone atom is the whole guard: it matters unless the guard always holds under D
+    // (`!(x = 1)` with x in [-3, 0]), which the question below finds like any other case.
     if (read_once_over_free_booleans(guard, atoms, encoder.typing(), assumed)) {
       session.statistics().prefiltered += atoms.size();
       continue;
@@ -122,6 +123,11 @@ void check_vacuous_atoms(Node& node, Session& session,
       f.requirements = {g.requirement->id};
       f.alternatives = {g.requirement->alternative};
       f.notes.push_back("guard: " + fretish::to_fretish(guard));
+      // The guard is satisfiable (checked above), so a constant for its only atom makes it
+      // always true: it is a default in disguise.
+      if (atoms.size() == 1)
+        f.notes.push_back("the guard always holds under the domain: " + label(g) +
+                          " acts as a default");
       f.notes.push_back("drop the atom, or check whether another condition was meant");
       node.result->findings.push_back(std::move(f));
     }

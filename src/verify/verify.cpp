@@ -93,6 +93,7 @@ NodeOutcome analyse_node(const load::Mission& mission, const NodeJob& job, const
   node.adaptable = job.adaptable;
   node.result = &result;
   node.options = &options;
+  node.first_hit = mission.first_hit(job.adaptable);
   const bool well_typed = build_guards(node, reqs, session);
   if (!well_typed || domain != Answer::sat) {
     for (const auto* r : reqs) {
@@ -151,13 +152,36 @@ std::vector<NodeOutcome> analyse_nodes(const load::Mission& mission,
   return outcomes;
 }
 
+// A node whose guard checks a broken input makes meaningless: one finding says so, instead of
+// verdicts that would pretend to know.
+void report_not_verified(const load::AdaptableSite& site, const std::string& reason,
+                         Result& result) {
+  Finding f = make_finding("verification-skipped", site.id + " is not verified because " + reason,
+                           site.location);
+  f.adaptable = site.id;
+  f.notes.push_back("its guards are checked (overlap, gap, reachability) once that is fixed");
+  result.findings.push_back(std::move(f));
+  Coverage cov;
+  cov.adaptable = site.id;
+  cov.not_counted_reason = "not verified: " + reason;
+  result.coverage.push_back(std::move(cov));
+}
+
 }  // namespace
 
 Result verify_mission(const load::Mission& mission, const Options& options) {
   std::vector<NodeJob> jobs;
   std::set<std::string> seen;
+  Result skipped;
+  std::vector<std::string> order;  // every node, mission order, for the coverage list
   for (const auto& site : mission.adaptables) {
-    if (!seen.insert(site.id).second) continue;  // one analysis per node, however often used
+    // One analysis per node, however often used; an <Adaptable> without ID is bt-structure's.
+    if (site.id.empty() || !seen.insert(site.id).second) continue;
+    order.push_back(site.id);
+    if (auto it = mission.not_verified.find(site.id); it != mission.not_verified.end()) {
+      report_not_verified(site, it->second, skipped);
+      continue;
+    }
     jobs.push_back({site.id, mission.selections_for(site.id)});
   }
   // With no node to analyse, the domain is still checked (a job without requirements).
@@ -167,12 +191,19 @@ Result verify_mission(const load::Mission& mission, const Options& options) {
   std::vector<NodeOutcome> outcomes = analyse_nodes(mission, jobs, options);
   Result result;
   result.findings = std::move(outcomes.front().domain_findings);
+  std::vector<Coverage> analysed;
   for (auto& o : outcomes) {
     for (auto& f : o.node.findings) result.findings.push_back(std::move(f));
     if (!domain_only)
-      for (auto& c : o.node.coverage) result.coverage.push_back(std::move(c));
+      for (auto& c : o.node.coverage) analysed.push_back(std::move(c));
     result.statistics.solver_queries += o.node.statistics.solver_queries;
     result.statistics.prefiltered += o.node.statistics.prefiltered;
+  }
+  for (auto& f : skipped.findings) result.findings.push_back(std::move(f));
+  for (const auto& id : order) {
+    for (auto* list : {&analysed, &skipped.coverage})
+      for (auto& c : *list)
+        if (c.adaptable == id) result.coverage.push_back(std::move(c));
   }
   sort_findings(result.findings);
   return result;

@@ -10,6 +10,8 @@
 //                                                     point measured in a process of its own
 //   uabt_bench process RUNS COMMAND [ARGS…]           a whole command RUNS times: wall time
 //                                                     (min, median, max), CPU, peak memory
+//   uabt_bench selection                              --selection optimized against Fig. 4:
+//                                                     condition ticks per selection, compile time
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -26,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_selection.hpp"
 #include "bench_support.hpp"
 #include "gate/gate.hpp"
 #include "smt/solver.hpp"
@@ -48,7 +51,8 @@ int usage() {
                "       uabt_bench generate N K DIR [--planted] [--tree-nodes M]\n"
                "       uabt_bench measure N K [--threads T] [--naive default|core]\n"
                "       uabt_bench scale [--quick]\n"
-               "       uabt_bench process RUNS COMMAND [ARGS...]\n");
+               "       uabt_bench process RUNS COMMAND [ARGS...]\n"
+               "       uabt_bench selection\n");
   return 2;
 }
 
@@ -299,6 +303,7 @@ int main(int argc, char** argv) {
       if (mode == "measure") return measure(argc, argv);
       if (mode == "scale") return scale(argc, argv);
       if (mode == "process") return process(argc, argv);
+      if (mode == "selection") return uabt::bench::selection_figures();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "uabt_bench: %s\n", e.what());
       return 1;

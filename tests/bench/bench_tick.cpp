@@ -31,22 +31,22 @@ constexpr const char* kBlock = R"(      <Fallback>
       </Fallback>
 )";
 
-std::string tree_xml(int blocks) {
+std::string tree_xml(int blocks, const std::string& root = "Sequence") {
   std::string xml =
       "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
-      "  <BehaviorTree ID=\"MainTree\">\n    <Sequence>\n"
-      "      <Script code=\"x := 0; y := 0\"/>\n";
+      "  <BehaviorTree ID=\"MainTree\">\n    <" +
+      root + ">\n      <Script code=\"x := 0; y := 0\"/>\n";
   for (int b = 0; b < blocks; ++b) xml += kBlock;
-  xml +=
-      "    </Sequence>\n  </BehaviorTree>\n  <TreeNodesModel>\n"
-      "    <Condition ID=\"OnRocks\"/>\n  </TreeNodesModel>\n</root>\n";
+  xml += "    </" + root +
+         ">\n  </BehaviorTree>\n  <TreeNodesModel>\n"
+         "    <Condition ID=\"OnRocks\"/>\n  </TreeNodesModel>\n</root>\n";
   return xml;
 }
 
-void BM_Tick(benchmark::State& state) {
+void run_tick_benchmark(benchmark::State& state, const std::string& root) {
   std::vector<uabt::Finding> findings;
-  const auto doc =
-      uabt::bt::parse_document(tree_xml(static_cast<int>(state.range(0))), "bench.xml", findings);
+  const auto doc = uabt::bt::parse_document(tree_xml(static_cast<int>(state.range(0)), root),
+                                            "bench.xml", findings);
   if (!doc) {
     state.SkipWithError("the benchmark tree does not parse");
     return;
@@ -71,6 +71,18 @@ void BM_Tick(benchmark::State& state) {
       static_cast<double>(engine.stats().node_ticks), benchmark::Counter::kIsRate);
 }
 
+void BM_Tick(benchmark::State& state) {
+  run_tick_benchmark(state, "Sequence");
+}
+
+// The same tree under a SequenceWithMemory: in BT.CPP 4.10 every block that succeeds yields
+// (wake-up signal), so one tick is 1,001 root passes that each resume at the next block. The
+// node ticks are those of BM_Tick plus one root tick per pass: the cost of the wake-up loop.
+void BM_TickWakeUp(benchmark::State& state) {
+  run_tick_benchmark(state, "SequenceWithMemory");
+}
+
 BENCHMARK(BM_Tick)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TickWakeUp)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

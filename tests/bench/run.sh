@@ -24,5 +24,7 @@ else
   echo "== scaling"
   "$bench" scale
 fi
+echo "== selection cost: Fig. 4 against --selection optimized"
+"$bench" selection
 echo "== uabt gate missions/msl_curiosity, whole process"
 "$bench" process 20 "$dir/uabt" gate missions/msl_curiosity --out "$out"

@@ -10,6 +10,7 @@
 
 #include "bt/xml_io.hpp"
 #include "runtime/runner.hpp"
+#include "runtime/trace.hpp"
 #include "test_support.hpp"
 
 namespace uabt::runtime {
@@ -27,17 +28,6 @@ Json read_json(const fs::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   return Json::parse(text.str());
-}
-
-Json value_json(const ScriptValue& v) {
-  switch (v.kind) {
-    case ScriptValue::Kind::boolean: return v.boolean;
-    case ScriptValue::Kind::integer: return v.integer;
-    case ScriptValue::Kind::real: return v.real;
-    case ScriptValue::Kind::string: return v.text;
-    case ScriptValue::Kind::empty: break;
-  }
-  return nullptr;
 }
 
 Json leaf_json(const LeafLogEntry& e) {
@@ -77,7 +67,7 @@ Recorded run_reproducer(const fs::path& dir) {
     verdict = verdict == "success" ? "SUCCESS" : "FAILURE";
   Json state = Json::object();
   for (const auto& [key, value] : runner.engine().blackboard().entries())
-    state[key] = value_json(value);
+    state[key] = Json(value_json(value));
   out.record.push_back(
       {{"event", "done"}, {"verdict", verdict}, {"ticks", runner.ticks()}, {"state", state}});
   out.error = runner.error();

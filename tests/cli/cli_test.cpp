@@ -1,33 +1,21 @@
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <array>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
+#include "cli/cli_support.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;  // stdout and stderr together
-};
+using uabt::testing::CliRun;
 
 // Runs the real binary from the source directory, as a user or CI would.
 CliRun uabt(const std::string& args) {
-  const std::string command = "cd '" + uabt::testing::source_dir().string() + "' && '" +
-                              UABT_BINARY + "' " + args + " 2>&1";
-  CliRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.out += buffer.data();
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return uabt::testing::run_shell("cd '" + uabt::testing::source_dir().string() + "' && '" +
+                                  UABT_BINARY + "' " + args + " 2>&1");
 }
 
 std::string read(const std::filesystem::path& p) {
@@ -78,7 +66,10 @@ TEST(Cli, AllowOverlapTurnsOverlapIntoAWarning) {
 TEST(Cli, CompileToStdoutIsTheGoldenTree) {
   CliRun run = uabt("compile missions/msl_curiosity");
   EXPECT_EQ(run.exit_code, 0);
-  EXPECT_EQ(run.out, read(uabt::testing::source_dir() / "tests/compile/golden/msl_curiosity.xml"));
+  // The tree on stdout, then (stderr) the one line that says compile does not verify.
+  EXPECT_EQ(run.out, read(uabt::testing::source_dir() / "tests/compile/golden/msl_curiosity.xml") +
+                         "uabt: msl_curiosity: compiled, not verified: `uabt gate` proves the "
+                         "guards and the tree\n");
 }
 
 TEST(Cli, ConformAcceptsTheCompiledTreeAndThePapersGeneratedTree) {
@@ -117,6 +108,104 @@ TEST(Cli, RunTheCuriosityStory) {
   EXPECT_NE(run.out.find("uplink uplinks/on_mud accepted"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("navigation selects on_mud (Req3)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("mission success"), std::string::npos);
+}
+
+// --- the uplink workflow (DESIGN §11) ---------------------------------------------------------
+
+TEST(CliUplink, GateUplinkExitCodes) {
+  uabt::testing::TempMission out({});
+  const std::string o = " --out '" + out.dir().string() + "/";
+  CliRun mud = uabt("gate missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/on_mud" +
+                    o + "mud'");
+  EXPECT_EQ(mud.exit_code, 0) << mud.out;
+  EXPECT_NE(mud.out.find("uplinks/on_mud/requirements.fret:2:7: note: Req3: new requirement"),
+            std::string::npos)
+      << mud.out;
+  EXPECT_NE(mud.out.find("navigation: 1 of 4 states (1/4) change their alternative"),
+            std::string::npos)
+      << mud.out;
+  CliRun sand = uabt(
+      "gate missions/msl_curiosity --uplink "
+      "missions/msl_curiosity/uplinks/on_sand_ambiguous" +
+      o + "sand'");
+  EXPECT_EQ(sand.exit_code, 1) << sand.out;
+  EXPECT_NE(sand.out.find("[guard-overlap]"), std::string::npos) << sand.out;
+  EXPECT_EQ(
+      uabt("gate missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/nope" + o + "x'")
+          .exit_code,
+      2);
+}
+
+TEST(CliUplink, APackageGivenAsTheMissionGetsTheRightCommand) {
+  CliRun run = uabt("gate missions/msl_curiosity/uplinks/on_mud");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.out.find("`uabt gate missions/msl_curiosity --uplink "
+                         "missions/msl_curiosity/uplinks/on_mud`"),
+            std::string::npos)
+      << run.out;
+}
+
+TEST(CliUplink, GateUplinkWritesTheMergedMissionThatGatesToTheSameTree) {
+  uabt::testing::TempMission out({});
+  const auto dir = out.dir() / "storm";
+  ASSERT_EQ(uabt("gate missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/dust_storm "
+                 "--out '" +
+                 dir.string() + "'")
+                .exit_code,
+            0);
+  const std::string requirements = read(dir / "merged" / "requirements.fret");
+  EXPECT_LT(requirements.find("Storm: In navigation"), requirements.find("Req1: In navigation"))
+      << requirements;
+  EXPECT_TRUE(std::filesystem::exists(dir / "merged/alternatives/navigation/wait_out_storm.xml"));
+  const auto again = out.dir() / "again";
+  ASSERT_EQ(
+      uabt("gate '" + (dir / "merged").string() + "' --out '" + again.string() + "'").exit_code, 0);
+  EXPECT_EQ(read(again / "compiled.xml"), read(dir / "compiled.xml"));
+  EXPECT_NE(read(dir / "summary.md").find("placed before Req1 (uplink.json)"), std::string::npos);
+}
+
+TEST(CliUplink, DiffExitCodeAndUplink) {
+  EXPECT_EQ(uabt("diff missions/msl_curiosity missions/msl_curiosity --exit-code").exit_code, 0);
+  CliRun changed =
+      uabt("diff missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/on_mud");
+  EXPECT_EQ(changed.exit_code, 0) << changed.out;
+  EXPECT_NE(changed.out.find("navigation: changed (1 of 4 states, 1/4, change their alternative)"),
+            std::string::npos)
+      << changed.out;
+  EXPECT_EQ(uabt("diff missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/on_mud "
+                 "--exit-code")
+                .exit_code,
+            1);
+  EXPECT_EQ(uabt("diff missions/msl_curiosity missions/msl_curiosity_paper --exit-code").exit_code,
+            1);
+  EXPECT_EQ(uabt("diff missions/msl_curiosity").exit_code, 2) << "NEW or --uplink";
+  EXPECT_EQ(uabt("diff missions/msl_curiosity missions/exploration --uplink "
+                 "missions/msl_curiosity/uplinks/on_mud")
+                .exit_code,
+            2);
+  CliRun json = uabt(
+      "diff missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/on_mud "
+      "--format json");
+  EXPECT_NE(json.out.find("\"changed_states\": 1,"), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"OnMud\": true"), std::string::npos) << json.out;
+}
+
+TEST(CliUplink, RunRefusesAMissingUplinkBeforeTheRunStarts) {
+  CliRun run = uabt(
+      "run missions/msl_curiosity --scenario "
+      "missions/msl_curiosity/scenarios/dusty_start.json --uplink 3:uplinks/on_mud");
+  EXPECT_EQ(run.exit_code, 2) << "relative to the current directory, where there is no uplinks/";
+  EXPECT_NE(run.out.find("no such directory"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("tick "), std::string::npos) << "the run must not start: " << run.out;
+  EXPECT_EQ(uabt("run missions/msl_curiosity --scenario "
+                 "missions/msl_curiosity/scenarios/dusty_start.json --uplink x:uplinks/on_mud")
+                .exit_code,
+            2);
+  CliRun ok = uabt(
+      "run missions/msl_curiosity --scenario "
+      "missions/msl_curiosity/scenarios/dusty_start.json --uplink "
+      "3:missions/msl_curiosity/uplinks/on_mud");
+  EXPECT_NE(ok.out.find("uplink uplinks/on_mud accepted"), std::string::npos) << ok.out;
 }
 
 }  // namespace

@@ -46,6 +46,11 @@ Finding only(const std::vector<Finding>& findings, const std::string& check) {
   return found.empty() ? Finding{} : *found.front();
 }
 
+std::string value_of(const State& state, const std::string& name) {
+  const Value* v = find_value(state, name);
+  return v ? v->to_string() : "(unset)";
+}
+
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
@@ -178,8 +183,14 @@ TEST_F(Rules, SubTreesThatResolveAreFine) {
 TEST_F(Rules, SelectorMustBeAFallback) {
   const std::string selector = msl_selector(std::string(kDustBranch) + kRocksBranch + kSafeBranch,
                                             "Sequence name=\"navigation\"");
-  const Finding& f = only(msl(msl_document(selector)), "compiled-selector-shape");
+  // Judged by meaning: the Sequence gives up after the first branch whose guard fails.
+  const auto findings = msl(msl_document(selector));
+  const Finding& f = only(findings, "compiled-selection-mismatch");
   EXPECT_EQ(f.node_path, "navigation/Sequence");
+  EXPECT_EQ(value_of(f.witness, "OnDust"), "false") << describe(findings);
+  const auto shape = with_check(findings, "compiled-selector-shape");
+  ASSERT_EQ(shape.size(), 1u) << describe(findings);
+  EXPECT_EQ(shape[0]->severity, Severity::note);
 }
 
 TEST_F(Rules, ReactiveFallbackAndUnnamedNodesAreTheSameShape) {
@@ -196,9 +207,15 @@ TEST_F(Rules, ReactiveFallbackAndUnnamedNodesAreTheSameShape) {
 TEST_F(Rules, BranchWithThreeChildrenIsMisshapen) {
   const auto findings =
       msl(replace(msl_document(msl_default_selector()), "<OnRocks/>", "<OnRocks/><IsRockAtLeft/>"));
-  const Finding& f = only(findings, "compiled-selector-shape");
-  EXPECT_EQ(f.node_path, "navigation/Fallback/Sequence[1]");
-  EXPECT_NE(f.message.find("3 children"), std::string::npos);
+  // The extra condition narrows Req2's branch: a state with rocks on the right shows it.
+  const Finding& f = only(findings, "compiled-selection-mismatch");
+  EXPECT_EQ(value_of(f.witness, "OnRocks"), "true") << describe(findings);
+  EXPECT_EQ(value_of(f.witness, "IsRockAtLeft"), "false") << describe(findings);
+  const auto shape = with_check(findings, "compiled-selector-shape");
+  ASSERT_EQ(shape.size(), 1u) << describe(findings);
+  EXPECT_EQ(shape[0]->node_path, "navigation/Fallback/Sequence[1]");
+  EXPECT_NE(shape[0]->message.find("3 children"), std::string::npos);
+  EXPECT_EQ(shape[0]->severity, Severity::note);
 }
 
 TEST_F(Rules, BranchMustEndWithTheAlternativeCall) {
@@ -216,8 +233,11 @@ TEST_F(Rules, CallOfATreeThatIsNoAlternative) {
   const auto shape = with_check(findings, "compiled-selector-shape");
   ASSERT_EQ(shape.size(), 1u) << describe(findings);
   EXPECT_NE(shape[0]->message.find("none of the alternatives"), std::string::npos);
-  // The requirement it was meant for has no branch now.
-  EXPECT_TRUE(has_check(findings, "compiled-missing-alternative"));
+  // Judged by meaning: where only the default applies, the tree runs no alternative of it.
+  const Finding& f = only(findings, "compiled-selection-mismatch");
+  EXPECT_NE(f.message.find("hold_position (Safe)"), std::string::npos) << f.message;
+  EXPECT_EQ(value_of(f.witness, "OnDust"), "false");
+  EXPECT_EQ(value_of(f.witness, "OnRocks"), "false");
 }
 
 TEST_F(Rules, RenamedAlternativeTreeWithTheSameContentIsRecognised) {

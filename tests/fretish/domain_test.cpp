@@ -157,5 +157,34 @@ TEST(FretishDomain, ErrorsDoNotStopLaterLines) {
   EXPECT_EQ(d.variables[1].name, "b");
 }
 
+// `tick 100 ms`: the tick period that turns durations in time units into ticks.
+TEST(FretishDomain, TickPeriod) {
+  const auto period = [](const std::string& content, std::vector<Finding>& findings) {
+    return fretish::parse_domain_file(content, "domain.fret", findings).tick_seconds;
+  };
+  std::vector<Finding> ok;
+  EXPECT_DOUBLE_EQ(period("boolean a\ntick 100 ms\n", ok).value_or(-1), 0.1);
+  EXPECT_DOUBLE_EQ(period("tick 2 seconds", ok).value_or(-1), 2.0);
+  EXPECT_DOUBLE_EQ(period("tick 0.5 min # half a minute", ok).value_or(-1), 30.0);
+  EXPECT_DOUBLE_EQ(period("TICK 250 us", ok).value_or(-1), 250e-6);
+  EXPECT_TRUE(ok.empty()) << ok.front().message;
+  EXPECT_FALSE(period("boolean a", ok).has_value());
+
+  for (const auto& [content, message] : std::vector<std::pair<std::string, std::string>>{
+           {"tick 0 ms", "the tick period must be greater than zero"},
+           {"tick 5 ticks", "the tick period needs a unit of time (e.g. 'tick 100 ms')"},
+           {"tick 1 s\ntick 2 s", "the tick period is already declared at line 1"}}) {
+    std::vector<Finding> findings;
+    period(content, findings);
+    ASSERT_EQ(findings.size(), 1u) << content;
+    EXPECT_EQ(findings[0].check, "domain-invalid");
+    EXPECT_EQ(findings[0].message, message);
+  }
+  std::vector<Finding> syntax;
+  period("tick fast", syntax);
+  ASSERT_EQ(syntax.size(), 1u);
+  EXPECT_EQ(syntax[0].check, "fretish-syntax");
+}
+
 }  // namespace
 }  // namespace uabt::testing

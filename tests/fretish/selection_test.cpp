@@ -133,32 +133,42 @@ TEST(FretishSelection, RejectsWithTheFieldNamed) {
 TEST(FretishSelection, EveryOffendingFieldIsReported) {
   const Classified c = classify(
       "X: before navigation Rover shall with probability > 0.5 within 2 ticks satisfy "
-      "selected_alt = go | x\n"
+      "selected_alt != go\n"
       "Ok: In navigation Mission shall satisfy selected_alt = a\n");
   ASSERT_EQ(c.selections.size(), 1u);
   EXPECT_EQ(c.selections[0].id, "Ok");
   EXPECT_EQ(c.selections[0].source_index, 1);
   ASSERT_EQ(c.findings.size(), 5u);
-  const std::vector<std::string> fields = {"scope", "component", "probability", "timing",
+  const std::vector<std::string> fields = {"probability", "scope", "component", "timing",
                                            "response"};
   for (std::size_t i = 0; i < fields.size(); ++i)
     EXPECT_EQ(c.findings[i].message.rfind(fields[i], 0), 0u) << c.findings[i].message;
 }
 
-// A requirement that does not choose an alternative is a mission property (DESIGN §10): not a
-// selection, not an error; only a probability has no meaning for it.
-TEST(FretishSelection, MissionPropertiesAreNotSelections) {
-  const Classified c = classify(
-      "P1: Mission shall always satisfy !(OnDust & OnRocks)\n"
-      "P2: In navigation Mission shall within 3 ticks satisfy IsInLocation\n"
-      "P3: Environment shall always satisfy battery >= 0\n"
-      "P4: Mission shall with probability > 0.9 satisfy IsDug\n"
-      "Ok: In navigation Mission shall satisfy selected_alt = a\n");
+// Requirements that do not read `selected_alt` are mission properties (DESIGN §10): no finding,
+// kept in file order; only what has no meaning on a run is refused.
+TEST(FretishSelection, OtherRequirementsAreMissionProperties) {
+  fretish::ParseResult parsed = fretish::parse_requirements_file(
+      "Req1: In navigation if OnDust Mission shall satisfy selected_alt = on_dust\n"
+      "P1: if OnDust Mission shall satisfy x\n"
+      "P2: In navigation Mission shall satisfy chosen = a\n"
+      "P3: upon OnMud the rover shall within 1 tick satisfy hold_position.running\n"
+      "A1: the Environment shall always satisfy !(OnDust & OnRocks)\n"
+      "X: the rover shall with probability > 0.9 always satisfy safe\n",
+      "requirements.fret");
+  ASSERT_FALSE(has_errors(parsed.findings));
+  std::vector<Finding> findings;
+  const fretish::Classification c = fretish::classify_requirements(parsed.requirements, findings);
   ASSERT_EQ(c.selections.size(), 1u);
-  ASSERT_EQ(c.findings.size(), 1u);
-  EXPECT_EQ(c.findings[0].check, "fretish-unsupported");
-  EXPECT_EQ(c.findings[0].requirements, std::vector<std::string>{"P4"});
-  EXPECT_EQ(c.findings[0].message.rfind("probability", 0), 0u);
+  ASSERT_EQ(c.properties.size(), 4u);
+  EXPECT_EQ(c.properties[0].id, "P1");
+  EXPECT_EQ(c.properties[2].id, "P3");
+  EXPECT_EQ(c.properties[3].id, "A1");
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].check, "fretish-unsupported");
+  EXPECT_EQ(findings[0].requirements, std::vector<std::string>{"X"});
+  EXPECT_EQ(findings[0].message.rfind("probability 'with probability > 0.9' has no meaning", 0), 0u)
+      << findings[0].message;
 }
 
 }  // namespace

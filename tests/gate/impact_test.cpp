@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "base/diagnostics.hpp"
+#include "gate/load_support.hpp"
 #include "report/impact.hpp"
 #include "smt/evaluate.hpp"
 #include "temp_mission.hpp"
@@ -12,13 +13,9 @@ namespace {
 
 load::Mission load(const std::filesystem::path& dir,
                    std::vector<std::filesystem::path> uplinks = {}) {
-  std::string error;
-  load::LoadOptions options;
-  options.uplinks = std::move(uplinks);
-  auto m = load::load_mission(dir, options, error);
-  EXPECT_TRUE(m.has_value()) << error;
-  EXPECT_FALSE(has_errors(m->findings)) << format_text(m->findings);
-  return std::move(*m);
+  load::Mission m = uabt::testing::load_merged(dir, std::move(uplinks));
+  EXPECT_FALSE(has_errors(m.findings)) << format_text(m.findings);
+  return m;
 }
 
 const SelectionChange* find_change(const NodeImpact& n, const std::string& from,

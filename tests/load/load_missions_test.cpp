@@ -148,9 +148,11 @@ TEST(References, ConditionsMustBeRobotNodesWhenNodesXmlIsGiven) {
                  {"requirements.fret",
                   "Req1: In navigation if OnDust & !OnMud Mission shall satisfy selected_alt = a\n"
                   "Safe: In navigation Mission shall satisfy selected_alt = a\n"},
+                 // OnMud is declared (a blackboard value), but the robot has no such condition.
+                 {"domain.fret", "boolean OnDust, OnMud\n"},
                  {"nodes.xml",
                   "<root BTCPP_format=\"4\"><TreeNodesModel><Condition ID=\"OnDust\"/>"
-                  "</TreeNodesModel></root>\n"},
+                  "<Action ID=\"Stop\"/></TreeNodesModel></root>\n"},
                  {"alternatives/navigation/a.xml", uabt::testing::alternative_tree("a")}});
   Mission m = load_ok(t.dir());
   ASSERT_EQ(m.findings.size(), 1u) << format_text(m.findings);
@@ -179,7 +181,8 @@ TEST(Uplink, MudUplinkIsMergedAboveTheDefault) {
   options.uplinks.push_back(dir / "uplinks" / "on_mud");
   auto m = load_mission(dir, options, error);
   ASSERT_TRUE(m) << error;
-  EXPECT_TRUE(m->findings.empty()) << format_text(m->findings);
+  ASSERT_EQ(m->findings.size(), 1u) << format_text(m->findings);
+  EXPECT_EQ(m->findings[0].check, "uplink-merge") << "the merge says where Req3 went";
   auto selections = m->selections_for("navigation");
   ASSERT_EQ(selections.size(), 4u);
   EXPECT_EQ(selections[2]->id, "Req3");

@@ -33,6 +33,9 @@ TEST(RunOutcome, AScenarioThatNeverSetsBatteryStopsWithAScriptError) {
   EXPECT_EQ(run.error->path, "MainTree/Fallback/Sequence[0]/ScriptCondition[0]");
   EXPECT_EQ(run.error->script, "battery < 20");
   EXPECT_NE(run.error->message.find("undefined blackboard key 'battery'"), std::string::npos);
+  // The place in mission.xml the user wrote, not in the compiled tree held in memory.
+  EXPECT_EQ(run.error->message.rfind("mission.xml:8:9: ScriptCondition: ", 0), 0u)
+      << run.error->message;
   const std::string summary = trace_summary(run);
   EXPECT_EQ(summary.find("selects"), std::string::npos) << summary;
   EXPECT_EQ(summary.find("mission success"), std::string::npos) << summary;
@@ -44,6 +47,16 @@ TEST(RunOutcome, AScenarioThatNeverSetsBatteryStopsWithAScriptError) {
       << lines;
   EXPECT_NE(lines.find(R"("script":"battery < 20")"), std::string::npos);
   EXPECT_NE(lines.find(R"("event":"done","verdict":"error")"), std::string::npos);
+}
+
+TEST(RunOutcome, AGuardReadingAnUnsetKeyPointsAtItsRequirement) {
+  const ManagerRun run =
+      run_mission("exploration", R"({"initial": {"battery": 90, "terrain": "sand"}})");
+  ASSERT_TRUE(run.error.has_value());
+  EXPECT_EQ(run.error->message.rfind("requirements.fret:3:", 0), 0u) << run.error->message;
+  EXPECT_NE(run.error->message.find("undefined blackboard key 'slope'"), std::string::npos);
+  EXPECT_EQ(run.error->path.rfind("MainTree/Fallback/Sequence[1]/SubTree[1]/exploration/", 0), 0u)
+      << run.error->path;
 }
 
 TEST(RunOutcome, SuccessIsPrintedOnce) {

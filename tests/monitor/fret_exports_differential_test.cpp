@@ -25,7 +25,7 @@ void check_export(const std::string& file, std::size_t expected_requirements) {
   const nlohmann::json document = nlohmann::json::parse(content);
 
   monitor::Variables variables;
-  for (const fretish::Variable& v : domain.variables) variables.slot(v.name);
+  for (const fretish::Variable& v : domain.variables) variables.id(v.name);
   const monitor::Resolver resolve = [&](const std::string& name) -> monitor::Resolved {
     if (const auto slot = variables.find(name)) return {monitor::Resolved::Kind::variable, *slot};
     return {};
@@ -89,9 +89,13 @@ void check_export(const std::string& file, std::size_t expected_requirements) {
   EXPECT_GE(both_verdicts + 1, static_cast<int>(expected_requirements));
 }
 
-TEST(MonitorFretExports, LiquidMixer) { check_export("LM_reqts_and_vars.json", 12); }
+TEST(MonitorFretExports, LiquidMixer) {
+  check_export("LM_reqts_and_vars.json", 12);
+}
 
-TEST(MonitorFretExports, FiniteStateMachine) { check_export("fsm_reqts_and_vars.json", 13); }
+TEST(MonitorFretExports, FiniteStateMachine) {
+  check_export("fsm_reqts_and_vars.json", 13);
+}
 
 }  // namespace
 }  // namespace uabt::testing

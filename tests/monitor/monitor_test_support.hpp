@@ -64,9 +64,9 @@ inline nlohmann::json fret_semantics() {
 
 inline monitor::ScopeKind scope_from_key(const std::string& k) {
   using monitor::ScopeKind;
-  for (ScopeKind s : {ScopeKind::null, ScopeKind::in, ScopeKind::notin, ScopeKind::only_in,
-                      ScopeKind::after, ScopeKind::before, ScopeKind::only_after,
-                      ScopeKind::only_before})
+  for (ScopeKind s :
+       {ScopeKind::null, ScopeKind::in, ScopeKind::notin, ScopeKind::only_in, ScopeKind::after,
+        ScopeKind::before, ScopeKind::only_after, ScopeKind::only_before})
     if (k == monitor::scope_key(s)) return s;
   ADD_FAILURE() << "scope " << k;
   return ScopeKind::null;
@@ -99,6 +99,20 @@ inline std::vector<std::string> split_key(const std::string& key) {
   std::string part;
   while (std::getline(s, part, ',')) parts.push_back(part);
   return parts;
+}
+
+// The shape a semantics.json key "scope,condition,timing,response" names (duration 0).
+inline monitor::Shape shape_from_key(const std::string& key) {
+  const auto parts = split_key(key);
+  monitor::Shape shape;
+  if (parts.size() < 3) {
+    ADD_FAILURE() << "key " << key;
+    return shape;
+  }
+  shape.scope = scope_from_key(parts[0]);
+  shape.condition = condition_from_key(parts[1]);
+  shape.timing = timing_from_key(parts[2]);
+  return shape;
 }
 
 }  // namespace uabt::testing

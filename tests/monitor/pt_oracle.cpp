@@ -208,8 +208,8 @@ class Parser {
     }
     if (i_ < s_.size() && (std::isalpha(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_')) {
       const std::size_t start = i_;
-      while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) ||
-                                s_[i_] == '_' || s_[i_] == '.'))
+      while (i_ < s_.size() &&
+             (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_' || s_[i_] == '.'))
         ++i_;
       const std::string word = s_.substr(start, i_ - start);
       auto n = std::make_shared<Node>();
@@ -241,8 +241,12 @@ class Parser {
 
 using Column = std::vector<OracleValue>;
 
-OracleValue boolean(bool b) { return {false, b, 0}; }
-OracleValue number(double x) { return {true, false, x}; }
+OracleValue boolean(bool b) {
+  return {false, b, 0};
+}
+OracleValue number(double x) {
+  return {true, false, x};
+}
 
 Column eval(const Node& n, const std::vector<OracleState>& trace) {
   const std::size_t len = trace.size();
@@ -312,7 +316,8 @@ Column eval(const Node& n, const std::vector<OracleState>& trace) {
       }
       out[t] = boolean(want ? found : !found);
     } else if (op == "=" || op == "!=") {
-      const bool same = a[0][t].is_number ? a[0][t].number == num(1, t) : truth(0, t) == truth(1, t);
+      const bool same =
+          a[0][t].is_number ? a[0][t].number == num(1, t) : truth(0, t) == truth(1, t);
       out[t] = boolean(op == "=" ? same : !same);
     } else if (op == "<") {
       out[t] = boolean(num(0, t) < num(1, t));

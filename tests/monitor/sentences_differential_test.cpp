@@ -98,25 +98,25 @@ TEST(MonitorSemantics, EveryPhraseMeansItsFretTemplate) {
                       monitor::condition_key(monitor->shape().condition),
                   scope.key + "," + condition.key)
             << sentence;
-        const PtFormula oracle = PtFormula::parse(
-            instantiate(semantics.at(key).at("ptExpanded").get<std::string>(),
-                        {{"scope_mode", "m"},
-                         {"regular_condition", "c"},
-                         {"post_condition", "p"},
-                         {"stop_condition", "s"},
-                         {"duration", "3"}}));
+        const PtFormula oracle = PtFormula::parse(instantiate(
+            semantics.at(key).at("ptExpanded").get<std::string>(), {{"scope_mode", "m"},
+                                                                    {"regular_condition", "c"},
+                                                                    {"post_condition", "p"},
+                                                                    {"stop_condition", "s"},
+                                                                    {"duration", "3"}}));
         for (int i = 0; i < 12; ++i) {
           const auto trace = random_boolean_trace(rng, {"m", "c", "p", "s"}, length(rng));
           const std::vector<bool> expected = oracle.evaluate(trace);
-          auto run = monitor::RequirementMonitor::compile(parsed.requirements[0], resolve, {},
-                                                          reason);
+          auto run =
+              monitor::RequirementMonitor::compile(parsed.requirements[0], resolve, {}, reason);
           for (std::size_t t = 0; t < trace.size(); ++t) {
             std::vector<monitor::Val> frame;
             for (const char* n : {"m", "c", "p", "s"})
               frame.push_back(monitor::Val::of_bool(trace[t].at(n).truth));
             const bool got = run->step(frame);
             ASSERT_FALSE(run->failed()) << run->error();
-            ASSERT_EQ(got, expected[t]) << sentence << " at tick " << t << "\n" << trace_text(trace);
+            ASSERT_EQ(got, expected[t]) << sentence << " at tick " << t << "\n"
+                                        << trace_text(trace);
           }
         }
         ++checked;
@@ -148,8 +148,8 @@ TEST(MonitorClassify, WhatHasNoMeaningOnATraceIsNamed) {
 
 TEST(MonitorClassify, DurationsInOtherUnitsRoundUpToTicks) {
   const auto ticks = [](const std::string& timing, double period) {
-    const fretish::ParseResult parsed = fretish::parse_requirements_file(
-        "X: the sw shall " + timing + " satisfy p\n", "r.fret");
+    const fretish::ParseResult parsed =
+        fretish::parse_requirements_file("X: the sw shall " + timing + " satisfy p\n", "r.fret");
     EXPECT_EQ(parsed.requirements.size(), 1u) << timing;
     if (parsed.requirements.empty()) return std::uint64_t{0};
     const auto c = monitor::classify(parsed.requirements[0], period);

@@ -56,20 +56,17 @@ TEST(MonitorSemantics, EveryFretTemplateAtEveryTick) {
     const auto parts = split_key(key);
     ASSERT_EQ(parts.size(), 4u) << key;
     if (parts[3] != "satisfaction") continue;
-    Shape shape;
-    shape.scope = scope_from_key(parts[0]);
-    shape.condition = condition_from_key(parts[1]);
-    shape.timing = timing_from_key(parts[2]);
+    Shape shape = shape_from_key(key);
     const bool timed = parts[2] == "within" || parts[2] == "for" || parts[2] == "after";
-    for (std::uint64_t d : timed ? std::vector<std::uint64_t>{0, 1, 2, 3, 5}
-                                 : std::vector<std::uint64_t>{1}) {
+    for (std::uint64_t d :
+         timed ? std::vector<std::uint64_t>{0, 1, 2, 3, 5} : std::vector<std::uint64_t>{1}) {
       shape.duration = d;
-      const std::string text = instantiate(entry["ptExpanded"].get<std::string>(),
-                                           {{"scope_mode", "m"},
-                                            {"regular_condition", "c"},
-                                            {"post_condition", "p"},
-                                            {"stop_condition", "s"},
-                                            {"duration", std::to_string(d)}});
+      const std::string text =
+          instantiate(entry["ptExpanded"].get<std::string>(), {{"scope_mode", "m"},
+                                                               {"regular_condition", "c"},
+                                                               {"post_condition", "p"},
+                                                               {"stop_condition", "s"},
+                                                               {"duration", std::to_string(d)}});
       Mismatch mismatch;
       compare(shape, text, rng, 120, mismatch);
       EXPECT_EQ(mismatch.count, 0) << key << " duration " << d << "\n" << mismatch.what;
@@ -87,11 +84,7 @@ TEST(MonitorSemantics, SafetyVerdictsNeverRecover) {
   std::mt19937 rng(7);
   int recovering = 0;
   for (const auto& [key, entry] : semantics.items()) {
-    const auto parts = split_key(key);
-    Shape shape;
-    shape.scope = scope_from_key(parts[0]);
-    shape.condition = condition_from_key(parts[1]);
-    shape.timing = timing_from_key(parts[2]);
+    Shape shape = shape_from_key(key);
     shape.duration = 2;
     Formula f;
     const int root = monitor::build_requirement_formula(f, shape, monitor::Slots{0, 1, 2, 3});

@@ -57,6 +57,14 @@ TEST(ProveCli, JsonAndCounterexampleFiles) {
                             (dir / "CoolBit.json").string());
   EXPECT_NE(replay.out.find("tick 1: drilling selects rotary (Soft)"), std::string::npos)
       << replay.out;
+  // `uabt run` monitors the mission's properties: it reports the same violation at the same tick.
+  EXPECT_EQ(replay.code, 1) << replay.out;
+  EXPECT_NE(replay.out.find("tick 1: guarantee CoolBit violated (Drill.running=true, "
+                            "IsBitCool=false)"),
+            std::string::npos)
+      << replay.out;
+  EXPECT_NE(replay.out.find("property CoolBit: violated from tick 1"), std::string::npos)
+      << replay.out;
 }
 
 TEST(ProveCli, SarifPointsAtTheRequirement) {

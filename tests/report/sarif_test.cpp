@@ -32,8 +32,8 @@ TEST(SarifReport, HeaderAndDriver) {
   const json& run = doc["runs"][0];
   EXPECT_EQ(run["tool"]["driver"]["name"], "uabt");
   EXPECT_EQ(run["tool"]["driver"]["version"], "0.1.0");
-  EXPECT_TRUE(run["originalUriBaseIds"].contains("SRCROOT"));
-  EXPECT_FALSE(run["originalUriBaseIds"]["SRCROOT"].contains("uri")) << "no machine path";
+  EXPECT_TRUE(run["originalUriBaseIds"].contains("%SRCROOT%"));
+  EXPECT_FALSE(run["originalUriBaseIds"]["%SRCROOT%"].contains("uri")) << "no machine path";
   EXPECT_EQ(run["automationDetails"]["id"], "uabt/msl_curiosity_paper/");
 }
 
@@ -86,10 +86,13 @@ TEST(SarifReport, ResultsPointAtTheirRulesAndLines) {
     ASSERT_EQ(result["locations"].size(), 1u) << "GitHub rejects results without a location";
     const json& physical = result["locations"][0]["physicalLocation"];
     EXPECT_EQ(physical["artifactLocation"]["uri"], input.uri_prefix + finding.location.file);
-    EXPECT_EQ(physical["artifactLocation"]["uriBaseId"], "SRCROOT");
+    EXPECT_EQ(physical["artifactLocation"]["uriBaseId"], "%SRCROOT%");
     if (finding.location.line > 0) {
       EXPECT_EQ(physical["region"]["startLine"], finding.location.line);
       EXPECT_EQ(physical["region"]["startColumn"], finding.location.column);
+      if (finding.location.end_line > finding.location.line) {
+        EXPECT_EQ(physical["region"]["endLine"], finding.location.end_line);
+      }
     } else {
       EXPECT_FALSE(physical.contains("region")) << finding.message;
     }
@@ -145,6 +148,35 @@ TEST(SarifReport, FindingWithoutAFileIsAnchoredAtTheMission) {
   ASSERT_EQ(result["locations"].size(), 1u);
   EXPECT_EQ(result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
             "missions/m/mission.xml");
+}
+
+TEST(SarifReport, RelatedLocationsRegionsAndMissionsOutsideTheRoot) {
+  ReportInput input = testing::passing_input();
+  input.uri_prefix = "missions/m/";
+  Finding overlap =
+      testing::finding("guard-overlap", Severity::error, "both", {"requirements.fret", 5, 7});
+  overlap.related.push_back({{"requirements.fret", 4, 7}, "the other requirement, Req1 (a)"});
+  Finding gap = testing::finding("guard-gap", Severity::error, "none", {"requirements.fret", 4, 7});
+  gap.location.end_line = 5;
+  Finding outside = testing::finding("bt-xml", Severity::error, "bad", {"../out/c.xml", 1, 1});
+  input.findings = {overlap, gap, outside};
+  const json results = sarif_of(input)["runs"][0]["results"];
+  const json& related = results[0]["relatedLocations"];
+  ASSERT_EQ(related.size(), 1u);
+  EXPECT_EQ(related[0]["message"]["text"], "the other requirement, Req1 (a)");
+  EXPECT_EQ(related[0]["physicalLocation"]["artifactLocation"]["uri"],
+            "missions/m/requirements.fret");
+  EXPECT_EQ(related[0]["physicalLocation"]["region"]["startLine"], 4);
+  EXPECT_EQ(results[1]["locations"][0]["physicalLocation"]["region"]["endLine"], 5);
+  EXPECT_FALSE(results[0]["locations"][0]["physicalLocation"]["region"].contains("endLine"));
+  EXPECT_EQ(results[2]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+            "missions/out/c.xml")
+      << "a file beside the mission is normalised, not left with '..'";
+  // A mission outside the source root: an absolute file URI, without a base.
+  input.uri_prefix = "/srv/m/";
+  const json far = sarif_of(input)["runs"][0]["results"][0]["locations"][0]["physicalLocation"];
+  EXPECT_EQ(far["artifactLocation"]["uri"], "file:///srv/m/requirements.fret");
+  EXPECT_FALSE(far["artifactLocation"].contains("uriBaseId"));
 }
 
 TEST(SarifReport, UrisArePercentEncoded) {

@@ -55,14 +55,19 @@ TEST(WriteReports, WritesEveryFileAndNoTemporaries) {
   write_reports(input, out, "<root BTCPP_format=\"4\"/>\n");
   EXPECT_EQ(names_in(out),
             (std::set<std::string>{"findings.txt", "findings.json", "findings.sarif", "junit.xml",
-                                   "summary.md", "report.html", "compiled.xml"}));
+                                   "summary.md", "report.html", "compiled.rejected.xml"}))
+      << "a failing gate keeps its candidate tree as compiled.rejected.xml, never compiled.xml";
   EXPECT_EQ(slurp(out / "findings.txt"), format_text(input.findings));
   EXPECT_EQ(slurp(out / "findings.json"), to_json(input));
   EXPECT_EQ(slurp(out / "findings.sarif"), to_sarif(input));
   EXPECT_EQ(slurp(out / "junit.xml"), to_junit(input));
   EXPECT_EQ(slurp(out / "summary.md"), to_markdown(input));
   EXPECT_EQ(slurp(out / "report.html"), to_html(input));
-  EXPECT_EQ(slurp(out / "compiled.xml"), "<root BTCPP_format=\"4\"/>\n");
+  EXPECT_EQ(slurp(out / "compiled.rejected.xml"), "<root BTCPP_format=\"4\"/>\n");
+  // Passing, the same directory gets the tree to uplink and loses the rejected one.
+  write_reports(testing::passing_input(), out, "<root BTCPP_format=\"4\"/>\n");
+  EXPECT_TRUE(fs::exists(out / "compiled.xml"));
+  EXPECT_FALSE(fs::exists(out / "compiled.rejected.xml"));
 }
 
 TEST(WriteReports, RewritingGivesTheSameBytesAndDropsAStaleCompiledTree) {
@@ -73,6 +78,7 @@ TEST(WriteReports, RewritingGivesTheSameBytesAndDropsAStaleCompiledTree) {
   write_reports(input, dir.path(), "");
   EXPECT_EQ(slurp(dir.path() / "report.html"), html);
   EXPECT_FALSE(fs::exists(dir.path() / "compiled.xml"));
+  EXPECT_FALSE(fs::exists(dir.path() / "compiled.rejected.xml"));
   EXPECT_EQ(names_in(dir.path()).size(), 6u);
 }
 

@@ -192,3 +192,29 @@ TEST_F(Btcpp, AfterAScriptErrorTheSequenceResumesAtTheFailingChild) {
 
 }  // namespace
 }  // namespace uabt::runtime::testing
+
+namespace uabt::runtime::testing {
+namespace {
+
+// Tree::haltTree halts the root, then calls halt on every node: every _onHalted runs (the
+// root's twice), also on IDLE nodes; a robot leaf hears halt only while it is RUNNING.
+TEST(BtcppHaltTree, EveryOnHaltedRunsAndOnlyRunningLeavesAreHalted) {
+  ScriptedWorld world;
+  world.script("B", {R});
+  Engine e =
+      Engine::build(main_tree("<Sequence _onHalted=\"root += 1\"><A _onHalted=\"a += 1\"/>"
+                              "<B _onHalted=\"b += 1\"/><C _onHalted=\"c += 1\"/></Sequence>"),
+                    world);
+  for (const char* key : {"root", "a", "b", "c"}) e.blackboard().set(key, ScriptValue::of_int(0));
+  EXPECT_EQ(e.tick(), R);
+  e.halt();
+  EXPECT_EQ(*e.blackboard().get("root"), ScriptValue::of_int(2));
+  EXPECT_EQ(*e.blackboard().get("a"), ScriptValue::of_int(1));
+  EXPECT_EQ(*e.blackboard().get("b"), ScriptValue::of_int(2));  // halted running, then visited
+  EXPECT_EQ(*e.blackboard().get("c"), ScriptValue::of_int(1));
+  EXPECT_EQ(world.halts("B"), 1);
+  for (NodeId n = 0; n < e.node_count(); ++n) EXPECT_EQ(e.status(n), I);
+}
+
+}  // namespace
+}  // namespace uabt::runtime::testing

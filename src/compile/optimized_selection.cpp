@@ -1,0 +1,231 @@
+// --selection optimized: a selection tree that decides over the guards' atoms instead of
+// trying the guards one after the other, emitted with BT.CPP 4.10 nodes only (IfThenElse,
+// Sequence, Inverter, condition leaves, ScriptCondition).
+#include <algorithm>
+
+#include "compile/compile.hpp"
+#include "fretish/requirement.hpp"
+
+namespace uabt::compile {
+
+namespace {
+
+std::string path_of(const std::string& parent, const bt::Node& child, std::size_t index) {
+  return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
+}
+
+class Emitter {
+ public:
+  Emitter(const load::Mission& m, const std::string& adaptable,
+          const std::vector<const fretish::SelectionRequirement*>& reqs,
+          const SelectionSpace& space, const Decision& decision, int bt_format)
+      : m_(m),
+        adaptable_(adaptable),
+        reqs_(reqs),
+        space_(space),
+        decision_(decision),
+        bt_format_(bt_format) {}
+
+  bt::Node root() {
+    std::vector<std::size_t> cells(space_.cells());
+    for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = c;
+    bt::Node n = emit(decision_.root, cells);
+    n.set_attribute("name", adaptable_);
+    return n;
+  }
+
+  // Trace entries for the emitted tree, once it has its final shape.
+  void trace(const bt::Node& n, const std::string& path, std::vector<TraceEntry>& out) const {
+    TraceEntry e;
+    e.tree_id = adaptable_;
+    e.node_path = path;
+    const std::string* name = n.attribute("name");
+    const fretish::SelectionRequirement* req = nullptr;
+    if (name)
+      for (const auto* r : reqs_)
+        if (r->id == *name) req = r;
+    if (path.find('/') == path.rfind('/')) {
+      e.atom = "selector";
+    } else if (n.tag == "Sequence" && req != nullptr && n.children.size() == 1) {
+      e.requirement = req->id;
+      e.atom = "requirement";
+      e.source = req->location;
+    } else if (n.tag == "SubTree") {
+      e.requirement = leaf_requirement_->id;
+      e.atom = "selected_alt = " + leaf_requirement_->alternative;
+      e.source = leaf_requirement_->alternative_location;
+    } else if (n.tag == "ScriptCondition") {
+      e.atom = *n.attribute("code");
+      e.source = source_of(e.atom);
+    } else if (n.children.empty()) {
+      e.atom = n.tag;
+      e.source = source_of(n.tag);
+    } else {
+      e.atom = n.tag == "Inverter" ? "!" : "decision";
+    }
+    out.push_back(e);
+    for (std::size_t i = 0; i < n.children.size(); ++i) {
+      if (n.tag == "Sequence" && req != nullptr && n.children.size() == 1) leaf_requirement_ = req;
+      trace(n.children[i], path_of(path, n.children[i], i), out);
+    }
+  }
+
+ private:
+  static bt::Node node(std::string tag, std::vector<bt::Node> children = {}) {
+    bt::Node n;
+    n.tag = std::move(tag);
+    n.children = std::move(children);
+    return n;
+  }
+
+  // The requirement's guard location whose atoms read what a test reads.
+  SourceLocation source_of(const std::string& text) const {
+    const std::string name = first_word(text);
+    for (const auto* r : reqs_) {
+      if (r->guard == nullptr) continue;
+      const auto ids = fretish::identifiers_of(*r->guard);
+      if (std::find(ids.begin(), ids.end(), name) != ids.end()) return r->guard_location;
+    }
+    return {};
+  }
+  static std::string first_word(const std::string& text) {
+    const auto end = text.find_first_of(" =<>!");
+    return text.substr(0, end);
+  }
+
+  bt::Node leaf(int label) const {
+    const auto* req = reqs_[static_cast<std::size_t>(label)];
+    const load::Alternative* alt = m_.find_alternative(adaptable_, req->alternative);
+    bt::Node call = node("SubTree");
+    call.set_attribute("ID", alt ? alt->tree_id : req->alternative);
+    call.set_attribute(bt_format_ == 3 ? "__shared_blackboard" : "_autoremap", "true");
+    bt::Node branch = node("Sequence", {std::move(call)});
+    branch.set_attribute("name", req->id);
+    return branch;
+  }
+
+  // The condition of a test, written for the pieces the cells at this node can be in;
+  // `negated` is set when the shorter text is that of the other side.
+  bt::Node condition(const DecisionTest& t, const std::vector<std::size_t>& cells,
+                     bool& negated) const {
+    const Dimension& dim = space_.dimensions[t.dimension];
+    negated = false;
+    switch (dim.kind) {
+      case Dimension::Kind::boolean: return node(dim.name);
+      case Dimension::Kind::opaque:
+        return guard_to_tree(*dim.atom, m_.domain, SelectionStyle::sequence);
+      case Dimension::Kind::ordered: {
+        std::size_t last = 0;  // the last piece where the test holds
+        while (last + 1 < t.holds.size() && t.holds[last + 1]) ++last;
+        const auto& here = dim.pieces[last];
+        const auto& next = dim.pieces[last + 1];
+        bt::Node n = node("ScriptCondition");
+        n.set_attribute("code", here.point
+                                    ? dim.name + " <= " + here.text
+                                    : dim.name + " < " + (next.point ? next.text : here.text));
+        return n;
+      }
+      case Dimension::Kind::enumeration: {
+        std::vector<bool> present(dim.pieces.size(), false);
+        for (std::size_t c : cells) present[space_.piece(c, t.dimension)] = true;
+        std::vector<std::string> yes, no;
+        for (std::size_t p = 0; p < dim.pieces.size(); ++p)
+          if (present[p]) (t.holds[p] ? yes : no).push_back(dim.pieces[p].text);
+        negated = no.size() < yes.size();
+        std::string code;
+        for (const auto& lit : negated ? no : yes)
+          code += (code.empty() ? "" : " || ") + dim.name + " == '" + lit + "'";
+        bt::Node n = node("ScriptCondition");
+        n.set_attribute("code", code);
+        return n;
+      }
+    }
+    return node("AlwaysFailure");
+  }
+
+  bool is_gap(int at) const {
+    return decision_.nodes[at].test < 0 && decision_.nodes[at].label < 0;
+  }
+
+  bt::Node emit(int at, const std::vector<std::size_t>& cells) const {
+    const Decision::Node& d = decision_.nodes[at];
+    if (d.test < 0) return d.label < 0 ? node("AlwaysFailure") : leaf(d.label);
+    const DecisionTest& t = decision_.tests[d.test];
+    std::vector<std::size_t> yes_cells, no_cells;
+    for (std::size_t c : cells)
+      (t.holds[space_.piece(c, t.dimension)] ? yes_cells : no_cells).push_back(c);
+    bool negated = false;
+    bt::Node test = condition(t, cells, negated);
+    int yes = d.yes, no = d.no;
+    if (negated) {
+      std::swap(yes, no);
+      std::swap(yes_cells, no_cells);
+    }
+    // A side where no requirement holds fails: Sequence[test, other side] (with the test
+    // inverted when the gap is on its true side).
+    if (is_gap(no)) return node("Sequence", {std::move(test), emit(yes, yes_cells)});
+    if (is_gap(yes))
+      return node("Sequence", {node("Inverter", {std::move(test)}), emit(no, no_cells)});
+    return node("IfThenElse", {std::move(test), emit(yes, yes_cells), emit(no, no_cells)});
+  }
+
+  const load::Mission& m_;
+  const std::string& adaptable_;
+  const std::vector<const fretish::SelectionRequirement*>& reqs_;
+  const SelectionSpace& space_;
+  const Decision& decision_;
+  int bt_format_;
+  mutable const fretish::SelectionRequirement* leaf_requirement_ = nullptr;
+};
+
+int depth_of(const bt::Node& n) {
+  int d = 0;
+  for (const auto& c : n.children) d = std::max(d, depth_of(c));
+  return d + 1;
+}
+
+}  // namespace
+
+std::optional<bt::Node> optimized_selector(const load::Mission& m, const std::string& adaptable,
+                                           int bt_format, std::vector<TraceEntry>& trace,
+                                           SelectionStats& stats) {
+  const auto reqs = m.selections_for(adaptable);
+  stats.adaptable = adaptable;
+  stats.requirements = reqs.size();
+  std::vector<fretish::ExprPtr> guards;
+  for (const auto* r : reqs) guards.push_back(r->guard);
+  const auto space = build_selection_space(guards, m.domain);
+  if (!space) {
+    stats.reason = "too many states to decide over";
+    return std::nullopt;
+  }
+  stats.cells = space->cells();
+  stats.algorithm1 = algorithm1_cost(*space);
+  stats.optimized = stats.algorithm1;
+  if (space->cells() == 0) {
+    stats.reason = "the domain has no state";
+    return std::nullopt;
+  }
+  const Decision decision = build_decision(*space);
+  const SelectionCost cost = decision_cost(*space, decision);
+  constexpr double eps = 1e-9;
+  const bool cheaper =
+      cost.average < stats.algorithm1.average - eps ||
+      (cost.average <= stats.algorithm1.average + eps && cost.worst < stats.algorithm1.worst);
+  if (!cheaper) {
+    stats.reason = "Fig. 4 ticks no more conditions";
+    return std::nullopt;
+  }
+  Emitter emitter(m, adaptable, reqs, *space, decision, bt_format);
+  bt::Node root = emitter.root();
+  if (depth_of(root) > 200) {  // BT.CPP refuses nesting deeper than 256
+    stats.reason = "the decision structure would nest too deep";
+    return std::nullopt;
+  }
+  stats.optimized = cost;
+  stats.optimized_used = true;
+  emitter.trace(root, adaptable + "/" + root.tag, trace);
+  return root;
+}
+
+}  // namespace uabt::compile

@@ -1,0 +1,316 @@
+// Conformance by meaning: a symbolic one-tick evaluation of a selection subtree (BT.CPP 4.10
+// semantics from IDLE) against the requirements' "first enabled guard selects".
+#include "conform/meaning.hpp"
+
+#include <set>
+
+#include "bt/structure.hpp"
+#include "conform/compare.hpp"
+#include "conform/readback.hpp"
+#include "smt/evaluate.hpp"
+
+namespace uabt::conform {
+
+namespace {
+
+bool is_call(const std::string& kind) {
+  return kind == "SubTree" || kind == "SubTreePlus";
+}
+
+class TickReader {
+ public:
+  TickReader(const Context& ctx, const std::string& adaptable,
+             const std::map<std::string, int>& codes)
+      : ctx_(ctx), adaptable_(adaptable), codes_(codes) {}
+
+  std::optional<TickNode> read(const bt::Node& n, const std::string& path, bool visible,
+                               int depth) {
+    if (depth > bt::kMaxDepth) return fail("nesting deeper than BT.CPP allows at " + path);
+    const std::string kind = n.kind();
+    TickNode t;
+    t.node = &n;
+    t.path = path;
+    if (is_call(kind)) return call(n, path, visible, depth);
+    auto control = [&](TickNode::Op op, std::size_t min,
+                       std::size_t max) -> std::optional<TickNode> {
+      if (auto extra = extra_attribute(n))
+        return fail("<" + kind + "> at " + path + " has " + *extra);
+      if (n.children.size() < min || n.children.size() > max)
+        return fail("<" + kind + "> at " + path + " has " + std::to_string(n.children.size()) +
+                    " children");
+      t.op = op;
+      for (std::size_t i = 0; i < n.children.size(); ++i) {
+        auto c = read(n.children[i], child_path(path, n.children[i], i), visible, depth + 1);
+        if (!c) return std::nullopt;
+        t.children.push_back(std::move(*c));
+      }
+      return t;
+    };
+    constexpr std::size_t many = SIZE_MAX;
+    if (kind == "Sequence" || kind == "ReactiveSequence" || kind == "SequenceWithMemory")
+      return control(TickNode::Op::sequence, 1, many);
+    if (kind == "Fallback" || kind == "ReactiveFallback")
+      return control(TickNode::Op::fallback, 1, many);
+    if (kind == "IfThenElse" || kind == "WhileDoElse")
+      return control(TickNode::Op::if_then_else, 2, 3);
+    if (kind == "Inverter") return control(TickNode::Op::invert, 1, 1);
+    if (kind == "ForceSuccess") return control(TickNode::Op::force_success, 1, 1);
+    if (kind == "ForceFailure") return control(TickNode::Op::force_failure, 1, 1);
+    GuardReading g = read_guard(ctx_, n, path, visible);
+    if (g.problem) return fail(g.problem->message + " (at " + g.problem->path + ")");
+    t.op = TickNode::Op::condition;
+    t.condition = g.formula;
+    return t;
+  }
+
+  const std::string& problem() const { return problem_; }
+  std::vector<SelectionMeaning::Call>& calls() { return calls_; }
+
+ private:
+  std::optional<TickNode> fail(std::string why) {
+    if (problem_.empty()) problem_ = std::move(why);
+    return std::nullopt;
+  }
+
+  static std::optional<std::string> extra_attribute(const bt::Node& n) {
+    for (const auto& [key, value] : n.attributes) {
+      if (key == "name" || (key == "ID" && n.tag != n.kind())) continue;
+      return key + "=\"" + value + "\"";
+    }
+    return std::nullopt;
+  }
+
+  // The alternative a call runs: by tree ID, else by a tree equal to the alternative's.
+  std::string alternative_of(const std::string& id) const {
+    const load::Mission& m = ctx_.mission();
+    for (const auto& alt : m.alternatives)
+      if (alt.adaptable == adaptable_ && alt.tree_id == id) return alt.name;
+    const bt::TreeDef* tree = ctx_.compiled().find_tree(id);
+    if (tree == nullptr) return {};
+    for (const auto& alt : m.alternatives) {
+      if (alt.adaptable != adaptable_) continue;
+      const bt::TreeDef* source = alt.document.find_tree(alt.tree_id);
+      if (source != nullptr && same_tree(source->root, tree->root)) return alt.name;
+    }
+    return {};
+  }
+
+  std::optional<TickNode> call(const bt::Node& n, const std::string& path, bool visible,
+                               int depth) {
+    const int format = ctx_.compiled().format;
+    for (const auto& [key, value] : n.attributes) {
+      if (key == "ID" || key == "name") continue;
+      if (is_remap_attribute(key, format) && value == "true") continue;
+      return fail("the call at " + path + " has " + key + "=\"" + value +
+                  "\": it does not pass the parent's blackboard unchanged");
+    }
+    const std::string* id = n.attribute("ID");
+    const bt::TreeDef* target = id ? ctx_.compiled().find_tree(*id) : nullptr;
+    if (target == nullptr || target->root.tag.empty())
+      return fail("the call at " + path + " names no tree");
+    const std::string alt = alternative_of(*id);
+    if (!alt.empty()) {
+      TickNode t;
+      t.op = TickNode::Op::alternative;
+      t.alternative = codes_.at(alt);
+      t.node = &n;
+      t.path = path;
+      calls_.push_back({alt, &n, path});
+      return t;
+    }
+    if (!calling_.insert(target->id).second) return fail("SubTree cycle through " + target->id);
+    auto r =
+        read(target->root, root_path(*target), visible && shares_blackboard(n, format), depth + 1);
+    calling_.erase(target->id);
+    return r;
+  }
+
+  const Context& ctx_;
+  const std::string& adaptable_;
+  const std::map<std::string, int>& codes_;
+  std::string problem_;
+  std::vector<SelectionMeaning::Call> calls_;
+  std::set<std::string> calling_;
+};
+
+// The outcome code of one tick, over Z3 (symbolic) or over a state (concrete).
+class Symbolic {
+ public:
+  explicit Symbolic(Prover& prover) : prover_(prover), c_(prover.context()) {}
+
+  std::optional<z3::expr> eval(const TickNode& t) {
+    const z3::expr S = c_.int_val(kSelectsNothingButSucceeds), F = c_.int_val(kFails);
+    switch (t.op) {
+      case TickNode::Op::success: return S;
+      case TickNode::Op::failure: return F;
+      case TickNode::Op::alternative: return c_.int_val(t.alternative);
+      case TickNode::Op::condition: {
+        auto b = prover_.lower(t.condition, error);
+        if (!b) return std::nullopt;
+        return z3::ite(*b, S, F);
+      }
+      case TickNode::Op::sequence:
+      case TickNode::Op::fallback: {
+        // Sequence: go on while children succeed; Fallback: while they fail.
+        const z3::expr& go_on = t.op == TickNode::Op::sequence ? S : F;
+        auto rest = eval(t.children.back());
+        if (!rest) return std::nullopt;
+        for (std::size_t i = t.children.size() - 1; i-- > 0;) {
+          auto o = eval(t.children[i]);
+          if (!o) return std::nullopt;
+          rest = z3::ite(*o == go_on, *rest, *o);
+        }
+        return rest;
+      }
+      case TickNode::Op::invert: {
+        auto o = eval(t.children[0]);
+        if (!o) return std::nullopt;
+        return z3::ite(*o == S, F, z3::ite(*o == F, S, *o));
+      }
+      case TickNode::Op::force_success:
+      case TickNode::Op::force_failure: {
+        auto o = eval(t.children[0]);
+        if (!o) return std::nullopt;
+        return z3::ite(*o < 0, t.op == TickNode::Op::force_success ? S : F, *o);
+      }
+      case TickNode::Op::if_then_else: {
+        auto cond = eval(t.children[0]);
+        auto then = eval(t.children[1]);
+        auto other = t.children.size() > 2 ? eval(t.children[2]) : std::optional<z3::expr>(F);
+        if (!cond || !then || !other) return std::nullopt;
+        return z3::ite(*cond == S, *then, z3::ite(*cond == F, *other, *cond));
+      }
+    }
+    return std::nullopt;
+  }
+
+  std::string error;
+
+ private:
+  Prover& prover_;
+  z3::context& c_;
+};
+
+std::optional<int> concrete(const TickNode& t, const fretish::Domain& d, const State& s) {
+  auto child = [&](std::size_t i) { return concrete(t.children[i], d, s); };
+  switch (t.op) {
+    case TickNode::Op::success: return kSelectsNothingButSucceeds;
+    case TickNode::Op::failure: return kFails;
+    case TickNode::Op::alternative: return t.alternative;
+    case TickNode::Op::condition: {
+      auto v = smt::try_evaluate(*t.condition, d, s);
+      if (!v) return std::nullopt;
+      return *v ? kSelectsNothingButSucceeds : kFails;
+    }
+    case TickNode::Op::sequence:
+    case TickNode::Op::fallback: {
+      const int go_on = t.op == TickNode::Op::sequence ? kSelectsNothingButSucceeds : kFails;
+      std::optional<int> o;
+      for (std::size_t i = 0; i < t.children.size(); ++i) {
+        o = child(i);
+        if (!o || *o != go_on) return o;
+      }
+      return o;
+    }
+    case TickNode::Op::invert: {
+      auto o = child(0);
+      if (!o || *o >= 0) return o;
+      return *o == kFails ? kSelectsNothingButSucceeds : kFails;
+    }
+    case TickNode::Op::force_success:
+    case TickNode::Op::force_failure: {
+      auto o = child(0);
+      if (!o || *o >= 0) return o;
+      return t.op == TickNode::Op::force_success ? kSelectsNothingButSucceeds : kFails;
+    }
+    case TickNode::Op::if_then_else: {
+      auto o = child(0);
+      if (!o || *o >= 0) return o;
+      if (*o == kSelectsNothingButSucceeds) return child(1);
+      return t.children.size() > 2 ? child(2) : std::optional<int>(kFails);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+SelectionMeaning prove_selection_meaning(const Context& ctx, Prover& prover,
+                                         const std::string& adaptable, const bt::TreeDef& tree) {
+  SelectionMeaning out;
+  const load::Mission& m = ctx.mission();
+  std::map<std::string, int> codes;
+  std::vector<std::string> names;
+  auto code_of = [&](const std::string& alt) {
+    if (codes.emplace(alt, static_cast<int>(names.size())).second) names.push_back(alt);
+    return codes.at(alt);
+  };
+  for (const auto& alt : m.alternatives)
+    if (alt.adaptable == adaptable) code_of(alt.name);
+  const auto reqs = m.selections_for(adaptable);
+  for (const auto* r : reqs) code_of(r->alternative);
+
+  TickReader reader(ctx, adaptable, codes);
+  auto tick = reader.read(tree.root, root_path(tree), true, 1);
+  out.calls = std::move(reader.calls());
+  if (!tick) {
+    out.reason = reader.problem();
+    return out;
+  }
+  Symbolic symbolic(prover);
+  auto compiled = symbolic.eval(*tick);
+  if (!compiled) {
+    out.reason = "a condition does not type check against the domain: " + symbolic.error;
+    return out;
+  }
+  z3::expr required = prover.context().int_val(kFails);
+  for (auto it = reqs.rbegin(); it != reqs.rend(); ++it) {
+    std::string error;
+    auto g = (*it)->guard ? prover.lower((*it)->guard, error) : prover.truth(true);
+    if (!g) {
+      out.verdict = SelectionMeaning::Verdict::unknown;
+      out.reason = "requirement " + (*it)->id + "'s guard does not type check: " + error;
+      return out;
+    }
+    required = z3::ite(*g, prover.context().int_val(codes.at((*it)->alternative)), required);
+  }
+  const Proof proof = prover.equivalent(*compiled, required);
+  if (proof.answer == Answer::holds) {
+    out.verdict = SelectionMeaning::Verdict::equal;
+    return out;
+  }
+  if (proof.answer == Answer::unknown) {
+    out.verdict = SelectionMeaning::Verdict::unknown;
+    out.reason = "the solver answered unknown (" + proof.reason + ")";
+    return out;
+  }
+  out.verdict = SelectionMeaning::Verdict::differs;
+  out.witness = proof.witness;
+  auto describe_code = [&](std::optional<int> code) -> std::string {
+    if (!code) return "?";
+    if (*code == kFails) return "nothing (the selection fails)";
+    if (*code == kSelectsNothingButSucceeds) return "nothing, yet succeeds";
+    return names.at(static_cast<std::size_t>(*code));
+  };
+  const auto compiled_code = concrete(*tick, m.domain, proof.witness);
+  out.compiled_selects = describe_code(compiled_code);
+  if (compiled_code && *compiled_code >= 0)
+    out.alternatives.push_back(names.at(static_cast<std::size_t>(*compiled_code)));
+  out.required_selects = describe_code(kFails);
+  for (const auto* r : reqs) {
+    const auto v = r->guard ? smt::try_evaluate(*r->guard, m.domain, proof.witness) : true;
+    if (!v) {
+      out.required_selects = "?";
+      break;
+    }
+    if (*v) {
+      out.required_selects = r->alternative + " (" + r->id + ")";
+      out.required_by = r->id;
+      out.alternatives.push_back(r->alternative);
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace uabt::conform

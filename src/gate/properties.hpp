@@ -1,0 +1,18 @@
+#pragma once
+#include <vector>
+
+#include "base/finding.hpp"
+#include "load/mission.hpp"
+#include "monitor/property_check.hpp"
+
+namespace uabt::gate {
+
+// The observables a run of the mission has (DESIGN §10): domain variables, condition leaves,
+// `<node>.success/.failure/.running` for every node of the mission and its alternatives (by
+// `name`, else by ID where unique), `<adaptable>` and `<adaptable>.selected`.
+monitor::Observables mission_observables(const load::Mission& m);
+
+// The static checks of the mission's properties (references, types, timing).
+std::vector<Finding> check_mission_properties(const load::Mission& m);
+
+}  // namespace uabt::gate

@@ -1,0 +1,120 @@
+#include "load/registered_nodes.hpp"
+
+#include <cctype>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "base/suggest.hpp"
+#include "bt/node_kinds.hpp"
+
+namespace uabt::load {
+
+namespace {
+
+bool is_explicit_family_tag(const std::string& tag) {
+  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
+}
+
+// BT.CPP: `name` and `ID` are not ports, nor is any attribute that does not start with a
+// letter (_autoremap, _skipIf, _description, …).
+bool is_port_attribute(const std::string& attribute) {
+  return !attribute.empty() && std::isalpha(static_cast<unsigned char>(attribute[0])) &&
+         attribute != "name" && attribute != "ID";
+}
+
+std::string port_list(const bt::NodeModel& model) {
+  std::string out;
+  for (const auto& p : model.ports) out += (out.empty() ? "" : ", ") + p.name;
+  return out.empty() ? "none" : out;
+}
+
+class Registry {
+ public:
+  explicit Registry(Mission& m) : m_(m) {
+    for (const auto& model : *m.nodes) {
+      if (model.family == "SubTree") continue;
+      models_.emplace(model.id, &model);
+      names_.push_back(model.id);
+    }
+  }
+
+  void check_tree(const bt::TreeDef& tree) {
+    // A file included by several alternatives is one file: report its nodes once.
+    if (!checked_.insert({tree.file, tree.line, tree.column}).second) return;
+    std::vector<const bt::Node*> stack{&tree.root};
+    while (!stack.empty()) {
+      const bt::Node* n = stack.back();
+      stack.pop_back();
+      check_node(tree, *n);
+      for (auto it = n->children.rbegin(); it != n->children.rend(); ++it) stack.push_back(&*it);
+    }
+  }
+
+ private:
+  void check_node(const bt::TreeDef& tree, const bt::Node& n) {
+    if (n.tag.empty() || n.tag == "Adaptable") return;
+    if (is_explicit_family_tag(n.tag) && n.attribute("ID") == nullptr) return;  // bt-structure
+    const std::string kind = n.kind();
+    if (kind == "SubTree" || kind == "SubTreePlus" || bt::find_builtin(kind) != nullptr) return;
+    const SourceLocation at{tree.file, n.line, n.column};
+    const auto it = models_.find(kind);
+    if (it == models_.end()) {
+      Finding f = make_finding("ref-unknown-node",
+                               "node '" + kind +
+                                   "' is not registered in nodes.xml: BehaviorTree.CPP refuses "
+                                   "to load a tree with a node the robot does not have",
+                               at);
+      if (const std::string hint = did_you_mean(kind, names_); !hint.empty())
+        f.notes.push_back(hint);
+      m_.findings.push_back(std::move(f));
+      return;
+    }
+    const bt::NodeModel& model = *it->second;
+    std::vector<std::string> port_names;
+    for (const auto& p : model.ports) port_names.push_back(p.name);
+    for (const auto& [attribute, value] : n.attributes) {
+      if (!is_port_attribute(attribute)) continue;
+      bool known = false;
+      for (const auto& p : model.ports) known |= p.name == attribute;
+      if (known) continue;
+      Finding f = make_finding("ref-unknown-port",
+                               "'" + attribute + "' is not a port of " + kind +
+                                   " in nodes.xml (its ports: " + port_list(model) +
+                                   "): BehaviorTree.CPP refuses to load the tree",
+                               at);
+      if (const std::string hint = did_you_mean(attribute, port_names); !hint.empty())
+        f.notes.push_back(hint);
+      m_.findings.push_back(std::move(f));
+    }
+    for (const auto& p : model.ports) {
+      if (p.direction == "output_port" || !p.default_value.empty()) continue;
+      if (n.attribute(p.name) != nullptr) continue;
+      Finding f = make_finding("ref-missing-port",
+                               "input port '" + p.name + "' of " + kind +
+                                   " is not set and nodes.xml gives it no default: the node "
+                                   "fails when it reads it",
+                               at);
+      f.notes.push_back("set it (" + p.name + "=\"{" + p.name + "}\" reads the blackboard entry " +
+                        p.name + ") or give the port a default in nodes.xml");
+      m_.findings.push_back(std::move(f));
+    }
+  }
+
+  Mission& m_;
+  std::map<std::string, const bt::NodeModel*> models_;
+  std::vector<std::string> names_;
+  std::set<std::tuple<std::string, int, int>> checked_;
+};
+
+}  // namespace
+
+void check_registered_nodes(Mission& m) {
+  if (!m.nodes) return;
+  Registry registry(m);
+  for (const auto& t : m.tree.trees) registry.check_tree(t);
+  for (const auto& alt : m.alternatives)
+    for (const auto& t : alt.document.trees) registry.check_tree(t);
+}
+
+}  // namespace uabt::load

@@ -1,0 +1,348 @@
+#include "load/uplink.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "base/files.hpp"
+#include "fretish/json_positions.hpp"
+
+namespace uabt::load {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Finds `"text"` in the file at or after `from`; the position of its first character.
+struct Locator {
+  const std::string& text;
+  const std::string& file;
+
+  std::size_t offset_of(const std::string& key, std::size_t from) const {
+    const std::size_t at = text.find("\"" + key + "\"", from);
+    return at == std::string::npos ? from : at;
+  }
+  SourceLocation at(std::size_t offset) const {
+    const auto p = fretish::detail::position_of(text, offset);
+    return {file, p.line, p.column};
+  }
+};
+
+void invalid(std::vector<Finding>& findings, std::string message, SourceLocation location) {
+  findings.push_back(make_finding("uplink-invalid", std::move(message), std::move(location)));
+}
+
+void read_place(const Json& place, const Locator& where, std::size_t from, UplinkPlan& plan,
+                std::vector<Finding>& findings) {
+  if (!place.is_object()) {
+    invalid(findings, "\"place\" must be an object: {\"Storm\": {\"before\": \"Req2\"}}",
+            where.at(from));
+    return;
+  }
+  for (const auto& [id, spec] : place.items()) {
+    const std::size_t key_at = where.offset_of(id, from);
+    Placement p;
+    p.requirement = id;
+    p.location = where.at(key_at);
+    std::size_t given = 0;
+    bool reported = false;
+    if (spec.is_object()) {
+      for (const auto& [relation, anchor] : spec.items()) {
+        const std::size_t relation_at = where.offset_of(relation, key_at);
+        if ((relation != "before" && relation != "after") || !anchor.is_string()) {
+          invalid(findings,
+                  "placement of '" + id +
+                      "': expected \"before\" or \"after\" with a requirement id, found \"" +
+                      relation + "\"",
+                  where.at(relation_at));
+          reported = true;
+          continue;
+        }
+        ++given;
+        p.relation = relation;
+        p.anchor = anchor.get<std::string>();
+        p.anchor_location = where.at(where.offset_of(p.anchor, relation_at));
+      }
+    }
+    if (given == 1 && !reported) {
+      plan.place.push_back(std::move(p));
+    } else if (!reported) {
+      invalid(findings,
+              "placement of '" + id + "' needs exactly one of \"before\" or \"after\": {\"" + id +
+                  "\": {\"before\": \"Req2\"}}",
+              p.location);
+    }
+    from = key_at + 1;
+  }
+}
+
+void read_remove(const Json& remove, const Locator& where, std::size_t from, UplinkPlan& plan,
+                 std::vector<Finding>& findings) {
+  if (!remove.is_array()) {
+    invalid(findings, "\"remove\" must be a list of requirement ids: [\"Req3\"]", where.at(from));
+    return;
+  }
+  for (const auto& item : remove) {
+    if (!item.is_string()) {
+      invalid(findings,
+              "\"remove\" holds " + std::string(item.type_name()) +
+                  ", expected requirement ids (strings)",
+              where.at(from));
+      continue;
+    }
+    const std::string id = item.get<std::string>();
+    const std::size_t at = where.offset_of(id, from);
+    plan.remove.push_back({id, where.at(at)});
+    from = at + 1;
+  }
+}
+
+std::vector<std::string> ids_of(const std::vector<fretish::Requirement>& requirements) {
+  std::vector<std::string> ids;
+  for (const auto& r : requirements) ids.push_back(r.id);
+  return ids;
+}
+
+std::vector<fretish::Requirement>::iterator find_id(std::vector<fretish::Requirement>& list,
+                                                    const std::string& id) {
+  return std::find_if(list.begin(), list.end(),
+                      [&](const fretish::Requirement& r) { return r.id == id; });
+}
+
+void unknown_id(Mission& m, const std::string& message, const std::string& id,
+                const std::vector<std::string>& known, const SourceLocation& location) {
+  Finding f = make_finding("uplink-invalid", message, location);
+  const auto close = closest_names(id, known);
+  if (!close.empty()) {
+    std::string names;
+    for (const auto& n : close) names += (names.empty() ? "'" : ", '") + n + "'";
+    f.notes.push_back("did you mean " + names + "?");
+  }
+  m.findings.push_back(std::move(f));
+}
+
+UplinkMerge record_of(const std::string& package, const std::string& id, const std::string& rule,
+                      const SourceLocation& location) {
+  UplinkMerge record;
+  record.package = package;
+  record.requirement = id;
+  record.rule = rule;
+  record.location = location;
+  return record;
+}
+
+std::string adaptable_of(const fretish::Requirement& r) {
+  return r.scope ? r.scope->mode : std::string();
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::vector<std::string> closest_names(const std::string& name,
+                                       const std::vector<std::string>& candidates) {
+  const std::size_t limit = std::max<std::size_t>(2, name.size() / 3);
+  std::vector<std::pair<std::size_t, std::string>> scored;
+  for (const auto& c : candidates) {
+    if (c == name) continue;
+    const std::size_t d = edit_distance(name, c);
+    if (d <= limit) scored.emplace_back(d, c);
+  }
+  std::sort(scored.begin(), scored.end());
+  scored.erase(std::unique(scored.begin(), scored.end()), scored.end());
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < scored.size() && i < 3; ++i) out.push_back(scored[i].second);
+  return out;
+}
+
+UplinkPlan read_uplink_plan(const std::filesystem::path& path, const std::string& shown,
+                            std::vector<Finding>& findings) {
+  UplinkPlan plan;
+  std::string error;
+  const auto text = read_text_file(path, error);
+  if (!text) {
+    findings.push_back(make_finding("load-file", shown + ": " + error, {shown, 0, 0}));
+    return plan;
+  }
+  const Locator where{*text, shown};
+  Json root;
+  try {
+    root = Json::parse(*text);
+  } catch (const Json::parse_error& e) {
+    const std::size_t at = e.byte == 0 ? 0 : e.byte - 1;
+    std::string what = e.what();
+    if (const auto colon = what.rfind(": "); colon != std::string::npos)
+      what = what.substr(colon + 2);
+    invalid(findings, "uplink.json is not valid JSON: " + what, where.at(at));
+    return plan;
+  }
+  if (!root.is_object()) {
+    invalid(findings,
+            "uplink.json must be an object: {\"place\": {\"Storm\": {\"before\": \"Req2\"}}, "
+            "\"remove\": [\"Req3\"]}",
+            where.at(0));
+    return plan;
+  }
+  for (const auto& [key, value] : root.items()) {
+    const std::size_t at = where.offset_of(key, 0);
+    if (key == "place")
+      read_place(value, where, at, plan, findings);
+    else if (key == "remove")
+      read_remove(value, where, at, plan, findings);
+    else
+      invalid(findings,
+              "unknown key \"" + key + "\" in uplink.json: expected \"place\" or \"remove\"",
+              where.at(at));
+  }
+  return plan;
+}
+
+void merge_requirements(Mission& m, std::vector<fretish::Requirement> incoming,
+                        const UplinkPlan& plan, const std::string& package) {
+  const std::vector<std::string> incoming_ids = ids_of(incoming);
+  std::vector<std::string> removed;
+  for (const auto& rem : plan.remove) {
+    if (std::find(incoming_ids.begin(), incoming_ids.end(), rem.requirement) !=
+        incoming_ids.end()) {
+      invalid(m.findings,
+              "uplink.json removes '" + rem.requirement + "', which this package also uplinks",
+              rem.location);
+      continue;
+    }
+    auto it = find_id(m.requirements, rem.requirement);
+    if (it == m.requirements.end()) {
+      unknown_id(m,
+                 "uplink.json removes '" + rem.requirement + "', which the mission does not have",
+                 rem.requirement, ids_of(m.requirements), rem.location);
+      continue;
+    }
+    UplinkMerge record = record_of(package, rem.requirement, "removed", rem.location);
+    record.adaptable = adaptable_of(*it);
+    m.merges.push_back(std::move(record));
+    removed.push_back(rem.requirement);
+    m.requirements.erase(it);
+  }
+
+  const std::size_t first_record = m.merges.size();
+  for (auto& r : incoming) {
+    auto same = find_id(m.requirements, r.id);
+    m.merges.push_back(record_of(
+        package, r.id, same == m.requirements.end() ? "appended" : "replaced", r.location));
+    if (same != m.requirements.end()) {
+      *same = std::move(r);
+      continue;
+    }
+    // Last before the node's default, in the list too, so that the list reads in priority order.
+    const std::string node = adaptable_of(r);
+    auto fallback = std::find_if(m.requirements.begin(), m.requirements.end(),
+                                 [&](const fretish::Requirement& old) {
+                                   return !node.empty() && adaptable_of(old) == node &&
+                                          old.conditions.empty() && !r.conditions.empty();
+                                 });
+    m.requirements.insert(fallback, std::move(r));
+  }
+
+  for (const auto& p : plan.place) {
+    auto placed = find_id(m.requirements, p.requirement);
+    if (placed == m.requirements.end()) {
+      unknown_id(m,
+                 "uplink.json places '" + p.requirement +
+                     "', which neither this package nor the mission has",
+                 p.requirement, ids_of(m.requirements), p.location);
+      continue;
+    }
+    if (p.anchor == p.requirement) {
+      invalid(m.findings, "uplink.json places '" + p.requirement + "' " + p.relation + " itself",
+              p.anchor_location);
+      continue;
+    }
+    if (find_id(m.requirements, p.anchor) == m.requirements.end()) {
+      const bool gone = std::find(removed.begin(), removed.end(), p.anchor) != removed.end();
+      unknown_id(
+          m,
+          "uplink.json places '" + p.requirement + "' " + p.relation + " '" + p.anchor + "', " +
+              (gone ? "which this package removes" : "which the merged mission does not have"),
+          p.anchor, gone ? std::vector<std::string>{} : ids_of(m.requirements), p.anchor_location);
+      continue;
+    }
+    fretish::Requirement moving = std::move(*placed);
+    m.requirements.erase(placed);
+    auto anchor = find_id(m.requirements, p.anchor);
+    m.requirements.insert(p.relation == "before" ? anchor : anchor + 1, std::move(moving));
+
+    auto record =
+        std::find_if(m.merges.begin() + static_cast<std::ptrdiff_t>(first_record), m.merges.end(),
+                     [&](const UplinkMerge& u) { return u.requirement == p.requirement; });
+    if (record == m.merges.end()) {  // a requirement of the mission, moved
+      m.merges.push_back(record_of(package, p.requirement, "placed", p.location));
+      record = m.merges.end() - 1;
+    }
+    record->rule = "placed";
+    record->relation = p.relation;
+    record->anchor = p.anchor;
+  }
+}
+
+void describe_merges(Mission& m) {
+  auto selection = [&](const std::string& id) -> const fretish::SelectionRequirement* {
+    for (const auto& s : m.selections)
+      if (s.id == id) return &s;
+    return nullptr;
+  };
+  for (auto& record : m.merges) {
+    std::string message = record.requirement + ": ";
+    std::string where;
+    if (record.rule != "removed") {
+      if (const auto* s = selection(record.requirement)) {
+        record.adaptable = s->adaptable;
+        const auto order = m.selections_for(s->adaptable);
+        record.of = static_cast<int>(order.size());
+        for (std::size_t i = 0; i < order.size(); ++i)
+          if (order[i] == s) record.priority = static_cast<int>(i + 1);
+        where = "priority " + std::to_string(record.priority) + " of " + std::to_string(record.of) +
+                " in " + s->adaptable;
+        if (!s->guard) where += "; the default, which always comes last";
+        const auto* anchor = record.rule == "placed" ? selection(record.anchor) : nullptr;
+        if (anchor != nullptr && anchor->adaptable != s->adaptable) {
+          invalid(m.findings,
+                  "uplink.json places '" + record.requirement + "' (adaptable node " +
+                      s->adaptable + ") " + record.relation + " '" + record.anchor +
+                      "' (adaptable node " + anchor->adaptable +
+                      "): priority orders the requirements of one node",
+                  record.location);
+        }
+      } else {
+        where = "a mission property, no selection priority";
+      }
+    }
+    if (record.rule == "appended")
+      message += "new requirement, no placement in uplink.json: goes last before the default (" +
+                 where + ")";
+    else if (record.rule == "replaced")
+      message += "replaces the requirement with the same id, in place (" + where + ")";
+    else if (record.rule == "placed")
+      message +=
+          "placed " + record.relation + " " + record.anchor + " by uplink.json (" + where + ")";
+    else
+      message += "removed by uplink.json" +
+                 (record.adaptable.empty() ? std::string() : " from " + record.adaptable);
+    Finding f = make_finding("uplink-merge", message, record.location);
+    f.adaptable = record.adaptable;
+    f.requirements = {record.requirement};
+    m.findings.push_back(std::move(f));
+  }
+}
+
+}  // namespace uabt::load

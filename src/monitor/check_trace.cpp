@@ -1,0 +1,137 @@
+#include "monitor/check_trace.hpp"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+namespace uabt::monitor {
+
+namespace {
+
+// The trace's value as the monitor reads it, or an error against the declared type.
+std::optional<Val> to_val(const TraceValue& v, const fretish::Variable* declared, Symbols& symbols,
+                          std::string& error) {
+  using fretish::VarType;
+  Val out;
+  switch (v.kind) {
+    case TraceValue::Kind::boolean: out = Val::of_bool(v.boolean); break;
+    case TraceValue::Kind::number: out = Val::of_number(v.number); break;
+    case TraceValue::Kind::text: out = Val::of_symbol(symbols.id(v.text)); break;
+  }
+  if (declared == nullptr) return out;
+  const bool fits = (declared->type == VarType::boolean && v.kind == TraceValue::Kind::boolean) ||
+                    ((declared->type == VarType::integer || declared->type == VarType::real) &&
+                     v.kind == TraceValue::Kind::number &&
+                     (declared->type == VarType::real ||
+                      v.number == static_cast<double>(static_cast<long long>(v.number)))) ||
+                    (declared->type == VarType::enumeration && v.kind == TraceValue::Kind::text &&
+                     std::find(declared->enum_values.begin(), declared->enum_values.end(),
+                               v.text) != declared->enum_values.end());
+  if (!fits) {
+    error = std::string("the domain declares it ") + fretish::var_type_name(declared->type);
+    return std::nullopt;
+  }
+  return out;
+}
+
+}  // namespace
+
+TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
+                        const fretish::Domain& domain, const Trace& trace,
+                        const std::string& trace_file, std::vector<Finding>& findings) {
+  Variables variables;
+  Symbols symbols;
+  for (const std::string& name : trace.names) variables.id(name);
+  Vocabulary vocabulary{&variables, &symbols, trace.strings};
+  for (const fretish::Variable& v : domain.variables)
+    for (const std::string& literal : v.enum_values) vocabulary.literals.insert(literal);
+  PropertySet properties(requirements, domain.assumptions, vocabulary, domain.tick_seconds);
+
+  TraceReport report;
+  std::vector<Val> frame(variables.size());
+  for (const TraceTick& tick : trace.ticks) {
+    for (const auto& [name, value] : tick.state) {
+      std::string error;
+      const auto val = to_val(value, domain.find(name), symbols, error);
+      if (!val) {
+        findings.push_back(make_finding("trace-invalid",
+                                        "'" + name + "' at tick " + std::to_string(tick.tick) +
+                                            " does not fit its type: " + error,
+                                        {trace_file, tick.line, 1}));
+        continue;
+      }
+      frame[static_cast<std::size_t>(*variables.find(name))] = *val;
+    }
+    properties.step(frame, tick.tick);
+    ++report.ticks;
+  }
+  report.properties = properties.results();
+  for (const PropertyResult& p : report.properties) {
+    if (p.verdict == Verdict::not_monitored) report.pass = false;
+    if (p.verdict == Verdict::violated && !p.assumption) report.pass = false;
+  }
+  if (has_errors(findings)) report.pass = false;
+  return report;
+}
+
+std::string trace_report_json(const TraceReport& report) {
+  nlohmann::ordered_json out;
+  out["verdict"] = report.pass ? "pass" : "fail";
+  out["ticks"] = report.ticks;
+  out["requirements"] = nlohmann::ordered_json::array();
+  for (const PropertyResult& p : report.properties) {
+    nlohmann::ordered_json r;
+    r["id"] = p.id;
+    r["role"] = p.assumption ? "assumption" : "guarantee";
+    r["verdict"] = verdict_name(p.verdict);
+    r["first_violation"] = p.first_violation ? nlohmann::ordered_json(*p.first_violation)
+                                             : nlohmann::ordered_json(nullptr);
+    r["reason"] =
+        p.reason.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(p.reason);
+    if (!p.values.empty()) {
+      nlohmann::ordered_json values = nlohmann::ordered_json::object();
+      for (const auto& [name, value] : p.values) values[name] = value;
+      r["values"] = values;
+    }
+    out["requirements"].push_back(r);
+  }
+  return out.dump(2) + "\n";
+}
+
+std::string trace_report_text(const TraceReport& report) {
+  std::string out;
+  int held = 0, violated = 0, unmonitored = 0;
+  for (const PropertyResult& p : report.properties) {
+    const std::string where = p.location.file.empty()
+                                  ? std::string()
+                                  : p.location.file + ":" + std::to_string(p.location.line) + ":" +
+                                        std::to_string(p.location.column) + ": ";
+    const std::string role = p.assumption ? " (assumption)" : "";
+    switch (p.verdict) {
+      case Verdict::held:
+        ++held;
+        out += where + p.id + role + ": held\n";
+        break;
+      case Verdict::violated: {
+        ++violated;
+        out += where + p.id + role + ": violated from tick " + std::to_string(*p.first_violation);
+        std::string values;
+        for (const auto& [name, value] : p.values)
+          values += (values.empty() ? "" : ", ") + name + "=" + value;
+        out += values.empty() ? "\n" : " (" + values + ")\n";
+        break;
+      }
+      case Verdict::not_monitored:
+        ++unmonitored;
+        out += where + p.id + role + ": not-monitored: " + p.reason + "\n";
+        break;
+    }
+  }
+  out += std::string("verdict: ") + (report.pass ? "pass" : "fail") + " (" +
+         std::to_string(report.ticks) + " ticks; " + std::to_string(held) + " held, " +
+         std::to_string(violated) + " violated, " + std::to_string(unmonitored) +
+         " not monitored)\n";
+  return out;
+}
+
+}  // namespace uabt::monitor

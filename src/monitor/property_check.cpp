@@ -1,0 +1,191 @@
+#include "monitor/property_check.hpp"
+
+#include <algorithm>
+
+#include "monitor/expression.hpp"
+#include "monitor/monitor.hpp"
+
+namespace uabt::monitor {
+
+namespace {
+
+using fretish::Expr;
+using fretish::ExprKind;
+using Type = Observables::Type;
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1u : 0u)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+const char* type_name(Type t) {
+  switch (t) {
+    case Type::boolean: return "a boolean";
+    case Type::number: return "a number";
+    case Type::name: return "a name";
+  }
+  return "a boolean";
+}
+
+class PartChecker {
+ public:
+  PartChecker(const fretish::Requirement& r, const Observables& o, std::vector<Finding>& findings)
+      : r_(r), o_(o), findings_(findings) {}
+
+  void part(const Expr& e, const char* what) {
+    ok_ = true;
+    const auto t = type_of(e);
+    if (ok_ && t && *t != Type::boolean)
+      report("property-type",
+             std::string("the ") + what + " '" + fretish::to_fretish(e) + "' is " + type_name(*t) +
+                 ", not a boolean",
+             e);
+  }
+
+ private:
+  SourceLocation at(const Expr& e) const {
+    if (e.range.begin_line == 0) return r_.location;
+    return {r_.location.file, e.range.begin_line, e.range.begin_column};
+  }
+  void report(const std::string& check, std::string message, const Expr& e,
+              std::vector<std::string> notes = {}) {
+    if (!ok_) return;  // one finding per part
+    Finding f = make_finding(check, std::move(message), at(e));
+    f.requirements = {r_.id};
+    f.notes = std::move(notes);
+    findings_.push_back(std::move(f));
+    ok_ = false;
+  }
+  // nullopt: unknown (already reported)
+  std::optional<Type> type_of(const Expr& e) {
+    switch (e.kind) {
+      case ExprKind::bool_literal: return Type::boolean;
+      case ExprKind::number: return Type::number;
+      case ExprKind::identifier: {
+        if (const auto it = o_.variables.find(e.text); it != o_.variables.end()) return it->second;
+        if (o_.literals.count(e.text) != 0) return Type::name;
+        std::vector<std::pair<std::size_t, std::string>> close;
+        for (const auto& [name, type] : o_.variables) {
+          const std::size_t d = edit_distance(name, e.text);
+          if (d <= 2) close.emplace_back(d, name);
+        }
+        std::sort(close.begin(), close.end());
+        std::vector<std::string> notes;
+        if (!close.empty()) {
+          std::string names;
+          for (std::size_t i = 0; i < close.size() && i < 3; ++i)
+            names += (i ? ", " : "") + std::string("'") + close[i].second + "'";
+          notes.push_back("did you mean " + names + "?");
+        }
+        report("property-reference",
+               "'" + e.text +
+                   "' is not an observable of the run: not a domain variable, condition, "
+                   "<node>.success/.failure/.running, <adaptable> or <adaptable>.selected",
+               e, std::move(notes));
+        return std::nullopt;
+      }
+      case ExprKind::call: {
+        if (!is_monitored_function(e.text)) {
+          report("property-reference", "function '" + e.text + "' is not monitored on a run", e);
+          return std::nullopt;
+        }
+        std::optional<Type> result = Type::number;
+        for (const auto& a : e.args) {
+          const auto t = type_of(*a);
+          if (!t) return std::nullopt;
+          if (e.text.rfind("pre", 0) == 0 || e.text == "ite") result = t;
+        }
+        if (e.text == "preBool") return Type::boolean;
+        return result;
+      }
+      case ExprKind::logical_not:
+      case ExprKind::logical_and:
+      case ExprKind::logical_or:
+      case ExprKind::logical_xor:
+      case ExprKind::implies:
+      case ExprKind::iff:
+        for (const auto& a : e.args) {
+          const auto t = type_of(*a);
+          if (!t) return std::nullopt;
+          if (*t != Type::boolean) {
+            report("property-type",
+                   "'" + fretish::to_fretish(*a) + "' is " + type_name(*t) +
+                       ", but a boolean operator needs booleans",
+                   *a);
+            return std::nullopt;
+          }
+        }
+        return Type::boolean;
+      default: break;
+    }
+    // Relations and arithmetic.
+    std::vector<Type> types;
+    for (const auto& a : e.args) {
+      const auto t = type_of(*a);
+      if (!t) return std::nullopt;
+      types.push_back(*t);
+    }
+    const bool equality = e.kind == ExprKind::eq || e.kind == ExprKind::ne;
+    for (std::size_t i = 0; i < types.size(); ++i) {
+      const bool fits = equality ? types[i] == types[0] : types[i] == Type::number;
+      if (!fits) {
+        report("property-type",
+               "'" + fretish::to_fretish(e) + "' " +
+                   (equality ? "compares " + std::string(type_name(types[0])) + " with " +
+                                   type_name(types[i])
+                             : "needs numbers, got " + std::string(type_name(types[i]))),
+               e);
+        return std::nullopt;
+      }
+    }
+    return fretish::is_relation(e.kind) ? Type::boolean : Type::number;
+  }
+
+  const fretish::Requirement& r_;
+  const Observables& o_;
+  std::vector<Finding>& findings_;
+  bool ok_ = true;
+};
+
+}  // namespace
+
+std::vector<Finding> check_properties(const std::vector<fretish::Requirement>& properties,
+                                      const Observables& observables,
+                                      std::optional<double> tick_seconds) {
+  std::vector<Finding> findings;
+  for (const fretish::Requirement& r : properties) {
+    const Classified c = classify(r, tick_seconds);
+    if (!c.shape) {
+      Finding f = make_finding("property-timing", r.id + ": " + c.reason, r.location);
+      f.requirements = {r.id};
+      findings.push_back(std::move(f));
+    }
+    PartChecker check(r, observables, findings);
+    if (r.scope) {
+      if (r.scope->condition) {
+        check.part(*r.scope->condition, "scope");
+      } else if (!r.scope->mode.empty()) {
+        check.part(*fretish::make_identifier(r.scope->mode, {r.scope->range.begin_line,
+                                                             r.scope->range.begin_column, 0, 0}),
+                   "scope");
+      }
+    }
+    for (const auto& cond : r.conditions)
+      if (cond.expr) check.part(*cond.expr, "condition");
+    if (r.response) check.part(*r.response, "response");
+    if (r.timing.stop_condition) check.part(*r.timing.stop_condition, "stop condition");
+  }
+  return findings;
+}
+
+}  // namespace uabt::monitor

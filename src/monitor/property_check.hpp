@@ -1,0 +1,28 @@
+#pragma once
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "fretish/requirement.hpp"
+
+namespace uabt::monitor {
+
+// What a property may read, with its type (DESIGN §10 observables).
+struct Observables {
+  enum class Type { boolean, number, name };
+  std::map<std::string, Type> variables;
+  std::set<std::string> literals;  // names that are values: alternatives, none, enum literals
+};
+
+// Static checks of mission properties before a run: every name is an observable or a value
+// (`property-reference`, with the closest observables as a note), every part is a boolean and
+// relations compare alike (`property-type`), and the timing has a meaning in ticks
+// (`property-timing`).
+std::vector<Finding> check_properties(const std::vector<fretish::Requirement>& properties,
+                                      const Observables& observables,
+                                      std::optional<double> tick_seconds);
+
+}  // namespace uabt::monitor

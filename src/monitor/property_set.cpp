@@ -1,0 +1,116 @@
+#include "monitor/property_set.hpp"
+
+#include <cctype>
+
+namespace uabt::monitor {
+
+const char* verdict_name(Verdict v) {
+  switch (v) {
+    case Verdict::held: return "held";
+    case Verdict::violated: return "violated";
+    case Verdict::not_monitored: return "not-monitored";
+  }
+  return "held";
+}
+
+bool is_assumption(const fretish::Requirement& r) {
+  std::string c = r.component;
+  for (char& ch : c) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return c == "environment";
+}
+
+PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
+                         const std::vector<fretish::Assumption>& assumptions,
+                         const Vocabulary& vocabulary, std::optional<double> tick_seconds)
+    : vocabulary_(vocabulary) {
+  const Resolver resolve = [this](const std::string& name) -> Resolved {
+    if (const auto slot = vocabulary_.variables->find(name))
+      return {Resolved::Kind::variable, *slot};
+    if (vocabulary_.literals.count(name) != 0)
+      return {Resolved::Kind::literal, vocabulary_.symbols->id(name)};
+    return {};
+  };
+  const auto add = [&](const fretish::Requirement& r, bool assumption) {
+    Entry e;
+    e.base.id = r.id;
+    e.base.assumption = assumption;
+    e.base.location = r.location;
+    std::string reason;
+    e.monitor = RequirementMonitor::compile(r, resolve, tick_seconds, reason);
+    if (!e.monitor) {
+      e.base.verdict = Verdict::not_monitored;
+      e.base.reason = reason;
+    }
+    entries_.push_back(std::move(e));
+  };
+  for (const fretish::Requirement& r : requirements) add(r, is_assumption(r));
+  for (const fretish::Assumption& a : assumptions) {
+    fretish::Requirement r;
+    r.id = a.name;
+    r.location = a.location;
+    r.component = "Environment";
+    r.timing.keyword = "always";
+    r.response = a.expr;
+    add(r, true);
+  }
+}
+
+std::vector<std::size_t> PropertySet::step(const std::vector<Val>& frame, std::uint64_t tick) {
+  if (!started_) {
+    started_ = true;
+    first_tick_ = tick;
+  }
+  std::vector<std::size_t> fresh;
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    Entry& e = entries_[i];
+    if (!e.monitor || e.monitor->failed()) continue;
+    e.monitor->step(frame);
+    if (!e.reported && e.monitor->final_violation() && !e.monitor->failed()) {
+      e.reported = true;
+      fresh.push_back(i);
+    }
+  }
+  return fresh;
+}
+
+std::vector<std::size_t> PropertySet::violated_at_end() const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const Entry& e = entries_[i];
+    if (e.monitor && !e.monitor->failed() && !e.reported && !e.monitor->holds()) out.push_back(i);
+  }
+  return out;
+}
+
+PropertyResult PropertySet::result(std::size_t index) const {
+  const Entry& e = entries_[index];
+  PropertyResult r = e.base;
+  if (!e.monitor) return r;
+  if (e.monitor->failed()) {
+    r.verdict = Verdict::not_monitored;
+    r.reason = e.monitor->error();
+    return r;
+  }
+  if (!started_) {
+    r.verdict = Verdict::not_monitored;
+    r.reason = "the trace is empty";
+    return r;
+  }
+  if (e.monitor->holds()) return r;
+  r.verdict = Verdict::violated;
+  r.first_violation = first_tick_ + e.monitor->violated_since();
+  const auto& slots = e.monitor->variables();
+  const auto& values = e.monitor->violation_values();
+  for (std::size_t k = 0; k < slots.size() && k < values.size(); ++k)
+    r.values.emplace_back(vocabulary_.variables->name(slots[k]),
+                          value_text(values[k], *vocabulary_.symbols));
+  return r;
+}
+
+std::vector<PropertyResult> PropertySet::results() const {
+  std::vector<PropertyResult> out;
+  for (std::size_t i = 0; i < entries_.size(); ++i) out.push_back(result(i));
+  return out;
+}
+
+}  // namespace uabt::monitor

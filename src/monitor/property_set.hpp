@@ -1,0 +1,75 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/location.hpp"
+#include "fretish/domain.hpp"
+#include "fretish/requirement.hpp"
+#include "monitor/monitor.hpp"
+
+namespace uabt::monitor {
+
+enum class Verdict { held, violated, not_monitored };
+const char* verdict_name(Verdict v);  // "held", "violated", "not-monitored"
+
+// Component `Environment` (any case) marks an assumption about the world; any other component a
+// guarantee of the mission (DESIGN §10).
+bool is_assumption(const fretish::Requirement& r);
+
+struct PropertyResult {
+  std::string id;
+  bool assumption = false;
+  SourceLocation location;
+  Verdict verdict = Verdict::held;
+  std::optional<std::uint64_t> first_violation;             // tick (as numbered by the caller)
+  std::vector<std::pair<std::string, std::string>> values;  // read at first_violation
+  std::string reason;                                       // not-monitored: why
+};
+
+// What the properties may read: the trace's (or the run's) variables and the names that are
+// values rather than variables (enum literals, alternatives, string values of the trace).
+struct Vocabulary {
+  Variables* variables = nullptr;
+  Symbols* symbols = nullptr;
+  std::set<std::string> literals;
+};
+
+// Every property of a requirement set, monitored together over one trace.
+class PropertySet {
+ public:
+  // Domain assumptions (`assume NAME: E`, FRET "assumption" requirements) are monitored as
+  // "always E" assumptions. `tick_seconds`: the tick period for durations in time units.
+  PropertySet(const std::vector<fretish::Requirement>& requirements,
+              const std::vector<fretish::Assumption>& assumptions, const Vocabulary& vocabulary,
+              std::optional<double> tick_seconds);
+
+  // One tick. `tick` is the caller's number for it. Returns the indices of the properties whose
+  // violation became final at this tick (safety properties, at the tick it happens).
+  std::vector<std::size_t> step(const std::vector<Val>& frame, std::uint64_t tick);
+
+  // Verdicts of the trace so far, read as a whole finite trace.
+  std::vector<PropertyResult> results() const;
+  std::size_t size() const { return entries_.size(); }
+  // Properties violated at the last tick whose violation was not final when it began
+  // (eventually, finally, …): reported when the trace ends.
+  std::vector<std::size_t> violated_at_end() const;
+  PropertyResult result(std::size_t index) const;
+
+ private:
+  struct Entry {
+    PropertyResult base;
+    std::unique_ptr<RequirementMonitor> monitor;  // null: not monitored (base.reason)
+    bool reported = false;                        // a final violation was returned by step()
+  };
+  std::vector<Entry> entries_;
+  const Vocabulary vocabulary_;
+  bool started_ = false;
+  std::uint64_t first_tick_ = 0;
+};
+
+}  // namespace uabt::monitor

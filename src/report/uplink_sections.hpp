@@ -1,0 +1,20 @@
+#pragma once
+// The "uplink" part of the gate's reports (`gate --uplink`, DESIGN §11): where the merge put
+// each requirement and the behaviour change, per adaptable node. Internal to the writers.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "report/model.hpp"
+
+namespace uabt::report::detail {
+
+// {"package", "merge": [{requirement, rule, relation, anchor, adaptable, priority, of,
+// location}], "behaviour_change": [nodes as in `uabt diff --format json`]}
+nlohmann::ordered_json uplink_json(const UplinkChange& uplink);
+
+// A Markdown section (### Uplink …) and an HTML <section id="uplink">.
+std::string uplink_markdown(const UplinkChange& uplink);
+std::string uplink_html(const UplinkChange& uplink);
+
+}  // namespace uabt::report::detail

@@ -1,0 +1,183 @@
+#include "runtime/property_monitor.hpp"
+
+#include <set>
+
+#include "runtime/blackboard.hpp"
+
+namespace uabt::runtime {
+
+namespace {
+
+constexpr std::uint8_t kSuccess = 1, kFailure = 2, kRunning = 4, kTicked = 8;
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() > suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void collect(const fretish::ExprPtr& e, std::set<std::string>& names) {
+  if (!e) return;
+  for (const std::string& n : fretish::identifiers_of(*e)) names.insert(n);
+}
+
+}  // namespace
+
+PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& engine)
+    : engine_(engine) {
+  // Every name the properties read.
+  std::set<std::string> names;
+  for (const fretish::Requirement& r : mission.properties) {
+    if (r.scope) {
+      if (!r.scope->mode.empty()) names.insert(r.scope->mode);
+      collect(r.scope->condition, names);
+    }
+    for (const auto& c : r.conditions) collect(c.expr, names);
+    collect(r.response, names);
+    collect(r.timing.stop_condition, names);
+  }
+  for (const auto& a : mission.domain.assumptions) collect(a.expr, names);
+
+  monitor::Vocabulary vocabulary{&variables_, &symbols_, {"none"}};
+  for (const load::Alternative& alt : mission.alternatives) vocabulary.literals.insert(alt.name);
+  for (const fretish::Variable& v : mission.domain.variables)
+    for (const std::string& literal : v.enum_values) vocabulary.literals.insert(literal);
+
+  // Node labels: the name attribute, else the ID where no other node has it.
+  std::map<std::string, std::vector<NodeId>> by_name, by_kind;
+  std::set<std::string> leaf_kinds;
+  for (NodeId id = 0; id < engine.node_count(); ++id) {
+    const NodeInfo& info = engine.info(id);
+    if (!info.alive) continue;
+    if (!info.name.empty()) by_name[info.name].push_back(id);
+    by_kind[info.kind].push_back(id);
+    if (engine.children(id).empty()) leaf_kinds.insert(info.kind);
+  }
+  std::set<std::string> adaptable_ids;
+  for (const load::AdaptableSite& site : mission.adaptables) adaptable_ids.insert(site.id);
+
+  for (const std::string& name : names) {
+    if (vocabulary.literals.count(name) != 0 && mission.domain.find(name) == nullptr) continue;
+    for (const char* suffix : {".success", ".failure", ".running"}) {
+      if (!ends_with(name, suffix)) continue;
+      const std::string label = name.substr(0, name.size() - std::string(suffix).size());
+      std::vector<NodeId> nodes = by_name.count(label) ? by_name[label] : std::vector<NodeId>{};
+      if (nodes.empty() && by_kind.count(label) && by_kind[label].size() == 1)
+        nodes = by_kind[label];
+      if (nodes.empty()) break;
+      auto it = std::find_if(nodes_.begin(), nodes_.end(),
+                             [&](const NodeObservable& o) { return o.nodes == nodes; });
+      if (it == nodes_.end()) it = nodes_.insert(nodes_.end(), make_node_observable(nodes));
+      const int slot = variables_.id(name);
+      (suffix[1] == 's' ? it->success : suffix[1] == 'f' ? it->failure : it->running) = slot;
+    }
+    if (variables_.find(name)) continue;
+    std::string adaptable = name;
+    const bool selected = ends_with(name, ".selected");
+    if (selected) adaptable = name.substr(0, name.size() - 9);
+    if (adaptable_ids.count(adaptable) != 0) {
+      auto it = std::find_if(adaptables_.begin(), adaptables_.end(),
+                             [&](const Adaptable& a) { return a.id == adaptable; });
+      if (it == adaptables_.end()) {
+        it = adaptables_.insert(adaptables_.end(), make_adaptable(adaptable));
+        it->calls = engine.subtree_calls(adaptable);
+      }
+      (selected ? it->selected : it->mode) = variables_.id(name);
+      continue;
+    }
+    // A variable of the world: declared, a robot leaf, or set on the blackboard.
+    const fretish::Variable* declared = mission.domain.find(name);
+    if (declared != nullptr || leaf_kinds.count(name) != 0 ||
+        engine.blackboard().get(name) != nullptr) {
+      blackboard_.emplace_back(variables_.id(name), name);
+      boolean_variable_[name] = declared == nullptr || declared->type == fretish::VarType::boolean;
+    }
+  }
+  frame_.assign(variables_.size(), monitor::Val{});
+  seen_.assign(engine.node_count(), 0);
+  properties_.emplace(mission.properties, mission.domain.assumptions, vocabulary,
+                      mission.domain.tick_seconds);
+}
+
+void PropertyMonitor::on_status_change(NodeId node, NodeStatus, NodeStatus next) {
+  if (node >= seen_.size()) seen_.resize(node + 1, 0);
+  std::uint8_t& bits = seen_[node];
+  bits |= kTicked;
+  if (next == NodeStatus::success) bits |= kSuccess;
+  if (next == NodeStatus::failure) bits |= kFailure;
+  if (next == NodeStatus::running) bits |= kRunning;
+}
+
+void PropertyMonitor::select(const std::string& adaptable, const std::string& alternative) {
+  for (Adaptable& a : adaptables_) {
+    if (a.id != adaptable) continue;
+    a.chosen = alternative;
+    a.running = alternative;
+  }
+}
+
+std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
+  const auto bits = [&](NodeId n) -> std::uint8_t {
+    std::uint8_t b = n < seen_.size() ? seen_[n] : 0;
+    if (engine_.status(n) == NodeStatus::running) b |= kRunning | kTicked;
+    return b;
+  };
+  for (const NodeObservable& o : nodes_) {
+    std::uint8_t any = 0;
+    for (NodeId n : o.nodes) any |= bits(n);
+    if (o.success >= 0)
+      frame_[static_cast<std::size_t>(o.success)] = monitor::Val::of_bool(any & kSuccess);
+    if (o.failure >= 0)
+      frame_[static_cast<std::size_t>(o.failure)] = monitor::Val::of_bool(any & kFailure);
+    if (o.running >= 0)
+      frame_[static_cast<std::size_t>(o.running)] = monitor::Val::of_bool(any & kRunning);
+  }
+  for (Adaptable& a : adaptables_) {
+    bool ticked = false, still_running = false;
+    for (NodeId n : a.calls) {
+      ticked = ticked || (bits(n) & kTicked);
+      still_running = still_running || engine_.status(n) == NodeStatus::running;
+    }
+    if (a.mode >= 0) frame_[static_cast<std::size_t>(a.mode)] = monitor::Val::of_bool(ticked);
+    const std::string selected = !a.chosen.empty()              ? a.chosen
+                                 : ticked && !a.running.empty() ? a.running
+                                                                : std::string("none");
+    if (a.selected >= 0)
+      frame_[static_cast<std::size_t>(a.selected)] = monitor::Val::of_symbol(symbols_.id(selected));
+    a.chosen.clear();
+    if (!still_running) a.running.clear();
+  }
+  for (const auto& [slot, key] : blackboard_) {
+    const ScriptValue* v = engine_.blackboard().get(key);
+    monitor::Val value;
+    if (v == nullptr || v->empty()) {
+      if (boolean_variable_[key]) value = monitor::Val::of_bool(false);  // unset condition
+    } else if (v->kind == ScriptValue::Kind::boolean) {
+      value = monitor::Val::of_bool(v->boolean);
+    } else if (v->is_number()) {
+      value = monitor::Val::of_number(v->as_double());
+    } else {
+      value = monitor::Val::of_symbol(symbols_.id(v->text));
+    }
+    frame_[static_cast<std::size_t>(slot)] = value;
+  }
+  std::fill(seen_.begin(), seen_.end(), 0);
+  std::vector<PropertyViolation> out;
+  for (std::size_t i : properties_->step(frame_, tick))
+    out.push_back({tick, properties_->result(i)});
+  return out;
+}
+
+std::vector<PropertyViolation> PropertyMonitor::at_end(std::uint64_t last_tick) const {
+  std::vector<PropertyViolation> out;
+  for (std::size_t i : properties_->violated_at_end())
+    out.push_back({last_tick, properties_->result(i)});
+  return out;
+}
+
+bool PropertyMonitor::guarantees_failed() const {
+  for (const monitor::PropertyResult& r : properties_->results())
+    if (!r.assumption && r.verdict != monitor::Verdict::held) return true;
+  return false;
+}
+
+}  // namespace uabt::runtime

@@ -1,0 +1,84 @@
+#pragma once
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "load/mission.hpp"
+#include "monitor/property_set.hpp"
+#include "runtime/engine.hpp"
+
+namespace uabt::runtime {
+
+// One `violation` trace event: a property that failed, the tick, and what it read.
+struct PropertyViolation {
+  std::uint64_t tick = 0;
+  monitor::PropertyResult result;
+};
+
+// Monitors a mission's properties (DESIGN §10) on every tick of a run. Observables at tick t:
+//  - domain variables and conditions: the root blackboard after the tick (unset: false);
+//  - `<node>.success` / `.failure` / `.running`: what the node returned in the tick, where
+//    `<node>` is its name attribute, else its ID when no other node has it;
+//  - `<adaptable>`: the mode, true when the adaptable's selection tree was ticked;
+//  - `<adaptable>.selected`: the alternative the selection returned from, else `none`.
+// Status changes come through the engine's Observer interface, selections through select().
+class PropertyMonitor : public Observer {
+ public:
+  PropertyMonitor(const load::Mission& mission, const Engine& engine);
+
+  void on_status_change(NodeId node, NodeStatus previous, NodeStatus next) override;
+  // A selection subtree started `alternative` (the mission's name for it) in this tick.
+  void select(const std::string& adaptable, const std::string& alternative);
+
+  // Call after each tick: builds the tick's observables and steps every property; returns the
+  // violations that became final at this tick.
+  std::vector<PropertyViolation> after_tick(std::uint64_t tick);
+  // At the end of the run: properties whose finite-trace verdict is violated but were not
+  // reported yet (eventually, finally, …).
+  std::vector<PropertyViolation> at_end(std::uint64_t last_tick) const;
+
+  std::vector<monitor::PropertyResult> results() const { return properties_->results(); }
+  bool empty() const { return properties_->size() == 0; }
+  // A guarantee violated or not monitored: the run fails.
+  bool guarantees_failed() const;
+
+ private:
+  struct NodeObservable {
+    std::vector<NodeId> nodes;
+    int success = -1, failure = -1, running = -1;  // slots, -1 when no property reads it
+  };
+  struct Adaptable {
+    std::string id;
+    std::vector<NodeId> calls;  // SubTree nodes calling its selection tree
+    int mode = -1, selected = -1;
+    std::string chosen;   // selected in this tick
+    std::string running;  // the alternative whose branch is still running
+  };
+
+  static Adaptable make_adaptable(std::string id) {
+    Adaptable a;
+    a.id = std::move(id);
+    return a;
+  }
+  static NodeObservable make_node_observable(std::vector<NodeId> nodes) {
+    NodeObservable o;
+    o.nodes = std::move(nodes);
+    return o;
+  }
+
+  const Engine& engine_;
+  monitor::Variables variables_;
+  monitor::Symbols symbols_;
+  std::optional<monitor::PropertySet> properties_;
+  std::vector<std::pair<int, std::string>> blackboard_;  // slot, key
+  std::vector<NodeObservable> nodes_;
+  std::vector<Adaptable> adaptables_;
+  std::vector<std::uint8_t> seen_;  // per NodeId: bit 0 success, 1 failure, 2 running, 3 ticked
+  std::vector<monitor::Val> frame_;
+  std::map<std::string, bool> boolean_variable_;
+};
+
+}  // namespace uabt::runtime

@@ -1,0 +1,290 @@
+// Diagnostics as a flight team meets them: the real binary, run from a directory other than
+// the mission's, compared with golden output (tests/cli/golden/).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_support.hpp"
+#include "temp_mission.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using UabtRun = uabt::testing::CliRun;
+
+// `uabt ARGS` in `dir`; `streams` picks what is captured ("2>&1": both, "2>/dev/null": stdout).
+UabtRun uabt_in(const fs::path& dir, const std::string& args, const std::string& streams = "2>&1") {
+  return uabt::testing::run_shell("cd '" + dir.string() + "' && '" + UABT_BINARY + "' " + args +
+                                  " " + streams);
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void write(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+void replace_in(const fs::path& p, const std::string& from, const std::string& to) {
+  std::string text = read(p);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  write(p, text);
+}
+
+std::string golden(const std::string& name) {
+  return read(uabt::testing::source_dir() / "tests/cli/golden" / name);
+}
+
+// A workspace: `root/` holds copies of shipped missions, uabt runs in `root`.
+class Workspace {
+ public:
+  Workspace() : temp_({}) {}
+  fs::path root() const { return temp_.dir(); }
+  fs::path copy(const std::string& mission, const std::string& as) const {
+    fs::copy(uabt::testing::mission_dir(mission), root() / as, fs::copy_options::recursive);
+    return root() / as;
+  }
+
+ private:
+  uabt::testing::TempMission temp_;
+};
+
+TEST(Diagnostics, TypoIsUndeclaredWithDidYouMeanAndNothingElse) {
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity", "msl_typo");
+  replace_in(m / "requirements.fret", "if OnRocks", "if OnRokcs");
+  const UabtRun run = uabt_in(ws.root(), "verify msl_typo");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out, golden("typo.txt"));
+}
+
+TEST(Diagnostics, TypoWithoutDeclaredVocabularyIsAWarningNamingBoth) {
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity_paper", "paper_typo");
+  write(m / "requirements.fret", read(m / "requirements.fret") +
+                                     "Req3: In navigation if OnRokcs & OnDust Mission shall "
+                                     "satisfy selected_alt = on_rocks\n");
+  const UabtRun run = uabt_in(ws.root(), "verify paper_typo");
+  EXPECT_NE(run.out.find("paper_typo/requirements.fret:6:24: warning: 'OnRokcs' in requirement "
+                         "Req3 is 1 edit away from 'OnRocks'"),
+            std::string::npos)
+      << run.out;
+}
+
+TEST(Diagnostics, EveryNodeAgainstNodesXml) {
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity", "msl_nodes");
+  // The robot's nodes, without TakePicture, and MoveForward without a `time` port.
+  write(m / "nodes.xml",
+        "<root BTCPP_format=\"4\">\n  <TreeNodesModel>\n"
+        "    <Condition ID=\"OnDust\"/>\n    <Condition ID=\"OnRocks\"/>\n"
+        "    <Condition ID=\"IsInLocation\"/>\n    <Condition ID=\"IsTowardObject\"/>\n"
+        "    <Condition ID=\"IsRockAtLeft\"/>\n    <Condition ID=\"IsRockAtRight\"/>\n"
+        "    <Condition ID=\"IsArmInPosition\"><input_port name=\"function\"/></Condition>\n"
+        "    <Condition ID=\"IsDug\"/>\n    <Condition ID=\"IsContainerEmpty\"/>\n"
+        "    <Condition ID=\"IsPictureTaken\"/>\n"
+        "    <Action ID=\"Stop\"/>\n    <Action ID=\"OpenToolArm\"/>\n    <Action ID=\"Drill\"/>\n"
+        "    <Action ID=\"Trickle\"/>\n    <Action ID=\"CloseToolArm\"/>\n"
+        "    <Action ID=\"WaitForGroundCommand\"/>\n"
+        "    <Action ID=\"TurnRight\"><input_port name=\"angle\"/></Action>\n"
+        "    <Action ID=\"TurnLeft\"><input_port name=\"angle\"/></Action>\n"
+        "    <Action ID=\"MoveForward\"><input_port name=\"speed\"/></Action>\n"
+        "    <Action ID=\"MoveBackward\">\n      <input_port name=\"speed\"/>\n"
+        "      <input_port name=\"time\"/>\n      <input_port name=\"distance\"/>\n"
+        "    </Action>\n"
+        "  </TreeNodesModel>\n</root>\n");
+  const UabtRun run = uabt_in(ws.root(), "verify msl_nodes");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out, golden("nodes.txt"));
+}
+
+TEST(Diagnostics, ShalTypoIsOneSyntaxErrorAndTheNodeNotVerified) {
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity_paper", "paper_shal");
+  replace_in(m / "requirements.fret", "OnRocks Mission shall", "OnRocks Mission shal");
+  const UabtRun run = uabt_in(ws.root(), "verify paper_shal");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out, golden("cascade_shal.txt"));
+}
+
+TEST(Diagnostics, EmptyRangeStopsTheGuardChecks) {
+  Workspace ws;
+  const fs::path m = ws.copy("exploration", "explore_range");
+  replace_in(m / "domain.fret", "integer battery in [0, 100]", "integer battery in [100, 0]");
+  const UabtRun run = uabt_in(ws.root(), "verify explore_range");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out, golden("cascade_empty_range.txt"));
+}
+
+TEST(Diagnostics, PathsOpenFromWhereUabtRuns) {
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity", "msl_typo");
+  replace_in(m / "requirements.fret", "if OnRocks", "if OnRokcs");
+  fs::create_directories(ws.root() / "elsewhere");
+  const std::string at = "requirements.fret:4:24: error: 'OnRokcs'";
+  // The first line is the node's verification-skipped warning; the error follows.
+  EXPECT_NE(uabt_in(ws.root(), "verify msl_typo").out.find("\nmsl_typo/" + at), std::string::npos);
+  EXPECT_NE(uabt_in(ws.root(), "verify ./msl_typo/").out.find("\nmsl_typo/" + at),
+            std::string::npos);
+  EXPECT_NE(uabt_in(m, "verify .").out.find("\n" + at), std::string::npos);
+  EXPECT_NE(uabt_in(ws.root() / "elsewhere", "verify ../msl_typo").out.find("\n../msl_typo/" + at),
+            std::string::npos);
+  // An absolute mission path inside the working directory prints relative to it.
+  EXPECT_NE(uabt_in(ws.root(), "verify '" + m.string() + "'").out.find("\nmsl_typo/" + at),
+            std::string::npos);
+  // findings.txt of the gate reads like the terminal.
+  uabt_in(ws.root(), "gate msl_typo --out report");
+  EXPECT_NE(read(ws.root() / "report/findings.txt").find("\nmsl_typo/" + at), std::string::npos)
+      << read(ws.root() / "report/findings.txt");
+}
+
+TEST(Diagnostics, ATerminalGetsTheSourceLineWithACaret) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
+  Workspace ws;
+  const fs::path m = ws.copy("msl_curiosity", "msl_typo");
+  replace_in(m / "requirements.fret", "if OnRocks", "if OnRokcs");
+  // script(1) gives uabt a terminal as its standard error.
+  const std::string command = "cd '" + ws.root().string() + "' && script -qc \"'" +
+                              std::string(UABT_BINARY) + "' verify msl_typo\" /dev/null";
+  const std::string out = uabt::testing::run_shell(command).out;
+  EXPECT_NE(out.find("msl_typo/requirements.fret:4:24: error: 'OnRokcs' in requirement Req2 is "
+                     "not declared in domain.fret [ref-undeclared]\r\n"
+                     "   4 | Req2: In navigation if OnRokcs Mission shall satisfy selected_alt = "
+                     "on_rocks\r\n"
+                     "     |                        ^\r\n"),
+            std::string::npos)
+      << out;
+}
+
+nlohmann::json sarif_of(const fs::path& dir, const std::string& args) {
+  const UabtRun run = uabt_in(dir, args + " --format sarif", "2>/dev/null");
+  return nlohmann::json::parse(run.out, nullptr, false);
+}
+
+TEST(Diagnostics, SarifIsRelativeToTheSourceRoot) {
+  Workspace ws;
+  fs::create_directories(ws.root() / "repo/.git");
+  fs::create_directories(ws.root() / "repo/missions");
+  fs::copy(uabt::testing::mission_dir("msl_curiosity_paper"), ws.root() / "repo/missions/paper",
+           fs::copy_options::recursive);
+  const fs::path absolute = ws.root() / "repo/missions/paper";
+  // From outside the work tree, with an absolute path: still relative to the git top.
+  for (const auto& [where, mission] :
+       {std::pair{ws.root(), absolute.string()},
+        std::pair{ws.root() / "repo/missions", std::string("paper")}}) {
+    const auto sarif = sarif_of(where, "verify '" + mission + "'");
+    ASSERT_FALSE(sarif.is_discarded());
+    const auto& run = sarif["runs"][0];
+    EXPECT_TRUE(run["originalUriBaseIds"].contains("%SRCROOT%"));
+    for (const auto& result : run["results"]) {
+      const auto& artifact = result["locations"][0]["physicalLocation"]["artifactLocation"];
+      EXPECT_EQ(artifact["uri"], "missions/paper/requirements.fret") << result.dump();
+      EXPECT_EQ(artifact["uriBaseId"], "%SRCROOT%");
+    }
+  }
+  const auto rooted =
+      sarif_of(ws.root(), "verify '" + absolute.string() + "' --source-root repo/missions");
+  EXPECT_EQ(rooted["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]
+                  ["uri"],
+            "paper/requirements.fret");
+}
+
+TEST(Diagnostics, SarifOverlapNamesTheOtherRequirementAndTheGapSpansTheNode) {
+  const auto sarif = sarif_of(uabt::testing::source_dir(), "verify missions/msl_curiosity_paper");
+  ASSERT_FALSE(sarif.is_discarded());
+  bool overlap = false, gap = false;
+  for (const auto& result : sarif["runs"][0]["results"]) {
+    const auto& region = result["locations"][0]["physicalLocation"]["region"];
+    if (result["ruleId"] == "guard-overlap") {
+      overlap = true;
+      EXPECT_EQ(region["startLine"], 5);
+      ASSERT_EQ(result["relatedLocations"].size(), 1u) << result.dump();
+      const auto& related = result["relatedLocations"][0];
+      EXPECT_EQ(related["physicalLocation"]["region"]["startLine"], 4);
+      EXPECT_EQ(related["physicalLocation"]["artifactLocation"]["uri"],
+                "missions/msl_curiosity_paper/requirements.fret");
+      EXPECT_EQ(related["message"]["text"], "the other requirement, Req1 (on_dust)");
+      const auto notes = result["properties"]["notes"].dump();
+      EXPECT_NE(notes.find("both hold: OnDust & OnRocks"), std::string::npos) << notes;
+    }
+    if (result["ruleId"] == "guard-gap") {
+      gap = true;
+      EXPECT_EQ(region["startLine"], 4) << "the node's first requirement";
+      EXPECT_EQ(region["endLine"], 5) << "to its last";
+    }
+  }
+  EXPECT_TRUE(overlap);
+  EXPECT_TRUE(gap);
+}
+
+TEST(Diagnostics, AFailingGateKeepsTheCandidateAsRejected) {
+  Workspace ws;
+  ws.copy("msl_curiosity_paper", "paper");
+  ws.copy("msl_curiosity", "msl");
+  EXPECT_EQ(uabt_in(ws.root(), "gate paper --out out").exit_code, 1);
+  EXPECT_FALSE(fs::exists(ws.root() / "out/compiled.xml"));
+  EXPECT_TRUE(fs::exists(ws.root() / "out/compiled.rejected.xml"));
+  EXPECT_EQ(uabt_in(ws.root(), "gate msl --out out").exit_code, 0);
+  EXPECT_TRUE(fs::exists(ws.root() / "out/compiled.xml"));
+  EXPECT_FALSE(fs::exists(ws.root() / "out/compiled.rejected.xml"));
+}
+
+TEST(Diagnostics, CompileSaysItDidNotVerify) {
+  const UabtRun run = uabt_in(uabt::testing::source_dir(), "compile missions/msl_curiosity_paper",
+                              "2>&1 >/dev/null");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.out,
+            "uabt: msl_curiosity_paper: compiled, not verified: `uabt gate` proves the guards "
+            "and the tree\n");
+}
+
+TEST(Diagnostics, ConformSaysConforms) {
+  Workspace ws;
+  const std::string compiled = (ws.root() / "c.xml").string();
+  ASSERT_EQ(
+      uabt_in(uabt::testing::source_dir(), "compile missions/exploration -o '" + compiled + "'")
+          .exit_code,
+      0);
+  const UabtRun run =
+      uabt_in(uabt::testing::source_dir(), "conform missions/exploration '" + compiled + "'");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.out, "exploration: conforms\n");
+}
+
+TEST(Diagnostics, ChecksListsTheCatalogue) {
+  const UabtRun text = uabt_in(uabt::testing::source_dir(), "checks");
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("ref-undeclared (error, load): "), std::string::npos) << text.out;
+  const UabtRun table = uabt_in(uabt::testing::source_dir(), "checks --format markdown");
+  EXPECT_EQ(table.out.find("| check | severity | stage | what it catches |\n"), 0u);
+  EXPECT_NE(table.out.find("| `guard-gap` | error | verify |"), std::string::npos);
+  const UabtRun typo = uabt_in(uabt::testing::source_dir(), "explain guard-overlpa");
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_NE(typo.out.find("did you mean 'guard-overlap'?"), std::string::npos) << typo.out;
+}
+
+TEST(Diagnostics, NonAsciiCharacterNamesItselfAndItsAsciiForm) {
+  Workspace ws;
+  const fs::path m = ws.copy("exploration", "explore_utf8");
+  replace_in(m / "requirements.fret", "battery >= 40", "battery \xE2\x89\xA5 40");
+  const UabtRun run = uabt_in(ws.root(), "verify explore_utf8");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.out.find("found '\xE2\x89\xA5' (U+2265, not ASCII): write '>='"), std::string::npos)
+      << run.out;
+}
+
+}  // namespace

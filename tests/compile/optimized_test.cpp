@@ -1,0 +1,186 @@
+// --selection optimized: what it emits, what it costs (checked by ticking the engine), and that
+// it never costs more than Algorithm 1's layout.
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "base/diagnostics.hpp"
+#include "bt/xml_io.hpp"
+#include "compile/compile.hpp"
+#include "load/mission.hpp"
+#include "selection_check.hpp"
+#include "selection_missions.hpp"
+#include "temp_mission.hpp"
+#include "test_support.hpp"
+
+namespace uabt::compile {
+namespace {
+
+using uabt::testing::TempMission;
+
+load::Mission load_clean(const std::filesystem::path& dir) {
+  std::string error;
+  auto m = load::load_mission(dir, {}, error);
+  EXPECT_TRUE(m.has_value()) << error;
+  EXPECT_FALSE(has_errors(m->findings)) << format_text(m->findings);
+  return std::move(*m);
+}
+
+Result compile_with(const load::Mission& m, SelectionStyle style) {
+  Options options;
+  options.selection = style;
+  Result r = compile_mission(m, options);
+  EXPECT_TRUE(r.ok) << format_text(r.findings);
+  return r;
+}
+
+const bt::Node& selection_root(const Result& r, const std::string& adaptable) {
+  const bt::TreeDef* t = r.document.find_tree(adaptable);
+  EXPECT_NE(t, nullptr);
+  return t->root;
+}
+
+int count_nodes(const bt::Node& n, const std::function<bool(const bt::Node&)>& pred) {
+  int k = pred(n) ? 1 : 0;
+  for (const auto& c : n.children) k += count_nodes(c, pred);
+  return k;
+}
+
+// The compiler's own count equals the engine's, for both layouts, and both start the
+// required alternative in every cell.
+void expect_counts_match_engine(const load::Mission& m, const std::string& adaptable) {
+  const Result fig4 = compile_with(m, SelectionStyle::sequence);
+  const Result opt = compile_with(m, SelectionStyle::optimized);
+  ASSERT_EQ(opt.selection_stats.size(), 1u);
+  const SelectionStats& s = opt.selection_stats.front();
+  const auto by_engine_fig4 = testing::engine_count(m, fig4.document, adaptable);
+  const auto by_engine_opt = testing::engine_count(m, opt.document, adaptable);
+  EXPECT_EQ(by_engine_fig4.mismatch, "");
+  EXPECT_EQ(by_engine_opt.mismatch, "");
+  EXPECT_NEAR(by_engine_fig4.cost.average, s.algorithm1.average, 1e-9);
+  EXPECT_EQ(by_engine_fig4.cost.worst, s.algorithm1.worst);
+  EXPECT_NEAR(by_engine_opt.cost.average, s.optimized.average, 1e-9);
+  EXPECT_EQ(by_engine_opt.cost.worst, s.optimized.worst);
+  // Never more than Algorithm 1's layout.
+  EXPECT_LE(s.optimized.average, s.algorithm1.average + 1e-9);
+}
+
+TEST(OptimizedSelection, BatteryLadderIsABinarySearch) {
+  TempMission t(testing::battery_ladder_files(16));
+  const load::Mission m = load_clean(t.dir());
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  ASSERT_EQ(r.selection_stats.size(), 1u);
+  const SelectionStats& s = r.selection_stats.front();
+  EXPECT_TRUE(s.optimized_used) << s.reason;
+  // The figure: Fig. 4 ticks about 17 conditions on average over the battery reading;
+  // the decision structure at most half of that, and 5 at most (16 bands and what lies above).
+  EXPECT_GT(s.algorithm1.average, 15.0);
+  EXPECT_LE(s.optimized.average, s.algorithm1.average / 2);
+  EXPECT_LE(s.optimized.worst, 6);
+  EXPECT_EQ(selection_root(r, "power").tag, "IfThenElse");
+  expect_counts_match_engine(m, "power");
+}
+
+TEST(OptimizedSelection, EnumTestsHalvesOfTheLiterals) {
+  TempMission t(testing::terrain_enum_files(16));
+  const load::Mission m = load_clean(t.dir());
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  const SelectionStats& s = r.selection_stats.front();
+  EXPECT_TRUE(s.optimized_used) << s.reason;
+  EXPECT_DOUBLE_EQ(s.optimized.average, 4.0);  // 16 literals, 4 halvings: the optimum
+  EXPECT_EQ(s.optimized.worst, 4);
+  EXPECT_DOUBLE_EQ(s.algorithm1.average, 135.0 / 16);  // 1 + 2 + ... + 15, and 15 for the default
+  EXPECT_LE(s.optimized.average, s.algorithm1.average / 2);
+  // A half is one ScriptCondition: "terrain == 't0' || terrain == 't1' || ...".
+  EXPECT_GT(count_nodes(selection_root(r, "drive"),
+                        [](const bt::Node& n) {
+                          const std::string* code = n.attribute("code");
+                          return code && code->find("||") != std::string::npos;
+                        }),
+            0);
+  expect_counts_match_engine(m, "drive");
+}
+
+TEST(OptimizedSelection, LargeEnumTestsNameAtMost32Literals) {
+  TempMission t(testing::terrain_enum_files(100));
+  const load::Mission m = load_clean(t.dir());
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  const SelectionStats& s = r.selection_stats.front();
+  EXPECT_TRUE(s.optimized_used) << s.reason;
+  EXPECT_LE(s.optimized.average, s.algorithm1.average / 2);
+  std::size_t most = 0;
+  count_nodes(selection_root(r, "drive"), [&](const bt::Node& n) {
+    if (const std::string* code = n.attribute("code")) {
+      std::size_t literals = 1, at = 0;
+      while ((at = code->find("||", at)) != std::string::npos) ++literals, at += 2;
+      most = std::max(most, literals);
+    }
+    return false;
+  });
+  EXPECT_GT(most, 1u);
+  EXPECT_LE(most, 32u);
+  expect_counts_match_engine(m, "drive");
+}
+
+TEST(OptimizedSelection, AssumptionsDropChecks) {
+  TempMission t(testing::assumed_cover_files());
+  const load::Mission m = load_clean(t.dir());
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  const SelectionStats& s = r.selection_stats.front();
+  EXPECT_TRUE(s.optimized_used) << s.reason;
+  // OnDust | OnRocks always holds: when OnDust fails, OnRocks need not be ticked.
+  EXPECT_EQ(
+      count_nodes(selection_root(r, "nav"), [](const bt::Node& n) { return n.tag == "OnRocks"; }),
+      0);
+  EXPECT_DOUBLE_EQ(s.optimized.average, 1.0);
+  EXPECT_EQ(s.optimized.worst, 1);
+  expect_counts_match_engine(m, "nav");
+}
+
+TEST(OptimizedSelection, ShippedMissionsNeverCostMore) {
+  for (const char* name : {"msl_curiosity", "msl_curiosity_paper", "exploration"}) {
+    SCOPED_TRACE(name);
+    const load::Mission m = load_clean(testing::mission_dir(name));
+    for (const auto& site : m.adaptables) expect_counts_match_engine(m, site.id);
+  }
+}
+
+TEST(OptimizedSelection, EveryLeafNamesItsRequirementInTreeAndTrace) {
+  const load::Mission m = load_clean(testing::mission_dir("exploration"));
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  ASSERT_TRUE(r.selection_stats.front().optimized_used);
+  int leaves = 0;
+  std::function<void(const bt::Node&, const std::string&)> visit = [&](const bt::Node& n,
+                                                                       const std::string& path) {
+    if (n.tag == "SubTree") {
+      ++leaves;
+      const auto it = std::find_if(r.trace.begin(), r.trace.end(),
+                                   [&](const TraceEntry& e) { return e.node_path == path; });
+      ASSERT_NE(it, r.trace.end()) << path;
+      EXPECT_FALSE(it->requirement.empty()) << path;
+      EXPECT_EQ(it->atom.rfind("selected_alt = ", 0), 0u) << it->atom;
+    }
+    for (std::size_t i = 0; i < n.children.size(); ++i)
+      visit(n.children[i], path + "/" + n.children[i].tag + "[" + std::to_string(i) + "]");
+  };
+  const bt::Node& root = selection_root(r, "exploration");
+  visit(root, "exploration/" + root.tag);
+  EXPECT_GE(leaves, 3);
+  // Each leaf is wrapped in a Sequence named after its requirement.
+  EXPECT_GT(count_nodes(root,
+                        [](const bt::Node& n) {
+                          const std::string* name = n.attribute("name");
+                          return n.tag == "Sequence" && name && *name == "Sand";
+                        }),
+            0);
+}
+
+TEST(OptimizedSelection, SameBytesEveryTime) {
+  const load::Mission m = load_clean(testing::mission_dir("exploration"));
+  const Result a = compile_with(m, SelectionStyle::optimized);
+  const Result b = compile_with(m, SelectionStyle::optimized);
+  EXPECT_EQ(bt::write_document(a.document, {}), bt::write_document(b.document, {}));
+}
+
+}  // namespace
+}  // namespace uabt::compile

@@ -1,0 +1,147 @@
+// Mission properties monitored on every tick of a run (DESIGN §10): Curiosity's shipped
+// properties hold in its scenarios, and each violation is traced at its tick with the values
+// the property read.
+#include <gtest/gtest.h>
+
+#include "runtime/manager.hpp"
+#include "temp_mission.hpp"
+#include "test_support.hpp"
+
+namespace uabt::runtime {
+namespace {
+
+std::filesystem::path curiosity() {
+  return uabt::testing::mission_dir("msl_curiosity");
+}
+
+ManagerRun run_in(const std::filesystem::path& mission, const std::string& scenario,
+                  compile::SelectionStyle style) {
+  ManagerOptions options;
+  options.gate.compile.selection = style;
+  BehaviorTreeManager manager(mission, load_scenario(mission / "scenarios" / scenario), options);
+  return manager.run();
+}
+
+std::vector<const TraceEvent*> violations(const ManagerRun& run) {
+  std::vector<const TraceEvent*> out;
+  for (const auto& e : run.trace)
+    if (e.event == "violation") out.push_back(&e);
+  return out;
+}
+
+const monitor::PropertyResult& property(const ManagerRun& run, const std::string& id) {
+  for (const auto& p : run.properties)
+    if (p.id == id) return p;
+  throw std::runtime_error("no property " + id);
+}
+
+TEST(MissionProperties, CuriosityHoldsItsPropertiesInItsScenarios) {
+  for (const char* scenario : {"dusty_start.json", "rocks_mid_drive.json", "mud_uplink.json"}) {
+    const ManagerRun run = run_in(curiosity(), scenario, compile::SelectionStyle::reactive);
+    ASSERT_EQ(run.properties.size(), 6u) << "five properties and the domain's assumption";
+    for (const auto& p : run.properties)
+      EXPECT_EQ(p.verdict, monitor::Verdict::held) << scenario << ": " << p.id << " " << p.reason;
+    EXPECT_FALSE(run.guarantees_failed);
+    EXPECT_TRUE(violations(run).empty()) << trace_summary(run);
+  }
+}
+
+TEST(MissionProperties, ShortDriveDrillsAwayFromTheTarget) {
+  const ManagerRun run = run_in(curiosity(), "short_drive.json", compile::SelectionStyle::sequence);
+  EXPECT_EQ(run.status, NodeStatus::success) << "the tree itself completes";
+  EXPECT_TRUE(run.guarantees_failed);
+  const auto found = violations(run);
+  ASSERT_EQ(found.size(), 1u) << trace_summary(run);
+  EXPECT_EQ(found[0]->requirement, "NoDrillAway");
+  EXPECT_EQ(found[0]->role, "guarantee");
+  EXPECT_EQ(found[0]->tick, 22u) << "MoveForward ends at tick 21; Drill starts at 22";
+  const std::vector<std::pair<std::string, std::string>> values = {{"Drill.running", "true"},
+                                                                   {"IsInLocation", "false"}};
+  EXPECT_EQ(found[0]->values, values);
+  EXPECT_EQ(property(run, "NoDrillAway").first_violation, 22u);
+  const std::string json = trace_json_lines(run.trace);
+  EXPECT_NE(json.find("{\"tick\":22,\"event\":\"violation\",\"requirement\":\"NoDrillAway\","
+                      "\"role\":\"guarantee\",\"values\":{\"Drill.running\":\"true\","
+                      "\"IsInLocation\":\"false\"}}"),
+            std::string::npos)
+      << json;
+}
+
+// The paper's plain Fallback keeps on_rocks running into the mud: hold_position comes only
+// with the reactive selection, and the property says so at the tick after the mud appears.
+TEST(MissionProperties, UnknownTerrainNeedsTheReactiveSelection) {
+  const ManagerRun run = run_in(curiosity(), "mud_uplink.json", compile::SelectionStyle::sequence);
+  const auto found = violations(run);
+  ASSERT_EQ(found.size(), 1u) << trace_summary(run);
+  EXPECT_EQ(found[0]->requirement, "HoldOnUnknown");
+  EXPECT_EQ(found[0]->tick, 11u) << "mud from tick 10; within 1 tick ends at 11";
+  const std::vector<std::pair<std::string, std::string>> values = {
+      {"navigation", "true"},
+      {"OnDust", "false"},
+      {"OnRocks", "false"},
+      {"navigation.selected", "on_rocks"}};
+  EXPECT_EQ(found[0]->values, values);
+}
+
+// Sequence[Adaptable nav, Drill] with one alternative `go` (MoveForward), the selection
+// requirement Go, then `properties` and a scenario s.json.
+std::map<std::string, std::string> drill_mission(const std::string& properties,
+                                                 const std::string& scenario) {
+  return {
+      {"mission.xml",
+       uabt::testing::mission_with("    <Sequence><Adaptable ID=\"nav\"/><Drill/></Sequence>")},
+      {"alternatives/nav/go.xml", uabt::testing::alternative_tree("go", "<MoveForward/>")},
+      {"requirements.fret", "Go: In nav Mission shall satisfy selected_alt = go\n" + properties},
+      {"scenarios/s.json", scenario}};
+}
+
+// An assumption that fails is traced, but only guarantees decide the run.
+TEST(MissionProperties, AssumptionsAreTracedGuaranteesDecide) {
+  uabt::testing::TempMission m(
+      drill_mission("Done: the rover shall eventually satisfy Drill.success\n"
+                    "Picked: In nav the rover shall immediately satisfy nav.selected = go\n"
+                    "World: the Environment shall always satisfy !Drill.running\n",
+                    "{\"max_ticks\": 10, \"actions\": {\"Drill\": {\"ticks\": 2}}}"));
+  const ManagerRun run = run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
+  EXPECT_EQ(run.status, NodeStatus::success) << trace_summary(run);
+  EXPECT_EQ(property(run, "Done").verdict, monitor::Verdict::held);
+  EXPECT_EQ(property(run, "Picked").verdict, monitor::Verdict::held);
+  EXPECT_EQ(property(run, "World").verdict, monitor::Verdict::violated);
+  EXPECT_TRUE(property(run, "World").assumption);
+  const auto found = violations(run);
+  ASSERT_EQ(found.size(), 1u) << trace_summary(run);
+  EXPECT_EQ(found[0]->role, "assumption");
+  EXPECT_EQ(found[0]->tick, 1u) << "MoveForward succeeds in tick 1, so Drill starts in it";
+  EXPECT_FALSE(run.guarantees_failed);
+}
+
+// A property that names what the run cannot observe never reaches a run: the gate refuses it.
+TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
+  uabt::testing::TempMission m(
+      drill_mission("Typo: the rover shall always satisfy !Dril.running\n"
+                    "Kind: the rover shall always satisfy nav.selected < 3\n"
+                    "Secs: the rover shall within 2 seconds satisfy Drill.success\n",
+                    "{\"max_ticks\": 10}"));
+  try {
+    run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
+    FAIL() << "the gate passed";
+  } catch (const std::runtime_error& e) {
+    const std::string text = e.what();
+    EXPECT_NE(text.find("requirements.fret:2:39: error: 'Dril.running' is not an observable of "
+                        "the run"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("did you mean 'Drill.running'?"), std::string::npos) << text;
+    EXPECT_NE(text.find("requirements.fret:3:38: error: 'nav.selected < 3' needs numbers, got a "
+                        "name [property-type]"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("requirements.fret:4:7: error: Secs: timing 'within 2 seconds' is not in "
+                        "ticks"),
+              std::string::npos)
+        << text;
+  }
+}
+
+}  // namespace
+}  // namespace uabt::runtime

@@ -1,0 +1,173 @@
+// `uabt monitor REQUIREMENTS TRACE`: verdicts, first violation with the values read,
+// not-monitored with its reason, exit codes, and errors that name file and line.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+
+#include "monitor_test_support.hpp"
+#include "temp_mission.hpp"
+
+namespace uabt::testing {
+namespace {
+
+using Files = std::map<std::string, std::string>;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+CliRun uabt_in(const std::filesystem::path& dir, const std::string& args) {
+  const std::string command =
+      "cd '" + dir.string() + "' && '" + std::string(UABT_BINARY) + "' " + args + " 2>&1";
+  CliRun run;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return run;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.out += buffer.data();
+  const int status = ::pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+const char* kRequirements =
+    "# the rover stops within 2 ticks of mud, and never drives with the arm open\n"
+    "Stop: upon OnMud the rover shall within 2 ticks satisfy stopped\n"
+    "Arm: the rover shall never satisfy arm_open & driving\n"
+    "Home: the rover shall eventually satisfy at_target\n"
+    "Env: the Environment shall always satisfy !(OnMud & OnDust)\n";
+
+TEST(MonitorCli, ReportsTheFirstViolationWithTheValuesRead) {
+  TempMission files(
+      Files{{"r.fret", kRequirements},
+            {"run.jsonl",
+             "{\"tick\": 0, \"state\": {\"OnMud\": false, \"OnDust\": true, \"stopped\": "
+             "false, \"arm_open\": false, \"driving\": true, \"at_target\": false}}\n"
+             "{\"tick\": 1, \"state\": {\"OnMud\": true, \"OnDust\": false}}\n"
+             "{\"tick\": 2, \"state\": {}}\n"
+             "{\"tick\": 3, \"state\": {}}\n"
+             "{\"tick\": 4, \"state\": {\"stopped\": true, \"at_target\": true}}\n"}});
+  const CliRun text = uabt_in(files.dir(), "monitor r.fret run.jsonl");
+  EXPECT_EQ(text.exit_code, 1) << text.out;
+  EXPECT_EQ(text.out,
+            "r.fret:2:7: Stop: violated from tick 3 (OnMud=true, stopped=false)\n"
+            "r.fret:3:6: Arm: held\n"
+            "r.fret:4:7: Home: held\n"
+            "r.fret:5:6: Env (assumption): held\n"
+            "verdict: fail (5 ticks; 3 held, 1 violated, 0 not monitored)\n");
+  const CliRun json = uabt_in(files.dir(), "monitor r.fret run.jsonl --format json");
+  EXPECT_EQ(json.exit_code, 1);
+  const auto doc = nlohmann::json::parse(json.out);
+  EXPECT_EQ(doc["verdict"], "fail");
+  EXPECT_EQ(doc["requirements"][0]["id"], "Stop");
+  EXPECT_EQ(doc["requirements"][0]["verdict"], "violated");
+  EXPECT_EQ(doc["requirements"][0]["first_violation"], 3);
+  EXPECT_TRUE(doc["requirements"][0]["reason"].is_null());
+  EXPECT_EQ(doc["requirements"][0]["values"]["stopped"], "false");
+  EXPECT_EQ(doc["requirements"][1]["verdict"], "held");
+  EXPECT_TRUE(doc["requirements"][1]["first_violation"].is_null());
+  EXPECT_EQ(doc["requirements"][3]["role"], "assumption");
+}
+
+TEST(MonitorCli, PassesWhenEveryGuaranteeHolds) {
+  TempMission files(
+      Files{{"r.fret", kRequirements},
+            {"run.jsonl",
+             "{\"tick\": 10, \"state\": {\"OnMud\": false, \"OnDust\": true, "
+             "\"stopped\": false, \"arm_open\": true, \"driving\": false, "
+             "\"at_target\": false}}\n"
+             "{\"tick\": 11, \"state\": {\"OnMud\": true, \"OnDust\": false}}\n"
+             "{\"tick\": 12, \"state\": {\"stopped\": true, \"at_target\": true}}\n"}});
+  const CliRun run = uabt_in(files.dir(), "monitor r.fret run.jsonl");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("verdict: pass (3 ticks; 4 held"), std::string::npos) << run.out;
+}
+
+TEST(MonitorCli, MissingVariablesAreNotMonitoredWithTheReason) {
+  TempMission files(Files{{"r.fret", "Arm: the rover shall never satisfy arm_open & driving\n"},
+                          {"run.jsonl", "{\"tick\": 0, \"state\": {\"driving\": true}}\n"}});
+  const CliRun run = uabt_in(files.dir(), "monitor r.fret run.jsonl --format json");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  const auto doc = nlohmann::json::parse(run.out);
+  EXPECT_EQ(doc["requirements"][0]["verdict"], "not-monitored");
+  EXPECT_EQ(doc["requirements"][0]["reason"], "response: the trace has no variable 'arm_open'");
+  EXPECT_EQ(doc["verdict"], "fail");
+}
+
+TEST(MonitorCli, BadTracesAreErrorsWithFileAndLine) {
+  TempMission files(
+      Files{{"r.fret", "Arm: the rover shall never satisfy arm_open\n"},
+            {"gap.jsonl",
+             "{\"tick\": 0, \"state\": {\"arm_open\": false}}\n"
+             "{\"tick\": 2, \"state\": {\"arm_open\": true}}\n"},
+            {"junk.jsonl", "{\"tick\": 0, \"state\": {\"arm_open\": false}}\nnope\n"},
+            {"domain.fret", "integer speed in [0, 10]\n"},
+            {"typed.jsonl", "{\"tick\": 0, \"state\": {\"speed\": true, \"arm_open\": false}}\n"}});
+  const CliRun gap = uabt_in(files.dir(), "monitor r.fret gap.jsonl");
+  EXPECT_EQ(gap.exit_code, 1);
+  EXPECT_EQ(gap.out,
+            "gap.jsonl:2:1: error: tick 2 follows tick 0: a trace has one line per tick, in "
+            "order [trace-invalid]\n");
+  const CliRun junk = uabt_in(files.dir(), "monitor r.fret junk.jsonl");
+  EXPECT_EQ(junk.exit_code, 1);
+  EXPECT_NE(junk.out.find("junk.jsonl:2:2: error: not a JSON object"), std::string::npos)
+      << junk.out;
+  const CliRun typed = uabt_in(files.dir(), "monitor r.fret typed.jsonl --domain domain.fret");
+  EXPECT_EQ(typed.exit_code, 1);
+  EXPECT_NE(typed.out.find("typed.jsonl:1:1: error: 'speed' at tick 0 does not fit its type: "
+                           "the domain declares it integer [trace-invalid]"),
+            std::string::npos)
+      << typed.out;
+  EXPECT_EQ(uabt_in(files.dir(), "monitor r.fret no_such.jsonl").exit_code, 2);
+}
+
+TEST(MonitorCli, TickPeriodTurnsTimeUnitsIntoTicks) {
+  TempMission files(
+      Files{{"r.fret", "Stop: upon OnMud the rover shall within 200 millisecs satisfy stopped\n"},
+            {"domain.fret", "boolean OnMud, stopped\ntick 100 ms\n"},
+            {"run.jsonl",
+             "{\"tick\": 0, \"state\": {\"OnMud\": true, \"stopped\": false}}\n"
+             "{\"tick\": 1, \"state\": {}}\n"
+             "{\"tick\": 2, \"state\": {\"stopped\": true}}\n"}});
+  EXPECT_EQ(uabt_in(files.dir(), "monitor r.fret run.jsonl --domain domain.fret").exit_code, 0);
+  const CliRun no_period = uabt_in(files.dir(), "monitor r.fret run.jsonl");
+  EXPECT_EQ(no_period.exit_code, 1);
+  EXPECT_NE(no_period.out.find("not-monitored: timing 'within 200 millisecs' is not in ticks"),
+            std::string::npos)
+      << no_period.out;
+}
+
+// FRET's own export, as it ships: FSM-007 ("within 5 ticks") violated by a trace where the
+// response fails for five ticks.
+TEST(MonitorCli, FretExportAsItShips) {
+  const auto path = fret_reference("fsm_reqts_and_vars.json");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no FRET data";
+  std::string trace;
+  for (int t = 0; t < 6; ++t)
+    trace += "{\"tick\": " + std::to_string(t) +
+             ", \"state\": {\"state\": 1, \"ap_maneuver_state\": 1, \"supported\": true, "
+             "\"good\": true, \"STATE\": 0, \"ap_transition_state\": 2, \"standby\": false, "
+             "\"ap_standby_state\": 3, \"ap_nominal_state\": 4, \"apfail\": false, \"limits\": "
+             "false, \"pullup\": false, \"senstate\": 0, \"request\": false, "
+             "\"SENSTATE\": 0, \"sen_nominal_state\": 5, \"sen_fault_state\": 6, "
+             "\"sen_transition_state\": 7}}\n";
+  TempMission files(Files{{"run.jsonl", trace}});
+  const CliRun run =
+      uabt_in(files.dir(), "monitor '" + path.string() + "' run.jsonl --format json");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  const auto doc = nlohmann::json::parse(run.out);
+  ASSERT_EQ(doc["requirements"].size(), 13u);
+  for (const auto& r : doc["requirements"]) {
+    EXPECT_NE(r["verdict"], "not-monitored") << r.dump();
+    if (r["id"] == "FSM-007") {
+      EXPECT_EQ(r["verdict"], "violated");
+      EXPECT_EQ(r["first_violation"], 5);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace uabt::testing
