@@ -107,7 +107,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     report::ReportInput input = report_input(*outcome.mission, {"prove"});
     input.findings = prove::findings_of(result, written);
-    input.uri_prefix = uri_prefix_of(args->mission);
+    input.uri_prefix = sarif_uri_prefix(args->mission, "");
     if (args->format == "sarif") {
       write_findings(input, "sarif", args->output);
       return;

@@ -149,7 +149,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   engine->add_observer(observables.get());
   for (StateVar& v : vars) {
     v.slot = engine->blackboard().resolve(runtime::Blackboard::kRootScope, v.name);
-    v.frame = variables.slot(v.name);
+    v.frame = variables.id(v.name);
   }
   const monitor::Resolver resolve = [this](const std::string& name) {
     return observables->resolve(name);

@@ -25,7 +25,7 @@ monitor::Val Observables::value_of(const runtime::ScriptValue& v, monitor::Symbo
     case K::boolean: return monitor::Val::of_bool(v.boolean);
     case K::integer: return monitor::Val::of_number(static_cast<double>(v.integer));
     case K::real: return monitor::Val::of_number(v.real);
-    case K::string: return monitor::Val::of_symbol(symbols.intern(v.text));
+    case K::string: return monitor::Val::of_symbol(symbols.id(v.text));
   }
   return {};
 }
@@ -41,7 +41,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
   }
   // A state variable: declared in the domain, or a condition.
   if (state_.contains(name)) {
-    const int slot = variables_.slot(name);
+    const int slot = variables_.id(name);
     states_.push_back({name, slot});
     return {R::Kind::variable, slot};
   }
@@ -56,7 +56,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
           if (engine_.info(id).alive && engine_.info(id).kind == node) nodes.push_back(id);
       }
       if (!nodes.empty()) {
-        const int slot = variables_.slot(name);
+        const int slot = variables_.id(name);
         const NodeStatus s = field == "success"   ? NodeStatus::success
                              : field == "failure" ? NodeStatus::failure
                                                   : NodeStatus::running;
@@ -67,7 +67,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
     if (field == "selected") {
       for (const auto& site : mission_.adaptables) {
         if (site.id != node) continue;
-        SelectedObs obs{variables_.slot(name), std::vector<int>(engine_.node_count(), -1)};
+        SelectedObs obs{variables_.id(name), std::vector<int>(engine_.node_count(), -1)};
         // The selection tree's SubTree calls of alternatives: the last child of each branch.
         for (NodeId id = 0; id < engine_.node_count(); ++id) {
           const runtime::NodeInfo& info = engine_.info(id);
@@ -81,7 +81,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
           std::string alt = *tree;
           for (const auto& a : mission_.alternatives)
             if (a.adaptable == node && a.tree_id == *tree) alt = a.name;
-          obs.alternative_of_call[id] = symbols_.intern(alt);
+          obs.alternative_of_call[id] = symbols_.id(alt);
         }
         selected_.push_back(std::move(obs));
         last_alternative_.push_back(-1);
@@ -92,14 +92,14 @@ monitor::Resolved Observables::resolve(const std::string& name) {
   // The mode of an adaptable node.
   for (const auto& site : mission_.adaptables) {
     if (site.id != name) continue;
-    ModeObs mode{engine_.subtree_calls(name), variables_.slot(name)};
+    ModeObs mode{engine_.subtree_calls(name), variables_.id(name)};
     modes_.push_back(std::move(mode));
     return {R::Kind::variable, modes_.back().slot};
   }
   // Literals: enum values, alternative names, `none`.
   bool literal = name == "none" || mission_.domain.enum_owning(name) != nullptr;
   for (const auto& a : mission_.alternatives) literal = literal || a.name == name;
-  if (literal) return {R::Kind::literal, symbols_.intern(name)};
+  if (literal) return {R::Kind::literal, symbols_.id(name)};
   return {};
 }
 
@@ -132,7 +132,7 @@ void Observables::fill(std::vector<monitor::Val>& frame) const {
   }
   for (std::size_t i = 0; i < selected_.size(); ++i)
     frame[selected_[i].slot] = monitor::Val::of_symbol(
-        last_alternative_[i] >= 0 ? last_alternative_[i] : symbols_.intern("none"));
+        last_alternative_[i] >= 0 ? last_alternative_[i] : symbols_.id("none"));
   for (const ModeObs& m : modes_) {
     bool ticked = false;
     for (NodeId n : m.calls) ticked = ticked || last_[n] != NodeStatus::idle;
