@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "prove_support.hpp"
@@ -77,15 +78,32 @@ TEST(ProveCli, SarifPointsAtTheRequirement) {
   EXPECT_EQ(region["startLine"], 5);
 }
 
-TEST(ProveCli, GateFailsOnAViolatedGuaranteeAndPassesTheProvedOnes) {
+TEST(ProveCli, GateFailsOnAViolatedGuaranteeAndKeepsTheRejectedTree) {
   TempMission scratch({});
   const CliRun broken =
       run("gate " + mission_dir("sample_drilling").string() + " --out " + scratch.dir().string());
   EXPECT_EQ(broken.code, 1);
   EXPECT_NE(broken.out.find("[prove-violated]"), std::string::npos) << broken.out;
+  EXPECT_TRUE(std::filesystem::exists(scratch.dir() / "compiled.rejected.xml"));
+  EXPECT_FALSE(std::filesystem::exists(scratch.dir() / "compiled.xml"));
+}
+
+// msl_curiosity's ArmClosed is violated in every selection style: with one-tick actions the
+// drive and the opening of the arm succeed in the same tick. HoldOnUnknown holds only with the
+// reactive selection. The gate says so instead of passing.
+TEST(ProveCli, CuriosityGateReportsTheViolatedProperties) {
+  TempMission scratch({});
   const CliRun msl =
       run("gate " + mission_dir("msl_curiosity").string() + " --out " + scratch.dir().string());
-  EXPECT_EQ(msl.code, 0) << msl.out;
+  EXPECT_EQ(msl.code, 1) << msl.out;
+  EXPECT_NE(msl.out.find("guarantee 'ArmClosed' is violated at tick 1"), std::string::npos)
+      << msl.out;
+  EXPECT_NE(msl.out.find("guarantee 'HoldOnUnknown' is violated at tick 3"), std::string::npos)
+      << msl.out;
+  const CliRun reactive =
+      run("prove " + mission_dir("msl_curiosity").string() + " --selection reactive");
+  EXPECT_NE(reactive.out.find("5 guarantees: 4 proved, 1 violated"), std::string::npos)
+      << reactive.out;
 }
 
 TEST(ProveCli, BadWorldFileIsAUsageError) {
