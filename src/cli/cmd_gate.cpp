@@ -6,6 +6,7 @@
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
 #include "gate/uplink.hpp"
+#include "prove/outcome.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
 
@@ -65,6 +66,8 @@ void register_gate(CLI::App& app, int& exit_code) {
     gate::Outcome outcome =
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());
+    // A mission with guarantees passes only when each one is proved (DESIGN §10).
+    if (outcome.passed()) prove::add_proofs(outcome, prove::Options{});
     outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     // What conform says about the compiled tree points at its file in the report directory.
     if (!outcome.report.compiled_tree_file.empty())

@@ -14,6 +14,7 @@ void register_conform(CLI::App& app, int& exit_code);
 void register_report(CLI::App& app, int& exit_code);
 void register_diff(CLI::App& app, int& exit_code);
 void register_run(CLI::App& app, int& exit_code);
+void register_prove(CLI::App& app, int& exit_code);
 void register_monitor(CLI::App& app, int& exit_code);
 
 }  // namespace uabt::cli

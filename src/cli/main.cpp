@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   uabt::cli::register_report(app, exit_code);
   uabt::cli::register_diff(app, exit_code);
   uabt::cli::register_run(app, exit_code);
+  uabt::cli::register_prove(app, exit_code);
   uabt::cli::register_monitor(app, exit_code);
   uabt::cli::register_explain(app, exit_code);
   uabt::cli::register_checks(app, exit_code);

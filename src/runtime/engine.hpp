@@ -195,6 +195,7 @@ class Engine {
   void apply_pending_swaps();
 
  private:
+  friend struct EngineState;  // saves and restores the state between ticks (engine_state.hpp)
   explicit Engine(std::unique_ptr<detail::Core> core);
   NodeStatus wake_up_loop();
   std::unique_ptr<detail::Core> core_;

@@ -163,21 +163,36 @@ void only_keys(const Json& j, std::initializer_list<std::string_view> allowed, c
   }
 }
 
+NodeStatus action_result(const Json& r, const Scenario& file, const std::string& where) {
+  if (r == "success") return NodeStatus::success;
+  if (r == "failure") return NodeStatus::failure;
+  shape_error(file, where, "must be \"success\" or \"failure\", not " + r.dump());
+}
+
 ActionSpec action(const Json& j, const Scenario& file, const std::string& where) {
   if (!j.is_object())
     shape_error(file, where, std::string("an action must be an object, not ") + j.type_name());
-  only_keys(j, {"ticks", "effects", "result"}, file, where);
+  only_keys(j, {"ticks", "effects", "result", "runs"}, file, where);
   ActionSpec spec;
   if (j.contains("ticks")) spec.ticks = integer(j["ticks"], file, where + "/ticks", 1);
   if (j.contains("effects")) spec.effects = assignment(j["effects"], file, where + "/effects");
-  if (j.contains("result")) {
-    const Json& r = j["result"];
-    if (r == "success") {
-      spec.result = NodeStatus::success;
-    } else if (r == "failure") {
-      spec.result = NodeStatus::failure;
-    } else {
-      shape_error(file, where + "/result", "must be \"success\" or \"failure\", not " + r.dump());
+  if (j.contains("result")) spec.result = action_result(j["result"], file, where + "/result");
+  if (j.contains("runs")) {
+    const Json& runs = j["runs"];
+    if (!runs.is_array())
+      shape_error(file, where + "/runs", std::string("must be an array, not ") + runs.type_name());
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      const std::string at = where + "/runs/" + std::to_string(i);
+      if (!runs[i].is_object())
+        shape_error(file, at, std::string("a run must be an object, not ") + runs[i].type_name());
+      only_keys(runs[i], {"ticks", "effects", "result"}, file, at);
+      ActionRun run;
+      if (runs[i].contains("ticks")) run.ticks = integer(runs[i]["ticks"], file, at + "/ticks", 1);
+      if (runs[i].contains("result"))
+        run.result = action_result(runs[i]["result"], file, at + "/result");
+      if (runs[i].contains("effects"))
+        run.effects = assignment(runs[i]["effects"], file, at + "/effects");
+      spec.runs.push_back(std::move(run));
     }
   }
   return spec;
@@ -199,8 +214,11 @@ bool Scenario::mentions_state(std::string_view key) const {
   if (in(initial)) return true;
   for (const auto& e : events)
     if (in(e.set)) return true;
-  for (const auto& [name, spec] : actions)
+  for (const auto& [name, spec] : actions) {
     if (in(spec.effects)) return true;
+    for (const ActionRun& run : spec.runs)
+      if (in(run.effects)) return true;
+  }
   return false;
 }
 

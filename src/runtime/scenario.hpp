@@ -15,10 +15,21 @@ namespace uabt::runtime {
 
 using StateAssignment = std::vector<std::pair<std::string, ScriptValue>>;  // file order
 
+// One start of an action as a counterexample scripts it: how long it runs, how it ends and
+// what it then writes.
+struct ActionRun {
+  std::int64_t ticks = 1;
+  NodeStatus result = NodeStatus::success;
+  StateAssignment effects;
+};
+
 struct ActionSpec {
   std::int64_t ticks = 1;   // completes on its `ticks`-th tick; RUNNING before
   StateAssignment effects;  // applied when it completes
   NodeStatus result = NodeStatus::success;
+  // "runs": the n-th start of the action (counted over every leaf it names) follows runs[n];
+  // starts beyond the list follow ticks/result/effects above.
+  std::vector<ActionRun> runs;
 };
 
 struct ScenarioEvent {
@@ -32,6 +43,7 @@ struct ScenarioEvent {
 //   {"max_ticks": 2000,
 //    "initial": {"OnDust": true, "battery": 90, "terrain": "dust"},
 //    "actions": {"Drill": {"ticks": 30, "effects": {"IsDug": true}, "result": "success"}},
+//    (an action may also list "runs": [{"ticks": 3, "result": "failure", "effects": {…}}, …])
 //    "events": [{"at": 15, "set": {"OnDust": false}}, {"at": 40, "uplink": "uplinks/on_mud"}]}
 // JSON booleans, integers, reals and strings become state values (strings hold enum values).
 struct Scenario {

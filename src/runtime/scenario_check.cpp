@@ -148,6 +148,9 @@ std::vector<std::string> check_scenario(const Scenario& scenario,
       errors.push_back(scenario.where("/actions/" + name) + ": error: action '" + name +
                        "' is not a leaf of the mission" + did_you_mean(name, vocabulary.leaves));
     check_state(spec.effects, "/actions/" + name + "/effects");
+    for (std::size_t i = 0; i < spec.runs.size(); ++i)
+      check_state(spec.runs[i].effects,
+                  "/actions/" + name + "/runs/" + std::to_string(i) + "/effects");
   }
   return errors;
 }

@@ -122,15 +122,26 @@ NodeStatus SimWorld::tick_leaf(const LeafContext& context) {
     return s;
   }
 
-  if (leaf.elapsed == 0)
+  if (leaf.elapsed == 0) {
     log_.push_back(
         {context.tick, leaf.node, leaf.label, LeafEvent::action_started, NodeStatus::running});
+    leaf.run = nullptr;
+    if (leaf.action && !leaf.action->runs.empty()) {
+      const std::size_t n = starts_[leaf.action]++;
+      if (n < leaf.action->runs.size()) leaf.run = &leaf.action->runs[n];
+    }
+  }
   ++leaf.elapsed;
-  const std::int64_t needed = leaf.action ? leaf.action->ticks : 1;
+  const std::int64_t needed = leaf.run ? leaf.run->ticks : leaf.action ? leaf.action->ticks : 1;
   if (leaf.elapsed < needed) return NodeStatus::running;
   leaf.elapsed = 0;
-  for (const auto& [slot, value] : leaf.effects) context.blackboard.value(slot) = value;
-  const NodeStatus result = leaf.action ? leaf.action->result : NodeStatus::success;
+  NodeStatus result = leaf.action ? leaf.action->result : NodeStatus::success;
+  if (leaf.run) {
+    for (const auto& [key, value] : leaf.run->effects) context.blackboard.set(key, value);
+    result = leaf.run->result;
+  } else {
+    for (const auto& [slot, value] : leaf.effects) context.blackboard.value(slot) = value;
+  }
   log_.push_back({context.tick, leaf.node, leaf.label, LeafEvent::action_finished, result});
   return result;
 }

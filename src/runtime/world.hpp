@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
@@ -141,6 +142,7 @@ class SimWorld : public World {
     const ActionSpec* action = nullptr;           // nullptr: unlisted action
     std::vector<std::pair<SlotId, ScriptValue>> effects;
     std::int64_t elapsed = 0;
+    const ActionRun* run = nullptr;  // the scripted run of the current start, if any
   };
   std::string qualified_key(const Leaf& leaf, std::span<const LeafPort> ports,
                             const Blackboard& blackboard) const;
@@ -154,6 +156,7 @@ class SimWorld : public World {
   std::vector<Leaf> leaves_;
   std::vector<LeafLogEntry> log_;
   bool log_conditions_ = true;
+  std::map<const ActionSpec*, std::size_t> starts_;  // per action with runs: starts so far
 };
 
 }  // namespace uabt::runtime

@@ -38,7 +38,7 @@ const monitor::PropertyResult& property(const ManagerRun& run, const std::string
 TEST(MissionProperties, CuriosityHoldsItsPropertiesInItsScenarios) {
   for (const char* scenario : {"dusty_start.json", "rocks_mid_drive.json", "mud_uplink.json"}) {
     const ManagerRun run = run_in(curiosity(), scenario, compile::SelectionStyle::reactive);
-    ASSERT_EQ(run.properties.size(), 4u) << "three properties and the domain's assumption";
+    ASSERT_EQ(run.properties.size(), 5u) << "four properties and the domain's assumption";
     for (const auto& p : run.properties)
       EXPECT_EQ(p.verdict, monitor::Verdict::held) << scenario << ": " << p.id << " " << p.reason;
     EXPECT_FALSE(run.guarantees_failed);

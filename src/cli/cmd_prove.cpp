@@ -1,0 +1,127 @@
+#include <iostream>
+
+#include "base/files.hpp"
+#include "bt/xml_io.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "cli/findings_output.hpp"
+#include "gate/gate.hpp"
+#include "prove/outcome.hpp"
+#include "report/text.hpp"
+
+namespace uabt::cli {
+
+namespace {
+
+std::string summary_line(const prove::Result& r) {
+  int counts[4] = {0, 0, 0, 0};
+  for (const auto& a : r.answers) ++counts[static_cast<int>(a.verdict)];
+  std::string line = "prove: " + std::to_string(r.answers.size()) + " guarantee" +
+                     (r.answers.size() == 1 ? "" : "s") + ": " + std::to_string(counts[0]) +
+                     " proved, " + std::to_string(counts[1]) + " violated, " +
+                     std::to_string(counts[2]) + " bounded";
+  if (counts[3]) line += ", " + std::to_string(counts[3]) + " not checked";
+  line += " (" + r.engine + "-state engine: " + std::to_string(r.states) + " states, " +
+          std::to_string(r.transitions) + " transitions, " +
+          (r.complete ? "every reachable state" : "depth " + std::to_string(r.depth)) + ")";
+  return line;
+}
+
+}  // namespace
+
+// Model checking (DESIGN §10): every guarantee over every run of the compiled mission in the
+// world model. Exit 0 when every guarantee is proved, 1 otherwise (violated, bounded, not
+// checked, or the mission does not compile), 2 on a bad command line or world.json.
+void register_prove(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, format = "text", output, counterexamples, selection = "sequence",
+                         engine = "auto";
+    std::uint64_t depth = 0;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "prove", "Prove the mission's guarantees on every run its world model allows");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--depth", args->depth,
+                  "explore runs of up to K ticks (default: until every reachable state is seen)");
+  cmd->add_option("--engine", args->engine, "auto | explicit")
+      ->check(CLI::IsMember({"auto", "explicit", "symbolic"}));
+  cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
+      ->check(CLI::IsMember({"sequence", "reactive"}));
+  cmd->add_option("--counterexamples", args->counterexamples,
+                  "write each counterexample as DIR/<requirement>.json (a runtime scenario)");
+  cmd->add_option("--format", args->format, "text | json | sarif")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  cmd->add_option("-o,--output", args->output, "write the output to FILE");
+  cmd->callback([args, &exit_code] {
+    auto mission = load_or_complain(args->mission, {});
+    if (!mission) {
+      exit_code = kExitUsage;
+      return;
+    }
+    gate::Options gate_options;
+    gate_options.compile.selection = args->selection == "reactive"
+                                         ? compile::SelectionStyle::reactive
+                                         : compile::SelectionStyle::sequence;
+    gate::Outcome outcome = gate::run_gate(std::move(*mission), gate_options, tool_version());
+    if (outcome.compiled_xml.empty()) {
+      std::cerr << "uabt: the mission does not compile; nothing to prove\n"
+                << format_text(outcome.report.findings);
+      exit_code = kExitFail;
+      return;
+    }
+    std::vector<Finding> ignored;
+    auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", ignored);
+    prove::Result result;
+    try {
+      const prove::WorldModel world = prove::mission_world(*outcome.mission);
+      prove::Options options;
+      options.depth = args->depth;
+      options.engine = args->engine;
+      result = prove::prove(*outcome.mission, *doc, world, options);
+    } catch (const prove::WorldError& e) {
+      std::cerr << e.what() << "\n";
+      exit_code = kExitUsage;
+      return;
+    } catch (const std::exception& e) {
+      std::cerr << "uabt: prove: " << e.what() << "\n";
+      exit_code = kExitFail;
+      return;
+    }
+    std::map<std::string, std::string> written;
+    if (!args->counterexamples.empty()) {
+      std::filesystem::create_directories(args->counterexamples);
+      for (const auto& a : result.answers) {
+        if (!a.counterexample) continue;
+        const auto path = std::filesystem::path(args->counterexamples) / (a.requirement + ".json");
+        write_file_atomically(path, a.counterexample->scenario);
+        written[a.requirement] = path.generic_string();
+      }
+    }
+    exit_code = result.passed() ? kExitPass : kExitFail;
+    if (args->format == "json") {
+      emit(args->output, prove::result_json(result, outcome.mission->name, tool_version()));
+      return;
+    }
+    report::ReportInput input = report_input(*outcome.mission, {"prove"});
+    input.findings = prove::findings_of(result, written);
+    input.uri_prefix = sarif_uri_prefix(args->mission, "");
+    if (args->format == "sarif") {
+      write_findings(input, "sarif", args->output);
+      return;
+    }
+    std::string text = format_text(input.findings);
+    for (const auto& a : result.answers)
+      if (a.verdict == prove::Verdict::proved)
+        text += a.location.file + ":" + std::to_string(a.location.line) + ":" +
+                std::to_string(a.location.column) + ": note: guarantee '" + a.requirement +
+                "' is proved: " + a.text + "\n";
+    for (const auto& n : result.notes) text += "note: " + n + "\n";
+    text += summary_line(result) + "\n";
+    emit(args->output, text);
+  });
+}
+
+}  // namespace uabt::cli

@@ -1,0 +1,148 @@
+#include "prove/choice_world.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace uabt::prove {
+
+using runtime::NodeStatus;
+
+void Chooser::start(const std::vector<std::uint32_t>& prefix) {
+  taken_ = prefix;
+  arity_.assign(prefix.size(), 0);
+  pos_ = 0;
+}
+
+std::uint32_t Chooser::choose(std::uint32_t options) {
+  if (pos_ < taken_.size()) {
+    arity_[pos_] = options;
+    return taken_[pos_++];
+  }
+  taken_.push_back(0);
+  arity_.push_back(options);
+  ++pos_;
+  return 0;
+}
+
+bool Chooser::advance(std::vector<std::uint32_t>& prefix) const {
+  prefix.assign(taken_.begin(), taken_.begin() + static_cast<std::ptrdiff_t>(pos_));
+  while (!prefix.empty()) {
+    const std::size_t i = prefix.size() - 1;
+    if (prefix[i] + 1 < arity_[i]) {
+      ++prefix[i];
+      return true;
+    }
+    prefix.pop_back();
+  }
+  return false;
+}
+
+ChoiceWorld::ChoiceWorld(const WorldModel& model, std::vector<bt::NodeModel> node_models,
+                         std::set<std::string, std::less<>> state_names)
+    : model_(model), models_(std::move(node_models)), state_names_(std::move(state_names)) {}
+
+namespace {
+
+std::string qualified(const std::string& name, std::span<const runtime::LeafPort> ports) {
+  if (ports.empty()) return name;
+  std::vector<const runtime::LeafPort*> sorted;
+  for (const auto& p : ports) sorted.push_back(&p);
+  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->name < b->name; });
+  std::string key = name + "(";
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    key += (i ? "," : "") + sorted[i]->name + "=" + sorted[i]->literal;
+  return key + ")";
+}
+
+}  // namespace
+
+std::uint32_t ChoiceWorld::bind_leaf(const runtime::LeafBinding& binding) {
+  Leaf leaf;
+  leaf.node = binding.node;
+  leaf.name = binding.kind;
+  for (const auto& p : binding.ports)
+    if (p.from_blackboard())
+      throw std::runtime_error("leaf '" + leaf.name + "' reads port '" + p.name +
+                               "' from the blackboard; prove models literal ports only");
+  const std::string key = qualified(leaf.name, binding.ports);
+  std::string family = binding.declared_family;
+  if (family.empty())
+    for (const auto& m : models_)
+      if (m.id == leaf.name) family = m.family;
+  leaf.contract = model_.find(key, leaf.name);
+  if (leaf.contract) {
+    leaf.condition = false;
+  } else if (family == "Condition" || family == "Action") {
+    leaf.condition = family == "Condition";
+  } else {
+    leaf.condition = state_names_.contains(key) || state_names_.contains(leaf.name);
+  }
+  if (leaf.condition) {
+    leaf.label = state_names_.contains(key) ? key : leaf.name;
+    leaf.key = binding.blackboard.resolve(runtime::Blackboard::kRootScope, leaf.label);
+  } else {
+    leaf.label = leaf.contract ? leaf.contract->name : leaf.name;
+    auto compile = [&](const std::string& code, std::optional<runtime::script::Program>& out) {
+      if (code.empty()) return;
+      out = runtime::script::Program::parse(code);
+      out->bind(binding.blackboard, runtime::Blackboard::kRootScope);
+      for (auto& n : assigned_names(code)) leaf.writes.push_back(n);
+    };
+    if (leaf.contract) {
+      compile(leaf.contract->on_success, leaf.on_success);
+      compile(leaf.contract->on_failure, leaf.on_failure);
+    }
+  }
+  leaves_.push_back(std::move(leaf));
+  elapsed_.push_back(0);
+  return static_cast<std::uint32_t>(leaves_.size() - 1);
+}
+
+NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
+  Leaf& leaf = leaves_[context.handle];
+  if (leaf.condition) {
+    const runtime::ScriptValue& v = context.blackboard.value(leaf.key);
+    return v.is_number() && v.as_double() != 0.0 ? NodeStatus::success : NodeStatus::failure;
+  }
+  std::int64_t& elapsed = elapsed_[context.handle];
+  if (elapsed == 0 && recorder) recorder->started(context.handle, context.tick);
+  const std::int64_t now = elapsed + 1;
+  // Options: keep running (when the contract allows more ticks), or end with each result.
+  const ActionContract* c = leaf.contract;
+  static const std::vector<NodeStatus> kFree = {NodeStatus::success, NodeStatus::failure};
+  const std::vector<NodeStatus>& results = c ? c->results : kFree;
+  const bool may_run = c ? now < c->max_ticks : true;
+  const bool may_end = c ? now >= c->min_ticks : true;
+  const std::uint32_t options =
+      (may_run ? 1u : 0u) + (may_end ? static_cast<std::uint32_t>(results.size()) : 0u);
+  std::uint32_t pick = options > 1 ? chooser.choose(options) : 0;
+  if (may_run) {
+    if (pick == 0) {
+      elapsed = c ? now : 1;
+      return NodeStatus::running;
+    }
+    --pick;
+  }
+  const NodeStatus result = results[pick];
+  elapsed = 0;
+  auto& effect = result == NodeStatus::success ? leaf.on_success : leaf.on_failure;
+  if (effect) {
+    try {
+      effect->run(context.blackboard);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(model_.file + ": action '" + leaf.label + "' " +
+                               (result == NodeStatus::success ? "on_success" : "on_failure") +
+                               ": " + e.what());
+    }
+  }
+  if (recorder) recorder->ended(context.handle, context.tick, result);
+  return result;
+}
+
+void ChoiceWorld::halt_leaf(const runtime::LeafContext& context) {
+  if (leaves_[context.handle].condition) return;
+  if (recorder) recorder->halted(context.handle, context.tick);
+  elapsed_[context.handle] = 0;
+}
+
+}  // namespace uabt::prove

@@ -1,0 +1,80 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "prove/world_model.hpp"
+#include "runtime/script/program.hpp"
+#include "runtime/world.hpp"
+
+namespace uabt::prove {
+
+// The nondeterminism inside one tick, resolved one choice at a time. A tick is replayed with a
+// forced prefix of choices; choices past it take option 0 and are recorded, so that every
+// sequence of choices of a tick can be enumerated like an odometer.
+class Chooser {
+ public:
+  void start(const std::vector<std::uint32_t>& prefix);
+  std::uint32_t choose(std::uint32_t options);
+  const std::vector<std::uint32_t>& taken() const { return taken_; }
+  // The next sequence after the one just taken, false when every one was.
+  bool advance(std::vector<std::uint32_t>& prefix) const;
+
+ private:
+  std::vector<std::uint32_t> taken_, arity_;
+  std::size_t pos_ = 0;
+};
+
+// What an action did, for building a counterexample.
+class ActionRecorder {
+ public:
+  virtual ~ActionRecorder() = default;
+  // `tick`: the engine's tick in which it happened.
+  virtual void started(std::uint32_t leaf, std::uint64_t tick) = 0;
+  virtual void ended(std::uint32_t leaf, std::uint64_t tick, runtime::NodeStatus result) = 0;
+  virtual void halted(std::uint32_t leaf, std::uint64_t tick) = 0;
+};
+
+// The world `uabt prove` explores: conditions read the state as the simulated world does
+// (SimWorld's keys: `Name(port=value)` when that is a state variable, else `Name`); actions
+// follow their world.json contract, choosing on every tick between running on and ending with
+// each allowed result; an action without a contract may return RUNNING, SUCCESS or FAILURE on
+// any tick and changes nothing.
+class ChoiceWorld : public runtime::World {
+ public:
+  ChoiceWorld(const WorldModel& model, std::vector<bt::NodeModel> node_models,
+              std::set<std::string, std::less<>> state_names);
+
+  std::uint32_t bind_leaf(const runtime::LeafBinding& leaf) override;
+  runtime::NodeStatus tick_leaf(const runtime::LeafContext& leaf) override;
+  void halt_leaf(const runtime::LeafContext& leaf) override;
+
+  Chooser chooser;
+  ActionRecorder* recorder = nullptr;
+
+  struct Leaf {
+    runtime::NodeId node = runtime::kNoNode;
+    std::string name, label;  // label: the condition's key, the action's contract or name
+    bool condition = false;
+    runtime::SlotId key = runtime::kNoSlot;
+    const ActionContract* contract = nullptr;
+    std::optional<runtime::script::Program> on_success, on_failure;
+    std::vector<std::string> writes;
+  };
+  const std::vector<Leaf>& leaves() const { return leaves_; }
+  // Progress of every action (ticks it has run in its current start; for an action without
+  // contract only whether it runs, as nothing else about it matters): the world's state.
+  const std::vector<std::int64_t>& elapsed() const { return elapsed_; }
+  void set_elapsed(const std::vector<std::int64_t>& e) { elapsed_ = e; }
+
+ private:
+  const WorldModel& model_;
+  std::vector<bt::NodeModel> models_;
+  std::set<std::string, std::less<>> state_names_;
+  std::vector<Leaf> leaves_;
+  std::vector<std::int64_t> elapsed_;
+};
+
+}  // namespace uabt::prove

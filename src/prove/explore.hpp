@@ -1,0 +1,47 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "prove/model.hpp"
+#include "prove/prove.hpp"
+#include "runtime/engine_state.hpp"
+
+namespace uabt::prove {
+
+// One step of a path: the environment's values for the tick (an index into the product of
+// the relevant variables' values; for the first tick, of every relevant variable) and the
+// choices the actions made within it.
+struct Step {
+  std::uint64_t env = 0;
+  std::vector<std::uint32_t> inner;
+};
+
+// What the explicit-state search found for one guarantee.
+struct Finding {
+  std::size_t property = 0;
+  std::uint64_t tick = 0;
+  std::vector<Step> path;  // ticks 1..tick
+};
+
+struct SearchResult {
+  std::vector<std::optional<Finding>> violations;  // per property (guarantees only)
+  std::uint64_t states = 0, transitions = 0, depth = 0;
+  bool complete = false;
+  std::optional<std::string> tick_error;  // the first reachable tick error, if any
+};
+
+// Breadth-first search over the model's states (engine state, action progress, property
+// monitors), each stored once by its bytes: the first violation found of each guarantee is
+// one of the shortest.
+SearchResult explore(Model& model, const Options& options);
+
+// Replays `path` on the model's own engine, calling `before_tick(t)` once the environment's
+// values for tick t are set and before the tick runs, and `after_tick(t, root)` after it.
+// The model's ChoiceWorld::recorder is used as it is set.
+void replay_path(Model& model, const std::vector<Step>& path,
+                 const std::function<void(std::uint64_t)>& before_tick,
+                 const std::function<void(std::uint64_t, runtime::NodeStatus)>& after_tick);
+
+}  // namespace uabt::prove

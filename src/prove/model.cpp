@@ -1,0 +1,269 @@
+#include "prove/model.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <functional>
+
+#include "fretish/expr.hpp"
+#include "monitor/monitor.hpp"
+#include "monitor/property_set.hpp"
+#include "prove/prove.hpp"
+
+namespace uabt::prove {
+
+using runtime::ScriptValue;
+
+namespace {
+
+// The leaves of the tree as the engine binds them, learnt by building it once.
+struct ProbeWorld : runtime::World {
+  struct Seen {
+    std::string kind, family, key;
+  };
+  std::vector<Seen> leaves;
+  std::vector<bt::NodeModel> models;
+  std::uint32_t bind_leaf(const runtime::LeafBinding& b) override {
+    Seen s{b.kind, b.declared_family, b.kind};
+    if (s.family.empty())
+      for (const auto& m : models)
+        if (m.id == b.kind) s.family = m.family;
+    if (!b.ports.empty()) {
+      std::vector<const runtime::LeafPort*> sorted;
+      for (const auto& p : b.ports) sorted.push_back(&p);
+      std::sort(sorted.begin(), sorted.end(), [](auto* x, auto* y) { return x->name < y->name; });
+      s.key += "(";
+      for (std::size_t i = 0; i < sorted.size(); ++i)
+        s.key += (i ? "," : "") + sorted[i]->name + "=" + sorted[i]->literal;
+      s.key += ")";
+    }
+    leaves.push_back(std::move(s));
+    return 0;
+  }
+  runtime::NodeStatus tick_leaf(const runtime::LeafContext&) override {
+    return runtime::NodeStatus::failure;
+  }
+  void halt_leaf(const runtime::LeafContext&) override {}
+};
+
+bool uses_previous(const fretish::Expr& e) {
+  if (e.kind == fretish::ExprKind::call && e.text.rfind("pre", 0) == 0) return true;
+  for (const auto& a : e.args)
+    if (a && uses_previous(*a)) return true;
+  return false;
+}
+
+std::vector<ScriptValue> values_of(const fretish::Variable& v, std::string& why) {
+  std::vector<ScriptValue> out;
+  switch (v.type) {
+    case fretish::VarType::boolean:
+      return {ScriptValue::of_bool(false), ScriptValue::of_bool(true)};
+    case fretish::VarType::enumeration:
+      for (const auto& e : v.enum_values) out.push_back(ScriptValue::of_string(e));
+      return out;
+    case fretish::VarType::integer: {
+      if (v.lower.empty() || v.upper.empty()) {
+        why = "integer '" + v.name + "' has no bounds";
+        return out;
+      }
+      const long long lo = std::stoll(v.lower), hi = std::stoll(v.upper);
+      if (hi - lo > 4096) {
+        why = "integer '" + v.name + "' ranges over more than 4096 values";
+        return out;
+      }
+      for (long long i = lo; i <= hi; ++i) out.push_back(ScriptValue::of_int(i));
+      return out;
+    }
+    case fretish::VarType::real:
+      why = "real '" + v.name + "' has no finite set of values";
+      return out;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool has_guarantees(const load::Mission& mission) {
+  for (const auto& r : mission.properties)
+    if (!monitor::is_assumption(r)) return true;
+  return false;
+}
+
+Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldModel& w)
+    : mission(m), doc(compiled), world(w) {
+  std::vector<bt::NodeModel> models = doc.node_models;
+  if (mission.nodes) models.insert(models.end(), mission.nodes->begin(), mission.nodes->end());
+
+  // 1. The state: domain variables, then conditions the domain does not declare (booleans).
+  ProbeWorld probe;
+  probe.models = models;
+  try {
+    runtime::Engine::build(doc, probe);
+  } catch (const std::exception& e) {
+    throw ProveError(std::string("the compiled tree does not load: ") + e.what());
+  }
+  for (const auto& v : mission.domain.variables) {
+    StateVar s;
+    s.name = v.name;
+    std::string why;
+    s.values = values_of(v, why);
+    if (s.values.empty()) s.values.push_back(ScriptValue{});  // refused below if relevant
+    if (!why.empty()) s.relevant = false;                     // marked; checked below
+    vars.push_back(std::move(s));
+    state_names.insert(v.name);
+  }
+  for (const auto& leaf : probe.leaves) {
+    const bool condition =
+        world.find(leaf.key, leaf.kind) == nullptr &&
+        (leaf.family == "Condition" || (leaf.family.empty() && (state_names.contains(leaf.key) ||
+                                                                state_names.contains(leaf.kind))));
+    if (!condition || state_names.contains(leaf.key) || state_names.contains(leaf.kind)) continue;
+    StateVar s;
+    s.name = leaf.key;
+    s.values = {ScriptValue::of_bool(false), ScriptValue::of_bool(true)};
+    vars.push_back(std::move(s));
+    state_names.insert(leaf.key);
+  }
+
+  // 2. What the actions write is the mission's.
+  for (const auto& [name, c] : world.actions)
+    for (const std::string* code : {&c.on_success, &c.on_failure})
+      for (const std::string& written : assigned_names(*code)) {
+        auto it = std::find_if(vars.begin(), vars.end(),
+                               [&](const StateVar& v) { return v.name == written; });
+        if (it == vars.end())
+          throw ProveError(c.location.file + ":" + std::to_string(c.location.line) + ":" +
+                           std::to_string(c.location.column) + ": error: action '" + name +
+                           "' writes '" + written +
+                           "', which is neither declared in the domain nor a condition");
+        it->env = false;
+      }
+
+  // 3. The engine on the choice world, and what properties observe.
+  choice = std::make_unique<ChoiceWorld>(world, models, state_names);
+  try {
+    engine = std::make_unique<runtime::Engine>(runtime::Engine::build(doc, *choice));
+  } catch (const std::exception& e) {
+    throw ProveError(std::string("the compiled tree cannot be explored: ") + e.what());
+  }
+  observables = std::make_unique<Observables>(*engine, mission, state_names, variables, symbols);
+  engine->add_observer(observables.get());
+  for (StateVar& v : vars) {
+    v.slot = engine->blackboard().resolve(runtime::Blackboard::kRootScope, v.name);
+    v.frame = variables.id(v.name);
+  }
+  const monitor::Resolver resolve = [this](const std::string& name) {
+    return observables->resolve(name);
+  };
+
+  // 4. Properties, assumptions, the initial condition; what they read is relevant.
+  std::set<std::string, std::less<>> read;
+  auto reads = [&](const fretish::ExprPtr& e) {
+    if (e)
+      for (const auto& id : fretish::identifiers_of(*e)) read.insert(id);
+  };
+  for (const fretish::Requirement& property : mission.properties) {
+    const fretish::Requirement* r = &property;
+    Property p;
+    p.requirement = r;
+    p.assumption = monitor::is_assumption(property);
+    const monitor::Classified c = monitor::classify(*r, std::nullopt);
+    fretish::ExprPtr mode;
+    if (r->scope)
+      mode = r->scope->condition ? r->scope->condition : fretish::make_identifier(r->scope->mode);
+    const fretish::ExprPtr parts[] = {mode, r->folded_condition(), r->response,
+                                      r->timing.stop_condition};
+    if (!c.shape) p.unsupported = c.reason;
+    for (const auto& part : parts) {
+      if (!p.unsupported.empty()) break;
+      if (!part) {
+        p.parts.emplace_back();
+        continue;
+      }
+      if (uses_previous(*part)) {
+        p.unsupported = "preBool/preInt/preReal are not supported by prove";
+        break;
+      }
+      std::string error;
+      auto compiled_part = monitor::CompiledExpression::compile(*part, resolve, error);
+      if (!compiled_part) {
+        p.unsupported = error;
+        break;
+      }
+      p.parts.push_back(std::make_shared<monitor::CompiledExpression>(std::move(*compiled_part)));
+      reads(part);
+    }
+    if (p.unsupported.empty()) {
+      p.shape = *c.shape;
+      monitor::Formula f;
+      const int root = monitor::build_requirement_formula(f, p.shape, monitor::Slots{});
+      p.layout = std::make_unique<PastTimeLayout>(f, root);
+      p.offset = monitor_words;
+      monitor_words += p.layout->words();
+    }
+    properties.push_back(std::move(p));
+  }
+  auto state_expression = [&](const fretish::ExprPtr& e, const std::string& what) {
+    std::string error;
+    auto compiled_e = monitor::CompiledExpression::compile(*e, resolve, error);
+    if (!compiled_e) throw ProveError(what + ": " + error);
+    reads(e);
+    return std::make_shared<monitor::CompiledExpression>(std::move(*compiled_e));
+  };
+  for (const auto& a : mission.domain.assumptions)
+    if (a.expr) assumptions.push_back(state_expression(a.expr, "assumption " + a.name));
+  if (world.initial) initial = state_expression(world.initial, world.file + ": initial");
+
+  // Names the tree itself reads: conditions and scripts.
+  for (const auto& leaf : choice->leaves()) {
+    if (leaf.condition) read.insert(leaf.label);
+    for (const auto* p : {&leaf.on_success, &leaf.on_failure})
+      if (*p)
+        for (const auto& n : (*p)->names()) read.insert(n);
+  }
+  std::function<void(const bt::Node&)> scan = [&](const bt::Node& n) {
+    for (const auto& [attr, value] : n.attributes) {
+      if (attr == "code" || (!attr.empty() && attr[0] == '_')) {
+        try {
+          for (const auto& name : runtime::script::Program::parse(value).names()) read.insert(name);
+        } catch (const std::exception&) {
+        }
+      }
+      const auto open = value.find('{');
+      if (open != std::string::npos && value.back() == '}')
+        read.insert(value.substr(open + 1, value.size() - open - 2));
+    }
+    for (const auto& c : n.children) scan(c);
+  };
+  for (const auto& t : doc.trees) scan(t.root);
+
+  for (StateVar& v : vars) {
+    const bool refused = !v.relevant;
+    v.relevant = read.contains(v.name);
+    if (v.relevant && refused) {
+      std::string why;
+      values_of(*mission.domain.find(v.name), why);
+      throw ProveError("the explicit-state engine cannot enumerate " + why +
+                       " (give it a bounded range, or leave it out of what the tree and the "
+                       "properties read)");
+    }
+    engine->blackboard().value(v.slot) = v.values.front();
+  }
+  fresh = runtime::EngineState::save(*engine);
+}
+
+void Model::fill_state(std::vector<monitor::Val>& frame) const {
+  frame.resize(variables.size());
+  for (const StateVar& v : vars)
+    frame[v.frame] = Observables::value_of(engine->blackboard().value(v.slot),
+                                           const_cast<monitor::Symbols&>(symbols));
+}
+
+bool Model::holds(monitor::CompiledExpression& e, std::vector<monitor::Val>& frame) {
+  fill_state(frame);
+  std::string error;
+  const bool v = e.evaluate_bool(frame, error);
+  if (!error.empty()) throw ProveError(error);
+  return v;
+}
+
+}  // namespace uabt::prove

@@ -1,0 +1,69 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "fretish/domain.hpp"
+#include "load/mission.hpp"
+#include "monitor/expression.hpp"
+#include "monitor/templates.hpp"
+#include "prove/choice_world.hpp"
+#include "prove/observables.hpp"
+#include "prove/past_time.hpp"
+#include "prove/world_model.hpp"
+#include "runtime/engine.hpp"
+#include "runtime/engine_state.hpp"
+
+namespace uabt::prove {
+
+// A variable of the world's state, with the finite set of values it ranges over.
+struct StateVar {
+  std::string name;
+  std::vector<runtime::ScriptValue> values;
+  bool env = true;       // no action writes it: the environment may change it every tick
+  bool relevant = true;  // something reads it (else it keeps its first value)
+  runtime::SlotId slot = runtime::kNoSlot;
+  int frame = -1;  // its monitor::Variables slot
+};
+
+// A mission property compiled for model checking.
+struct Property {
+  const fretish::Requirement* requirement = nullptr;
+  bool assumption = false;  // component Environment
+  monitor::Shape shape;
+  std::vector<std::shared_ptr<monitor::CompiledExpression>>
+      parts;  // mode, condition, response, stop
+  std::unique_ptr<PastTimeLayout> layout;
+  std::size_t offset = 0;  // its words in the monitor state
+  std::string unsupported;
+};
+
+// The product the explorer walks: the runtime's engine over the compiled tree, the choice
+// world, the observables and every property's monitor.
+struct Model {
+  Model(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world);
+
+  const load::Mission& mission;
+  const bt::Document& doc;
+  const WorldModel& world;
+  std::vector<StateVar> vars;
+  std::set<std::string, std::less<>> state_names;
+  monitor::Variables variables;
+  monitor::Symbols symbols;
+  std::unique_ptr<ChoiceWorld> choice;
+  std::unique_ptr<runtime::Engine> engine;
+  std::unique_ptr<Observables> observables;
+  std::vector<Property> properties;
+  std::vector<std::shared_ptr<monitor::CompiledExpression>> assumptions;
+  std::shared_ptr<monitor::CompiledExpression> initial;
+  std::size_t monitor_words = 0;
+  runtime::EngineState fresh;  // before the first tick, every variable at its first value
+
+  // Evaluates a state expression (initial, assumption) on the blackboard now.
+  bool holds(monitor::CompiledExpression& e, std::vector<monitor::Val>& frame);
+  void fill_state(std::vector<monitor::Val>& frame) const;
+};
+
+}  // namespace uabt::prove

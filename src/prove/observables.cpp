@@ -1,0 +1,143 @@
+#include "prove/observables.hpp"
+
+#include <algorithm>
+
+namespace uabt::prove {
+
+using runtime::NodeId;
+using runtime::NodeStatus;
+
+Observables::Observables(const runtime::Engine& engine, const load::Mission& mission,
+                         std::set<std::string, std::less<>> state, monitor::Variables& variables,
+                         monitor::Symbols& symbols)
+    : engine_(engine),
+      mission_(mission),
+      state_(std::move(state)),
+      variables_(variables),
+      symbols_(symbols) {
+  last_.assign(engine.node_count(), NodeStatus::idle);
+}
+
+monitor::Val Observables::value_of(const runtime::ScriptValue& v, monitor::Symbols& symbols) {
+  using K = runtime::ScriptValue::Kind;
+  switch (v.kind) {
+    case K::empty: return {};
+    case K::boolean: return monitor::Val::of_bool(v.boolean);
+    case K::integer: return monitor::Val::of_number(static_cast<double>(v.integer));
+    case K::real: return monitor::Val::of_number(v.real);
+    case K::string: return monitor::Val::of_symbol(symbols.id(v.text));
+  }
+  return {};
+}
+
+monitor::Resolved Observables::resolve(const std::string& name) {
+  using R = monitor::Resolved;
+  if (auto slot = variables_.find(name)) {
+    // Registered by another property, or a state variable the caller reads itself.
+    bool known = false;
+    for (const StateObs& s : states_) known = known || s.slot == *slot;
+    if (!known && state_.contains(name)) states_.push_back({name, *slot});
+    return {R::Kind::variable, *slot};
+  }
+  // A state variable: declared in the domain, or a condition.
+  if (state_.contains(name)) {
+    const int slot = variables_.id(name);
+    states_.push_back({name, slot});
+    return {R::Kind::variable, slot};
+  }
+  // <node>.success / .failure / .running
+  const auto dot = name.rfind('.');
+  if (dot != std::string::npos) {
+    const std::string node = name.substr(0, dot), field = name.substr(dot + 1);
+    if (field == "success" || field == "failure" || field == "running") {
+      std::vector<NodeId> nodes = engine_.find_by_name(node);
+      if (nodes.empty()) {
+        for (NodeId id = 0; id < engine_.node_count(); ++id)
+          if (engine_.info(id).alive && engine_.info(id).kind == node) nodes.push_back(id);
+      }
+      if (!nodes.empty()) {
+        const int slot = variables_.id(name);
+        const NodeStatus s = field == "success"   ? NodeStatus::success
+                             : field == "failure" ? NodeStatus::failure
+                                                  : NodeStatus::running;
+        statuses_.push_back({std::move(nodes), s, slot});
+        return {R::Kind::variable, slot};
+      }
+    }
+    if (field == "selected") {
+      for (const auto& site : mission_.adaptables) {
+        if (site.id != node) continue;
+        SelectedObs obs{variables_.id(name), std::vector<int>(engine_.node_count(), -1)};
+        // The selection tree's SubTree calls of alternatives: the last child of each branch.
+        for (NodeId id = 0; id < engine_.node_count(); ++id) {
+          const runtime::NodeInfo& info = engine_.info(id);
+          if (!info.alive || info.tag != "SubTree" || info.tree_id != node) continue;
+          const runtime::NodeId branch = info.parent;
+          if (branch == runtime::kNoNode) continue;
+          const runtime::NodeId selector = engine_.info(branch).parent;
+          if (selector == runtime::kNoNode || engine_.info(selector).name != node) continue;
+          const std::string* tree = info.element ? info.element->attribute("ID") : nullptr;
+          if (tree == nullptr) continue;
+          std::string alt = *tree;
+          for (const auto& a : mission_.alternatives)
+            if (a.adaptable == node && a.tree_id == *tree) alt = a.name;
+          obs.alternative_of_call[id] = symbols_.id(alt);
+        }
+        selected_.push_back(std::move(obs));
+        last_alternative_.push_back(-1);
+        return {R::Kind::variable, selected_.back().slot};
+      }
+    }
+  }
+  // The mode of an adaptable node.
+  for (const auto& site : mission_.adaptables) {
+    if (site.id != name) continue;
+    ModeObs mode{engine_.subtree_calls(name), variables_.id(name)};
+    modes_.push_back(std::move(mode));
+    return {R::Kind::variable, modes_.back().slot};
+  }
+  // Literals: enum values, alternative names, `none`.
+  bool literal = name == "none" || mission_.domain.enum_owning(name) != nullptr;
+  for (const auto& a : mission_.alternatives) literal = literal || a.name == name;
+  if (literal) return {R::Kind::literal, symbols_.id(name)};
+  return {};
+}
+
+void Observables::begin_tick() {
+  for (NodeId n : touched_) last_[n] = NodeStatus::idle;
+  touched_.clear();
+  std::fill(last_alternative_.begin(), last_alternative_.end(), -1);
+}
+
+void Observables::on_node_ticked(NodeId node, NodeStatus result) {
+  if (node >= last_.size()) last_.resize(node + 1, NodeStatus::idle);
+  last_[node] = result;
+  touched_.push_back(node);
+  for (std::size_t i = 0; i < selected_.size(); ++i)
+    if (node < selected_[i].alternative_of_call.size() &&
+        selected_[i].alternative_of_call[node] >= 0)
+      last_alternative_[i] = selected_[i].alternative_of_call[node];
+}
+
+void Observables::fill(std::vector<monitor::Val>& frame) const {
+  frame.resize(variables_.size());
+  for (const StateObs& s : states_) {
+    const runtime::ScriptValue* v = engine_.blackboard().get(s.key);
+    frame[s.slot] = v ? value_of(*v, symbols_) : monitor::Val{};
+  }
+  for (const StatusObs& s : statuses_) {
+    bool any = false;
+    for (NodeId n : s.nodes) any = any || last_[n] == s.status;
+    frame[s.slot] = monitor::Val::of_bool(any);
+  }
+  for (std::size_t i = 0; i < selected_.size(); ++i)
+    frame[selected_[i].slot] = monitor::Val::of_symbol(
+        last_alternative_[i] >= 0 ? last_alternative_[i] : symbols_.id("none"));
+  for (const ModeObs& m : modes_) {
+    bool ticked = false;
+    for (NodeId n : m.calls) ticked = ticked || last_[n] != NodeStatus::idle;
+    frame[m.slot] = monitor::Val::of_bool(ticked);
+  }
+}
+
+}  // namespace uabt::prove

@@ -1,0 +1,69 @@
+#pragma once
+#include <set>
+#include <string>
+#include <vector>
+
+#include "fretish/domain.hpp"
+#include "load/mission.hpp"
+#include "monitor/expression.hpp"
+#include "runtime/engine.hpp"
+
+namespace uabt::prove {
+
+// What a mission property may read at tick t (DESIGN §10), taken from a running engine:
+// state variables (the root blackboard), `<node>.success|failure|running` (the status the node
+// returned in tick t), `<adaptable>.selected` (the alternative whose SubTree the selection
+// ticked last in tick t, else `none`) and the mode `<adaptable>` (its SubTree was ticked).
+// Works on any engine built from the compiled tree, so prove and the replay of a
+// counterexample read the very same observables.
+class Observables : public runtime::Observer {
+ public:
+  // `state` names the state variables (root blackboard keys) a property may read.
+  Observables(const runtime::Engine& engine, const load::Mission& mission,
+              std::set<std::string, std::less<>> state, monitor::Variables& variables,
+              monitor::Symbols& symbols);
+
+  // For monitor::CompiledExpression: registers the observables a property names.
+  monitor::Resolved resolve(const std::string& name);
+
+  void begin_tick();  // call before each tick
+  void on_status_change(runtime::NodeId, runtime::NodeStatus, runtime::NodeStatus) override {}
+  void on_node_ticked(runtime::NodeId node, runtime::NodeStatus result) override;
+  // The frame after the tick, one value per variable slot.
+  void fill(std::vector<monitor::Val>& frame) const;
+
+  static monitor::Val value_of(const runtime::ScriptValue& v, monitor::Symbols& symbols);
+
+ private:
+  struct StateObs {
+    std::string key;
+    int slot;
+  };
+  struct StatusObs {
+    std::vector<runtime::NodeId> nodes;
+    runtime::NodeStatus status;
+    int slot;
+  };
+  struct SelectedObs {
+    int slot;
+    std::vector<int> alternative_of_call;  // per engine node: symbol of its alternative, -1
+  };
+  struct ModeObs {
+    std::vector<runtime::NodeId> calls;
+    int slot;
+  };
+  const runtime::Engine& engine_;
+  const load::Mission& mission_;
+  std::set<std::string, std::less<>> state_;
+  monitor::Variables& variables_;
+  monitor::Symbols& symbols_;
+  std::vector<StateObs> states_;
+  std::vector<StatusObs> statuses_;
+  std::vector<SelectedObs> selected_;
+  std::vector<ModeObs> modes_;
+  std::vector<runtime::NodeStatus> last_;  // per node, this tick (idle: not ticked)
+  std::vector<runtime::NodeId> touched_;
+  std::vector<int> last_alternative_;  // per SelectedObs: symbol, -1 for none
+};
+
+}  // namespace uabt::prove

@@ -1,0 +1,153 @@
+#include "prove/outcome.hpp"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "bt/xml_io.hpp"
+#include "report/reports.hpp"
+
+namespace uabt::prove {
+
+using Json = nlohmann::ordered_json;
+
+WorldModel mission_world(const load::Mission& mission) {
+  const auto path = mission.dir / "world.json";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return {};
+  return load_world(path, "world.json");
+}
+
+std::vector<std::string> table_lines(const Counterexample& cex) {
+  std::vector<std::string> header = {"tick", "root"};
+  if (!cex.rows.empty())
+    for (const auto& [name, value] : cex.rows.front().values) header.push_back(name);
+  header.push_back("actions");
+  std::vector<std::vector<std::string>> cells = {header};
+  for (const TickRow& r : cex.rows) {
+    std::vector<std::string> row = {std::to_string(r.tick), r.root};
+    for (const auto& [name, value] : r.values) row.push_back(value);
+    std::string actions;
+    for (const auto& a : r.actions) actions += (actions.empty() ? "" : ", ") + a;
+    row.push_back(actions);
+    cells.push_back(std::move(row));
+  }
+  std::vector<std::size_t> width(header.size(), 0);
+  for (const auto& row : cells)
+    for (std::size_t i = 0; i < row.size() && i < width.size(); ++i)
+      width[i] = std::max(width[i], row[i].size());
+  std::vector<std::string> out;
+  for (const auto& row : cells) {
+    std::string line;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      line += row[i];
+      if (i + 1 < row.size()) line += std::string(width[i] - row[i].size() + 2, ' ');
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out.push_back(line);
+  }
+  return out;
+}
+
+std::vector<Finding> findings_of(const Result& result,
+                                 const std::map<std::string, std::string>& written) {
+  std::vector<Finding> out;
+  for (const Answer& a : result.answers) {
+    if (a.verdict == Verdict::proved) continue;
+    Finding f;
+    if (a.verdict == Verdict::violated) {
+      f = make_finding("prove-violated",
+                       "guarantee '" + a.requirement + "' is violated at tick " +
+                           std::to_string(a.depth) + ": " + a.text,
+                       a.location);
+      const auto it = written.find(a.requirement);
+      if (it != written.end())
+        f.notes.push_back("counterexample scenario: " + it->second +
+                          " (replay it with `uabt run MISSION --scenario " + it->second + "`)");
+      for (const std::string& line : table_lines(*a.counterexample)) f.notes.push_back(line);
+    } else if (a.verdict == Verdict::bounded) {
+      f = make_finding("prove-bounded",
+                       "guarantee '" + a.requirement + "' holds up to tick " +
+                           std::to_string(a.depth) + " but is not proved: " + a.text,
+                       a.location);
+      f.notes.push_back("the search stopped at depth " + std::to_string(a.depth) + " after " +
+                        std::to_string(result.states) +
+                        " states; raise --depth or shrink the world to decide it");
+    } else {
+      f = make_finding("fretish-unsupported",
+                       "guarantee '" + a.requirement + "' cannot be proved: " + a.reason,
+                       a.location);
+    }
+    f.requirements = {a.requirement};
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+std::string result_json(const Result& result, const std::string& mission,
+                        const std::string& version) {
+  Json j = Json::object();
+  j["tool"] = "uabt";
+  j["version"] = version;
+  j["mission"] = mission;
+  j["verdict"] = result.passed() ? "pass" : "fail";
+  j["engine"] = result.engine;
+  j["states"] = result.states;
+  j["transitions"] = result.transitions;
+  j["depth"] = result.depth;
+  j["complete"] = result.complete;
+  Json props = Json::array();
+  for (const Answer& a : result.answers) {
+    Json p = Json::object();
+    p["id"] = a.requirement;
+    p["verdict"] = verdict_name(a.verdict);
+    p["location"] = {
+        {"file", a.location.file}, {"line", a.location.line}, {"column", a.location.column}};
+    p["depth"] = a.depth;
+    if (!a.reason.empty()) p["reason"] = a.reason;
+    if (a.counterexample) {
+      Json trace = Json::array();
+      for (const TickRow& r : a.counterexample->rows) {
+        Json values = Json::object();
+        for (const auto& [name, value] : r.values) values[name] = value;
+        trace.push_back(
+            {{"tick", r.tick}, {"root", r.root}, {"values", values}, {"actions", r.actions}});
+      }
+      p["counterexample"] = {{"tick", a.counterexample->tick},
+                             {"scenario", Json::parse(a.counterexample->scenario)},
+                             {"trace", trace}};
+    }
+    props.push_back(std::move(p));
+  }
+  j["properties"] = props;
+  j["notes"] = result.notes;
+  return j.dump(2) + "\n";
+}
+
+void add_proofs(gate::Outcome& outcome, const Options& options) {
+  if (!outcome.mission || !has_guarantees(*outcome.mission) || outcome.compiled_xml.empty()) return;
+  std::vector<Finding> found;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", found);
+  if (!doc) return;  // conform reports a compiled tree that does not read back
+  try {
+    const WorldModel world = mission_world(*outcome.mission);
+    const Result result = prove(*outcome.mission, *doc, world, options);
+    found = findings_of(result);
+  } catch (const WorldError& e) {
+    found = {make_finding("load-file", e.text, e.location)};
+  } catch (const std::exception& e) {
+    found = {make_finding("prove-bounded", std::string("the mission cannot be proved: ") + e.what(),
+                          {outcome.mission->requirements_file, 0, 0})};
+  }
+  auto& findings = outcome.report.findings;
+  findings.insert(findings.end(), found.begin(), found.end());
+  // Like any failing gate, a failed proof keeps the candidate as compiled.rejected.xml.
+  if (!outcome.report.passed()) {
+    outcome.report.compiled_tree_file = report::kRejectedTree;
+    for (auto& f : findings)
+      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
+  }
+  sort_findings(findings);
+  outcome.report.stages.push_back("prove");
+}
+
+}  // namespace uabt::prove

@@ -1,0 +1,35 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/finding.hpp"
+#include "gate/gate.hpp"
+#include "prove/prove.hpp"
+
+namespace uabt::prove {
+
+// The mission's world.json, or the unconstrained world when it has none. Throws WorldError.
+WorldModel mission_world(const load::Mission& mission);
+
+// Findings for the report: `prove-violated` and `prove-bounded` errors at the requirement,
+// `fretish-unsupported` for a guarantee prove cannot read. `written` maps a requirement id to
+// the file its counterexample was written to.
+std::vector<Finding> findings_of(const Result& result,
+                                 const std::map<std::string, std::string>& written = {});
+
+// The tick-by-tick table of a counterexample, as text lines.
+std::vector<std::string> table_lines(const Counterexample& cex);
+
+// JSON (`uabt prove --format json`).
+std::string result_json(const Result& result, const std::string& mission,
+                        const std::string& version);
+
+// The gate's proof step (DESIGN §10): when the mission states guarantees and the gate has a
+// compiled tree, proves them on it and adds the findings (and the `prove` stage) to the
+// outcome's report. A world.json or model error is itself an error finding.
+void add_proofs(gate::Outcome& outcome, const Options& options);
+
+}  // namespace uabt::prove

@@ -1,0 +1,235 @@
+#include "prove/prove.hpp"
+
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "monitor/monitor.hpp"
+#include "prove/explore.hpp"
+#include "runtime/runner.hpp"
+
+namespace uabt::prove {
+
+using runtime::NodeStatus;
+using runtime::ScriptValue;
+using Json = nlohmann::ordered_json;
+
+const char* verdict_name(Verdict v) {
+  switch (v) {
+    case Verdict::proved: return "proved";
+    case Verdict::violated: return "violated";
+    case Verdict::bounded: return "bounded";
+    case Verdict::unsupported: return "unsupported";
+  }
+  return "?";
+}
+
+bool Result::passed() const {
+  for (const Answer& a : answers)
+    if (a.verdict != Verdict::proved) return false;
+  return true;
+}
+
+namespace {
+
+Json json_value(const ScriptValue& v) {
+  switch (v.kind) {
+    case ScriptValue::Kind::boolean: return v.boolean;
+    case ScriptValue::Kind::integer: return v.integer;
+    case ScriptValue::Kind::real: return v.real;
+    case ScriptValue::Kind::string: return v.text;
+    case ScriptValue::Kind::empty: break;
+  }
+  return nullptr;
+}
+
+// Collects what the actions did along a path, as scenario "runs".
+class RunRecorder : public ActionRecorder {
+ public:
+  explicit RunRecorder(Model& m) : m_(m), current_(m.choice->leaves().size()) {
+    // Every action is listed, run or not, so that the simulated world takes it for one.
+    for (std::uint32_t leaf = 0; leaf < m.choice->leaves().size(); ++leaf)
+      if (!m.choice->leaves()[leaf].condition) runs_[label(leaf)];
+  }
+  void started(std::uint32_t leaf, std::uint64_t tick) override {
+    auto& list = runs_[label(leaf)];
+    list.push_back(Json::object());
+    current_[leaf] = list.size() - 1;
+    started_[leaf] = tick;
+  }
+  void ended(std::uint32_t leaf, std::uint64_t tick, NodeStatus result) override {
+    Json& run = runs_[label(leaf)][current_[leaf]];
+    run["ticks"] = tick - started_[leaf] + 1;
+    run["result"] = result == NodeStatus::success ? "success" : "failure";
+    const auto& writes = m_.choice->leaves()[leaf].writes;
+    if (!writes.empty()) {
+      Json effects = Json::object();
+      for (const std::string& name : writes)
+        if (const ScriptValue* v = m_.engine->blackboard().get(name))
+          effects[name] = json_value(*v);
+      run["effects"] = effects;
+    }
+  }
+  // A halted start must not end before its halt: one tick more than it could have run.
+  void halted(std::uint32_t leaf, std::uint64_t tick) override {
+    runs_[label(leaf)][current_[leaf]]["ticks"] = tick - started_[leaf] + 2;
+  }
+  // Actions still running when the path ends: they would end after it.
+  Json actions(std::uint64_t last_tick) {
+    const auto& elapsed = m_.choice->elapsed();
+    for (std::size_t leaf = 0; leaf < elapsed.size(); ++leaf) {
+      if (m_.choice->leaves()[leaf].condition) continue;
+      auto& list = runs_[label(static_cast<std::uint32_t>(leaf))];
+      if (elapsed[leaf] > 0 && !list.empty() && !list[current_[leaf]].contains("ticks"))
+        list[current_[leaf]]["ticks"] = last_tick - started_[leaf] + 2;
+    }
+    Json out = Json::object();
+    for (auto& [name, list] : runs_) {
+      Json spec = Json::object();
+      if (!list.empty()) spec["runs"] = list;
+      out[name] = spec;
+    }
+    return out;
+  }
+
+ private:
+  const std::string& label(std::uint32_t leaf) const { return m_.choice->leaves()[leaf].label; }
+  Model& m_;
+  std::vector<std::size_t> current_;
+  std::vector<std::uint64_t> started_ = std::vector<std::uint64_t>(current_.size(), 0);
+  std::map<std::string, std::vector<Json>> runs_;
+};
+
+std::string scenario_of(Model& m, const Property& p, const Finding& f) {
+  RunRecorder recorder(m);
+  m.choice->recorder = &recorder;
+  Json initial = Json::object(), events = Json::array();
+  std::vector<ScriptValue> last(m.vars.size());
+  replay_path(
+      m, f.path,
+      [&](std::uint64_t tick) {
+        Json set = Json::object();
+        for (std::size_t i = 0; i < m.vars.size(); ++i) {
+          const ScriptValue& v = m.engine->blackboard().value(m.vars[i].slot);
+          if (tick == 1)
+            initial[m.vars[i].name] = json_value(v);
+          else if (!(v == last[i]))
+            set[m.vars[i].name] = json_value(v);
+        }
+        if (!set.empty()) events.push_back(Json{{"at", tick}, {"set", set}});
+      },
+      [&](std::uint64_t, NodeStatus) {
+        for (std::size_t i = 0; i < m.vars.size(); ++i)
+          last[i] = m.engine->blackboard().value(m.vars[i].slot);
+      });
+  m.choice->recorder = nullptr;
+  Json s = Json::object();
+  s["description"] = "Counterexample of " + p.requirement->id +
+                     " found by uabt prove: violated at tick " + std::to_string(f.tick);
+  s["max_ticks"] = f.tick;
+  s["initial"] = initial;
+  s["actions"] = recorder.actions(f.tick);
+  if (!events.empty()) s["events"] = events;
+  return s.dump(2) + "\n";
+}
+
+// Runs the counterexample on the runtime's simulated world (what `uabt run` does) with the
+// monitoring stage's own monitor; it must violate the property first at the same tick.
+Counterexample replay(const Model& m, const Property& p, const Finding& f, std::string scenario) {
+  Counterexample cex;
+  cex.tick = f.tick;
+  cex.scenario = std::move(scenario);
+  runtime::Scenario parsed = runtime::parse_scenario(cex.scenario, "counterexample.json");
+  std::vector<bt::NodeModel> models;
+  if (m.mission.nodes) models = *m.mission.nodes;
+  runtime::Runner runner(m.doc, std::move(parsed), runtime::RunOptions{}, models);
+  monitor::Variables variables;
+  monitor::Symbols symbols;
+  Observables obs(runner.engine(), m.mission, m.state_names, variables, symbols);
+  runner.engine().add_observer(&obs);
+  std::string reason;
+  auto monitor = monitor::RequirementMonitor::compile(
+      *p.requirement, [&](const std::string& n) { return obs.resolve(n); }, std::nullopt, reason);
+  if (!monitor) throw ProveError("internal error: replaying " + p.requirement->id + ": " + reason);
+  std::vector<monitor::Val> frame;
+  std::uint64_t first = 0;
+  for (std::uint64_t t = 1; t <= f.tick && first == 0; ++t) {
+    obs.begin_tick();
+    const std::size_t log_before = runner.world().log().size();
+    const NodeStatus root = runner.step();
+    if (runner.error())
+      throw ProveError("internal error: the counterexample of " + p.requirement->id +
+                       " stops at tick " + std::to_string(t) + " on " + runner.error()->message);
+    obs.fill(frame);
+    const bool holds = monitor->step(frame);
+    if (monitor->failed())
+      throw ProveError("internal error: replaying " + p.requirement->id + ": " + monitor->error());
+    TickRow row;
+    row.tick = t;
+    row.root = runtime::status_name(root);
+    for (int slot : monitor->variables())
+      row.values.emplace_back(variables.name(slot), monitor::value_text(frame[slot], symbols));
+    const auto& log = runner.world().log();
+    for (std::size_t i = log_before; i < log.size(); ++i) {
+      if (log[i].event == runtime::LeafEvent::condition) continue;
+      std::string what = log[i].event == runtime::LeafEvent::action_finished
+                             ? (log[i].status == NodeStatus::success ? "success" : "failure")
+                             : runtime::leaf_event_name(log[i].event);
+      row.actions.push_back(log[i].leaf + " " + what);
+    }
+    cex.rows.push_back(std::move(row));
+    if (!holds && (monitor->final_violation() || runner.done())) first = t;
+    if (runner.done() && first == 0) break;
+  }
+  if (first != f.tick)
+    throw ProveError("internal error: the counterexample of " + p.requirement->id +
+                     " violates it at tick " + std::to_string(f.tick) +
+                     " in the model but its replay " +
+                     (first == 0 ? std::string("does not violate it")
+                                 : "violates it at tick " + std::to_string(first)));
+  return cex;
+}
+
+}  // namespace
+
+Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
+             const Options& options) {
+  if (options.engine != "auto" && options.engine != "explicit")
+    throw ProveError("engine '" + options.engine +
+                     "' is not available: this build has the explicit-state engine only");
+  Model model(mission, compiled, world);
+  const SearchResult search = explore(model, options);
+  Result r;
+  r.engine = "explicit";
+  r.states = search.states;
+  r.transitions = search.transitions;
+  r.depth = search.depth;
+  r.complete = search.complete;
+  if (search.tick_error)
+    r.notes.push_back("a reachable tick stops with an error: " + *search.tick_error);
+  for (std::size_t i = 0; i < model.properties.size(); ++i) {
+    const Property& p = model.properties[i];
+    if (p.assumption) continue;
+    Answer a;
+    a.requirement = p.requirement->id;
+    a.text = p.requirement->text;
+    a.location = p.requirement->location;
+    if (!p.layout) {
+      a.verdict = Verdict::unsupported;
+      a.reason = p.unsupported;
+    } else if (const auto& f = search.violations[i]) {
+      a.verdict = Verdict::violated;
+      a.depth = f->tick;
+      a.counterexample = replay(model, p, *f, scenario_of(model, p, *f));
+    } else if (search.complete) {
+      a.verdict = Verdict::proved;
+      a.depth = search.depth;
+    } else {
+      a.verdict = Verdict::bounded;
+      a.depth = search.depth;
+    }
+    r.answers.push_back(std::move(a));
+  }
+  return r;
+}
+
+}  // namespace uabt::prove

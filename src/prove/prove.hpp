@@ -1,0 +1,80 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/location.hpp"
+#include "bt/tree.hpp"
+#include "load/mission.hpp"
+#include "prove/world_model.hpp"
+
+namespace uabt::prove {
+
+// Per guarantee (DESIGN §10): proved for every depth, violated with a counterexample, bounded
+// (no violation up to the depth explored, nothing proved), or not checked (why in `reason`).
+enum class Verdict { proved, violated, bounded, unsupported };
+const char* verdict_name(Verdict v);
+
+// One tick of a counterexample as its replay saw it: the root's status and the values the
+// property reads, plus what the actions did.
+struct TickRow {
+  std::uint64_t tick = 0;
+  std::string root;
+  std::vector<std::pair<std::string, std::string>> values;
+  std::vector<std::string> actions;  // "Drill started", "Drill failure"
+};
+
+struct Counterexample {
+  std::uint64_t tick = 0;     // the tick at which the property is violated
+  std::string scenario;       // DESIGN §8 scenario JSON that replays it (`uabt run --scenario`)
+  std::vector<TickRow> rows;  // ticks 1..tick
+};
+
+struct Answer {
+  std::string requirement;
+  std::string text;  // the requirement as written
+  SourceLocation location;
+  Verdict verdict = Verdict::unsupported;
+  std::string reason;
+  std::uint64_t depth = 0;  // ticks explored (bounded), or the violation's tick
+  std::optional<Counterexample> counterexample;
+};
+
+struct Options {
+  std::uint64_t depth = 0;             // 0: until every reachable state is explored
+  std::size_t max_states = 2'000'000;  // beyond it the answer is bounded
+  std::string engine = "auto";         // auto | explicit
+};
+
+struct Result {
+  std::vector<Answer> answers;  // one per guarantee, file order
+  std::string engine;
+  std::uint64_t states = 0, transitions = 0;
+  std::uint64_t depth = 0;  // deepest tick explored
+  bool complete = false;    // every reachable state was explored
+  std::vector<std::string> notes;
+  bool passed() const;  // every guarantee proved
+};
+
+// A mission prove cannot model (a real variable, an unbounded integer, a port read from the
+// blackboard, a world.json effect that writes an undeclared name), or an internal
+// disagreement between a counterexample and its replay.
+class ProveError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Model-checks every guarantee of `mission` on `compiled` (the gate's compiled tree) in the
+// world `world` allows. Every counterexample is replayed on the runtime's simulated world
+// before it is returned.
+Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
+             const Options& options);
+
+// True when the mission states at least one guarantee (a requirement that is neither a
+// selection requirement nor about the Environment).
+bool has_guarantees(const load::Mission& mission);
+
+}  // namespace uabt::prove

@@ -1,0 +1,57 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "base/location.hpp"
+#include "fretish/expr.hpp"
+#include "runtime/status.hpp"
+
+namespace uabt::prove {
+
+// What an action may do (world.json, DESIGN §10): run for `min_ticks`..`max_ticks` ticks
+// (RUNNING before), end with one of `results`, and then run its effect script.
+struct ActionContract {
+  std::string name;  // as world.json keys it: Drill, IsArmInPosition(function=drilling)
+  std::int64_t min_ticks = 1, max_ticks = 1;
+  std::vector<runtime::NodeStatus> results;  // success and/or failure
+  std::string on_success, on_failure;        // BT.CPP scripts, "" for none
+  SourceLocation location;
+};
+
+// world.json: {"initial": "<FRETISH expression>", "actions": {"Drill": {"ticks": [5, 30],
+// "results": ["success", "failure"], "on_success": "IsDug = true"}}}. Without a file the
+// world is unconstrained: every initial state of the domain, every action free.
+struct WorldModel {
+  std::string file;          // displayed path, "" without a world.json
+  fretish::ExprPtr initial;  // nullptr: every state of the domain
+  std::map<std::string, ActionContract, std::less<>> actions;
+
+  const ActionContract* find(std::string_view qualified, std::string_view plain) const;
+};
+
+// A world.json that is not valid JSON, not of the shape above, or whose scripts or initial
+// expression do not parse. The message starts with "file:line:col: error: ".
+class WorldError : public std::runtime_error {
+ public:
+  WorldError(SourceLocation where, const std::string& message)
+      : std::runtime_error(where.file + ":" + std::to_string(where.line) + ":" +
+                           std::to_string(where.column) + ": error: " + message),
+        location(std::move(where)),
+        text(message) {}
+  SourceLocation location;
+  std::string text;
+};
+
+WorldModel parse_world(std::string_view text, const std::string& file);
+WorldModel load_world(const std::filesystem::path& path, const std::string& display);
+
+// The names a script assigns (`x = …`, `x := …`, `x += …`), in order: the state an effect
+// writes.
+std::vector<std::string> assigned_names(std::string_view script);
+
+}  // namespace uabt::prove

@@ -1,0 +1,78 @@
+#include "runtime/engine_state.hpp"
+
+#include <cstring>
+
+#include "runtime/core.hpp"
+
+namespace uabt::runtime {
+
+EngineState EngineState::save(const Engine& engine) {
+  const detail::Core& c = *engine.core_;
+  EngineState s;
+  s.status.reserve(c.nodes.size());
+  s.counters.reserve(3 * c.nodes.size());
+  for (const detail::RtNode& n : c.nodes) {
+    s.status.push_back(n.status);
+    s.counters.insert(s.counters.end(), {n.a, n.b, n.c});
+  }
+  s.child_done = c.child_done;
+  s.values.reserve(c.bb.slot_count());
+  for (SlotId slot = 0; slot < c.bb.slot_count(); ++slot) s.values.push_back(c.bb.value(slot));
+  s.wake_up = c.wake_up;
+  s.wake_up_node = c.wake_up_node;
+  s.tick = c.tick;
+  s.last_result = c.last_result;
+  return s;
+}
+
+void EngineState::restore(Engine& engine) const {
+  detail::Core& c = *engine.core_;
+  for (std::size_t i = 0; i < c.nodes.size() && i < status.size(); ++i) {
+    c.nodes[i].status = status[i];
+    c.nodes[i].a = counters[3 * i];
+    c.nodes[i].b = counters[3 * i + 1];
+    c.nodes[i].c = counters[3 * i + 2];
+  }
+  c.child_done = child_done;
+  // Slots created after the save (a script's first write) go back to empty.
+  for (SlotId slot = 0; slot < c.bb.slot_count(); ++slot)
+    c.bb.value(slot) = slot < values.size() ? values[slot] : ScriptValue{};
+  c.wake_up = wake_up;
+  c.wake_up_node = wake_up_node;
+  c.tick = tick;
+  c.last_result = last_result;
+}
+
+namespace {
+
+template <typename T>
+void put(std::string& out, const T& v) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &v, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+}  // namespace
+
+void EngineState::append_key(std::string& out) const {
+  for (NodeStatus s : status) out += static_cast<char>(s);
+  for (std::int32_t v : counters) put(out, v);
+  out.append(reinterpret_cast<const char*>(child_done.data()), child_done.size());
+  for (const ScriptValue& v : values) {
+    out += static_cast<char>(v.kind);
+    switch (v.kind) {
+      case ScriptValue::Kind::empty: break;
+      case ScriptValue::Kind::boolean: out += static_cast<char>(v.boolean); break;
+      case ScriptValue::Kind::integer: put(out, v.integer); break;
+      case ScriptValue::Kind::real: put(out, v.real); break;
+      case ScriptValue::Kind::string:
+        put(out, static_cast<std::uint32_t>(v.text.size()));
+        out += v.text;
+        break;
+    }
+  }
+  out += static_cast<char>(wake_up);
+  out += static_cast<char>(last_result);
+}
+
+}  // namespace uabt::runtime

@@ -1,0 +1,60 @@
+#pragma once
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "base/diagnostics.hpp"
+#include "bt/xml_io.hpp"
+#include "gate/gate.hpp"
+#include "prove/outcome.hpp"
+#include "temp_mission.hpp"
+#include "test_support.hpp"
+
+namespace uabt::testing {
+
+// Gates a mission directory and proves its guarantees on the compiled tree.
+inline prove::Result prove_dir(const std::filesystem::path& dir, prove::Options options = {},
+                               compile::SelectionStyle style = compile::SelectionStyle::sequence) {
+  std::string error;
+  auto mission = load::load_mission(dir, {}, error);
+  EXPECT_TRUE(mission) << error;
+  gate::Options gate_options;
+  gate_options.compile.selection = style;
+  gate::Outcome outcome = gate::run_gate(std::move(*mission), gate_options, "test");
+  EXPECT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+  const prove::WorldModel world = prove::mission_world(*outcome.mission);
+  return prove::prove(*outcome.mission, *doc, world, options);
+}
+
+inline const prove::Answer& answer(const prove::Result& r, const std::string& id) {
+  for (const auto& a : r.answers)
+    if (a.requirement == id) return a;
+  static prove::Answer none;
+  ADD_FAILURE() << "no answer for " << id;
+  return none;
+}
+
+inline std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The files of a shipped mission, to vary one of them in a temporary copy.
+inline std::map<std::string, std::string> mission_files(const std::string& name) {
+  std::map<std::string, std::string> files;
+  const auto root = mission_dir(name);
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root))
+    if (e.is_regular_file())
+      files[std::filesystem::relative(e.path(), root).generic_string()] = read_all(e.path());
+  return files;
+}
+
+}  // namespace uabt::testing

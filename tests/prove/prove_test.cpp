@@ -1,0 +1,249 @@
+// uabt prove on whole missions: verdicts, shortest counterexamples that replay, bounds.
+#include <nlohmann/json.hpp>
+
+#include "prove_support.hpp"
+#include "runtime/runner.hpp"
+
+namespace uabt::testing {
+namespace {
+
+using prove::Verdict;
+
+const char* kFixedRotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
+  <BehaviorTree ID="rotary">
+    <Sequence>
+      <Fallback>
+        <IsBitCool/>
+        <CoolDown/>
+      </Fallback>
+      <Drill mode="rotary"/>
+    </Sequence>
+  </BehaviorTree>
+</root>
+)";
+
+TEST(Prove, BrokenAlternativeIsViolatedAtTheFirstTick) {
+  const prove::Result r = prove_dir(mission_dir("sample_drilling"));
+  EXPECT_TRUE(r.complete);
+  ASSERT_EQ(r.answers.size(), 2u);
+  const prove::Answer& cool = answer(r, "CoolBit");
+  ASSERT_EQ(cool.verdict, Verdict::violated);
+  ASSERT_TRUE(cool.counterexample);
+  // Shortest: the rotary alternative starts drilling with a hot bit in the very first tick.
+  EXPECT_EQ(cool.counterexample->tick, 1u);
+  ASSERT_EQ(cool.counterexample->rows.size(), 1u);
+  const auto& row = cool.counterexample->rows[0];
+  EXPECT_EQ(row.root, "RUNNING");
+  EXPECT_EQ(row.values, (std::vector<std::pair<std::string, std::string>>{{"Drill.running", "true"},
+                                                                          {"IsBitCool", "false"}}));
+  EXPECT_EQ(row.actions, std::vector<std::string>{"Drill started"});
+  const auto scenario = nlohmann::json::parse(cool.counterexample->scenario);
+  EXPECT_EQ(scenario["max_ticks"], 1);
+  EXPECT_EQ(scenario["initial"]["HardRock"], false);
+  EXPECT_EQ(scenario["initial"]["IsBitCool"], false);
+  EXPECT_EQ(answer(r, "OneTool").verdict, Verdict::proved);
+}
+
+TEST(Prove, RepairedAlternativeIsProved) {
+  auto files = mission_files("sample_drilling");
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  EXPECT_TRUE(r.complete);
+  EXPECT_TRUE(r.passed());
+  EXPECT_EQ(answer(r, "CoolBit").verdict, Verdict::proved);
+}
+
+TEST(Prove, ADepthBoundGivesBoundedNotProved) {
+  auto files = mission_files("sample_drilling");
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+  TempMission m(files);
+  prove::Options options;
+  options.depth = 2;
+  const prove::Result r = prove_dir(m.dir(), options);
+  EXPECT_FALSE(r.complete);
+  EXPECT_EQ(answer(r, "CoolBit").verdict, Verdict::bounded);
+  EXPECT_EQ(answer(r, "CoolBit").depth, 2u);
+  const auto findings = prove::findings_of(r);
+  ASSERT_EQ(findings.size(), 2u);
+  EXPECT_EQ(findings[0].check, "prove-bounded");
+  EXPECT_EQ(findings[0].location.line, 5);
+}
+
+// Only a later tick can break this one: the second drilling cycle on a hot bit.
+TEST(Prove, CounterexampleIsTheShortest) {
+  auto files = mission_files("sample_drilling");
+  files["requirements.fret"] =
+      "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
+      "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
+      "Cool: Mission shall always satisfy Drill.running -> IsBitCool\n";
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+  // The percussive alternative drills without cooling: a hot bit only exists after a drill.
+  files["alternatives/drilling/percussive.xml"] =
+      alternative_tree("percussive", "<Drill mode=\"percussive\"/>");
+  files["world.json"] =
+      R"({"initial": "IsBitCool", "actions": {"Drill": {"ticks": 2, "results": ["success"],
+         "on_success": "IsBitCool = false"}, "CoolDown": {"ticks": 1, "results": ["success"],
+         "on_success": "IsBitCool = true"}}})";
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  const prove::Answer& a = answer(r, "Cool");
+  ASSERT_EQ(a.verdict, Verdict::violated);
+  // Tick 1: the first drill starts on a cool bit. Tick 2: it ends and heats the bit, and
+  // Repeat's wake-up re-tick starts the next cycle within the same tick: on HardRock the
+  // percussive alternative drills the hot bit.
+  EXPECT_EQ(a.counterexample->tick, 2u);
+  const auto scenario = nlohmann::json::parse(a.counterexample->scenario);
+  EXPECT_EQ(scenario["actions"]["Drill"]["runs"][0]["ticks"], 2);
+  EXPECT_EQ(scenario["actions"]["Drill"]["runs"][0]["effects"]["IsBitCool"], false);
+  ASSERT_TRUE(scenario.contains("events"));
+  EXPECT_EQ(scenario["events"][0]["at"], 2);
+  EXPECT_EQ(scenario["events"][0]["set"]["HardRock"], true);
+}
+
+// The counterexample is a scenario the runtime's own runner plays to the same state.
+TEST(Prove, CounterexampleRunsOnTheRuntime) {
+  const prove::Result r = prove_dir(mission_dir("sample_drilling"));
+  const prove::Answer& a = answer(r, "CoolBit");
+  ASSERT_TRUE(a.counterexample);
+  runtime::Scenario s = runtime::parse_scenario(a.counterexample->scenario, "cex.json");
+  std::string error;
+  auto mission = load::load_mission(mission_dir("sample_drilling"), {}, error);
+  gate::Outcome outcome = gate::run_gate(std::move(*mission), {}, "test");
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+  runtime::Runner runner(*doc, s);
+  const runtime::RunResult run = runner.run();
+  EXPECT_EQ(run.ticks, 1u);
+  EXPECT_EQ(run.verdict, "timeout");
+  const runtime::ScriptValue* cool = runner.engine().blackboard().get("IsBitCool");
+  ASSERT_NE(cool, nullptr);
+  EXPECT_EQ(cool->to_string(), "false");
+  ASSERT_FALSE(run.log.empty());
+  EXPECT_EQ(run.log.back().leaf, "Drill");
+  EXPECT_EQ(run.log.back().event, runtime::LeafEvent::action_started);
+}
+
+// An Environment requirement is an assumption: runs that break it are not runs of the world.
+TEST(Prove, EnvironmentRequirementsRestrictTheWorld) {
+  auto files = mission_files("sample_drilling");
+  // A drill that never fails: the percussive alternative then never falls through to rotary.
+  files["world.json"] = R"({"initial": "!IsBitCool", "actions": {
+      "Drill": {"ticks": [2, 3], "results": ["success"], "on_success": "IsBitCool = false"},
+      "CoolDown": {"ticks": [1, 2], "results": ["success"], "on_success": "IsBitCool = true"}}})";
+  {
+    TempMission m(files);
+    EXPECT_EQ(answer(prove_dir(m.dir()), "CoolBit").verdict, Verdict::violated);
+  }
+  files["requirements.fret"] += "HardOnly: Environment shall always satisfy HardRock\n";
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  EXPECT_EQ(answer(r, "CoolBit").verdict, Verdict::proved);
+  EXPECT_EQ(r.answers.size(), 2u);  // the assumption is not a guarantee
+}
+
+// A failing drill heats the bit and makes the percussive branch fail; the selection Fallback
+// then falls through to the default, which drills the hot bit (DESIGN §5's fall-through).
+TEST(Prove, FallThroughToTheDefaultIsFound) {
+  auto files = mission_files("sample_drilling");
+  files["requirements.fret"] += "HardOnly: Environment shall always satisfy HardRock\n";
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  const prove::Answer& a = answer(r, "CoolBit");
+  ASSERT_EQ(a.verdict, Verdict::violated);
+  ASSERT_EQ(a.counterexample->rows.size(), 2u);
+  EXPECT_EQ(a.counterexample->rows[1].actions,
+            (std::vector<std::string>{"Drill failure", "Drill started"}));
+}
+
+TEST(Prove, UnreadablePropertyIsNotChecked) {
+  auto files = mission_files("sample_drilling");
+  files["requirements.fret"] += "Odd: Mission shall always satisfy Nowhere.success\n";
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  EXPECT_EQ(answer(r, "Odd").verdict, Verdict::unsupported);
+  EXPECT_NE(answer(r, "Odd").reason.find("Nowhere.success"), std::string::npos)
+      << answer(r, "Odd").reason;
+  EXPECT_FALSE(r.passed());
+}
+
+TEST(Prove, WholeDomainWithoutWorldFile) {
+  auto files = mission_files("sample_drilling");
+  files.erase("world.json");
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  // Unconstrained actions: Drill may run while the bit is hot, and may end at once.
+  EXPECT_EQ(answer(r, "CoolBit").verdict, Verdict::violated);
+  EXPECT_EQ(answer(r, "OneTool").verdict, Verdict::proved);
+}
+
+TEST(Prove, GateFindingsAtTheRequirement) {
+  std::string error;
+  auto mission = load::load_mission(mission_dir("sample_drilling"), {}, error);
+  gate::Outcome outcome = gate::run_gate(std::move(*mission), {}, "test");
+  ASSERT_TRUE(outcome.passed());
+  prove::add_proofs(outcome, {});
+  EXPECT_FALSE(outcome.passed());
+  ASSERT_EQ(outcome.report.findings.size(), 1u);
+  const Finding& f = outcome.report.findings[0];
+  EXPECT_EQ(f.check, "prove-violated");
+  EXPECT_EQ(f.location.file, "requirements.fret");
+  EXPECT_EQ(f.location.line, 5);
+  EXPECT_EQ(f.requirements, std::vector<std::string>{"CoolBit"});
+  EXPECT_EQ(outcome.report.stages.back(), "prove");
+}
+
+TEST(Prove, MissionWithoutGuaranteesIsLeftAlone) {
+  std::string error;
+  auto mission = load::load_mission(mission_dir("msl_curiosity_paper"), {}, error);
+  gate::Outcome outcome = gate::run_gate(std::move(*mission), {}, "test");
+  const auto before = outcome.report.findings.size();
+  prove::add_proofs(outcome, {});
+  EXPECT_EQ(outcome.report.findings.size(), before);
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// HoldOnUnknown holds only with the reactive selection; ArmClosed is violated in both styles
+// (with one-tick actions the drive and the opening of the arm succeed in the same tick).
+TEST(ProveMsl, ShippedGuaranteesAnswered) {
+  const prove::Result r = prove_dir(mission_dir("msl_curiosity"));
+  EXPECT_TRUE(r.complete);
+  ASSERT_EQ(r.answers.size(), 4u);
+  for (const auto& a : r.answers) {
+    const bool violated = a.requirement == "HoldOnUnknown" || a.requirement == "ArmClosed";
+    EXPECT_EQ(a.verdict, violated ? Verdict::violated : Verdict::proved) << a.requirement;
+  }
+  const prove::Result reactive =
+      prove_dir(mission_dir("msl_curiosity"), {}, compile::SelectionStyle::reactive);
+  EXPECT_EQ(answer(reactive, "HoldOnUnknown").verdict, Verdict::proved);
+  EXPECT_EQ(answer(reactive, "ArmClosed").verdict, Verdict::violated);
+}
+
+// The paper's sequence-style selection keeps running the alternative it started when the
+// terrain changes; the reactive style re-checks the guards every tick.
+TEST(ProveMsl, TerrainChangeNeedsTheReactiveStyle) {
+  auto files = mission_files("msl_curiosity");
+  files["requirements.fret"] +=
+      "RocksDrive: In navigation mode whenever OnRocks Mission shall immediately satisfy "
+      "navigation.selected = on_rocks\n";
+  TempMission m(files);
+  const prove::Result sequence = prove_dir(m.dir());
+  const prove::Answer& a = answer(sequence, "RocksDrive");
+  ASSERT_EQ(a.verdict, Verdict::violated);
+  ASSERT_EQ(a.counterexample->tick, 2u);
+  const auto& last = a.counterexample->rows.back().values;
+  EXPECT_EQ(
+      last,
+      (std::vector<std::pair<std::string, std::string>>{
+          {"navigation", "true"}, {"OnRocks", "true"}, {"navigation.selected", "hold_position"}}));
+  const prove::Result reactive = prove_dir(m.dir(), {}, compile::SelectionStyle::reactive);
+  EXPECT_EQ(answer(reactive, "RocksDrive").verdict, Verdict::proved);
+}
+
+}  // namespace
+}  // namespace uabt::testing
