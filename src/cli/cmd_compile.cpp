@@ -12,7 +12,7 @@ namespace uabt::cli {
 
 void register_compile(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, output, selection = "sequence", nodes;
+    std::string mission, output, selection, nodes;
     int bt_format = 4;
   };
   auto args = std::make_shared<Args>();
@@ -24,7 +24,9 @@ void register_compile(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", args->output, "output XML file (default: stdout)");
   cmd->add_option("--bt-format", args->bt_format, "BehaviorTree.CPP XML format")
       ->check(CLI::IsMember({3, 4}));
-  cmd->add_option("--selection", args->selection, "selector style")
+  cmd->add_option("--selection", args->selection,
+                  "selector style of every adaptable node (default: its own selection attribute, "
+                  "else sequence)")
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
@@ -38,7 +40,7 @@ void register_compile(CLI::App& app, int& exit_code) {
     }
     compile::Options options;
     options.bt_format = args->bt_format;
-    options.selection = selection_style(args->selection);
+    apply_selection(args->selection, options);
     compile::Result result = compile::compile_mission(*mission, options);
     std::vector<Finding> shown = mission->findings;
     shown.insert(shown.end(), result.findings.begin(), result.findings.end());

@@ -14,8 +14,8 @@ namespace uabt::cli {
 
 void register_gate(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, source_root, out = "uabt-report", nodes, selection = "sequence",
-                                      format = "text", output, uplink;
+    std::string mission, source_root, out = "uabt-report", nodes, selection, format = "text",
+                                      output, uplink;
     bool allow_overlap = false;
     unsigned timeout_ms = 10000;
   };
@@ -28,7 +28,9 @@ void register_gate(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
+  cmd->add_option("--selection", args->selection,
+                  "selector style of every adaptable node (default: its own selection attribute, "
+                  "else sequence)")
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
@@ -62,7 +64,7 @@ void register_gate(CLI::App& app, int& exit_code) {
     options.verify.allow_overlap = args->allow_overlap;
     options.verify.timeout_ms = args->timeout_ms;
     options.conform.timeout_ms = args->timeout_ms;
-    options.compile.selection = selection_style(args->selection);
+    apply_selection(args->selection, options.compile);
     gate::Outcome outcome =
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());

@@ -34,8 +34,7 @@ std::string summary_line(const prove::Result& r) {
 // checked, or the mission does not compile), 2 on a bad command line or world.json.
 void register_prove(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, format = "text", output, counterexamples, selection = "sequence",
-                         engine = "auto";
+    std::string mission, format = "text", output, counterexamples, selection, engine = "auto";
     std::uint64_t depth = 0;
   };
   auto args = std::make_shared<Args>();
@@ -48,7 +47,9 @@ void register_prove(CLI::App& app, int& exit_code) {
                   "explore runs of up to K ticks (default: until every reachable state is seen)");
   cmd->add_option("--engine", args->engine, "auto | explicit")
       ->check(CLI::IsMember({"auto", "explicit", "symbolic"}));
-  cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
+  cmd->add_option("--selection", args->selection,
+                  "selector style of every adaptable node (default: its own selection attribute, "
+                  "else sequence)")
       ->check(CLI::IsMember({"sequence", "reactive"}));
   cmd->add_option("--counterexamples", args->counterexamples,
                   "write each counterexample as DIR/<requirement>.json (a runtime scenario)");
@@ -62,9 +63,7 @@ void register_prove(CLI::App& app, int& exit_code) {
       return;
     }
     gate::Options gate_options;
-    gate_options.compile.selection = args->selection == "reactive"
-                                         ? compile::SelectionStyle::reactive
-                                         : compile::SelectionStyle::sequence;
+    apply_selection(args->selection, gate_options.compile);
     gate::Outcome outcome = gate::run_gate(std::move(*mission), gate_options, tool_version());
     if (outcome.compiled_xml.empty()) {
       std::cerr << "uabt: the mission does not compile; nothing to prove\n"
@@ -112,11 +111,14 @@ void register_prove(CLI::App& app, int& exit_code) {
       write_findings(input, "sarif", args->output);
       return;
     }
-    std::string text = format_text(input.findings);
+    // Files named as opened from the current directory, as the gate names them.
+    TextOptions text_options;
+    text_options.path_prefix = path_prefix_for(outcome.mission->dir);
+    std::string text = format_text(input.findings, text_options);
     for (const auto& a : result.answers)
       if (a.verdict == prove::Verdict::proved)
-        text += a.location.file + ":" + std::to_string(a.location.line) + ":" +
-                std::to_string(a.location.column) + ": note: guarantee '" + a.requirement +
+        text += text_options.path_prefix + a.location.file + ":" + std::to_string(a.location.line) +
+                ":" + std::to_string(a.location.column) + ": note: guarantee '" + a.requirement +
                 "' is proved: " + a.text + "\n";
     for (const auto& n : result.notes) text += "note: " + n + "\n";
     text += summary_line(result) + "\n";

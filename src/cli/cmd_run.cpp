@@ -50,7 +50,7 @@ std::optional<std::pair<std::int64_t, std::string>> parse_uplink_argument(
 // start (the mission does not pass the gate, the scenario does not fit the mission).
 void register_run(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, scenario, trace, selection = "sequence", trace_level = "events";
+    std::string mission, scenario, trace, selection, trace_level = "events";
     std::vector<std::string> uplinks;
     std::int64_t max_ticks = 0;
     bool smart_selection = false, stats = false;
@@ -69,7 +69,9 @@ void register_run(CLI::App& app, int& exit_code) {
       "TICK:DIR — an uplink package (a path from the current directory) arriving before tick "
       "TICK");
   cmd->add_option("--trace", args->trace, "write the trace as JSON lines to FILE");
-  cmd->add_option("--selection", args->selection, "selector style of the compiled tree")
+  cmd->add_option("--selection", args->selection,
+                  "selector style of every adaptable node (default: its own selection attribute, "
+                  "else sequence)")
       ->check(CLI::IsMember({"sequence", "reactive"}));
   cmd->add_option("--max-ticks", args->max_ticks,
                   "stop after this many ticks, verdict timeout (default: the scenario's)")
@@ -99,9 +101,7 @@ void register_run(CLI::App& app, int& exit_code) {
       options.max_ticks = args->max_ticks;
       options.trace_nodes = args->trace_level == "nodes";
       options.smart_selection = args->smart_selection;
-      options.gate.compile.selection = args->selection == "reactive"
-                                           ? compile::SelectionStyle::reactive
-                                           : compile::SelectionStyle::sequence;
+      apply_selection(args->selection, options.gate.compile);
       runtime::BehaviorTreeManager manager(args->mission, std::move(scenario), options);
       for (const auto& [tick, package] : uplinks) manager.add_uplink(tick, package);
       runtime::ManagerRun run = manager.run();

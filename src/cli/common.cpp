@@ -39,4 +39,10 @@ compile::SelectionStyle selection_style(const std::string& name) {
   return compile::SelectionStyle::sequence;
 }
 
+void apply_selection(const std::string& name, compile::Options& options) {
+  if (name.empty()) return;
+  options.selection = selection_style(name);
+  options.selection_forced = true;
+}
+
 }  // namespace uabt::cli

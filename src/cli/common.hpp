@@ -28,6 +28,9 @@ void relocate_findings(std::vector<Finding>& findings, const std::string& from,
 
 // The compiler's selector style named by --selection (sequence, reactive, optimized).
 compile::SelectionStyle selection_style(const std::string& name);
+// --selection NAME: the style of every adaptable node; "" (not given): each node's own
+// `<Adaptable selection=…>`, else sequence.
+void apply_selection(const std::string& name, compile::Options& options);
 
 // Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
 void emit(const std::string& path, const std::string& content);

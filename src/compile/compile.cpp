@@ -75,11 +75,28 @@ void trace_guard(const bt::Node& node, const std::string& path, const std::strin
     trace_guard(node.children[i], child_path(path, node.children[i], i), tree_id, req, trace);
 }
 
+}  // namespace
+
+SelectionStyle selection_style_of(const load::Mission& m, const std::string& adaptable,
+                                  const Options& options) {
+  if (options.selection_forced) return options.selection;
+  for (const auto& site : m.adaptables) {
+    if (site.id != adaptable || site.selection.empty()) continue;
+    if (site.selection == "reactive") return SelectionStyle::reactive;
+    if (site.selection == "optimized") return SelectionStyle::optimized;
+    return SelectionStyle::sequence;
+  }
+  return options.selection;
+}
+
+namespace {
+
 // Fig. 4: Fallback[Sequence[guard_i, SubTree alt_i] …] in priority order, default last.
 bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
                            const Options& options, std::vector<TraceEntry>& trace,
                            std::vector<Finding>& findings, std::vector<SelectionStats>& stats) {
-  const bool reactive = options.selection == SelectionStyle::reactive;
+  const SelectionStyle style = selection_style_of(m, adaptable, options);
+  const bool reactive = style == SelectionStyle::reactive;
   const std::size_t trace_start = trace.size();
   const std::size_t findings_start = findings.size();
   bt::TreeDef tree;
@@ -96,7 +113,7 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
     branch.set_attribute("name", req->id);
     if (req->guard) {
       try {
-        branch.children.push_back(guard_to_tree(*req->guard, m.domain, options.selection));
+        branch.children.push_back(guard_to_tree(*req->guard, m.domain, style));
       } catch (const UnsupportedGuard& e) {
         Finding f = make_finding("compile-unsupported", "requirement " + req->id + ": " + e.what(),
                                  req->guard_location);
@@ -141,7 +158,7 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
                      "selected_alt = " + req->alternative, req->alternative_location});
     tree.root.children.push_back(std::move(branch));
   }
-  if (options.selection == SelectionStyle::optimized && findings.size() == findings_start) {
+  if (style == SelectionStyle::optimized && findings.size() == findings_start) {
     std::vector<TraceEntry> decision_trace;
     SelectionStats& node_stats = stats.emplace_back();
     if (auto root =

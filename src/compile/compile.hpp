@@ -17,7 +17,10 @@ namespace uabt::compile {
 enum class SelectionStyle { sequence, reactive, optimized };
 
 struct Options {
+  // The style of adaptable nodes that declare none (`<Adaptable selection=…>`); with
+  // `selection_forced` (an explicit --selection), of every node.
   SelectionStyle selection = SelectionStyle::sequence;
+  bool selection_forced = false;
   int bt_format = 4;  // 3: refuse guards that need ScriptCondition
 };
 
@@ -48,6 +51,10 @@ struct Result {
   std::vector<Finding> findings;  // errors that stopped compilation (e.g. v3 + ScriptCondition)
   bool ok = false;
 };
+
+// The style `adaptable`'s selection is compiled in under `options`.
+SelectionStyle selection_style_of(const load::Mission& mission, const std::string& adaptable,
+                                  const Options& options);
 
 // Algorithm 1 + Fig. 4: every <Adaptable ID="A"/> becomes <SubTree ID="A" _autoremap="true"/>
 // and a selection tree A = Fallback[Sequence[guard_i, SubTree alt_i]...] in priority order.

@@ -103,7 +103,8 @@ std::string domain_text(const load::Mission& m) {
 void write_merged_mission(const load::Mission& m, const fs::path& dir) {
   std::error_code ec;
   // Only what an earlier merge wrote goes away, never a directory of the user's.
-  for (const char* name : {"mission.xml", "requirements.fret", "domain.fret", "nodes.xml"})
+  for (const char* name :
+       {"mission.xml", "requirements.fret", "domain.fret", "nodes.xml", "world.json"})
     fs::remove(dir / name, ec);
   fs::remove_all(dir / "alternatives", ec);
 
@@ -126,6 +127,9 @@ void write_merged_mission(const load::Mission& m, const fs::path& dir) {
   if (declares) write_file_atomically(dir / "domain.fret", domain_text(m));
   if (m.nodes && fs::is_regular_file(m.dir / "nodes.xml", ec))
     write_file_atomically(dir / "nodes.xml", read_or_throw(m.dir / "nodes.xml"));
+  // The world model the guarantees are proved in (an uplink does not change the world).
+  if (fs::is_regular_file(m.dir / "world.json", ec))
+    write_file_atomically(dir / "world.json", read_or_throw(m.dir / "world.json"));
 }
 
 }  // namespace uabt::gate

@@ -82,6 +82,35 @@ void check_policy(const bt::Node& node, AdaptableSite& site, const std::vector<A
   }
 }
 
+// selection="sequence|reactive|optimized"; one node id, one selection style.
+void check_selection(const bt::Node& node, AdaptableSite& site,
+                     const std::vector<AdaptableSite>& seen, std::vector<Finding>& findings) {
+  if (const std::string* style = node.attribute("selection")) {
+    if (*style == "sequence" || *style == "reactive" || *style == "optimized") {
+      site.selection = *style;
+    } else {
+      findings.push_back(make_finding(
+          "bt-structure",
+          "<Adaptable> selection=\"" + *style +
+              "\" is not a selection style: use \"sequence\" (the paper's Fig. 4: a running "
+              "alternative runs on), \"reactive\" (guards re-checked every tick) or "
+              "\"optimized\"",
+          site.location));
+    }
+  }
+  for (const auto& other : seen) {
+    if (other.id != site.id || other.selection == site.selection) continue;
+    Finding f = make_finding("bt-structure",
+                             "<Adaptable ID=\"" + site.id + "\"> has selection \"" +
+                                 site.selection + "\" here and \"" + other.selection +
+                                 "\" elsewhere: one node has one selection style",
+                             site.location);
+    f.adaptable = site.id;
+    findings.push_back(std::move(f));
+    break;
+  }
+}
+
 void collect_adaptables(const bt::Node& node, const std::string& tree_id, const std::string& file,
                         std::vector<AdaptableSite>& out, std::vector<Finding>& findings) {
   // Iterative: trees may be deep, and the loader must not overflow the stack.
@@ -91,8 +120,12 @@ void collect_adaptables(const bt::Node& node, const std::string& tree_id, const 
     stack.pop_back();
     if (n->tag == "Adaptable") {
       const std::string* id = n->attribute("ID");
-      AdaptableSite site{id ? *id : std::string(), tree_id, {file, n->line, n->column}};
+      AdaptableSite site;
+      site.id = id ? *id : std::string();
+      site.tree_id = tree_id;
+      site.location = {file, n->line, n->column};
       check_policy(*n, site, out, findings);
+      check_selection(*n, site, out, findings);
       out.push_back(std::move(site));
     }
     for (auto it = n->children.rbegin(); it != n->children.rend(); ++it) stack.push_back(&*it);

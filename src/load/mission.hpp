@@ -22,6 +22,9 @@ struct AdaptableSite {
   // DMN hit policy (DESIGN §11): "unique" (default: an overlap is an error) or "first" (an
   // overlap is a note, priority decides). Never written to the compiled tree.
   std::string policy = "unique";
+  // selection="sequence|reactive|optimized": how this node's selection is compiled (the
+  // mission's own choice; an explicit --selection overrides it). Empty: not declared.
+  std::string selection;
 };
 
 // Where an uplink put one requirement (or what it removed), and by which rule (DESIGN §11).

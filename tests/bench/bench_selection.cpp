@@ -25,6 +25,7 @@ using Clock = std::chrono::steady_clock;
 compile::Result compile_as(const load::Mission& m, compile::SelectionStyle style) {
   compile::Options options;
   options.selection = style;
+  options.selection_forced = true;
   return compile::compile_mission(m, options);
 }
 

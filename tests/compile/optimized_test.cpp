@@ -29,6 +29,7 @@ load::Mission load_clean(const std::filesystem::path& dir) {
 Result compile_with(const load::Mission& m, SelectionStyle style) {
   Options options;
   options.selection = style;
+  options.selection_forced = true;
   Result r = compile_mission(m, options);
   EXPECT_TRUE(r.ok) << format_text(r.findings);
   return r;

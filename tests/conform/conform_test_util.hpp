@@ -23,6 +23,7 @@ inline bt::Document compile_or_fail(const load::Mission& m, compile::SelectionSt
                                     int bt_format = 4) {
   compile::Options options;
   options.selection = style;
+  options.selection_forced = true;
   options.bt_format = bt_format;
   compile::Result r = compile::compile_mission(m, options);
   EXPECT_TRUE(r.ok) << m.name << ": compilation failed";

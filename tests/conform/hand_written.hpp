@@ -49,7 +49,7 @@ inline std::string msl_alternative_trees(const std::string& dust_speed = "2.0") 
          "        <IsTowardObject/>\n"
          "        <TurnRight angle=\"180\"/>\n"
          "      </Fallback>\n"
-         "      <MoveForward time=\"2\" speed=\"" +
+         "      <MoveForward name=\"drive\" time=\"2\" speed=\"" +
          dust_speed +
          "\"/>\n"
          "    </Sequence>\n"
@@ -69,7 +69,7 @@ inline std::string msl_alternative_trees(const std::string& dust_speed = "2.0") 
          "          <TurnLeft angle=\"180\"/>\n"
          "        </Fallback>\n"
          "      </Fallback>\n"
-         "      <MoveBackward time=\"10\" speed=\"0.4\"/>\n"
+         "      <MoveBackward name=\"drive\" time=\"10\" speed=\"0.4\"/>\n"
          "    </Sequence>\n"
          "  </BehaviorTree>\n"
          "  <BehaviorTree ID=\"hold_position\">\n"

@@ -181,8 +181,17 @@ TEST(Uplink, MudUplinkIsMergedAboveTheDefault) {
   options.uplinks.push_back(dir / "uplinks" / "on_mud");
   auto m = load_mission(dir, options, error);
   ASSERT_TRUE(m) << error;
-  ASSERT_EQ(m->findings.size(), 1u) << format_text(m->findings);
-  EXPECT_EQ(m->findings[0].check, "uplink-merge") << "the merge says where Req3 went";
+  // The merge says where Req3 went, and that HoldOnUnknown (restated for mud) replaced the
+  // mission's property of the same id.
+  ASSERT_EQ(m->findings.size(), 2u) << format_text(m->findings);
+  EXPECT_EQ(m->findings[0].check, "uplink-merge");
+  EXPECT_NE(m->findings[0].message.find("Req3"), std::string::npos);
+  EXPECT_EQ(m->findings[1].check, "uplink-merge");
+  EXPECT_NE(m->findings[1].message.find("HoldOnUnknown: replaces"), std::string::npos);
+  bool restated = false;
+  for (const auto& p : m->properties)
+    restated |= p.id == "HoldOnUnknown" && p.location.file == "uplinks/on_mud/requirements.fret";
+  EXPECT_TRUE(restated);
   auto selections = m->selections_for("navigation");
   ASSERT_EQ(selections.size(), 4u);
   EXPECT_EQ(selections[2]->id, "Req3");

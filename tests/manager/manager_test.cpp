@@ -15,6 +15,7 @@ ManagerRun run_scenario(const std::string& name, compile::SelectionStyle style,
   Scenario scenario = load_scenario(curiosity() / "scenarios" / (name + ".json"));
   ManagerOptions options;
   options.gate.compile.selection = style;
+  options.gate.compile.selection_forced = true;
   BehaviorTreeManager manager(curiosity(), std::move(scenario), options);
   for (const auto& [tick, dir] : uplinks) manager.add_uplink(tick, dir);
   return manager.run();

@@ -18,6 +18,7 @@ ManagerRun run_in(const std::filesystem::path& mission, const std::string& scena
                   compile::SelectionStyle style) {
   ManagerOptions options;
   options.gate.compile.selection = style;
+  options.gate.compile.selection_forced = true;
   BehaviorTreeManager manager(mission, load_scenario(mission / "scenarios" / scenario), options);
   return manager.run();
 }

@@ -23,6 +23,7 @@ struct Outcome {
 Outcome run(const std::filesystem::path& dir, Scenario scenario, SelectionStyle style, bool smart) {
   ManagerOptions options;
   options.gate.compile.selection = style;
+  options.gate.compile.selection_forced = true;
   options.smart_selection = smart;
   BehaviorTreeManager manager(dir, std::move(scenario), options);
   ManagerRun r = manager.run();

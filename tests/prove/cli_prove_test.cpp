@@ -3,6 +3,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "prove_support.hpp"
@@ -91,19 +93,37 @@ TEST(ProveCli, GateFailsOnAViolatedGuaranteeAndKeepsTheRejectedTree) {
 // msl_curiosity's ArmClosed is violated in every selection style: with one-tick actions the
 // drive and the opening of the arm succeed in the same tick. HoldOnUnknown holds only with the
 // reactive selection. The gate says so instead of passing.
-TEST(ProveCli, CuriosityGateReportsTheViolatedProperties) {
+// msl_curiosity declares a reactive selection: the gate proves its four guarantees. The paper's
+// sequence style lets a running drive run on over an unknown terrain: HoldOnUnknown is violated
+// (3 ticks) and the gate fails, keeping the tree as compiled.rejected.xml.
+TEST(ProveCli, CuriosityGateProvesItsGuaranteesAndRejectsTheSequenceStyle) {
   TempMission scratch({});
   const CliRun msl =
       run("gate " + mission_dir("msl_curiosity").string() + " --out " + scratch.dir().string());
-  EXPECT_EQ(msl.code, 1) << msl.out;
-  EXPECT_NE(msl.out.find("guarantee 'ArmClosed' is violated at tick 1"), std::string::npos)
-      << msl.out;
-  EXPECT_NE(msl.out.find("guarantee 'HoldOnUnknown' is violated at tick 3"), std::string::npos)
-      << msl.out;
-  const CliRun reactive =
-      run("prove " + mission_dir("msl_curiosity").string() + " --selection reactive");
-  EXPECT_NE(reactive.out.find("4 guarantees: 3 proved, 1 violated"), std::string::npos)
-      << reactive.out;
+  EXPECT_EQ(msl.code, 0) << msl.out;
+  std::ifstream summary(scratch.dir() / "summary.md");
+  const std::string summary_text((std::istreambuf_iterator<char>(summary)),
+                                 std::istreambuf_iterator<char>());
+  EXPECT_NE(summary_text.find("stages: load, verify, compile, conform, prove"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(scratch.dir() / "compiled.xml"));
+
+  const auto sequence_out = scratch.dir() / "sequence";
+  const CliRun sequence = run("gate " + mission_dir("msl_curiosity").string() +
+                              " --selection sequence --out " + sequence_out.string());
+  EXPECT_EQ(sequence.code, 1) << sequence.out;
+  EXPECT_NE(sequence.out.find("guarantee 'HoldOnUnknown' is violated at tick 3"), std::string::npos)
+      << sequence.out;
+  EXPECT_TRUE(std::filesystem::exists(sequence_out / "compiled.rejected.xml"));
+  EXPECT_FALSE(std::filesystem::exists(sequence_out / "compiled.xml"));
+
+  const CliRun proved = run("prove " + mission_dir("msl_curiosity").string());
+  EXPECT_EQ(proved.code, 0) << proved.out;
+  EXPECT_NE(proved.out.find("4 guarantees: 4 proved, 0 violated"), std::string::npos) << proved.out;
+  const CliRun violated =
+      run("prove " + mission_dir("msl_curiosity").string() + " --selection sequence");
+  EXPECT_EQ(violated.code, 1) << violated.out;
+  EXPECT_NE(violated.out.find("4 guarantees: 3 proved, 1 violated"), std::string::npos)
+      << violated.out;
 }
 
 TEST(ProveCli, BadWorldFileIsAUsageError) {

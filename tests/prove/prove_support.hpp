@@ -24,6 +24,7 @@ inline prove::Result prove_dir(const std::filesystem::path& dir, prove::Options 
   EXPECT_TRUE(mission) << error;
   gate::Options gate_options;
   gate_options.compile.selection = style;
+  gate_options.compile.selection_forced = true;
   gate::Outcome outcome = gate::run_gate(std::move(*mission), gate_options, "test");
   EXPECT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
   std::vector<Finding> findings;
