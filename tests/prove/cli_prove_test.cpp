@@ -165,19 +165,7 @@ TEST(ProveCli, GateReportsShowTheProofs) {
       "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
       "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
       "CoolBit: Mission shall always satisfy Drill.running -> IsBitCool\n";
-  files["alternatives/drilling/rotary.xml"] =
-      R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
-  <BehaviorTree ID="rotary">
-    <Sequence>
-      <Fallback>
-        <IsBitCool/>
-        <CoolDown/>
-      </Fallback>
-      <Drill mode="rotary"/>
-    </Sequence>
-  </BehaviorTree>
-</root>
-)";
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
   TempMission fixed(files);
   const CliRun pass = run("gate " + fixed.dir().string() + " --out " + out.string());
   EXPECT_EQ(pass.code, 0) << pass.out;

@@ -9,19 +9,6 @@
 namespace uabt::testing {
 namespace {
 
-const char* kFixedRotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
-  <BehaviorTree ID="rotary">
-    <Sequence>
-      <Fallback>
-        <IsBitCool/>
-        <CoolDown/>
-      </Fallback>
-      <Drill mode="rotary"/>
-    </Sequence>
-  </BehaviorTree>
-</root>
-)";
-
 std::string proofs_page(const std::filesystem::path& dir, const std::string& name) {
   const prove::Result r = prove_dir(dir);
   std::map<std::string, std::string> written;
@@ -56,19 +43,7 @@ TEST(ProofsReport, ProvedMissionShowsNoTimeline) {
 
 // A later violation: the timeline shows two ticks, Drill running through the first.
 TEST(ProofsReport, TimelineOfATwoTickCounterexample) {
-  auto files = mission_files("sample_drilling");
-  files["requirements.fret"] =
-      "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
-      "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
-      "Cool: Mission shall always satisfy Drill.running -> IsBitCool\n";
-  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
-  files["alternatives/drilling/percussive.xml"] =
-      alternative_tree("percussive", "<Drill mode=\"percussive\"/>");
-  files["world.json"] =
-      R"({"initial": "IsBitCool", "actions": {"Drill": {"ticks": 2, "results": ["success"],
-         "on_success": "IsBitCool = false"}, "CoolDown": {"ticks": 1, "results": ["success"],
-         "on_success": "IsBitCool = true"}}})";
-  TempMission m(files);
+  TempMission m(hot_bit_after_a_drill());
   const std::string page = proofs_page(m.dir(), "m");
   EXPECT_NE(page.find("<thead><tr><th>tick</th><th>1</th><th class=\"viol\">2</th></tr></thead>"),
             std::string::npos)
