@@ -9,24 +9,39 @@
 namespace uabt::testing {
 namespace {
 
-std::string proofs_page(const std::filesystem::path& dir, const std::string& name) {
+report::Proofs proofs_of(const std::filesystem::path& dir, const std::string& name) {
   const prove::Result r = prove_dir(dir);
   std::map<std::string, std::string> written;
   for (const auto& a : r.answers)
     if (a.counterexample) written[a.requirement] = "cex/" + a.requirement + ".json";
   report::Proofs proofs = prove::report_proofs(r, written);
   proofs.mission_path = "missions/" + name;
-  return report::proofs_page_html(proofs, name, "test");
+  return proofs;
 }
 
-// Byte-exact. To accept a deliberate change: UABT_UPDATE_GOLDEN=1 build/tests/test_prove.
+std::string proofs_page(const std::filesystem::path& dir, const std::string& name) {
+  return report::proofs_page_html(proofs_of(dir, name), name, "test");
+}
+
+// Compares with tests/prove/golden/NAME byte for byte. To accept a deliberate change:
+// UABT_UPDATE_GOLDEN=1 build/tests/test_prove --gtest_filter='ProofsReport.*Golden*'.
+void expect_golden(const std::string& name, const std::string& text) {
+  const auto golden = source_dir() / "tests/prove/golden" / name;
+  if (std::getenv("UABT_UPDATE_GOLDEN") != nullptr) std::ofstream(golden, std::ios::binary) << text;
+  EXPECT_EQ(text, read_all(golden)) << name;
+}
+
 TEST(ProofsReport, SampleDrillingGoldenPage) {
-  const auto golden = source_dir() / "tests/prove/golden/sample_drilling_proofs.html";
   const std::string page = proofs_page(mission_dir("sample_drilling"), "sample_drilling");
-  if (std::getenv("UABT_UPDATE_GOLDEN") != nullptr) std::ofstream(golden, std::ios::binary) << page;
-  EXPECT_EQ(page, read_all(golden));
+  expect_golden("sample_drilling_proofs.html", page);
   // The same input gives the same bytes.
   EXPECT_EQ(page, proofs_page(mission_dir("sample_drilling"), "sample_drilling"));
+}
+
+// summary.md's section, on a counterexample of two ticks.
+TEST(ProofsReport, HotBitGoldenMarkdown) {
+  TempMission m(hot_bit_after_a_drill());
+  expect_golden("hot_bit_proofs.md", report::proofs_markdown(proofs_of(m.dir(), "hot_bit")));
 }
 
 TEST(ProofsReport, ProvedMissionShowsNoTimeline) {
