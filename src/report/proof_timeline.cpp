@@ -101,7 +101,9 @@ std::string replay_text(const Proofs& proofs, const std::string& scenario_file) 
 
 std::string proofs_summary(const Proofs& proofs) {
   if (!proofs.not_run.empty()) return "uabt prove did not run: " + proofs.not_run + ".";
-  return proofs.engine + "-state engine: " + std::to_string(proofs.states) + " states, " +
+  const std::string engine =
+      proofs.engine == "explicit" ? "explicit-state engine" : proofs.engine + " engine";
+  return engine + ": " + std::to_string(proofs.states) + " states, " +
          std::to_string(proofs.transitions) + " transitions, " +
          (proofs.complete ? std::string("every reachable state explored.")
                           : "runs explored up to tick " + std::to_string(proofs.depth) + ".");
