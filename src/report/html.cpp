@@ -119,7 +119,14 @@ void finding_html(const Finding& finding, std::string& out) {
   if (!finding.node_path.empty())
     meta += (meta.empty() ? "" : " · ") + std::string("Node: ") + code(finding.node_path);
   if (!meta.empty()) out += "<p class=\"meta\">" + meta + "</p>\n";
-  if (!finding.notes.empty()) {
+  if (finding.check == "prove-violated" && !finding.notes.empty()) {
+    // The counterexample's table keeps its columns; the Proofs section draws its timeline.
+    std::string table;
+    for (const auto& note : finding.notes) table += html_escape(note) + "\n";
+    out += "<pre>" + table +
+           "</pre>\n<p class=\"meta\"><a href=\"#proofs\">The counterexample "
+           "as a timeline</a></p>\n";
+  } else if (!finding.notes.empty()) {
     out += "<ul class=\"meta\">\n";
     for (const auto& note : finding.notes) out += "<li>" + html_escape(note) + "</li>\n";
     out += "</ul>\n";
