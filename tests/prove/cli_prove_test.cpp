@@ -184,3 +184,32 @@ TEST(ProveCli, HtmlFormatIsAPageWithTheTimeline) {
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// A reactive-style gate tells to replay with the same style, and the command it shows plays
+// the violation at the tick the report names.
+TEST(ProveCli, ReactiveGateReplaysInItsStyle) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "report";
+  const std::string mission = mission_dir("msl_curiosity").string();
+  EXPECT_EQ(run("gate " + mission + " --selection reactive --out " + out.string()).code, 1);
+  const auto json = nlohmann::json::parse(read_all(out / "findings.json"));
+  std::string replay;
+  std::uint64_t tick = 0;
+  for (const auto& p : json["proofs"]["properties"])
+    if (p["id"] == "ArmClosed") {
+      replay = p["counterexample"]["replay"];
+      tick = p["counterexample"]["tick"];
+    }
+  const std::string scenario = (out / "counterexamples/ArmClosed.json").string();
+  EXPECT_EQ(replay, "uabt run " + mission + " --selection reactive --scenario " + scenario);
+  const CliRun r = run(replay.substr(std::string("uabt ").size()));
+  EXPECT_NE(r.out.find("property ArmClosed: violated from tick " + std::to_string(tick)),
+            std::string::npos)
+      << r.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
