@@ -96,7 +96,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       std::filesystem::create_directories(args->counterexamples);
       for (const auto& a : result.answers) {
         if (!a.counterexample) continue;
-        const auto path = std::filesystem::path(args->counterexamples) / (a.requirement + ".json");
+        const auto path = std::filesystem::path(args->counterexamples) /
+                          report::counterexample_file_name(a.requirement);
         write_file_atomically(path, a.counterexample->scenario);
         written[a.requirement] = path.generic_string();
       }
