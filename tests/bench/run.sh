@@ -28,3 +28,5 @@ echo "== selection cost: Fig. 4 against --selection optimized"
 "$bench" selection
 echo "== uabt gate missions/msl_curiosity, whole process"
 "$bench" process 20 "$dir/uabt" gate missions/msl_curiosity --out "$out"
+echo "== uabt prove on the model-checking families (whole processes)"
+UABT_BENCH_BUILD_DIR="$dir" sh tests/bench/prove_families.sh $quick
