@@ -1,7 +1,8 @@
 #!/bin/sh
 # The whole benchmark harness in one command: a Release build with the benchmarks, then
 # Google Benchmark over every stage (verify against the naive baseline, gate, load, compile,
-# tick engine), the scaling curves, and the MSL gate as a whole process (20 runs).
+# tick engine, prove), the scaling curves, the MSL gate as a whole process (20 runs), and
+# `uabt prove` on the model-checking families (prove_families.sh).
 #
 #   sh tests/bench/run.sh [--quick]     (--quick: small sizes only, about a minute)
 set -eu
