@@ -69,7 +69,18 @@ void register_gate(CLI::App& app, int& exit_code) {
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());
     // A mission with guarantees passes only when each one is proved (DESIGN §10).
-    if (outcome.passed()) prove::add_proofs(outcome, prove::Options{});
+    const auto scenarios = std::filesystem::path(args->out) / "counterexamples";
+    if (outcome.passed())
+      prove::add_proofs(outcome, prove::Options{}, scenarios.generic_string());
+    else
+      prove::add_proofs_not_run(outcome, "the gate failed before its proof step");
+    if (outcome.report.proofs) {
+      // How the report tells to replay a counterexample (`uabt run` has no optimized style).
+      outcome.report.proofs->mission_path =
+          running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
+      if (args->selection == "reactive")
+        outcome.report.proofs->run_options = "--selection reactive";
+    }
     outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     // What conform says about the compiled tree points at its file in the report directory.
     if (!outcome.report.compiled_tree_file.empty())

@@ -53,8 +53,9 @@ void register_prove(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"sequence", "reactive"}));
   cmd->add_option("--counterexamples", args->counterexamples,
                   "write each counterexample as DIR/<requirement>.json (a runtime scenario)");
-  cmd->add_option("--format", args->format, "text | json | sarif")
-      ->check(CLI::IsMember({"text", "json", "sarif"}));
+  cmd->add_option("--format", args->format,
+                  "text | json | sarif | html (a page with each counterexample's timeline)")
+      ->check(CLI::IsMember({"text", "json", "sarif", "html"}));
   cmd->add_option("-o,--output", args->output, "write the output to FILE");
   cmd->callback([args, &exit_code] {
     auto mission = load_or_complain(args->mission, {});
@@ -94,7 +95,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       std::filesystem::create_directories(args->counterexamples);
       for (const auto& a : result.answers) {
         if (!a.counterexample) continue;
-        const auto path = std::filesystem::path(args->counterexamples) / (a.requirement + ".json");
+        const auto path = std::filesystem::path(args->counterexamples) /
+                          report::counterexample_file_name(a.requirement);
         write_file_atomically(path, a.counterexample->scenario);
         written[a.requirement] = path.generic_string();
       }
@@ -102,6 +104,13 @@ void register_prove(CLI::App& app, int& exit_code) {
     exit_code = result.passed() ? kExitPass : kExitFail;
     if (args->format == "json") {
       emit(args->output, prove::result_json(result, outcome.mission->name, tool_version()));
+      return;
+    }
+    if (args->format == "html") {
+      report::Proofs proofs = prove::report_proofs(result, written);
+      proofs.mission_path = args->mission;
+      if (args->selection == "reactive") proofs.run_options = "--selection reactive";
+      emit(args->output, report::proofs_page_html(proofs, outcome.mission->name, tool_version()));
       return;
     }
     report::ReportInput input = report_input(*outcome.mission, {"prove"});

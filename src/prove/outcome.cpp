@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bt/xml_io.hpp"
+#include "monitor/property_set.hpp"
 #include "report/reports.hpp"
 
 namespace uabt::prove {
@@ -123,7 +124,54 @@ std::string result_json(const Result& result, const std::string& mission,
   return j.dump(2) + "\n";
 }
 
-void add_proofs(gate::Outcome& outcome, const Options& options) {
+report::Proofs report_proofs(const Result& result,
+                             const std::map<std::string, std::string>& written) {
+  report::Proofs out;
+  out.engine = result.engine;
+  out.states = result.states;
+  out.transitions = result.transitions;
+  out.depth = result.depth;
+  out.complete = result.complete;
+  out.notes = result.notes;
+  for (const Answer& a : result.answers) {
+    report::ProofAnswer p{a.requirement, a.text,  a.location,  verdict_name(a.verdict),
+                          a.reason,      a.depth, std::nullopt};
+    if (a.counterexample) {
+      report::ProofCounterexample c;
+      c.tick = a.counterexample->tick;
+      c.scenario = a.counterexample->scenario;
+      if (const auto it = written.find(a.requirement); it != written.end())
+        c.scenario_file = it->second;
+      for (const TickRow& row : a.counterexample->rows) {
+        report::ProofTick t{row.tick, row.root, row.values, {}};
+        // "Drill started": the event is the last word (the leaf's label may hold spaces).
+        for (const std::string& what : row.actions) {
+          const auto space = what.rfind(' ');
+          if (space == std::string::npos)
+            t.actions.emplace_back(what, "");
+          else
+            t.actions.emplace_back(what.substr(0, space), what.substr(space + 1));
+        }
+        c.ticks.push_back(std::move(t));
+      }
+      p.counterexample = std::move(c);
+    }
+    out.answers.push_back(std::move(p));
+  }
+  return out;
+}
+
+void add_proofs_not_run(gate::Outcome& outcome, const std::string& reason) {
+  if (!outcome.mission || !has_guarantees(*outcome.mission)) return;
+  report::Proofs proofs;
+  proofs.not_run = reason;
+  for (const auto& r : outcome.mission->properties)
+    if (!monitor::is_assumption(r))
+      proofs.answers.push_back({r.id, r.text, r.location, "unsupported", reason, 0, std::nullopt});
+  outcome.report.proofs = std::move(proofs);
+}
+
+void add_proofs(gate::Outcome& outcome, const Options& options, const std::string& scenario_dir) {
   if (!outcome.mission || !has_guarantees(*outcome.mission) || outcome.compiled_xml.empty()) return;
   std::vector<Finding> found;
   auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", found);
@@ -131,12 +179,22 @@ void add_proofs(gate::Outcome& outcome, const Options& options) {
   try {
     const WorldModel world = mission_world(*outcome.mission);
     const Result result = prove(*outcome.mission, *doc, world, options);
-    found = findings_of(result);
+    std::map<std::string, std::string> written;
+    if (!scenario_dir.empty())
+      for (const Answer& a : result.answers)
+        if (a.counterexample)
+          written[a.requirement] = (std::filesystem::path(scenario_dir) /
+                                    report::counterexample_file_name(a.requirement))
+                                       .generic_string();
+    found = findings_of(result, written);
+    outcome.report.proofs = report_proofs(result, written);
   } catch (const WorldError& e) {
     found = {make_finding("load-file", e.text, e.location)};
+    add_proofs_not_run(outcome, "world.json cannot be read");
   } catch (const std::exception& e) {
     found = {make_finding("prove-bounded", std::string("the mission cannot be proved: ") + e.what(),
                           {outcome.mission->requirements_file, 0, 0})};
+    add_proofs_not_run(outcome, std::string("the mission cannot be proved: ") + e.what());
   }
   auto& findings = outcome.report.findings;
   findings.insert(findings.end(), found.begin(), found.end());

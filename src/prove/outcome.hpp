@@ -8,6 +8,7 @@
 #include "base/finding.hpp"
 #include "gate/gate.hpp"
 #include "prove/prove.hpp"
+#include "report/proofs.hpp"
 
 namespace uabt::prove {
 
@@ -30,6 +31,19 @@ std::string result_json(const Result& result, const std::string& mission,
 // The gate's proof step (DESIGN §10): when the mission states guarantees and the gate has a
 // compiled tree, proves them on it and adds the findings (and the `prove` stage) to the
 // outcome's report. A world.json or model error is itself an error finding.
-void add_proofs(gate::Outcome& outcome, const Options& options);
+// The report's Proofs section also gets every verdict and counterexample; `scenario_dir` is
+// where the reports put the counterexamples' scenarios (write_reports writes them there as
+// counterexamples/<id>.json; "" when they are not written), as the user sees that path.
+void add_proofs(gate::Outcome& outcome, const Options& options,
+                const std::string& scenario_dir = "");
+
+// For a gate that failed before its proof step: the report's Proofs section lists the
+// mission's guarantees as not checked, with the reason. Nothing when it states none.
+void add_proofs_not_run(gate::Outcome& outcome, const std::string& reason);
+
+// What the report shows of a result: `written` maps a requirement id to the path its
+// counterexample's scenario is (or will be) written to.
+report::Proofs report_proofs(const Result& result,
+                             const std::map<std::string, std::string>& written = {});
 
 }  // namespace uabt::prove

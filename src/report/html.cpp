@@ -4,6 +4,7 @@
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
 #include "report/coverage_view.hpp"
+#include "report/proof_timeline.hpp"
 #include "report/reports.hpp"
 #include "report/uplink_sections.hpp"
 
@@ -118,7 +119,14 @@ void finding_html(const Finding& finding, std::string& out) {
   if (!finding.node_path.empty())
     meta += (meta.empty() ? "" : " · ") + std::string("Node: ") + code(finding.node_path);
   if (!meta.empty()) out += "<p class=\"meta\">" + meta + "</p>\n";
-  if (!finding.notes.empty()) {
+  if (finding.check == "prove-violated" && !finding.notes.empty()) {
+    // The counterexample's table keeps its columns; the Proofs section draws its timeline.
+    std::string table;
+    for (const auto& note : finding.notes) table += html_escape(note) + "\n";
+    out += "<pre>" + table +
+           "</pre>\n<p class=\"meta\"><a href=\"#proofs\">The counterexample "
+           "as a timeline</a></p>\n";
+  } else if (!finding.notes.empty()) {
     out += "<ul class=\"meta\">\n";
     for (const auto& note : finding.notes) out += "<li>" + html_escape(note) + "</li>\n";
     out += "</ul>\n";
@@ -253,6 +261,10 @@ void coverage_html(const ReportInput& input, const std::string& adaptable, std::
 
 }  // namespace
 
+const char* detail::page_style() {
+  return kStyle;
+}
+
 std::string to_html(const ReportInput& input) {
   const bool passed = input.passed();
   const char* verdict = passed ? "PASS" : "FAIL";
@@ -265,7 +277,7 @@ std::string to_html(const ReportInput& input) {
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>uabt report: " +
       html_escape(mission) + " " + verdict + "</title>\n<style>" + kStyle +
-      "</style>\n</head>\n<body>\n";
+      (input.proofs ? detail::proofs_style() : "") + "</style>\n</head>\n<body>\n";
   out += std::string("<header class=\"") + (passed ? "pass" : "fail") +
          "\">\n<div class=\"badge\">" + verdict + "</div>\n<div>\n<h1>Mission " +
          html_escape(mission) + "</h1>\n<p>" +
@@ -282,12 +294,14 @@ std::string to_html(const ReportInput& input) {
 
   out += "<nav><a href=\"#findings\">Findings</a>";
   if (input.uplink) out += "<a href=\"#uplink\">Uplink</a>";
+  if (input.proofs && !input.proofs->answers.empty()) out += "<a href=\"#proofs\">Proofs</a>";
   for (std::size_t i = 0; i < shown.size(); ++i)
     out += "<a href=\"#" + anchor(i, shown[i]) + "\">" + html_escape(shown[i]) + "</a>";
   out += "</nav>\n<main>\n";
 
   findings_section(input, shown, out);
   if (input.uplink) out += detail::uplink_html(*input.uplink);
+  if (input.proofs) out += proofs_html(*input.proofs);
   for (std::size_t i = 0; i < shown.size(); ++i) {
     out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " + code(shown[i]) +
            "</h2>\n";

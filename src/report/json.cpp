@@ -1,6 +1,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/common.hpp"
+#include "report/proof_timeline.hpp"
 #include "report/reports.hpp"
 #include "report/uplink_sections.hpp"
 
@@ -152,6 +153,8 @@ std::string to_json(const ReportInput& input) {
   for (const auto& entry : input.coverage) coverage.push_back(coverage_json(entry));
   out["coverage"] = std::move(coverage);
   if (input.uplink) out["uplink"] = detail::uplink_json(*input.uplink);
+  if (input.proofs && !input.proofs->answers.empty())
+    out["proofs"] = detail::proofs_json(*input.proofs);
   // A message with invalid UTF-8 (from a broken input file) must not abort the report.
   return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

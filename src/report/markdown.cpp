@@ -164,6 +164,7 @@ std::string to_markdown(const ReportInput& input) {
     out += "\n`uabt explain CHECK-ID` says why a check matters and how to fix it.\n";
   }
   if (input.uplink) out += detail::uplink_markdown(*input.uplink);
+  if (input.proofs) out += proofs_markdown(*input.proofs);
   for (const auto& coverage : input.coverage) coverage_section(coverage, out);
   return out;
 }

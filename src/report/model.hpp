@@ -5,6 +5,7 @@
 
 #include "base/finding.hpp"
 #include "load/mission.hpp"
+#include "report/proofs.hpp"
 #include "verify/impact.hpp"
 #include "verify/verify.hpp"
 
@@ -39,6 +40,7 @@ struct ReportInput {
   // May be null when the mission could not be loaded at all.
   const load::Mission* mission = nullptr;
   std::optional<UplinkChange> uplink;  // set by `gate --uplink`
+  std::optional<Proofs> proofs;        // set when the mission states guarantees
 
   bool passed() const { return !has_errors(findings); }
 };

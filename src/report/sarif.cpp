@@ -139,6 +139,10 @@ std::string to_sarif(const ReportInput& input) {
     result["level"] = sarif_level(finding.severity);
     std::string text = finding.message;
     if (!finding.witness.empty()) text += " (witness: " + format_state(finding.witness) + ")";
+    // Code scanning shows the message, not the properties: a counterexample's replay command
+    // and tick-by-tick table go into it.
+    if (finding.check == "prove-violated")
+      for (const auto& note : finding.notes) text += "\n" + note;
     result["message"] = Json{{"text", text}};
 
     result["locations"] =

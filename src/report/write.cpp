@@ -1,3 +1,4 @@
+#include <set>
 #include <stdexcept>
 #include <system_error>
 
@@ -6,6 +7,31 @@
 #include "report/text.hpp"
 
 namespace uabt::report {
+
+namespace {
+
+// Each counterexample's scenario as counterexamples/<id>.json; scenarios an earlier run left
+// there are removed, so that the directory always describes one run.
+void write_counterexamples(const ReportInput& input, const std::filesystem::path& dir) {
+  std::set<std::string> written;
+  if (input.proofs)
+    for (const ProofAnswer& a : input.proofs->answers)
+      if (a.counterexample) {
+        const std::string name = counterexample_file_name(a.requirement);
+        write_file_atomically(dir / name, a.counterexample->scenario);
+        written.insert(name);
+      }
+  std::error_code error;
+  if (!std::filesystem::is_directory(dir, error)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+    const auto name = entry.path().filename().string();
+    if (entry.path().extension() == ".json" && !written.count(name))
+      std::filesystem::remove(entry.path(), error);
+  }
+  if (written.empty()) std::filesystem::remove(dir, error);  // only when empty
+}
+
+}  // namespace
 
 void write_reports(const ReportInput& input, const std::filesystem::path& out_dir,
                    const std::string& compiled_xml) {
@@ -21,6 +47,7 @@ void write_reports(const ReportInput& input, const std::filesystem::path& out_di
   write_file_atomically(out_dir / "junit.xml", to_junit(input));
   write_file_atomically(out_dir / "summary.md", to_markdown(input));
   write_file_atomically(out_dir / "report.html", to_html(input));
+  write_counterexamples(input, out_dir / "counterexamples");
   // compiled.xml is the tree to uplink: only a passing gate writes it. A failing one keeps the
   // candidate as compiled.rejected.xml. A tree from an earlier run would sit beside reports
   // that say something else, so the other name is removed.

@@ -12,6 +12,9 @@
 //                                                     (min, median, max), CPU, peak memory
 //   uabt_bench selection                              --selection optimized against Fig. 4:
 //                                                     condition ticks per selection, compile time
+//   uabt_bench prove-family binary|checklist SIZE DIR [--counters V]
+//                                                     write a mission of a model-checking
+//                                                     family (prove_families.hpp) to DIR
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -31,6 +34,7 @@
 #include "bench_selection.hpp"
 #include "bench_support.hpp"
 #include "gate/gate.hpp"
+#include "prove_families.hpp"
 #include "smt/solver.hpp"
 #include "verify/verify.hpp"
 
@@ -52,7 +56,8 @@ int usage() {
                "       uabt_bench measure N K [--threads T] [--naive default|core]\n"
                "       uabt_bench scale [--quick]\n"
                "       uabt_bench process RUNS COMMAND [ARGS...]\n"
-               "       uabt_bench selection\n");
+               "       uabt_bench selection\n"
+               "       uabt_bench prove-family binary|checklist SIZE DIR [--counters V]\n");
   return 2;
 }
 
@@ -61,6 +66,26 @@ std::optional<int> positive(const char* text) {
   const long v = std::strtol(text, &end, 10);
   if (end == text || *end != '\0' || v < 1 || v > 1'000'000) return std::nullopt;
   return static_cast<int>(v);
+}
+
+// Prints the compiled tree's node count and the expected verdicts, for prove_families.sh.
+int prove_family(int argc, char** argv) {
+  if (argc != 5 && argc != 7) return usage();
+  const std::string family = argv[2];
+  const auto size = positive(argv[3]);
+  int counters = 3;
+  if (argc == 7) {
+    const auto v = positive(argv[6]);
+    if (std::string(argv[5]) != "--counters" || !v) return usage();
+    counters = *v;
+  }
+  if (!size || (family != "binary" && family != "checklist")) return usage();
+  const FamilyMission m = family == "binary" ? generate_binary_tree(argv[4], *size, counters)
+                                             : generate_checklist(argv[4], *size);
+  std::printf("%d", m.tree_nodes);
+  for (const auto& [id, verdict] : m.verdicts) std::printf(" %s=%s", id.c_str(), verdict.c_str());
+  std::printf("\n");
+  return 0;
 }
 
 int generate(int argc, char** argv) {
@@ -304,6 +329,7 @@ int main(int argc, char** argv) {
       if (mode == "scale") return scale(argc, argv);
       if (mode == "process") return process(argc, argv);
       if (mode == "selection") return uabt::bench::selection_figures();
+      if (mode == "prove-family") return prove_family(argc, argv);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "uabt_bench: %s\n", e.what());
       return 1;

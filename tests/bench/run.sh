@@ -1,7 +1,8 @@
 #!/bin/sh
 # The whole benchmark harness in one command: a Release build with the benchmarks, then
 # Google Benchmark over every stage (verify against the naive baseline, gate, load, compile,
-# tick engine), the scaling curves, and the MSL gate as a whole process (20 runs).
+# tick engine, prove), the scaling curves, the MSL gate as a whole process (20 runs), and
+# `uabt prove` on the model-checking families (prove_families.sh).
 #
 #   sh tests/bench/run.sh [--quick]     (--quick: small sizes only, about a minute)
 set -eu
@@ -28,3 +29,5 @@ echo "== selection cost: Fig. 4 against --selection optimized"
 "$bench" selection
 echo "== uabt gate missions/msl_curiosity, whole process"
 "$bench" process 20 "$dir/uabt" gate missions/msl_curiosity --out "$out"
+echo "== uabt prove on the model-checking families (whole processes)"
+UABT_BENCH_BUILD_DIR="$dir" sh tests/bench/prove_families.sh $quick

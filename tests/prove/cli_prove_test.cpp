@@ -143,3 +143,93 @@ TEST(ProveCli, ExplainKnowsTheChecks) {
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// The gate's report directory: the Proofs section, the scenario under counterexamples/ that
+// `uabt run` replays, the SARIF message with the table, JUnit's failure; a later passing run
+// leaves no stale scenario behind.
+TEST(ProveCli, GateReportsShowTheProofs) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "report";
+  const std::string mission = mission_dir("sample_drilling").string();
+  EXPECT_EQ(run("gate " + mission + " --out " + out.string()).code, 1);
+  const std::string html = read_all(out / "report.html");
+  EXPECT_NE(html.find("<section id=\"proofs\">"), std::string::npos);
+  EXPECT_NE(html.find("<table class=\"timeline\">"), std::string::npos);
+  const std::string scenario = (out / "counterexamples/CoolBit.json").string();
+  EXPECT_NE(html.find("uabt run " + mission + " --scenario " + scenario), std::string::npos);
+  EXPECT_NE(read_all(out / "summary.md").find("### Proofs"), std::string::npos);
+  const auto json = nlohmann::json::parse(read_all(out / "findings.json"));
+  EXPECT_EQ(json["proofs"]["properties"][0]["counterexample"]["scenario_file"], scenario);
+  EXPECT_EQ(json["proofs"]["properties"][1]["verdict"], "proved");
+  const auto sarif = nlohmann::json::parse(read_all(out / "findings.sarif"));
+  const auto& result = sarif["runs"][0]["results"][0];
+  EXPECT_EQ(result["ruleId"], "prove-violated");
+  EXPECT_EQ(result["locations"][0]["physicalLocation"]["region"]["startLine"], 5);
+  EXPECT_NE(result["message"]["text"].get<std::string>().find(
+                "\n1     RUNNING  true           false      Drill started"),
+            std::string::npos)
+      << result["message"]["text"];
+  const std::string junit = read_all(out / "junit.xml");
+  EXPECT_NE(junit.find("prove-violated"), std::string::npos);
+  EXPECT_NE(junit.find("<failure"), std::string::npos);
+  const CliRun replay = run("run " + mission + " --scenario " + scenario);
+  EXPECT_NE(replay.out.find("property CoolBit: violated from tick 1"), std::string::npos)
+      << replay.out;
+
+  auto files = mission_files("sample_drilling");
+  // Both alternatives now cool the bit: CoolDown is no longer a unique id, OneTool goes.
+  files["requirements.fret"] =
+      "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
+      "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
+      "CoolBit: Mission shall always satisfy Drill.running -> IsBitCool\n";
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+  TempMission fixed(files);
+  const CliRun pass = run("gate " + fixed.dir().string() + " --out " + out.string());
+  EXPECT_EQ(pass.code, 0) << pass.out;
+  EXPECT_FALSE(std::filesystem::exists(out / "counterexamples"));
+  EXPECT_EQ(read_all(out / "report.html").find("<table class=\"timeline\">"), std::string::npos);
+}
+
+TEST(ProveCli, HtmlFormatIsAPageWithTheTimeline) {
+  const CliRun r = run("prove " + mission_dir("sample_drilling").string() + " --format html");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.out.rfind("<!DOCTYPE html>", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("<table class=\"timeline\">"), std::string::npos);
+  EXPECT_EQ(r.out.find("<script"), std::string::npos);
+  EXPECT_EQ(r.out.find("http"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// A reactive-style gate tells to replay with the same style, and the command it shows plays
+// the violation at the tick the report names.
+TEST(ProveCli, ReactiveGateReplaysInItsStyle) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "report";
+  const std::string mission = mission_dir("msl_curiosity").string();
+  EXPECT_EQ(run("gate " + mission + " --selection reactive --out " + out.string()).code, 1);
+  const auto json = nlohmann::json::parse(read_all(out / "findings.json"));
+  std::string replay;
+  std::uint64_t tick = 0;
+  for (const auto& p : json["proofs"]["properties"])
+    if (p["id"] == "ArmClosed") {
+      replay = p["counterexample"]["replay"];
+      tick = p["counterexample"]["tick"];
+    }
+  const std::string scenario = (out / "counterexamples/ArmClosed.json").string();
+  EXPECT_EQ(replay, "uabt run " + mission + " --selection reactive --scenario " + scenario);
+  const CliRun r = run(replay.substr(std::string("uabt ").size()));
+  EXPECT_NE(r.out.find("property ArmClosed: violated from tick " + std::to_string(tick)),
+            std::string::npos)
+      << r.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing

@@ -58,4 +58,38 @@ inline std::map<std::string, std::string> mission_files(const std::string& name)
   return files;
 }
 
+// sample_drilling's rotary alternative repaired: it cools a hot bit before it drills.
+inline constexpr const char* kFixedRotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
+  <BehaviorTree ID="rotary">
+    <Sequence>
+      <Fallback>
+        <IsBitCool/>
+        <CoolDown/>
+      </Fallback>
+      <Drill mode="rotary"/>
+    </Sequence>
+  </BehaviorTree>
+</root>
+)";
+
+// sample_drilling where only a later tick can break `Cool`: the bit starts cool and the
+// percussive alternative drills without cooling, so the second drilling cycle on hard rock
+// drills the bit the first one heated (tick 2).
+inline std::map<std::string, std::string> hot_bit_after_a_drill() {
+  auto files = mission_files("sample_drilling");
+  files["requirements.fret"] =
+      "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
+      "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
+      "Cool: Mission shall always satisfy Drill.running -> IsBitCool\n";
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+  // The percussive alternative drills without cooling: a hot bit only exists after a drill.
+  files["alternatives/drilling/percussive.xml"] =
+      alternative_tree("percussive", "<Drill mode=\"percussive\"/>");
+  files["world.json"] =
+      R"({"initial": "IsBitCool", "actions": {"Drill": {"ticks": 2, "results": ["success"],
+         "on_success": "IsBitCool = false"}, "CoolDown": {"ticks": 1, "results": ["success"],
+         "on_success": "IsBitCool = true"}}})";
+  return files;
+}
+
 }  // namespace uabt::testing

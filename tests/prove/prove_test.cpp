@@ -9,19 +9,6 @@ namespace {
 
 using prove::Verdict;
 
-const char* kFixedRotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
-  <BehaviorTree ID="rotary">
-    <Sequence>
-      <Fallback>
-        <IsBitCool/>
-        <CoolDown/>
-      </Fallback>
-      <Drill mode="rotary"/>
-    </Sequence>
-  </BehaviorTree>
-</root>
-)";
-
 TEST(Prove, BrokenAlternativeIsViolatedAtTheFirstTick) {
   const prove::Result r = prove_dir(mission_dir("sample_drilling"));
   EXPECT_TRUE(r.complete);
@@ -72,20 +59,7 @@ TEST(Prove, ADepthBoundGivesBoundedNotProved) {
 
 // Only a later tick can break this one: the second drilling cycle on a hot bit.
 TEST(Prove, CounterexampleIsTheShortest) {
-  auto files = mission_files("sample_drilling");
-  files["requirements.fret"] =
-      "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
-      "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
-      "Cool: Mission shall always satisfy Drill.running -> IsBitCool\n";
-  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
-  // The percussive alternative drills without cooling: a hot bit only exists after a drill.
-  files["alternatives/drilling/percussive.xml"] =
-      alternative_tree("percussive", "<Drill mode=\"percussive\"/>");
-  files["world.json"] =
-      R"({"initial": "IsBitCool", "actions": {"Drill": {"ticks": 2, "results": ["success"],
-         "on_success": "IsBitCool = false"}, "CoolDown": {"ticks": 1, "results": ["success"],
-         "on_success": "IsBitCool = true"}}})";
-  TempMission m(files);
+  TempMission m(hot_bit_after_a_drill());
   const prove::Result r = prove_dir(m.dir());
   const prove::Answer& a = answer(r, "Cool");
   ASSERT_EQ(a.verdict, Verdict::violated);

@@ -1,0 +1,54 @@
+#pragma once
+// The timeline of a counterexample as rows of cells (ticks as columns), drawn by the HTML and
+// the Markdown writers alike. Not part of the public API (see proofs.hpp).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/proofs.hpp"
+
+namespace uabt::report::detail {
+
+enum class CellKind {
+  text,     // a value shown as text (a number, an enum literal, the root's status)
+  on,       // a boolean that is true
+  off,      // a boolean that is false
+  running,  // an action that runs during this tick (its events, if any, as text)
+  idle,     // an action that does not run during this tick
+};
+
+struct TimelineCell {
+  CellKind kind = CellKind::text;
+  std::string text;
+};
+
+enum class RowKind { root, value, action };
+const char* row_kind_name(RowKind kind);  // "root", "value", "action"
+
+struct TimelineRow {
+  RowKind kind = RowKind::value;
+  std::string label;
+  std::vector<TimelineCell> cells;  // one per tick of the counterexample
+};
+
+// Rows: the root's status, each value the property reads (in its order), then each action in
+// the order it first does something.
+std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex);
+
+// `uabt run MISSION [OPTIONS] --scenario FILE`, paths shell-quoted when they need it (FILE is
+// "cex.json" when the scenario was not written).
+std::string replay_text(const Proofs& proofs, const std::string& scenario_file);
+
+// "explicit-state engine: 12 states, 30 transitions, every reachable state explored."
+std::string proofs_summary(const Proofs& proofs);
+
+// The proofs in findings.json: engine figures, and per guarantee its verdict and where its
+// counterexample's scenario is (the timeline itself is in the notes of its finding).
+nlohmann::ordered_json proofs_json(const Proofs& proofs);
+
+// CSS of the report page and of the timeline.
+const char* page_style();
+const char* proofs_style();
+
+}  // namespace uabt::report::detail

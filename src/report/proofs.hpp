@@ -1,0 +1,69 @@
+#pragma once
+// What a report shows of `uabt prove` (DESIGN §10): every guarantee with its verdict and, for a
+// violated one, its counterexample as a tick-by-tick timeline. Filled by the prove stage; the
+// report stage only draws it.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "base/location.hpp"
+
+namespace uabt::report {
+
+// One tick of a counterexample's replay.
+struct ProofTick {
+  std::uint64_t tick = 0;
+  std::string root;  // the root's status: RUNNING, SUCCESS, FAILURE
+  std::vector<std::pair<std::string, std::string>> values;   // what the property reads
+  std::vector<std::pair<std::string, std::string>> actions;  // (action, "started"|"success"|…)
+};
+
+struct ProofCounterexample {
+  std::uint64_t tick = 0;  // the violating tick
+  std::vector<ProofTick> ticks;
+  std::string scenario;       // the scenario JSON that replays it
+  std::string scenario_file;  // where it was written ("" when it was not)
+};
+
+struct ProofAnswer {
+  std::string requirement;
+  std::string text;
+  SourceLocation location;
+  std::string verdict;  // proved | violated | bounded | unsupported
+  std::string reason;   // why not checked
+  std::uint64_t depth = 0;
+  std::optional<ProofCounterexample> counterexample;
+};
+
+struct Proofs {
+  std::string engine;
+  std::uint64_t states = 0, transitions = 0, depth = 0;
+  bool complete = false;
+  std::vector<ProofAnswer> answers;
+  std::vector<std::string> notes;
+  // Why prove did not run at all (every answer is then "unsupported" with this reason); "".
+  std::string not_run;
+  // How to replay a counterexample: `uabt run MISSION RUN_OPTIONS --scenario FILE`, with the
+  // mission's path as the user gave it ("" shows MISSION) and e.g. "--selection reactive".
+  std::string mission_path;
+  std::string run_options;
+};
+
+// "proved", "violated at tick 3", "bounded (no violation up to tick 12)", "not checked".
+std::string proof_verdict_text(const ProofAnswer& answer);
+
+// A file name for a requirement's counterexample: the id with every character other than
+// letters, digits, '-', '_' and '.' replaced by '_', then ".json".
+std::string counterexample_file_name(const std::string& requirement);
+
+// The report sections (report.html and summary.md); "" when `proofs` has no answer.
+std::string proofs_html(const Proofs& proofs);
+std::string proofs_markdown(const Proofs& proofs);
+
+// A whole self-contained page of the proofs (`uabt prove --format html`).
+std::string proofs_page_html(const Proofs& proofs, const std::string& mission,
+                             const std::string& tool_version);
+
+}  // namespace uabt::report

@@ -1,0 +1,126 @@
+// The Proofs section of summary.md and the proofs in findings.json.
+#include <nlohmann/json.hpp>
+
+#include "report/common.hpp"
+#include "report/proof_timeline.hpp"
+#include "report/proofs.hpp"
+
+namespace uabt::report {
+
+namespace {
+
+// Markdown shows at most this many ticks of a timeline (the last ones); report.html shows all.
+constexpr std::size_t kMarkdownTicks = 30;
+
+// Text safe in a GFM table cell.
+std::string cell(std::string_view raw) {
+  std::string out;
+  for (char c : detail::clean_text(raw)) {
+    if (c == '|' || c == '\\' || c == '`' || c == '*' || c == '_' || c == '<' || c == '>' ||
+        c == '[' || c == ']')
+      out += '\\';
+    out += (c == '\n' || c == '\t') ? ' ' : c;
+  }
+  return out;
+}
+
+std::string code(std::string_view raw) {
+  const std::string text = detail::clean_text(raw);
+  if (text.empty() || text.find_first_of("`|\n") != std::string::npos) return cell(text);
+  return "`" + text + "`";
+}
+
+std::string markdown_cell(const detail::TimelineCell& c) {
+  switch (c.kind) {
+    case detail::CellKind::on: return "■";
+    case detail::CellKind::off: return "□";
+    case detail::CellKind::running: return c.text.empty() ? "▬" : cell(c.text);
+    case detail::CellKind::idle:
+    case detail::CellKind::text: break;
+  }
+  return cell(c.text);
+}
+
+void timeline_markdown(const ProofAnswer& a, const ProofCounterexample& cex, const Proofs& proofs,
+                       std::string& out) {
+  out += "\n#### " + code(a.requirement) + " is violated at tick " + std::to_string(cex.tick) +
+         "\n\n" + code(detail::location_text(a.location)) + " " + cell(a.text) + "\n\n";
+  const std::size_t first =
+      cex.ticks.size() > kMarkdownTicks ? cex.ticks.size() - kMarkdownTicks : 0;
+  if (first > 0)
+    out += "Ticks 1 to " + std::to_string(cex.ticks[first - 1].tick) +
+           " are left out here; report.html shows them.\n\n";
+  out += "| tick |";
+  std::string rule = "|---|";
+  for (std::size_t i = first; i < cex.ticks.size(); ++i) {
+    const std::string tick = std::to_string(cex.ticks[i].tick);
+    out += " " + (cex.ticks[i].tick == cex.tick ? "**" + tick + " ✗**" : tick) + " |";
+    rule += ":-:|";
+  }
+  out += "\n" + rule + "\n";
+  for (const detail::TimelineRow& row : detail::timeline_of(cex)) {
+    out += "| " + (row.kind == detail::RowKind::root ? cell(row.label) : code(row.label)) + " |";
+    for (std::size_t i = first; i < row.cells.size(); ++i)
+      out += " " + markdown_cell(row.cells[i]) + " |";
+    out += "\n";
+  }
+  out += "\n■ true, □ false, ▬ action running. Replay: " +
+         code(detail::replay_text(proofs, cex.scenario_file)) + "\n";
+}
+
+}  // namespace
+
+std::string proofs_markdown(const Proofs& proofs) {
+  if (proofs.answers.empty()) return "";
+  std::string out = "\n### Proofs\n\n" + cell(detail::proofs_summary(proofs)) + "\n\n";
+  out += "| Guarantee | Verdict | Requirement | Location |\n|---|---|---|---|\n";
+  for (const ProofAnswer& a : proofs.answers) {
+    std::string verdict = proof_verdict_text(a);
+    if (!a.reason.empty()) verdict += " (" + a.reason + ")";
+    out += "| " + code(a.requirement) + " | " +
+           (a.verdict == "proved" ? cell(verdict) : "**" + cell(verdict) + "**") + " | " +
+           cell(a.text) + " | " + code(detail::location_text(a.location)) + " |\n";
+  }
+  for (const std::string& note : proofs.notes) out += "\nNote: " + cell(note) + "\n";
+  for (const ProofAnswer& a : proofs.answers)
+    if (a.counterexample) timeline_markdown(a, *a.counterexample, proofs, out);
+  return out;
+}
+
+namespace detail {
+
+nlohmann::ordered_json proofs_json(const Proofs& proofs) {
+  using Json = nlohmann::ordered_json;
+  Json out = Json::object();
+  if (!proofs.not_run.empty()) out["not_run"] = proofs.not_run;
+  out["engine"] = proofs.engine;
+  out["states"] = proofs.states;
+  out["transitions"] = proofs.transitions;
+  out["depth"] = proofs.depth;
+  out["complete"] = proofs.complete;
+  Json answers = Json::array();
+  for (const ProofAnswer& a : proofs.answers) {
+    Json j = Json::object();
+    j["id"] = a.requirement;
+    j["verdict"] = a.verdict;
+    j["location"] =
+        Json{{"file", a.location.file}, {"line", a.location.line}, {"column", a.location.column}};
+    j["depth"] = a.depth;
+    if (!a.reason.empty()) j["reason"] = a.reason;
+    if (a.counterexample) {
+      Json c = Json::object();
+      c["tick"] = a.counterexample->tick;
+      if (!a.counterexample->scenario_file.empty())
+        c["scenario_file"] = a.counterexample->scenario_file;
+      c["replay"] = replay_text(proofs, a.counterexample->scenario_file);
+      j["counterexample"] = std::move(c);
+    }
+    answers.push_back(std::move(j));
+  }
+  out["properties"] = std::move(answers);
+  return out;
+}
+
+}  // namespace detail
+
+}  // namespace uabt::report

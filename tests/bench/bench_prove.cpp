@@ -1,0 +1,129 @@
+// Model checking (DESIGN §10) on the peers' benchmark families (prove_families.hpp): the
+// whole `uabt prove` after the gate, per size and engine. A run whose verdicts or violation
+// ticks differ from the family's known answers fails (SkipWithError); an engine this build
+// does not have is skipped with the reason.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "bench_support.hpp"
+#include "bt/xml_io.hpp"
+#include "gate/gate.hpp"
+#include "prove/outcome.hpp"
+#include "prove_families.hpp"
+
+namespace {
+
+using namespace uabt;
+using namespace uabt::bench;
+
+const char* const kEngines[] = {"explicit", "symbolic"};
+
+struct Gated {
+  FamilyMission family;
+  std::unique_ptr<load::Mission> mission;
+  std::unique_ptr<bt::Document> compiled;
+  prove::WorldModel world;
+  std::string error;
+};
+
+const Gated& gated(const std::string& name, int size, int counters) {
+  static std::map<std::string, std::unique_ptr<Gated>> cache;
+  const std::string key = name + "-" + std::to_string(size) + "-" + std::to_string(counters);
+  auto& slot = cache[key];
+  if (slot) return *slot;
+  slot = std::make_unique<Gated>();
+  Gated& g = *slot;
+  const auto dir = workspace() / ("prove-" + key);
+  g.family =
+      name == "binary" ? generate_binary_tree(dir, size, counters) : generate_checklist(dir, size);
+  std::string error;
+  auto mission = load::load_mission(dir, {}, error);
+  if (!mission) {
+    g.error = "load: " + error;
+    return g;
+  }
+  gate::Outcome outcome = gate::run_gate(std::move(*mission), {}, "bench");
+  if (outcome.compiled_xml.empty() || !outcome.passed()) {
+    g.error = "the generated mission does not pass the gate";
+    return g;
+  }
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+  if (!doc) {
+    g.error = "the compiled tree does not read back";
+    return g;
+  }
+  g.mission = std::make_unique<load::Mission>(std::move(*outcome.mission));
+  g.compiled = std::make_unique<bt::Document>(std::move(*doc));
+  g.world = prove::mission_world(*g.mission);
+  return g;
+}
+
+// "" when every guarantee gets the family's verdict (and violation tick).
+std::string check_answers(const prove::Result& r, const FamilyMission& family) {
+  if (r.answers.size() != family.verdicts.size()) return "wrong number of answers";
+  for (const prove::Answer& a : r.answers) {
+    const auto it = family.verdicts.find(a.requirement);
+    if (it == family.verdicts.end()) return "unexpected guarantee " + a.requirement;
+    if (it->second != prove::verdict_name(a.verdict))
+      return a.requirement + ": " + prove::verdict_name(a.verdict) + ", expected " + it->second;
+    const auto tick = family.violation_ticks.find(a.requirement);
+    if (tick != family.violation_ticks.end() && a.depth != tick->second)
+      return a.requirement + ": violated at tick " + std::to_string(a.depth) + ", expected " +
+             std::to_string(tick->second);
+  }
+  return "";
+}
+
+void run_prove(benchmark::State& state, const Gated& g, const char* engine) {
+  if (!g.error.empty()) {
+    state.SkipWithError(g.error.c_str());
+    return;
+  }
+  prove::Options options;
+  options.engine = engine;
+  prove::Result result;
+  try {
+    for (auto _ : state) {
+      result = prove::prove(*g.mission, *g.compiled, g.world, options);
+      benchmark::DoNotOptimize(result);
+    }
+  } catch (const std::exception& e) {
+    // An engine this build does not have, or one that declines the mission.
+    const std::string why = std::string("unsupported: ") + e.what();
+    state.SkipWithError(why.c_str());
+    return;
+  }
+  if (const std::string wrong = check_answers(result, g.family); !wrong.empty()) {
+    state.SkipWithError(wrong.c_str());
+    return;
+  }
+  state.counters["tree_nodes"] = g.family.tree_nodes;
+  state.counters["states"] = static_cast<double>(result.states);
+  state.counters["transitions"] = static_cast<double>(result.transitions);
+}
+
+// range(0): Fallback-tree nodes, range(1): counters, range(2): engine (0 explicit, 1 symbolic).
+void BM_ProveBinaryTree(benchmark::State& state) {
+  run_prove(state,
+            gated("binary", static_cast<int>(state.range(0)), static_cast<int>(state.range(1))),
+            kEngines[state.range(2)]);
+}
+
+// range(0): checks N, range(1): engine.
+void BM_ProveChecklist(benchmark::State& state) {
+  run_prove(state, gated("checklist", static_cast<int>(state.range(0)), 0),
+            kEngines[state.range(1)]);
+}
+
+}  // namespace
+
+BENCHMARK(BM_ProveBinaryTree)
+    ->ArgsProduct({{23, 71, 263, 1031, 2055}, {2, 3}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ProveChecklist)
+    ->ArgsProduct({{5, 10, 20, 50, 65}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
