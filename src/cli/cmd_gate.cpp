@@ -75,11 +75,12 @@ void register_gate(CLI::App& app, int& exit_code) {
     else
       prove::add_proofs_not_run(outcome, "the gate failed before its proof step");
     if (outcome.report.proofs) {
-      // How the report tells to replay a counterexample (`uabt run` has no optimized style).
+      // How the report tells to replay a counterexample: the style given on the command line
+      // (without one, `uabt run` compiles each node in the style the mission declares).
       outcome.report.proofs->mission_path =
           running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
-      if (args->selection == "reactive")
-        outcome.report.proofs->run_options = "--selection reactive";
+      if (!args->selection.empty())
+        outcome.report.proofs->run_options = "--selection " + args->selection;
     }
     outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     // What conform says about the compiled tree points at its file in the report directory.

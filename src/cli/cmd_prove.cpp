@@ -50,7 +50,7 @@ void register_prove(CLI::App& app, int& exit_code) {
   cmd->add_option("--selection", args->selection,
                   "selector style of every adaptable node (default: its own selection attribute, "
                   "else sequence)")
-      ->check(CLI::IsMember({"sequence", "reactive"}));
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--counterexamples", args->counterexamples,
                   "write each counterexample as DIR/<requirement>.json (a runtime scenario)");
   cmd->add_option("--format", args->format,
@@ -109,7 +109,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     if (args->format == "html") {
       report::Proofs proofs = prove::report_proofs(result, written);
       proofs.mission_path = args->mission;
-      if (args->selection == "reactive") proofs.run_options = "--selection reactive";
+      if (!args->selection.empty()) proofs.run_options = "--selection " + args->selection;
       emit(args->output, report::proofs_page_html(proofs, outcome.mission->name, tool_version()));
       return;
     }

@@ -72,7 +72,7 @@ void register_run(CLI::App& app, int& exit_code) {
   cmd->add_option("--selection", args->selection,
                   "selector style of every adaptable node (default: its own selection attribute, "
                   "else sequence)")
-      ->check(CLI::IsMember({"sequence", "reactive"}));
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--max-ticks", args->max_ticks,
                   "stop after this many ticks, verdict timeout (default: the scenario's)")
       ->check(CLI::PositiveNumber);

@@ -208,27 +208,33 @@ TEST(ProveCli, HtmlFormatIsAPageWithTheTimeline) {
 namespace uabt::testing {
 namespace {
 
-// A reactive-style gate tells to replay with the same style, and the command it shows plays
-// the violation at the tick the report names.
-TEST(ProveCli, ReactiveGateReplaysInItsStyle) {
+// msl_curiosity declares a reactive selection; gated in the paper's sequence style it violates
+// HoldOnUnknown, and the replay command the report gives runs in that same style.
+TEST(ProveCli, SequenceGateReplaysInItsStyle) {
   TempMission scratch({});
   const auto out = scratch.dir() / "report";
   const std::string mission = mission_dir("msl_curiosity").string();
-  EXPECT_EQ(run("gate " + mission + " --selection reactive --out " + out.string()).code, 1);
+  EXPECT_EQ(run("gate " + mission + " --selection sequence --out " + out.string()).code, 1);
   const auto json = nlohmann::json::parse(read_all(out / "findings.json"));
   std::string replay;
   std::uint64_t tick = 0;
+  ASSERT_TRUE(json.contains("proofs")) << json.dump(2);
   for (const auto& p : json["proofs"]["properties"])
-    if (p["id"] == "ArmClosed") {
+    if (p["id"] == "HoldOnUnknown") {
       replay = p["counterexample"]["replay"];
       tick = p["counterexample"]["tick"];
     }
-  const std::string scenario = (out / "counterexamples/ArmClosed.json").string();
-  EXPECT_EQ(replay, "uabt run " + mission + " --selection reactive --scenario " + scenario);
+  EXPECT_EQ(tick, 3u);
+  const std::string scenario = (out / "counterexamples/HoldOnUnknown.json").string();
+  EXPECT_EQ(replay, "uabt run " + mission + " --selection sequence --scenario " + scenario);
   const CliRun r = run(replay.substr(std::string("uabt ").size()));
-  EXPECT_NE(r.out.find("property ArmClosed: violated from tick " + std::to_string(tick)),
+  EXPECT_NE(r.out.find("property HoldOnUnknown: violated from tick " + std::to_string(tick)),
             std::string::npos)
       << r.out;
+  // Without the style, the mission's own (reactive) runs the same scenario without violation.
+  const CliRun declared = run("run " + mission + " --scenario " + scenario);
+  EXPECT_EQ(declared.out.find("property HoldOnUnknown: violated"), std::string::npos)
+      << declared.out;
 }
 
 }  // namespace
