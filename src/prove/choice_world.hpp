@@ -53,6 +53,9 @@ class ChoiceWorld : public runtime::World {
 
   Chooser chooser;
   ActionRecorder* recorder = nullptr;
+  // When set, the outcome of every action per leaf instead of the chooser's: -1 runs on,
+  // k >= 0 ends with its contract's k-th result (a symbolic engine's counterexample).
+  const std::vector<std::int32_t>* forced = nullptr;
 
   struct Leaf {
     runtime::NodeId node = runtime::kNoNode;

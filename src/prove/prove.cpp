@@ -5,6 +5,8 @@
 
 #include "monitor/monitor.hpp"
 #include "prove/explore.hpp"
+#include "prove/symbolic.hpp"
+#include "prove/symbolic_value.hpp"
 #include "runtime/runner.hpp"
 
 namespace uabt::prove {
@@ -191,12 +193,21 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
 
 }  // namespace
 
-Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
-             const Options& options) {
-  if (options.engine != "auto" && options.engine != "explicit")
-    throw ProveError("engine '" + options.engine +
-                     "' is not available: this build has the explicit-state engine only");
-  Model model(mission, compiled, world);
+namespace {
+
+Answer answer_of(const Property& p) {
+  Answer a;
+  a.requirement = p.requirement->id;
+  a.text = p.requirement->text;
+  a.location = p.requirement->location;
+  if (!p.layout) {
+    a.verdict = Verdict::unsupported;
+    a.reason = p.unsupported;
+  }
+  return a;
+}
+
+Result prove_explicit(Model& model, const Options& options) {
   const SearchResult search = explore(model, options);
   Result r;
   r.engine = "explicit";
@@ -209,13 +220,8 @@ Result prove(const load::Mission& mission, const bt::Document& compiled, const W
   for (std::size_t i = 0; i < model.properties.size(); ++i) {
     const Property& p = model.properties[i];
     if (p.assumption) continue;
-    Answer a;
-    a.requirement = p.requirement->id;
-    a.text = p.requirement->text;
-    a.location = p.requirement->location;
+    Answer a = answer_of(p);
     if (!p.layout) {
-      a.verdict = Verdict::unsupported;
-      a.reason = p.unsupported;
     } else if (const auto& f = search.violations[i]) {
       a.verdict = Verdict::violated;
       a.depth = f->tick;
@@ -230,6 +236,66 @@ Result prove(const load::Mission& mission, const bt::Document& compiled, const W
     r.answers.push_back(std::move(a));
   }
   return r;
+}
+
+Result prove_symbolic(Model& model, const Options& options) {
+  const SymbolicSearch search = symbolic_search(model, options);
+  Result r;
+  r.engine = "symbolic";
+  r.depth = search.depth;
+  r.induction_k = search.induction_k;
+  r.complete = true;
+  for (std::size_t i = 0; i < model.properties.size(); ++i) {
+    const Property& p = model.properties[i];
+    if (p.assumption) continue;
+    Answer a = answer_of(p);
+    if (!p.layout) {
+    } else if (const auto& f = search.violations[i]) {
+      a.verdict = Verdict::violated;
+      a.depth = f->tick;
+      try {
+        a.counterexample = replay(model, p, *f, scenario_of(model, p, *f));
+      } catch (const runtime::TickException& e) {
+        throw ProveError("internal error: the counterexample of " + p.requirement->id +
+                         " stops the model's engine: " + e.error.message);
+      }
+    } else if (search.proved[i]) {
+      a.verdict = Verdict::proved;
+      a.depth = search.proved_k[i];
+    } else {
+      a.verdict = Verdict::bounded;
+      a.depth = search.depth;
+      r.complete = false;
+    }
+    r.answers.push_back(std::move(a));
+  }
+  return r;
+}
+
+}  // namespace
+
+Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
+             const Options& options) {
+  if (options.engine != "auto" && options.engine != "explicit" && options.engine != "symbolic")
+    throw ProveError("unknown engine '" + options.engine + "' (auto, explicit or symbolic)");
+  Model model(mission, compiled, world);
+  std::string engine = options.engine;
+  if (engine == "auto") {
+    const std::uint64_t product = environment_product(model);
+    engine = model.explicit_refusal.empty() && product <= kAutoExplicitProduct ? "explicit"
+                                                                               : "symbolic";
+  }
+  if (engine == "explicit") return prove_explicit(model, options);
+  try {
+    return prove_symbolic(model, options);
+  } catch (const SymbolicUnsupported& e) {
+    if (options.engine == "symbolic")
+      throw ProveError(std::string("the symbolic engine cannot model this mission: ") + e.what());
+    // auto: the explicit engine's answer, or its reason for refusing.
+    if (!model.explicit_refusal.empty())
+      throw ProveError(model.explicit_refusal + "; nor can the symbolic engine: " + e.what());
+    return prove_explicit(model, options);
+  }
 }
 
 }  // namespace uabt::prove
