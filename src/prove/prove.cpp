@@ -262,6 +262,8 @@ Result prove_symbolic(Model& model, const Options& options) {
     } else if (search.proved[i]) {
       a.verdict = Verdict::proved;
       a.depth = search.proved_k[i];
+      if (search.by_pdr[i])
+        r.notes.push_back(p.requirement->id + " is proved by IC3/PDR (Z3's Spacer)");
     } else {
       a.verdict = Verdict::bounded;
       a.depth = search.depth;

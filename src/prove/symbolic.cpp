@@ -2,6 +2,10 @@
 
 #include "prove/symbolic_tick.hpp"
 
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+
 namespace uabt::prove {
 
 namespace {
@@ -25,6 +29,75 @@ Step step_of(const z3::model& model, SymbolicTick& tick, const Model& m, const T
   return step;
 }
 
+bool is_variable(const z3::expr& e) {
+  return e.is_app() && e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED;
+}
+
+// IC3/PDR (Z3's Spacer) on the guarantees k-induction could not prove: Horn clauses over an
+// invariant of the states between ticks. The answer is trusted only when it is a proof; a
+// violation is left to BMC, which finds the shortest one. Bounded by a resource limit
+// (deterministic, unlike a timeout).
+std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Model& m,
+                                const std::vector<std::size_t>& open) {
+  std::vector<bool> proved(m.properties.size(), false);
+  const SymState cur = tick.state("pdr.");
+  std::vector<z3::expr> flat = SymbolicTick::flatten(cur);
+  std::vector<std::size_t> positions;
+  z3::sort_vector sorts(ctx);
+  z3::expr_vector state_vars(ctx);
+  for (std::size_t i = 0; i < flat.size(); ++i)
+    if (is_variable(flat[i])) {
+      positions.push_back(i);
+      sorts.push_back(flat[i].get_sort());
+      state_vars.push_back(flat[i]);
+    }
+  z3::func_decl inv = ctx.function("Inv", sorts, ctx.bool_sort());
+  auto holds = [&](const SymState& s) {
+    const std::vector<z3::expr> f = SymbolicTick::flatten(s);
+    z3::expr_vector args(ctx);
+    for (std::size_t i : positions) args.push_back(f[i]);
+    return inv(args);
+  };
+  const TickInputs first_in = tick.inputs("pdr.first."), in = tick.inputs("pdr.in.");
+  auto quantified = [&](const TickInputs& x, bool with_state) {
+    z3::expr_vector vars(ctx);
+    if (with_state)
+      for (unsigned i = 0; i < state_vars.size(); ++i) vars.push_back(state_vars[i]);
+    for (const auto& v : x.values) vars.push_back(v);
+    for (const auto& o : x.outcomes) vars.push_back(o);
+    return vars;
+  };
+  const TickEncoding start = tick.encode(tick.fresh(), first_in, true);
+  const TickEncoding step = tick.encode(cur, in, false);
+  for (std::size_t p : open) {
+    z3::fixedpoint fp(ctx);
+    z3::params params(ctx);
+    params.set("engine", "spacer");
+    fp.set(params);
+    fp.register_relation(inv);
+    z3::func_decl bad = ctx.function(("Bad" + std::to_string(p)).c_str(), 0, nullptr, ctx.bool_sort());
+    fp.register_relation(bad);
+    z3::expr r0 = z3::forall(quantified(first_in, false), z3::implies(start.valid, holds(start.next)));
+    z3::expr r1 = z3::forall(quantified(in, true),
+                             z3::implies(holds(cur) && step.valid, holds(step.next)));
+    z3::expr b0 = z3::forall(quantified(first_in, false),
+                             z3::implies(start.valid && start.fails[p], bad()));
+    z3::expr b1 = z3::forall(quantified(in, true),
+                             z3::implies(holds(cur) && step.valid && step.fails[p], bad()));
+    fp.add_rule(r0, ctx.str_symbol("init"));
+    fp.add_rule(r1, ctx.str_symbol("tick"));
+    fp.add_rule(b0, ctx.str_symbol("bad0"));
+    fp.add_rule(b1, ctx.str_symbol("bad"));
+    z3::expr query = bad();
+    try {
+      proved[p] = fp.query(query) == z3::unsat;
+    } catch (const z3::exception&) {
+      proved[p] = false;  // resource limit: not proved here
+    }
+  }
+  return proved;
+}
+
 }  // namespace
 
 SymbolicSearch symbolic_search(Model& m, const Options& options) {
@@ -36,6 +109,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   out.violations.resize(count);
   out.proved_k.assign(count, 0);
   out.proved.assign(count, false);
+  out.by_pdr.assign(count, false);
   std::vector<std::size_t> open;
   for (std::size_t p = 0; p < count; ++p)
     if (!m.properties[p].assumption && tick.table(p)) open.push_back(p);
@@ -83,6 +157,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     }
     open = std::move(still);
     out.depth = k;
+    if (std::getenv("UABT_PROVE_TRACE")) std::cerr << "bmc " << k << " done\n";
     if (open.empty()) break;
 
     // Induction step: k transitions from any state, pairwise distinct sources.
@@ -113,6 +188,17 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
       ind.pop();
     }
     std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
+    // What k-induction has not proved by now it will rarely prove later: ask IC3/PDR once.
+    if (k == std::min<std::uint64_t>(bound, kInductionBeforePdr) && !open.empty()) {
+      const std::vector<bool> pdr = spacer_proofs(ctx, tick, m, open);
+      for (std::size_t p : open)
+        if (pdr[p]) {
+          out.proved[p] = true;
+          out.by_pdr[p] = true;
+        }
+      std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
+    }
+    if (std::getenv("UABT_PROVE_TRACE")) std::cerr << "induction " << k << " done\n";
   }
   return out;
 }

@@ -677,6 +677,14 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
   return ok;
 }
 
+std::vector<z3::expr> SymbolicTick::flatten(const SymState& s) {
+  std::vector<z3::expr> out;
+  for (const auto* part : {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done,
+                           &s.started})
+    out.insert(out.end(), part->begin(), part->end());
+  return out;
+}
+
 z3::expr SymbolicTick::same(const SymState& a, const SymState& b) const {
   z3::expr eq = a.done[0] == b.done[0] && a.started[0] == b.started[0];
   auto all = [&](const std::vector<z3::expr>& x, const std::vector<z3::expr>& y) {

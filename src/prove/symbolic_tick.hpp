@@ -50,6 +50,8 @@ class SymbolicTick {
   TickInputs inputs(const std::string& prefix) const;
   z3::expr domain(const SymState& s) const;          // ranges every reachable state lies in
   z3::expr same(const SymState& a, const SymState& b) const;
+  // Every component of a state in one order (constants where state() has them too).
+  static std::vector<z3::expr> flatten(const SymState& s);
   TickEncoding encode(const SymState& s, const TickInputs& in, bool first);
 
   // The runtime value of variable `var` in a model of the solver.
