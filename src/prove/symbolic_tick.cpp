@@ -593,6 +593,9 @@ z3::context& SymbolicTick::context() {
 bool SymbolicTick::tracked(std::size_t var) const {
   return impl_->vars[var].tracked;
 }
+SymType SymbolicTick::type(std::size_t var) const {
+  return impl_->types[var];
+}
 const MonitorTable* SymbolicTick::table(std::size_t property) const {
   return impl_->tables[property].get();
 }

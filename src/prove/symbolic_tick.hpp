@@ -57,6 +57,7 @@ class SymbolicTick {
   // The runtime value of variable `var` in a model of the solver.
   runtime::ScriptValue value(const z3::model& m, const z3::expr& e, std::size_t var) const;
   bool tracked(std::size_t var) const;  // part of the state or chosen by the environment
+  SymType type(std::size_t var) const;
   const MonitorTable* table(std::size_t property) const;
   SymbolCodes& codes();
   z3::context& context();
