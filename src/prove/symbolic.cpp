@@ -2,10 +2,6 @@
 
 #include "prove/symbolic_tick.hpp"
 
-#include <chrono>
-#include <cstdlib>
-#include <iostream>
-
 namespace uabt::prove {
 
 namespace {
@@ -35,7 +31,7 @@ bool is_variable(const z3::expr& e) {
 
 // IC3/PDR (Z3's Spacer) on the guarantees k-induction could not prove: Horn clauses over an
 // invariant of the states between ticks. The answer is trusted only when it is a proof; a
-// violation is left to BMC, which finds the shortest one. Bounded by a resource limit
+// violation is left to BMC, which finds the shortest one. Bounded by the number of frames
 // (deterministic, unlike a timeout).
 std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Model& m,
                                 const std::vector<std::size_t>& open) {
@@ -73,6 +69,7 @@ std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Mode
     z3::fixedpoint fp(ctx);
     z3::params params(ctx);
     params.set("engine", "spacer");
+    params.set("spacer.max_level", kPdrMaxLevel);
     fp.set(params);
     fp.register_relation(inv);
     z3::func_decl bad = ctx.function(("Bad" + std::to_string(p)).c_str(), 0, nullptr, ctx.bool_sort());
@@ -157,7 +154,6 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     }
     open = std::move(still);
     out.depth = k;
-    if (std::getenv("UABT_PROVE_TRACE")) std::cerr << "bmc " << k << " done\n";
     if (open.empty()) break;
 
     // Induction step: k transitions from any state, pairwise distinct sources.
@@ -198,7 +194,6 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
         }
       std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
     }
-    if (std::getenv("UABT_PROVE_TRACE")) std::cerr << "induction " << k << " done\n";
   }
   return out;
 }

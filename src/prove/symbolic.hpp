@@ -14,6 +14,9 @@ namespace uabt::prove {
 inline constexpr std::uint64_t kSymbolicBound = 40;
 // k-induction runs alone up to this k; IC3/PDR (Spacer) then tries what is still open.
 inline constexpr std::uint64_t kInductionBeforePdr = 6;
+// The frames IC3/PDR may open per guarantee before it gives up (deterministic, unlike a
+// timeout).
+inline constexpr unsigned kPdrMaxLevel = 64;
 
 struct SymbolicSearch {
   std::vector<std::optional<Finding>> violations;  // per property (guarantees only)
