@@ -120,8 +120,8 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
     const std::int32_t outcome = (*forced)[context.handle];
     if ((outcome < 0 && !may_run) ||
         (outcome >= 0 && (!may_end || static_cast<std::size_t>(outcome) >= results.size())))
-      throw std::runtime_error("internal error: action '" + leaf.label +
-                               "' cannot have outcome " + std::to_string(outcome) + " here");
+      throw std::runtime_error("internal error: action '" + leaf.label + "' cannot have outcome " +
+                               std::to_string(outcome) + " here");
     pick = outcome < 0 ? 0 : static_cast<std::uint32_t>(outcome) + (may_run ? 1u : 0u);
   } else if (options > 1) {
     pick = chooser.choose(options);

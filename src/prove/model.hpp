@@ -34,7 +34,7 @@ struct Property {
   bool assumption = false;  // component Environment
   monitor::Shape shape;
   std::vector<std::shared_ptr<monitor::CompiledExpression>>
-      parts;  // mode, condition, response, stop
+      parts;                            // mode, condition, response, stop
   std::vector<fretish::ExprPtr> exprs;  // the same four as written (null where absent)
   std::unique_ptr<PastTimeLayout> layout;
   std::size_t offset = 0;  // its words in the monitor state

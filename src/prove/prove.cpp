@@ -284,8 +284,8 @@ Result prove(const load::Mission& mission, const bt::Document& compiled, const W
   std::string engine = options.engine;
   if (engine == "auto") {
     const std::uint64_t product = environment_product(model);
-    engine = model.explicit_refusal.empty() && product <= kAutoExplicitProduct ? "explicit"
-                                                                               : "symbolic";
+    engine =
+        model.explicit_refusal.empty() && product <= kAutoExplicitProduct ? "explicit" : "symbolic";
   }
   if (engine == "explicit") return prove_explicit(model, options);
   try {

@@ -55,12 +55,12 @@ struct Options {
 inline constexpr std::uint64_t kAutoExplicitProduct = 4096;
 
 struct Result {
-  std::vector<Answer> answers;  // one per guarantee, file order
-  std::string engine;                        // explicit | symbolic
+  std::vector<Answer> answers;                // one per guarantee, file order
+  std::string engine;                         // explicit | symbolic
   std::uint64_t states = 0, transitions = 0;  // explicit
   std::uint64_t induction_k = 0;              // symbolic: deepest k-induction tried
-  std::uint64_t depth = 0;  // deepest tick explored (symbolic: the BMC depth)
-  bool complete = false;    // every reachable state was explored
+  std::uint64_t depth = 0;                    // deepest tick explored (symbolic: the BMC depth)
+  bool complete = false;                      // every reachable state was explored
   std::vector<std::string> notes;
   bool passed() const;  // every guarantee proved
 };

@@ -72,13 +72,15 @@ std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Mode
     params.set("spacer.max_level", kPdrMaxLevel);
     fp.set(params);
     fp.register_relation(inv);
-    z3::func_decl bad = ctx.function(("Bad" + std::to_string(p)).c_str(), 0, nullptr, ctx.bool_sort());
+    z3::func_decl bad =
+        ctx.function(("Bad" + std::to_string(p)).c_str(), 0, nullptr, ctx.bool_sort());
     fp.register_relation(bad);
-    z3::expr r0 = z3::forall(quantified(first_in, false), z3::implies(start.valid, holds(start.next)));
-    z3::expr r1 = z3::forall(quantified(in, true),
-                             z3::implies(holds(cur) && step.valid, holds(step.next)));
-    z3::expr b0 = z3::forall(quantified(first_in, false),
-                             z3::implies(start.valid && start.fails[p], bad()));
+    z3::expr r0 =
+        z3::forall(quantified(first_in, false), z3::implies(start.valid, holds(start.next)));
+    z3::expr r1 =
+        z3::forall(quantified(in, true), z3::implies(holds(cur) && step.valid, holds(step.next)));
+    z3::expr b0 =
+        z3::forall(quantified(first_in, false), z3::implies(start.valid && start.fails[p], bad()));
     z3::expr b1 = z3::forall(quantified(in, true),
                              z3::implies(holds(cur) && step.valid && step.fails[p], bad()));
     fp.add_rule(r0, ctx.str_symbol("init"));

@@ -23,7 +23,7 @@ struct SymbolicSearch {
   std::vector<std::uint64_t> proved_k;  // per property: the k whose induction proved it, else 0
   std::vector<bool> proved;
   std::vector<bool> by_pdr;  // per property: proved by IC3/PDR rather than k-induction
-  std::uint64_t depth = 0;  // BMC depth checked (no violation of the open guarantees below it)
+  std::uint64_t depth = 0;   // BMC depth checked (no violation of the open guarantees below it)
   std::uint64_t induction_k = 0;  // deepest induction tried
 };
 

@@ -59,18 +59,23 @@ const std::map<std::string, NK, std::less<>>& builtins() {
 
 // Built-in nodes the runtime has and this encoding does not (yet) model.
 bool unmodelled_builtin(const std::string& kind) {
-  static const std::set<std::string, std::less<>> kinds = {
-      "SequenceWithMemory", "SequenceStar",         "Parallel",
-      "ParallelAll",        "WhileDoElse",          "Repeat",
-      "RetryUntilSuccessful", "RetryUntilSuccesful", "KeepRunningUntilFailure",
-      "RunOnce"};
+  static const std::set<std::string, std::less<>> kinds = {"SequenceWithMemory",
+                                                           "SequenceStar",
+                                                           "Parallel",
+                                                           "ParallelAll",
+                                                           "WhileDoElse",
+                                                           "Repeat",
+                                                           "RetryUntilSuccessful",
+                                                           "RetryUntilSuccesful",
+                                                           "KeepRunningUntilFailure",
+                                                           "RunOnce"};
   return kinds.contains(kind);
 }
 
 bool pre_or_post_condition(const std::string& attribute) {
-  static const std::set<std::string, std::less<>> names = {
-      "_failureIf", "_successIf", "_skipIf",    "_while",
-      "_onHalted",  "_onFailure", "_onSuccess", "_post"};
+  static const std::set<std::string, std::less<>> names = {"_failureIf", "_successIf", "_skipIf",
+                                                           "_while",     "_onHalted",  "_onFailure",
+                                                           "_onSuccess", "_post"};
   return names.contains(attribute);
 }
 
@@ -90,7 +95,7 @@ struct NodeDef {
 
 struct VarDef {
   SymType type = SymType::boolean;
-  std::set<int> codes;                 // symbol
+  std::set<int> codes;                // symbol
   std::optional<std::string> lo, hi;  // integer, real
   bool tracked = false;               // read by something
   bool chosen = false;                // tracked and the environment's
@@ -109,7 +114,7 @@ struct SymbolicTick::Impl {
   std::vector<z3::expr> first;  // per variable: its value in the fresh state
   std::map<runtime::SlotId, int> var_of_slot;
   std::vector<std::unique_ptr<MonitorTable>> tables;  // per property
-  std::vector<std::map<NodeId, int>> alternatives;   // per adaptable: call -> alternative code
+  std::vector<std::map<NodeId, int>> alternatives;    // per adaptable: call -> alternative code
   std::vector<std::string> adaptable_names;
   std::vector<int> leaf_of_node_effect;
   std::vector<std::pair<std::optional<runtime::script::Program>,
@@ -238,8 +243,7 @@ struct SymbolicTick::Impl {
       }
       auto t = std::make_unique<MonitorTable>(*p.layout, 4096);
       if (t->failed())
-        throw SymbolicUnsupported(p.requirement->id +
-                                  ": its monitor has more than 4096 states");
+        throw SymbolicUnsupported(p.requirement->id + ": its monitor has more than 4096 states");
       tables.push_back(std::move(t));
     }
   }
@@ -462,20 +466,18 @@ struct SymbolicTick::Impl {
     const z3::expr may_run = c ? now < ctx.int_val(c->max_ticks) : ctx.bool_val(true);
     const z3::expr may_end = c ? now >= ctx.int_val(c->min_ticks) : ctx.bool_val(true);
     x.constraints.push_back(z3::implies(
-        g, (d == -1 && may_run) ||
-               (d >= 0 && d < static_cast<int>(results.size()) && may_end)));
+        g, (d == -1 && may_run) || (d >= 0 && d < static_cast<int>(results.size()) && may_end)));
     z3::expr status = ctx.int_val(kRunning);
     set(x.cur.elapsed[l], g && d == -1, c ? now : ctx.int_val(1));
     for (std::size_t k = 0; k < results.size(); ++k) {
       const z3::expr ends = g && d == static_cast<int>(k);
       status = z3::ite(d == static_cast<int>(k), ctx.int_val(static_cast<int>(results[k])), status);
       set(x.cur.elapsed[l], ends, ctx.int_val(0));
-      const auto& effect =
-          results[k] == NodeStatus::success ? effects[l].first : effects[l].second;
+      const auto& effect = results[k] == NodeStatus::success ? effects[l].first : effects[l].second;
       if (!effect) continue;
       ScriptScope scope{[this](const std::string& n) {
-                          const auto slot = m.engine->blackboard().find(
-                              runtime::Blackboard::kRootScope, n);
+                          const auto slot =
+                              m.engine->blackboard().find(runtime::Blackboard::kRootScope, n);
                           const auto it = slot ? var_of_slot.find(*slot) : var_of_slot.end();
                           return it == var_of_slot.end() ? -1 : it->second;
                         },
@@ -569,7 +571,7 @@ struct SymbolicTick::Impl {
         std::vector<z3::expr> up;
         for (std::size_t k = 0; k < level.size(); k += 2)
           up.push_back(z3::eq(level[k], level[k + 1]) ? level[k]
-                                                       : z3::ite(bits[bit], level[k + 1], level[k]));
+                                                      : z3::ite(bits[bit], level[k + 1], level[k]));
         level = std::move(up);
       }
       out = s + 1 == t.size() ? level[0] : z3::ite(state == static_cast<int>(s), level[0], out);
@@ -607,7 +609,8 @@ SymState SymbolicTick::fresh() const {
     s.status.push_back(i.ctx.int_val(kIdle));
     s.counter.push_back(i.ctx.int_val(0));
   }
-  for (std::size_t l = 0; l < i.m.choice->leaves().size(); ++l) s.elapsed.push_back(i.ctx.int_val(0));
+  for (std::size_t l = 0; l < i.m.choice->leaves().size(); ++l)
+    s.elapsed.push_back(i.ctx.int_val(0));
   s.values = i.first;
   for (std::size_t p = 0; p < i.tables.size(); ++p) s.monitor.push_back(i.ctx.int_val(0));
   s.done.push_back(i.ctx.bool_val(false));
@@ -634,8 +637,9 @@ SymState SymbolicTick::state(const std::string& prefix) const {
                            ? i.sort_const(prefix + i.m.vars[v].name, i.types[v])
                            : i.first[v]);
   for (std::size_t p = 0; p < i.tables.size(); ++p)
-    s.monitor.push_back(i.tables[p] ? i.ctx.int_const((prefix + "monitor" + std::to_string(p)).c_str())
-                                    : i.ctx.int_val(0));
+    s.monitor.push_back(i.tables[p]
+                            ? i.ctx.int_const((prefix + "monitor" + std::to_string(p)).c_str())
+                            : i.ctx.int_val(0));
   s.done.push_back(i.ctx.bool_const((prefix + "done").c_str()));
   s.started.push_back(i.ctx.bool_const((prefix + "started").c_str()));
   return s;
@@ -682,8 +686,8 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
 
 std::vector<z3::expr> SymbolicTick::flatten(const SymState& s) {
   std::vector<z3::expr> out;
-  for (const auto* part : {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done,
-                           &s.started})
+  for (const auto* part :
+       {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done, &s.started})
     out.insert(out.end(), part->begin(), part->end());
   return out;
 }
@@ -716,8 +720,8 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
     valid = valid && i.in_range(v, in.values[v]);
   }
   if (first && i.m.world.initial)
-    valid = valid && i.state_expression(*i.m.world.initial, x.cur.values,
-                                        i.m.world.file + ": initial");
+    valid =
+        valid && i.state_expression(*i.m.world.initial, x.cur.values, i.m.world.file + ": initial");
   for (const auto& a : i.m.mission.domain.assumptions)
     if (a.expr) valid = valid && i.state_expression(*a.expr, x.cur.values, "assumption " + a.name);
 

@@ -30,11 +30,12 @@ struct TickInputs {
 
 struct TickEncoding {
   SymState next;
-  z3::expr root;                   // what the root returned
-  std::vector<z3::expr> returned;  // per engine node: what it returned this tick, idle if not ticked
-  std::vector<z3::expr> inputs;    // per property: mode, condition, response, stop
-  z3::expr valid;                  // a step the world model allows from a state where the run goes on
-  std::vector<z3::expr> fails;     // per property: a guarantee violated at this tick
+  z3::expr root;  // what the root returned
+  std::vector<z3::expr>
+      returned;                  // per engine node: what it returned this tick, idle if not ticked
+  std::vector<z3::expr> inputs;  // per property: mode, condition, response, stop
+  z3::expr valid;                // a step the world model allows from a state where the run goes on
+  std::vector<z3::expr> fails;   // per property: a guarantee violated at this tick
 };
 
 // One tick of the runtime's engine (Engine::tick on the ChoiceWorld) as a formula, written
@@ -45,10 +46,10 @@ class SymbolicTick {
   SymbolicTick(Model& model, z3::context& ctx);
   ~SymbolicTick();
 
-  SymState fresh() const;                            // before the first tick
-  SymState state(const std::string& prefix) const;   // fresh constants
+  SymState fresh() const;                           // before the first tick
+  SymState state(const std::string& prefix) const;  // fresh constants
   TickInputs inputs(const std::string& prefix) const;
-  z3::expr domain(const SymState& s) const;          // ranges every reachable state lies in
+  z3::expr domain(const SymState& s) const;  // ranges every reachable state lies in
   z3::expr same(const SymState& a, const SymState& b) const;
   // Every component of a state in one order (constants where state() has them too).
   static std::vector<z3::expr> flatten(const SymState& s);

@@ -18,7 +18,8 @@ int SymbolCodes::code(const std::string& name) {
 
 z3::expr real_literal(z3::context& ctx, double value) {
   char buffer[64];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
+  const auto [end, ec] =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
   if (ec != std::errc() || !std::isfinite(value))
     throw SymbolicUnsupported("the real " + std::to_string(value) + " has no exact value");
   return ctx.real_val(std::string(buffer, end).c_str());
@@ -28,9 +29,11 @@ z3::expr constant_of(z3::context& ctx, const ScriptValue& v, SymType type, Symbo
   switch (type) {
     case SymType::boolean: return ctx.bool_val(v.kind == ScriptValue::Kind::boolean && v.boolean);
     case SymType::integer:
-      return ctx.int_val(static_cast<int64_t>(v.kind == ScriptValue::Kind::integer ? v.integer : 0));
+      return ctx.int_val(
+          static_cast<int64_t>(v.kind == ScriptValue::Kind::integer ? v.integer : 0));
     case SymType::real: return real_literal(ctx, v.kind == ScriptValue::Kind::real ? v.real : 0.0);
-    case SymType::symbol: return ctx.int_val(v.kind == ScriptValue::Kind::string ? codes.code(v.text) : -1);
+    case SymType::symbol:
+      return ctx.int_val(v.kind == ScriptValue::Kind::string ? codes.code(v.text) : -1);
   }
   return ctx.bool_val(false);
 }
@@ -157,10 +160,12 @@ class ScriptEncoder {
     switch (e.op) {
       case Op::literal:
         switch (e.literal.kind) {
-          case ScriptValue::Kind::boolean: return {SymType::boolean, ctx_.bool_val(e.literal.boolean), {}};
+          case ScriptValue::Kind::boolean:
+            return {SymType::boolean, ctx_.bool_val(e.literal.boolean), {}};
           case ScriptValue::Kind::integer:
             return {SymType::integer, ctx_.int_val(static_cast<int64_t>(e.literal.integer)), {}};
-          case ScriptValue::Kind::real: return {SymType::real, real_literal(ctx_, e.literal.real), {}};
+          case ScriptValue::Kind::real:
+            return {SymType::real, real_literal(ctx_, e.literal.real), {}};
           case ScriptValue::Kind::string: {
             if (e.literal.text.empty()) refuse("the empty string is not modelled");
             const int c = scope_.codes->code(e.literal.text);
@@ -197,7 +202,9 @@ class ScriptEncoder {
       case Op::logic_or: {
         const SymValue l = eval(e.a), r = eval(e.b);
         if (!numeric(l.type) || !numeric(r.type)) refuse("'&&'/'||' on names");
-        return {SymType::boolean, e.op == Op::logic_and ? truth(l) && truth(r) : truth(l) || truth(r), {}};
+        return {SymType::boolean,
+                e.op == Op::logic_and ? truth(l) && truth(r) : truth(l) || truth(r),
+                {}};
       }
       case Op::compare: return compare(e);
       case Op::conditional: {
@@ -211,8 +218,9 @@ class ScriptEncoder {
       }
       default: break;
     }
-    refuse("its operators are not all modelled (assignments inside expressions, '/', '..', bit "
-           "operations, string '+')");
+    refuse(
+        "its operators are not all modelled (assignments inside expressions, '/', '..', bit "
+        "operations, string '+')");
   }
 
   SymValue compare(const runtime::script::Expr& e) {
@@ -297,8 +305,10 @@ class FretishEncoder {
           acc = e.kind == K::logical_and ? acc && boolean(*a) : acc || boolean(*a);
         return {SymType::boolean, acc, {}};
       }
-      case K::logical_xor: return {SymType::boolean, boolean(*e.args[0]) != boolean(*e.args[1]), {}};
-      case K::implies: return {SymType::boolean, z3::implies(boolean(*e.args[0]), boolean(*e.args[1])), {}};
+      case K::logical_xor:
+        return {SymType::boolean, boolean(*e.args[0]) != boolean(*e.args[1]), {}};
+      case K::implies:
+        return {SymType::boolean, z3::implies(boolean(*e.args[0]), boolean(*e.args[1])), {}};
       case K::iff: return {SymType::boolean, boolean(*e.args[0]) == boolean(*e.args[1]), {}};
       case K::eq:
       case K::ne: {
@@ -321,7 +331,10 @@ class FretishEncoder {
       case K::ge: {
         const SymValue a = number(*e.args[0]), b = number(*e.args[1]);
         const z3::expr x = both_int(a, b) ? a.e : as_real(a), y = both_int(a, b) ? b.e : as_real(b);
-        const z3::expr r = e.kind == K::lt ? x < y : e.kind == K::le ? x <= y : e.kind == K::gt ? x > y : x >= y;
+        const z3::expr r = e.kind == K::lt   ? x < y
+                           : e.kind == K::le ? x <= y
+                           : e.kind == K::gt ? x > y
+                                             : x >= y;
         return {SymType::boolean, r, {}};
       }
       case K::add:
@@ -370,7 +383,8 @@ class FretishEncoder {
       const SymValue a = number(*e.args[0]);
       return {a.type, z3::ite(a.e >= 0, a.e, -a.e), {}};
     }
-    if ((f == "minReal" || f == "maxReal" || f == "minInt" || f == "maxInt") && e.args.size() == 2) {
+    if ((f == "minReal" || f == "maxReal" || f == "minInt" || f == "maxInt") &&
+        e.args.size() == 2) {
       const SymValue a = number(*e.args[0]), b = number(*e.args[1]);
       const bool ints = both_int(a, b);
       const z3::expr x = ints ? a.e : as_real(a), y = ints ? b.e : as_real(b);

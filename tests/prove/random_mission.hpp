@@ -17,8 +17,11 @@ class RandomMission {
     const std::string main = node(0, 3), sub = node(0, 2);
     files["mission.xml"] =
         "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
-        "  <BehaviorTree ID=\"MainTree\">\n" + main + "\n  </BehaviorTree>\n"
-        "  <BehaviorTree ID=\"Sub\">\n" + sub + "\n  </BehaviorTree>\n</root>\n";
+        "  <BehaviorTree ID=\"MainTree\">\n" +
+        main +
+        "\n  </BehaviorTree>\n"
+        "  <BehaviorTree ID=\"Sub\">\n" +
+        sub + "\n  </BehaviorTree>\n</root>\n";
     files["domain.fret"] = "boolean A, B\ninteger x in [0, 3]\n";
     files["world.json"] = world();
     files["requirements.fret"] = properties();
@@ -80,13 +83,14 @@ class RandomMission {
   }
 
   std::string world() {
-    static const char* effects[] = {"A = true", "A = false", "B = !B",
-                                    "x = x &lt; 3 ? x + 1 : x", "x = 0"};
+    static const char* effects[] = {"A = true", "A = false", "B = !B", "x = x &lt; 3 ? x + 1 : x",
+                                    "x = 0"};
     std::string s = "{\"initial\": \"x = 0\", \"actions\": {";
     for (int i = 0; i < 2; ++i) {
       const int lo = 1 + pick(2), hi = lo + pick(2);
-      const std::string results =
-          pick(3) == 0 ? "\"success\"" : pick(2) ? "\"success\", \"failure\"" : "\"failure\"";
+      const std::string results = pick(3) == 0 ? "\"success\""
+                                  : pick(2)    ? "\"success\", \"failure\""
+                                               : "\"failure\"";
       std::string effect = effects[pick(5)];
       for (auto at = effect.find("&lt;"); at != std::string::npos; at = effect.find("&lt;"))
         effect.replace(at, 4, "<");

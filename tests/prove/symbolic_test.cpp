@@ -99,8 +99,9 @@ TEST(SymbolicAgreement, HundredRandomMissions) {
     const prove::Result e = g.prove("explicit");
     if (!e.complete) continue;
     const prove::Result s = g.prove("symbolic");
-    expect_same_answers(e, s, "seed " + std::to_string(seed) + "\n" + r.files["mission.xml"] +
-                                  r.files["world.json"] + "\n" + r.files["requirements.fret"]);
+    expect_same_answers(e, s,
+                        "seed " + std::to_string(seed) + "\n" + r.files["mission.xml"] +
+                            r.files["world.json"] + "\n" + r.files["requirements.fret"]);
     for (const auto& a : s.answers) {
       violated += a.verdict == Verdict::violated;
       proved += a.verdict == Verdict::proved;
@@ -193,7 +194,8 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       for (std::size_t l = 0; l < leaves.size(); ++l) {
         const auto* c = leaves[l].contract;
         const std::int64_t now = m.choice->elapsed()[l] + 1;
-        const bool may_run = c ? now < c->max_ticks : true, may_end = c ? now >= c->min_ticks : true;
+        const bool may_run = c ? now < c->max_ticks : true,
+                   may_end = c ? now >= c->min_ticks : true;
         const std::size_t results = c ? c->results.size() : 2;
         std::vector<std::int32_t> allowed;
         if (may_run) allowed.push_back(-1);
@@ -215,8 +217,8 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
         break;  // a tick error: the explicit engine drops this step too
       }
       m.choice->forced = nullptr;
-      const std::string where = "seed " + std::to_string(seed) + " run " +
-                                std::to_string(run) + " tick " + std::to_string(t + 1);
+      const std::string where = "seed " + std::to_string(seed) + " run " + std::to_string(run) +
+                                " tick " + std::to_string(t + 1);
       EXPECT_EQ(int_of(enc.root), static_cast<int>(root)) << where;
       const auto after = runtime::EngineState::save(*m.engine);
       for (std::size_t n = 0; n < after.status.size(); ++n) {
@@ -242,8 +244,7 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
         for (std::size_t k = 0; k < 4; ++k) {
           std::string error;
           if (prop.parts[k]) inputs[k] = prop.parts[k]->evaluate_bool(frame, error);
-          EXPECT_EQ(enc.inputs[base + k].simplify().is_true(),
-                    inputs[k])
+          EXPECT_EQ(enc.inputs[base + k].simplify().is_true(), inputs[k])
               << where << " " << prop.requirement->id << " input " << k;
         }
         std::vector<std::uint64_t> w(monitors.begin() + prop.offset,
@@ -257,7 +258,8 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
         if (prop.assumption) {
           allowed = allowed && !fails;
         } else {
-          EXPECT_EQ(enc.fails[p].simplify().is_true(), fails) << where << " " << prop.requirement->id;
+          EXPECT_EQ(enc.fails[p].simplify().is_true(), fails)
+              << where << " " << prop.requirement->id;
         }
       }
       for (std::size_t v = 0; v < m.vars.size(); ++v) {
@@ -288,11 +290,13 @@ TEST(SymbolicTick, EqualsEngineTickOnCuriosity) {
 // (a swapped branch, a missed halt, a wrong counter) makes some tick differ.
 TEST(SymbolicTick, EqualsEngineTickOnRandomMissions) {
   int checked = 0;
+  std::set<std::string> kinds;
   for (unsigned seed = 1000; checked < 60 && seed < 1300; ++seed) {
     RandomMission r(seed);
     TempMission m(r.files);
     const Gated g(m.dir());
     if (!g.ok()) continue;
+    kinds.insert(r.kinds.begin(), r.kinds.end());
     check_ticks(g, seed, 10, 8);
     if (::testing::Test::HasFailure()) {
       ADD_FAILURE() << r.files["mission.xml"] << r.files["world.json"];
@@ -301,6 +305,7 @@ TEST(SymbolicTick, EqualsEngineTickOnRandomMissions) {
     ++checked;
   }
   EXPECT_EQ(checked, 60);
+  EXPECT_EQ(kinds.size(), 15u);
 }
 
 // --- Wide worlds: what the explicit engine refuses.
@@ -350,7 +355,8 @@ TEST(SymbolicWide, AnswersWhereTheExplicitEngineRefuses) {
 
 TEST(SymbolicWide, UnmodelledNodeIsDeclinedWithItsPlace) {
   auto files = wide_mission();
-  files["mission.xml"] = mission_with("    <RetryUntilSuccessful num_attempts=\"2\"><Act0/></RetryUntilSuccessful>");
+  files["mission.xml"] =
+      mission_with("    <RetryUntilSuccessful num_attempts=\"2\"><Act0/></RetryUntilSuccessful>");
   TempMission m(files);
   const Gated g(m.dir());
   ASSERT_TRUE(g.ok());
