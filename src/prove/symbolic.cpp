@@ -9,7 +9,7 @@ namespace {
 // Pins a state to fresh constants, so that terms stay one tick deep.
 SymState pin(z3::solver& s, SymbolicTick& tick, const SymState& value, const std::string& prefix) {
   SymState fresh = tick.state(prefix);
-  s.add(tick.same(fresh, value));
+  s.add(tick.same(fresh, value).simplify());
   return fresh;
 }
 
@@ -125,7 +125,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     const std::string t = "t" + std::to_string(k) + ".";
     inputs.push_back(tick.inputs(t));
     TickEncoding enc = tick.encode(path.back(), inputs.back(), k == 1);
-    bmc.add(enc.valid);
+    bmc.add(enc.valid.simplify());
     path.push_back(pin(bmc, tick, enc.next, "s" + std::to_string(k) + "."));
     if (bmc.check() == z3::unsat) {
       // No run lasts k ticks: every guarantee still open holds on every run.
@@ -161,20 +161,12 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     // Induction step: k transitions from any state, pairwise distinct sources.
     const std::string u = "i" + std::to_string(k) + ".";
     TickEncoding step = tick.encode(ind_states.back(), tick.inputs(u + "in."), false);
-    ind.add(step.valid);
+    ind.add(step.valid.simplify());
     ind_states.push_back(pin(ind, tick, step.next, u));
     for (std::size_t j = 0; j + 1 < ind_states.size() - 1; ++j)
       ind.add(!tick.same(ind_states[j], ind_states[ind_states.size() - 2]));
     ind_fails.push_back(step.fails);
     out.induction_k = k;
-    if (ind.check() == z3::unsat) {
-      for (std::size_t p : open) {
-        out.proved[p] = true;
-        out.proved_k[p] = k;
-      }
-      open.clear();
-      break;
-    }
     for (std::size_t p : open) {
       ind.push();
       for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) ind.add(!ind_fails[j][p]);

@@ -661,6 +661,9 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
   for (std::size_t n = 0; n < i.nodes.size(); ++n) {
     ok = ok && s.status[n] >= kIdle && s.status[n] <= kFailure;
     const NodeDef& d = i.nodes[n];
+    // Between ticks only the children of a RUNNING node are not IDLE: every kind here resets
+    // its children when it completes, and the root goes back to IDLE when it does.
+    for (NodeId c : d.children) ok = ok && (s.status[c] == kIdle || s.status[n] == kRunning);
     if (has_counter(d.kind)) {
       const int top = d.kind == NK::if_then_else ? static_cast<int>(d.children.size()) - 1
                                                  : static_cast<int>(d.children.size());
@@ -679,6 +682,7 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
   for (std::size_t p = 0; p < i.tables.size(); ++p)
     if (i.tables[p])
       ok = ok && s.monitor[p] >= 0 && s.monitor[p] < static_cast<int>(i.tables[p]->size());
+  ok = ok && (s.status[i.root] == kIdle || s.status[i.root] == kRunning);
   // Before the first tick there is one state.
   ok = ok && (s.started[0] || same(s, fresh()));
   return ok;

@@ -178,6 +178,8 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       }
       s.started = {ctx.bool_val(!first)};
       s.done = {ctx.bool_val(false)};
+      // Every reachable state lies in what k-induction and IC3/PDR assume of any state.
+      EXPECT_TRUE(sym.domain(s).simplify().is_true()) << "seed " << seed << " tick " << t + 1;
       // Random environment values and outcomes the contracts allow.
       prove::TickInputs in = sym.inputs("x.");
       for (std::size_t v = 0; v < m.vars.size(); ++v) {
