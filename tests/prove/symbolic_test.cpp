@@ -88,6 +88,38 @@ TEST(SymbolicAgreement, RepeatIsDeclinedWithItsPlace) {
   EXPECT_EQ(g.prove("auto").engine, "explicit");
 }
 
+// The missions of prove_test.cpp (sample_drilling and its variants), with the Repeat that
+// the symbolic engine does not model replaced by one drilling cycle.
+TEST(SymbolicAgreement, DrillingVariantsWithOneCycle) {
+  const char* fixed_rotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
+  <BehaviorTree ID="rotary">
+    <Sequence><Fallback><IsBitCool/><CoolDown/></Fallback><Drill mode="rotary"/></Sequence>
+  </BehaviorTree>
+</root>
+)";
+  auto base = mission_files("sample_drilling");
+  std::string& xml = base["mission.xml"];
+  xml.replace(xml.find("<Repeat num_cycles=\"3\">"), 24, "<Sequence>");
+  xml.replace(xml.find("</Repeat>"), 9, "</Sequence>");
+  std::vector<std::map<std::string, std::string>> variants(5, base);
+  variants[1]["alternatives/drilling/rotary.xml"] = fixed_rotary;
+  variants[2]["requirements.fret"] += "HardOnly: Environment shall always satisfy HardRock\n";
+  variants[3].erase("world.json");
+  variants[4]["world.json"] = R"({"initial": "!IsBitCool", "actions": {
+      "Drill": {"ticks": [2, 3], "results": ["success"], "on_success": "IsBitCool = false"},
+      "CoolDown": {"ticks": [1, 2], "results": ["success"], "on_success": "IsBitCool = true"}}})";
+  int violated = 0;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    TempMission m(variants[i]);
+    const Gated g(m.dir());
+    ASSERT_TRUE(g.ok()) << i;
+    const prove::Result e = g.prove("explicit"), s = g.prove("symbolic");
+    expect_same_answers(e, s, "variant " + std::to_string(i));
+    violated += answer(s, "CoolBit").verdict == Verdict::violated;
+  }
+  EXPECT_GE(violated, 2);
+}
+
 TEST(SymbolicAgreement, HundredRandomMissions) {
   int checked = 0, violated = 0, proved = 0;
   std::set<std::string> kinds;
