@@ -1,5 +1,6 @@
 #include "prove/prove.hpp"
 
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -207,6 +208,31 @@ Answer answer_of(const Property& p) {
   return a;
 }
 
+// One answer per guarantee: not checked, violated (with its replayed counterexample), or
+// what `decide` says of the others.
+void add_answers(Model& model, const std::vector<std::optional<Finding>>& violations, Result& r,
+                 const std::function<void(std::size_t, Answer&)>& decide) {
+  for (std::size_t i = 0; i < model.properties.size(); ++i) {
+    const Property& p = model.properties[i];
+    if (p.assumption) continue;
+    Answer a = answer_of(p);
+    if (p.layout && violations[i]) {
+      const Finding& f = *violations[i];
+      a.verdict = Verdict::violated;
+      a.depth = f.tick;
+      try {
+        a.counterexample = replay(model, p, f, scenario_of(model, p, f));
+      } catch (const runtime::TickException& e) {
+        throw ProveError("internal error: the counterexample of " + p.requirement->id +
+                         " stops the model's engine: " + e.error.message);
+      }
+    } else if (p.layout) {
+      decide(i, a);
+    }
+    r.answers.push_back(std::move(a));
+  }
+}
+
 Result prove_explicit(Model& model, const Options& options) {
   const SearchResult search = explore(model, options);
   Result r;
@@ -217,24 +243,10 @@ Result prove_explicit(Model& model, const Options& options) {
   r.complete = search.complete;
   if (search.tick_error)
     r.notes.push_back("a reachable tick stops with an error: " + *search.tick_error);
-  for (std::size_t i = 0; i < model.properties.size(); ++i) {
-    const Property& p = model.properties[i];
-    if (p.assumption) continue;
-    Answer a = answer_of(p);
-    if (!p.layout) {
-    } else if (const auto& f = search.violations[i]) {
-      a.verdict = Verdict::violated;
-      a.depth = f->tick;
-      a.counterexample = replay(model, p, *f, scenario_of(model, p, *f));
-    } else if (search.complete) {
-      a.verdict = Verdict::proved;
-      a.depth = search.depth;
-    } else {
-      a.verdict = Verdict::bounded;
-      a.depth = search.depth;
-    }
-    r.answers.push_back(std::move(a));
-  }
+  add_answers(model, search.violations, r, [&](std::size_t, Answer& a) {
+    a.verdict = search.complete ? Verdict::proved : Verdict::bounded;
+    a.depth = search.depth;
+  });
   return r;
 }
 
@@ -245,32 +257,18 @@ Result prove_symbolic(Model& model, const Options& options) {
   r.depth = search.depth;
   r.induction_k = search.induction_k;
   r.complete = true;
-  for (std::size_t i = 0; i < model.properties.size(); ++i) {
-    const Property& p = model.properties[i];
-    if (p.assumption) continue;
-    Answer a = answer_of(p);
-    if (!p.layout) {
-    } else if (const auto& f = search.violations[i]) {
-      a.verdict = Verdict::violated;
-      a.depth = f->tick;
-      try {
-        a.counterexample = replay(model, p, *f, scenario_of(model, p, *f));
-      } catch (const runtime::TickException& e) {
-        throw ProveError("internal error: the counterexample of " + p.requirement->id +
-                         " stops the model's engine: " + e.error.message);
-      }
-    } else if (search.proved[i]) {
+  add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
+    if (search.proved[i]) {
       a.verdict = Verdict::proved;
       a.depth = search.proved_k[i];
       if (search.by_pdr[i])
-        r.notes.push_back(p.requirement->id + " is proved by IC3/PDR (Z3's Spacer)");
+        r.notes.push_back(a.requirement + " is proved by IC3/PDR (Z3's Spacer)");
     } else {
       a.verdict = Verdict::bounded;
       a.depth = search.depth;
       r.complete = false;
     }
-    r.answers.push_back(std::move(a));
-  }
+  });
   return r;
 }
 
