@@ -288,6 +288,8 @@ Result prove(const load::Mission& mission, const bt::Document& compiled, const W
   if (engine == "explicit") return prove_explicit(model, options);
   try {
     return prove_symbolic(model, options);
+  } catch (const z3::exception& e) {
+    throw ProveError(std::string("internal error: the symbolic engine: Z3: ") + e.msg());
   } catch (const SymbolicUnsupported& e) {
     if (options.engine == "symbolic")
       throw ProveError(std::string("the symbolic engine cannot model this mission: ") + e.what());
