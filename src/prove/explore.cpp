@@ -260,17 +260,17 @@ void replay_path(Model& m, const std::vector<Step>& path,
       (t == 0 ? initial : env).set(m, path[t].env);
     }
     before_tick(t + 1);
-    m.choice->forced = symbolic ? &path[t].outcomes : nullptr;
+    m.choice->force(symbolic ? &path[t].outcomes : nullptr);
     m.choice->chooser.start(path[t].inner);
     m.observables->begin_tick();
     NodeStatus root;
     try {
       root = m.engine->tick();
     } catch (...) {
-      m.choice->forced = nullptr;
+      m.choice->force(nullptr);
       throw;
     }
-    m.choice->forced = nullptr;
+    m.choice->force(nullptr);
     after_tick(t + 1, root);
   }
 }

@@ -14,12 +14,12 @@ namespace uabt::prove {
 // the relevant variables' values; for the first tick, of every relevant variable) and the
 // choices the actions made within it. A symbolic engine gives the values and outcomes
 // themselves instead: `values` per Model::vars (those the tick chooses), `outcomes` per
-// ChoiceWorld leaf (ChoiceWorld::forced).
+// ChoiceWorld leaf, one per time the leaf is ticked within the tick (ChoiceWorld::force).
 struct Step {
   std::uint64_t env = 0;
   std::vector<std::uint32_t> inner;
   std::vector<runtime::ScriptValue> values;
-  std::vector<std::int32_t> outcomes;
+  std::vector<std::vector<std::int32_t>> outcomes;
 };
 
 // What the explicit-state search found for one guarantee.

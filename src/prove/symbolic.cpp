@@ -14,14 +14,19 @@ SymState pin(z3::solver& s, SymbolicTick& tick, const SymState& value, const std
 }
 
 Step step_of(const z3::model& model, SymbolicTick& tick, const Model& m, const TickInputs& in,
-             bool first) {
+             const std::vector<z3::expr>& leaf_ticks, bool first) {
   Step step;
   step.values.resize(m.vars.size());
   for (std::size_t v = 0; v < m.vars.size(); ++v)
     if (m.vars[v].relevant && (first || m.vars[v].env))
       step.values[v] = tick.value(model, in.values[v], v);
-  for (const z3::expr& o : in.outcomes)
-    step.outcomes.push_back(static_cast<std::int32_t>(model.eval(o, true).get_numeral_int()));
+  for (std::size_t l = 0; l < in.outcomes.size(); ++l) {
+    step.outcomes.emplace_back();
+    const int ticked = model.eval(leaf_ticks[l], true).get_numeral_int();
+    for (int k = 0; k < ticked; ++k)
+      step.outcomes.back().push_back(static_cast<std::int32_t>(
+          model.eval(in.outcomes[l][static_cast<std::size_t>(k)], true).get_numeral_int()));
+  }
   return step;
 }
 
@@ -60,11 +65,14 @@ std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Mode
     if (with_state)
       for (unsigned i = 0; i < state_vars.size(); ++i) vars.push_back(state_vars[i]);
     for (const auto& v : x.values) vars.push_back(v);
-    for (const auto& o : x.outcomes) vars.push_back(o);
+    for (const auto& per_leaf : x.outcomes)
+      for (const auto& o : per_leaf) vars.push_back(o);
     return vars;
   };
-  const TickEncoding start = tick.encode(tick.fresh(), first_in, true);
-  const TickEncoding step = tick.encode(cur, in, false);
+  TickEncoding start = tick.encode(tick.fresh(), first_in, true);
+  TickEncoding step = tick.encode(cur, in, false);
+  for (z3::expr& f : start.fails) f = f || start.overflow;
+  for (z3::expr& f : step.fails) f = f || step.overflow;
   for (std::size_t p : open) {
     z3::fixedpoint fp(ctx);
     z3::params params(ctx);
@@ -116,6 +124,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   z3::solver bmc(ctx), ind(ctx);
   std::vector<SymState> path{tick.fresh()};
   std::vector<TickInputs> inputs;
+  std::vector<std::vector<z3::expr>> leaf_ticks;  // per tick, per leaf
   std::vector<SymState> ind_states{tick.state("i0.")};
   std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per property
   ind.add(tick.domain(ind_states[0]) && ind_states[0].started[0]);
@@ -125,8 +134,19 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     const std::string t = "t" + std::to_string(k) + ".";
     inputs.push_back(tick.inputs(t));
     TickEncoding enc = tick.encode(path.back(), inputs.back(), k == 1);
+    leaf_ticks.push_back(enc.leaf_ticks);
     bmc.add(enc.valid.simplify());
     path.push_back(pin(bmc, tick, enc.next, "s" + std::to_string(k) + "."));
+    if (!enc.overflow.simplify().is_false()) {
+      bmc.push();
+      bmc.add(enc.overflow);
+      const bool deeper = bmc.check() == z3::sat;
+      bmc.pop();
+      if (deeper)
+        throw SymbolicUnsupported("at tick " + std::to_string(k) +
+                                  " the wake-up loop re-ticks the root more often than the "
+                                  "symbolic engine unrolls it");
+    }
     if (bmc.check() == z3::unsat) {
       // No run lasts k ticks: every guarantee still open holds on every run.
       for (std::size_t p : open) {
@@ -147,7 +167,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
         f.property = p;
         f.tick = k;
         for (std::size_t j = 0; j < inputs.size(); ++j)
-          f.path.push_back(step_of(model, tick, m, inputs[j], j == 0));
+          f.path.push_back(step_of(model, tick, m, inputs[j], leaf_ticks[j], j == 0));
         out.violations[p] = std::move(f);
       } else {
         still.push_back(p);
@@ -165,6 +185,8 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     ind_states.push_back(pin(ind, tick, step.next, u));
     for (std::size_t j = 0; j + 1 < ind_states.size() - 1; ++j)
       ind.add(!tick.same(ind_states[j], ind_states[ind_states.size() - 2]));
+    // A proof must also rule out a wake-up loop deeper than the encoding.
+    for (z3::expr& f : step.fails) f = f || step.overflow;
     ind_fails.push_back(step.fails);
     out.induction_k = k;
     for (std::size_t p : open) {

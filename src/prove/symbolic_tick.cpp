@@ -28,6 +28,7 @@ enum class NK {
   inverter,
   force_success,
   force_failure,
+  repeat,
   subtree,
   always_success,
   always_failure,
@@ -47,6 +48,7 @@ const std::map<std::string, NK, std::less<>>& builtins() {
       {"Inverter", NK::inverter},
       {"ForceSuccess", NK::force_success},
       {"ForceFailure", NK::force_failure},
+      {"Repeat", NK::repeat},
       {"SubTree", NK::subtree},
       {"SubTreePlus", NK::subtree},
       {"AlwaysSuccess", NK::always_success},
@@ -64,7 +66,6 @@ bool unmodelled_builtin(const std::string& kind) {
                                                            "Parallel",
                                                            "ParallelAll",
                                                            "WhileDoElse",
-                                                           "Repeat",
                                                            "RetryUntilSuccessful",
                                                            "RetryUntilSuccesful",
                                                            "KeepRunningUntilFailure",
@@ -80,14 +81,15 @@ bool pre_or_post_condition(const std::string& attribute) {
 }
 
 bool has_counter(NK k) {
-  return k == NK::sequence || k == NK::fallback || k == NK::if_then_else;
+  return k == NK::sequence || k == NK::fallback || k == NK::if_then_else || k == NK::repeat;
 }
 
 struct NodeDef {
   NK kind = NK::always_success;
   std::vector<NodeId> children;
-  int leaf = -1;  // ChoiceWorld leaf
-  int var = -1;   // condition: the variable it reads
+  int leaf = -1;   // ChoiceWorld leaf
+  int var = -1;    // condition: the variable it reads
+  int cycles = 0;  // Repeat: num_cycles
   std::optional<runtime::script::Program> program;
   std::map<std::string, int> script_vars;  // script names -> variables (in its scope)
   std::string where;
@@ -121,11 +123,14 @@ struct SymbolicTick::Impl {
                         std::optional<runtime::script::Program>>>
       effects;  // per leaf: on_success, on_failure (parsed without binding)
   NodeId root = 0;
+  int wake_ups = 0;               // wake-up re-ticks unrolled per tick (0 without Repeat)
+  std::vector<int> multiplicity;  // per leaf: how often the unrolled tick may tick it
 
   // Per encode() call.
   struct Exec {
     SymState cur;
     std::vector<z3::expr> ret, selected;
+    std::vector<z3::expr> leaf_ticks;  // per leaf, so far in this tick
     const TickInputs* in = nullptr;
     std::vector<z3::expr> constraints;
   };
@@ -200,6 +205,20 @@ struct SymbolicTick::Impl {
         throw SymbolicUnsupported(d.where + ": the symbolic engine does not model this node");
       }
       check_shape(d);
+      if (d.kind == NK::repeat) {
+        const std::string* text = info.element ? info.element->attribute("num_cycles") : nullptr;
+        int cycles = -1;
+        if (text && !text->empty() && text->find_first_not_of("0123456789") == std::string::npos &&
+            text->size() < 6)
+          cycles = std::stoi(*text);
+        if (cycles < 0)
+          throw SymbolicUnsupported(d.where +
+                                    ": the symbolic engine models Repeat with a literal "
+                                    "num_cycles of at least 0 only");
+        d.cycles = cycles;
+        // Each re-tick within a tick is asked for by a Repeat that counted a cycle.
+        wake_ups = std::min(32, wake_ups + cycles);
+      }
       if (d.kind == NK::condition) {
         const auto v = var_of_slot.find(leaves[static_cast<std::size_t>(d.leaf)].key);
         if (v == var_of_slot.end() || !vars[static_cast<std::size_t>(v->second)].tracked)
@@ -218,6 +237,16 @@ struct SymbolicTick::Impl {
           d.script_vars[name] = v == var_of_slot.end() ? -1 : v->second;
         }
       }
+    }
+    // How often one tick may tick each leaf: once per root pass, twice under a Repeat.
+    multiplicity.assign(leaves.size(), 0);
+    std::vector<std::pair<NodeId, int>> todo{{root, wake_ups + 1}};
+    while (!todo.empty()) {
+      const auto [id, times] = todo.back();
+      todo.pop_back();
+      if (nodes[id].leaf >= 0) multiplicity[static_cast<std::size_t>(nodes[id].leaf)] += times;
+      for (NodeId c : nodes[id].children)
+        todo.emplace_back(c, nodes[id].kind == NK::repeat ? 2 * times : times);
     }
     for (const auto& leaf : leaves) {
       auto parse = [](const std::optional<runtime::script::Program>& p) {
@@ -264,6 +293,7 @@ struct SymbolicTick::Impl {
       case NK::inverter:
       case NK::force_success:
       case NK::force_failure:
+      case NK::repeat:
       case NK::subtree:
         if (n != 1) throw SymbolicUnsupported(d.where + ": a decorator needs one child");
         break;
@@ -342,6 +372,7 @@ struct SymbolicTick::Impl {
       case NK::reactive_sequence: return reactive(x, id, g, kSuccess, kFailure);
       case NK::reactive_fallback: return reactive(x, id, g, kFailure, kSuccess);
       case NK::if_then_else: return if_then_else(x, id, g);
+      case NK::repeat: return repeat(x, id, g);
       case NK::inverter:
       case NK::force_success:
       case NK::force_failure: {
@@ -454,6 +485,38 @@ struct SymbolicTick::Impl {
     return z3::ite(waiting, ctx.int_val(kRunning), z3::ite(refused, ctx.int_val(kFailure), s));
   }
 
+  // Repeat (decorators/repeat.cpp): at most two rounds of its child per tick; a child that
+  // was IDLE and succeeded at once yields with the wake-up signal.
+  z3::expr repeat(Exec& x, NodeId id, const z3::expr& g) {
+    const int n = nodes[id].cycles;
+    const NodeId child = nodes[id].children[0];
+    set(x.cur.status[id], g, ctx.int_val(kRunning));
+    z3::expr& a = x.cur.counter[id];
+    z3::expr result = ctx.int_val(kSuccess);
+    z3::expr go = g && a < n;  // this round runs
+    const z3::expr none = g && !(a < n);
+    for (int round = 0; round < 2; ++round) {
+      const z3::expr before = x.cur.status[child];
+      const z3::expr s = exec(x, child, go);
+      const z3::expr run = go && s == kRunning, failed = go && s == kFailure,
+                     succeeded = go && s == kSuccess;
+      set(a, failed, ctx.int_val(0));
+      halt_child(x, id, 0, failed || succeeded);
+      set(a, succeeded, a + 1);
+      const z3::expr again = succeeded && a < n;
+      const z3::expr yield = again && before == kIdle;
+      set(x.cur.wake[0], yield, ctx.bool_val(true));
+      const z3::expr finished = succeeded && !again;
+      set(a, finished, ctx.int_val(0));
+      result = z3::ite(
+          run || yield, ctx.int_val(kRunning),
+          z3::ite(failed, ctx.int_val(kFailure), z3::ite(finished, ctx.int_val(kSuccess), result)));
+      go = again && !yield;
+    }
+    set(a, none, ctx.int_val(0));
+    return result;
+  }
+
   // ChoiceWorld::tick_leaf for an action.
   z3::expr action(Exec& x, NodeId id, const z3::expr& g) {
     const std::size_t l = static_cast<std::size_t>(nodes[id].leaf);
@@ -461,7 +524,12 @@ struct SymbolicTick::Impl {
     const ActionContract* c = leaf.contract;
     static const std::vector<NodeStatus> kFree = {NodeStatus::success, NodeStatus::failure};
     const std::vector<NodeStatus>& results = c ? c->results : kFree;
-    const z3::expr& d = x.in->outcomes[l];
+    // The outcome of this leaf's n-th tick within the tick, n counted as the runtime ticks it.
+    const auto& options = x.in->outcomes[l];
+    z3::expr d = options.back();
+    for (std::size_t k = options.size() - 1; k-- > 0;)
+      d = z3::ite(x.leaf_ticks[l] == static_cast<int>(k), options[k], d);
+    set(x.leaf_ticks[l], g, x.leaf_ticks[l] + 1);
     const z3::expr now = x.cur.elapsed[l] + 1;
     const z3::expr may_run = c ? now < ctx.int_val(c->max_ticks) : ctx.bool_val(true);
     const z3::expr may_end = c ? now >= ctx.int_val(c->min_ticks) : ctx.bool_val(true);
@@ -615,6 +683,7 @@ SymState SymbolicTick::fresh() const {
   for (std::size_t p = 0; p < i.tables.size(); ++p) s.monitor.push_back(i.ctx.int_val(0));
   s.done.push_back(i.ctx.bool_val(false));
   s.started.push_back(i.ctx.bool_val(false));
+  s.wake.push_back(i.ctx.bool_val(false));
   return s;
 }
 
@@ -642,6 +711,8 @@ SymState SymbolicTick::state(const std::string& prefix) const {
                             : i.ctx.int_val(0));
   s.done.push_back(i.ctx.bool_const((prefix + "done").c_str()));
   s.started.push_back(i.ctx.bool_const((prefix + "started").c_str()));
+  s.wake.push_back(i.wake_ups ? i.ctx.bool_const((prefix + "wake").c_str())
+                              : i.ctx.bool_val(false));
   return s;
 }
 
@@ -650,8 +721,12 @@ TickInputs SymbolicTick::inputs(const std::string& prefix) const {
   TickInputs in;
   for (std::size_t v = 0; v < i.vars.size(); ++v)
     in.values.push_back(i.sort_const(prefix + "env." + i.m.vars[v].name, i.types[v]));
-  for (std::size_t l = 0; l < i.m.choice->leaves().size(); ++l)
-    in.outcomes.push_back(i.ctx.int_const((prefix + "outcome" + std::to_string(l)).c_str()));
+  for (std::size_t l = 0; l < i.m.choice->leaves().size(); ++l) {
+    in.outcomes.emplace_back();
+    for (int k = 0; k < std::max(1, i.multiplicity[l]); ++k)
+      in.outcomes.back().push_back(i.ctx.int_const(
+          (prefix + "outcome" + std::to_string(l) + "." + std::to_string(k)).c_str()));
+  }
   return in;
 }
 
@@ -666,6 +741,7 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
     for (NodeId c : d.children) ok = ok && (s.status[c] == kIdle || s.status[n] == kRunning);
     if (has_counter(d.kind)) {
       const int top = d.kind == NK::if_then_else ? static_cast<int>(d.children.size()) - 1
+                      : d.kind == NK::repeat     ? d.cycles
                                                  : static_cast<int>(d.children.size());
       ok = ok && s.counter[n] >= 0 && s.counter[n] <= top;
     }
@@ -691,7 +767,7 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
 std::vector<z3::expr> SymbolicTick::flatten(const SymState& s) {
   std::vector<z3::expr> out;
   for (const auto* part :
-       {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done, &s.started})
+       {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done, &s.started, &s.wake})
     out.insert(out.end(), part->begin(), part->end());
   return out;
 }
@@ -707,13 +783,15 @@ z3::expr SymbolicTick::same(const SymState& a, const SymState& b) const {
   all(a.elapsed, b.elapsed);
   all(a.values, b.values);
   all(a.monitor, b.monitor);
+  all(a.wake, b.wake);
   return eq;
 }
 
 TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool first) {
   Impl& i = *impl_;
-  Impl::Exec x{s, {}, {}, &in, {}};
+  Impl::Exec x{s, {}, {}, {}, &in, {}};
   for (std::size_t n = 0; n < i.nodes.size(); ++n) x.ret.push_back(i.ctx.int_val(kIdle));
+  x.leaf_ticks.assign(i.m.choice->leaves().size(), i.ctx.int_val(0));
   for (std::size_t a = 0; a < i.adaptable_names.size(); ++a)
     x.selected.push_back(i.ctx.int_val(i.codes.code("none")));
   z3::expr valid = !s.done[0] && (first ? !s.started[0] : s.started[0]);
@@ -729,12 +807,19 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
   for (const auto& a : i.m.mission.domain.assumptions)
     if (a.expr) valid = valid && i.state_expression(*a.expr, x.cur.values, "assumption " + a.name);
 
-  const z3::expr root = i.exec(x, i.root, i.ctx.bool_val(true));
+  z3::expr root = i.exec(x, i.root, i.ctx.bool_val(true));
+  // Engine::wake_up_loop: the root again while it runs and a node asked for it.
+  for (int r = 0; r < i.wake_ups; ++r) {
+    const z3::expr again = root == kRunning && x.cur.wake[0];
+    Impl::set(x.cur.wake[0], again, i.ctx.bool_val(false));
+    root = z3::ite(again, i.exec(x, i.root, again), root);
+  }
+  const z3::expr overflow = i.ctx.bool_val(i.wake_ups > 0) && root == kRunning && x.cur.wake[0];
   for (const z3::expr& c : x.constraints) valid = valid && c;
   const z3::expr done = root == kSuccess || root == kFailure;
   Impl::set(x.cur.status[i.root], done, i.ctx.int_val(kIdle));  // BT.CPP's resetStatus()
 
-  TickEncoding out{x.cur, root, x.ret, {}, valid, {}};
+  TickEncoding out{x.cur, root, x.ret, {}, valid, {}, overflow, x.leaf_ticks};
   for (std::size_t p = 0; p < i.m.properties.size(); ++p) {
     const Property& prop = i.m.properties[p];
     const MonitorTable* t = i.tables[p].get();

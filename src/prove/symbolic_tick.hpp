@@ -20,12 +20,15 @@ struct SymState {
   std::vector<z3::expr> values;   // per Model::vars (a constant where the state does not keep it)
   std::vector<z3::expr> monitor;  // per property: its MonitorTable state (0 without a monitor)
   std::vector<z3::expr> done, started;  // one term each
+  std::vector<z3::expr> wake;           // the wake-up signal carried into the next tick
 };
 
 // What the world chooses for one tick.
 struct TickInputs {
-  std::vector<z3::expr> values;    // per Model::vars: its value before the tick, where chosen
-  std::vector<z3::expr> outcomes;  // per ChoiceWorld leaf: -1 runs on, k ends with result k
+  std::vector<z3::expr> values;  // per Model::vars: its value before the tick, where chosen
+  // Per ChoiceWorld leaf, per time it is ticked within the tick (wake-up re-ticks and Repeat
+  // rounds tick a leaf again): -1 runs on, k ends with result k.
+  std::vector<std::vector<z3::expr>> outcomes;
 };
 
 struct TickEncoding {
@@ -36,6 +39,8 @@ struct TickEncoding {
   std::vector<z3::expr> inputs;  // per property: mode, condition, response, stop
   z3::expr valid;                // a step the world model allows from a state where the run goes on
   std::vector<z3::expr> fails;   // per property: a guarantee violated at this tick
+  z3::expr overflow;             // the wake-up loop wants more re-ticks than the encoding unrolls
+  std::vector<z3::expr> leaf_ticks;  // per leaf: how often it was ticked
 };
 
 // One tick of the runtime's engine (Engine::tick on the ChoiceWorld) as a formula, written

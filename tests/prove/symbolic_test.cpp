@@ -71,26 +71,9 @@ TEST(SymbolicAgreement, CuriositySequenceAndReactive) {
   EXPECT_EQ(answer(s, "NoDrillAway").verdict, Verdict::proved);
 }
 
-// sample_drilling (and the test missions built on it) repeat the drilling with Repeat, whose
-// wake-up re-ticks the symbolic engine does not model: it declines, naming the node; auto
-// takes the explicit engine.
-TEST(SymbolicAgreement, RepeatIsDeclinedWithItsPlace) {
-  const Gated g(mission_dir("sample_drilling"));
-  ASSERT_TRUE(g.ok());
-  try {
-    g.prove("symbolic");
-    FAIL() << "the symbolic engine took a Repeat";
-  } catch (const prove::ProveError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("Repeat"), std::string::npos) << what;
-    EXPECT_NE(what.find("compiled.xml:"), std::string::npos) << what;
-  }
-  EXPECT_EQ(g.prove("auto").engine, "explicit");
-}
-
-// The missions of prove_test.cpp (sample_drilling and its variants), with the Repeat that
-// the symbolic engine does not model replaced by one drilling cycle.
-TEST(SymbolicAgreement, DrillingVariantsWithOneCycle) {
+// The missions of prove_test.cpp: sample_drilling (Repeat, wake-up re-ticks) and its
+// variants, as shipped and with one drilling cycle instead of the Repeat.
+TEST(SymbolicAgreement, DrillingMissions) {
   const char* fixed_rotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
   <BehaviorTree ID="rotary">
     <Sequence><Fallback><IsBitCool/><CoolDown/></Fallback><Drill mode="rotary"/></Sequence>
@@ -98,9 +81,6 @@ TEST(SymbolicAgreement, DrillingVariantsWithOneCycle) {
 </root>
 )";
   auto base = mission_files("sample_drilling");
-  std::string& xml = base["mission.xml"];
-  xml.replace(xml.find("<Repeat num_cycles=\"3\">"), 24, "<Sequence>");
-  xml.replace(xml.find("</Repeat>"), 9, "</Sequence>");
   std::vector<std::map<std::string, std::string>> variants(5, base);
   variants[1]["alternatives/drilling/rotary.xml"] = fixed_rotary;
   variants[2]["requirements.fret"] += "HardOnly: Environment shall always satisfy HardRock\n";
@@ -108,16 +88,43 @@ TEST(SymbolicAgreement, DrillingVariantsWithOneCycle) {
   variants[4]["world.json"] = R"({"initial": "!IsBitCool", "actions": {
       "Drill": {"ticks": [2, 3], "results": ["success"], "on_success": "IsBitCool = false"},
       "CoolDown": {"ticks": [1, 2], "results": ["success"], "on_success": "IsBitCool = true"}}})";
+  for (std::size_t i = 0, n = variants.size(); i < n; ++i) {
+    auto once = variants[i];
+    std::string& xml = once["mission.xml"];
+    xml.replace(xml.find("<Repeat num_cycles=\"3\">"), 24, "<Sequence>");
+    xml.replace(xml.find("</Repeat>"), 9, "</Sequence>");
+    variants.push_back(std::move(once));
+  }
   int violated = 0;
   for (std::size_t i = 0; i < variants.size(); ++i) {
     TempMission m(variants[i]);
     const Gated g(m.dir());
     ASSERT_TRUE(g.ok()) << i;
     const prove::Result e = g.prove("explicit"), s = g.prove("symbolic");
+    EXPECT_EQ(s.engine, "symbolic");
     expect_same_answers(e, s, "variant " + std::to_string(i));
     violated += answer(s, "CoolBit").verdict == Verdict::violated;
   }
-  EXPECT_GE(violated, 2);
+  EXPECT_GE(violated, 4);
+}
+
+// A Repeat whose count is not a literal of at least 0 is declined, naming the node.
+TEST(SymbolicAgreement, RepeatForeverIsDeclinedWithItsPlace) {
+  auto files = mission_files("sample_drilling");
+  std::string& xml = files["mission.xml"];
+  xml.replace(xml.find("num_cycles=\"3\""), 14, "num_cycles=\"-1\"");
+  TempMission m(files);
+  const Gated g(m.dir());
+  ASSERT_TRUE(g.ok());
+  try {
+    g.prove("symbolic");
+    FAIL() << "the symbolic engine took Repeat num_cycles=-1";
+  } catch (const prove::ProveError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Repeat"), std::string::npos) << what;
+    EXPECT_NE(what.find("compiled.xml:"), std::string::npos) << what;
+  }
+  EXPECT_EQ(g.prove("auto").engine, "explicit");
 }
 
 TEST(SymbolicAgreement, HundredRandomMissions) {
@@ -145,15 +152,19 @@ TEST(SymbolicAgreement, HundredRandomMissions) {
   // Both answers occur, and every node kind of the subset was exercised.
   EXPECT_GT(violated, 20);
   EXPECT_GT(proved, 20);
-  EXPECT_EQ(kinds.size(), 15u);
+  EXPECT_EQ(kinds.size(), 16u);
 }
 
 // --- One tick: the symbolic transition with every choice fixed is Engine::tick().
 
 struct Returned : runtime::Observer {
   std::vector<runtime::NodeStatus> last;
+  std::vector<std::vector<runtime::NodeStatus>> ticks;  // every return, in order
   void on_status_change(runtime::NodeId, runtime::NodeStatus, runtime::NodeStatus) override {}
-  void on_node_ticked(runtime::NodeId n, runtime::NodeStatus s) override { last[n] = s; }
+  void on_node_ticked(runtime::NodeId n, runtime::NodeStatus s) override {
+    last[n] = s;
+    ticks[n].push_back(s);
+  }
 };
 
 std::int64_t int_of(const z3::expr& e) {
@@ -210,6 +221,7 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       }
       s.started = {ctx.bool_val(!first)};
       s.done = {ctx.bool_val(false)};
+      s.wake = {ctx.bool_val(before.wake_up)};
       // Every reachable state lies in what k-induction and IC3/PDR assume of any state.
       EXPECT_TRUE(sym.domain(s).simplify().is_true()) << "seed " << seed << " tick " << t + 1;
       // Random environment values and outcomes the contracts allow.
@@ -224,33 +236,38 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       if (first && m.initial && !m.holds(*m.initial, scratch_frame)) break;
       bool assumed = true;  // the domain's assumptions hold on the values before the tick
       for (auto& a : m.assumptions) assumed = assumed && m.holds(*a, scratch_frame);
-      std::vector<std::int32_t> outcomes;
-      for (std::size_t l = 0; l < leaves.size(); ++l) {
-        const auto* c = leaves[l].contract;
-        const std::int64_t now = m.choice->elapsed()[l] + 1;
-        const bool may_run = c ? now < c->max_ticks : true,
-                   may_end = c ? now >= c->min_ticks : true;
-        const std::size_t results = c ? c->results.size() : 2;
-        std::vector<std::int32_t> allowed;
-        if (may_run) allowed.push_back(-1);
-        if (may_end)
-          for (std::size_t k = 0; k < results; ++k) allowed.push_back(static_cast<std::int32_t>(k));
-        outcomes.push_back(allowed[pick(allowed.size())]);
-        in.outcomes[l] = ctx.int_val(outcomes.back());
-      }
-      const prove::TickEncoding enc = sym.encode(s, in, first);
-      // The concrete tick.
+      // The concrete tick, its choices at random; what each action did, in order, is the
+      // symbolic tick's outcomes.
       returned.last.assign(m.engine->node_count(), runtime::NodeStatus::idle);
-      m.choice->forced = &outcomes;
+      returned.ticks.assign(m.engine->node_count(), {});
+      std::vector<std::uint32_t> prefix;
+      for (int k = 0; k < 64; ++k) prefix.push_back(static_cast<std::uint32_t>(pick(1000)));
+      m.choice->chooser.start(prefix);
       m.observables->begin_tick();
       runtime::NodeStatus root;
       try {
         root = m.engine->tick();
       } catch (const runtime::TickException&) {
-        m.choice->forced = nullptr;
         break;  // a tick error: the explicit engine drops this step too
       }
-      m.choice->forced = nullptr;
+      for (std::size_t l = 0; l < leaves.size(); ++l) {
+        const auto* c = leaves[l].contract;
+        std::size_t k = 0;
+        for (runtime::NodeStatus st : returned.ticks[leaves[l].node]) {
+          std::int32_t o = -1;
+          if (st != runtime::NodeStatus::running) {
+            const std::vector<runtime::NodeStatus> free = {runtime::NodeStatus::success,
+                                                           runtime::NodeStatus::failure};
+            const auto& results = c ? c->results : free;
+            o = static_cast<std::int32_t>(std::find(results.begin(), results.end(), st) -
+                                          results.begin());
+          }
+          ASSERT_LT(k, in.outcomes[l].size());
+          in.outcomes[l][k++] = ctx.int_val(o);
+        }
+        for (; k < in.outcomes[l].size(); ++k) in.outcomes[l][k] = ctx.int_val(-1);
+      }
+      const prove::TickEncoding enc = sym.encode(s, in, first);
       const std::string where = "seed " + std::to_string(seed) + " run " + std::to_string(run) +
                                 " tick " + std::to_string(t + 1);
       EXPECT_EQ(int_of(enc.root), static_cast<int>(root)) << where;
@@ -264,6 +281,8 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       }
       for (std::size_t l = 0; l < leaves.size(); ++l)
         EXPECT_EQ(int_of(enc.next.elapsed[l]), m.choice->elapsed()[l]) << where << " leaf " << l;
+      EXPECT_EQ(enc.next.wake[0].simplify().is_true(), after.wake_up) << where;
+      EXPECT_TRUE(enc.overflow.simplify().is_false()) << where;
       // Properties read the values after the tick (before the environment's next choice).
       std::vector<monitor::Val> frame;
       m.observables->fill(frame);
@@ -320,6 +339,12 @@ TEST(SymbolicTick, EqualsEngineTickOnCuriosity) {
   }
 }
 
+TEST(SymbolicTick, EqualsEngineTickWithWakeUps) {
+  const Gated g(mission_dir("sample_drilling"));
+  ASSERT_TRUE(g.ok());
+  check_ticks(g, 11, 60, 14);
+}
+
 // Every node kind of the subset occurs in these trees: an encoding that breaks any one kind
 // (a swapped branch, a missed halt, a wrong counter) makes some tick differ.
 TEST(SymbolicTick, EqualsEngineTickOnRandomMissions) {
@@ -339,7 +364,7 @@ TEST(SymbolicTick, EqualsEngineTickOnRandomMissions) {
     ++checked;
   }
   EXPECT_EQ(checked, 60);
-  EXPECT_EQ(kinds.size(), 15u);
+  EXPECT_EQ(kinds.size(), 16u);
 }
 
 // --- Wide worlds: what the explicit engine refuses.
