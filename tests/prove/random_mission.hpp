@@ -7,7 +7,8 @@
 
 namespace uabt::testing {
 
-// A small random mission over the node kinds the symbolic engine models: a main tree and a
+// A small random mission over the node kinds the symbolic engine models (Repeat at most
+// once): a main tree and a
 // SubTree, booleans A, B (B written by an action), an environment condition C, an integer x
 // in [0, 3], three actions with random world.json contracts (Act2 without one), and random
 // properties over the observables.
@@ -57,7 +58,7 @@ class RandomMission {
       return s;
     };
     const std::string named = " name=\"N" + std::to_string(names_++) + "\"";
-    switch (pick(11)) {
+    switch (pick(12)) {
       case 0: return wrap("Sequence", named, children(1 + pick(3)));
       case 1: return wrap("ReactiveSequence", named, children(1 + pick(3)));
       case 2: return wrap("Fallback", named, children(1 + pick(3)));
@@ -66,6 +67,13 @@ class RandomMission {
       case 5: return wrap("Inverter", named, children(1));
       case 6: return wrap("ForceSuccess", named, children(1));
       case 7: return wrap("ForceFailure", named, children(1));
+      case 9:
+        if (!repeated_) {  // one Repeat at most: its wake-up re-ticks multiply the tick
+          repeated_ = true;
+          return wrap("Repeat", named + " num_cycles=\"" + std::to_string(1 + pick(2)) + "\"",
+                      children(1));
+        }
+        [[fallthrough]];
       case 8:
         if (max > 2) return use("SubTree", "<SubTree ID=\"Sub\" _autoremap=\"true\"/>");
         [[fallthrough]];
@@ -126,6 +134,7 @@ class RandomMission {
   std::mt19937 rng_;
   std::set<std::string> actions_;
   int names_ = 0;
+  bool repeated_ = false;
 };
 
 }  // namespace uabt::testing
