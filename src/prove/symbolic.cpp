@@ -177,6 +177,19 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     open = std::move(still);
     out.depth = k;
     if (open.empty()) break;
+    // Every run over by tick k: nothing is left to prove (cheaper than any induction).
+    bmc.push();
+    bmc.add(!path.back().done[0]);
+    const bool goes_on = bmc.check() == z3::sat;
+    bmc.pop();
+    if (!goes_on) {
+      for (std::size_t p : open) {
+        out.proved[p] = true;
+        out.proved_k[p] = k;
+      }
+      open.clear();
+      break;
+    }
 
     // Induction step: k transitions from any state, pairwise distinct sources.
     const std::string u = "i" + std::to_string(k) + ".";
