@@ -21,9 +21,13 @@ std::string summary_line(const prove::Result& r) {
                      " proved, " + std::to_string(counts[1]) + " violated, " +
                      std::to_string(counts[2]) + " bounded";
   if (counts[3]) line += ", " + std::to_string(counts[3]) + " not checked";
-  line += " (" + r.engine + "-state engine: " + std::to_string(r.states) + " states, " +
-          std::to_string(r.transitions) + " transitions, " +
-          (r.complete ? "every reachable state" : "depth " + std::to_string(r.depth)) + ")";
+  if (r.engine == "symbolic")
+    line += " (symbolic engine: BMC to depth " + std::to_string(r.depth) +
+            ", k-induction up to k = " + std::to_string(r.induction_k) + ")";
+  else
+    line += " (" + r.engine + "-state engine: " + std::to_string(r.states) + " states, " +
+            std::to_string(r.transitions) + " transitions, " +
+            (r.complete ? "every reachable state" : "depth " + std::to_string(r.depth)) + ")";
   return line;
 }
 
@@ -45,7 +49,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--depth", args->depth,
                   "explore runs of up to K ticks (default: until every reachable state is seen)");
-  cmd->add_option("--engine", args->engine, "auto | explicit")
+  cmd->add_option("--engine", args->engine,
+                  "auto | explicit (state enumeration) | symbolic (Z3: BMC and k-induction)")
       ->check(CLI::IsMember({"auto", "explicit", "symbolic"}));
   cmd->add_option("--selection", args->selection,
                   "selector style of every adaptable node (default: its own selection attribute, "
@@ -87,7 +92,9 @@ void register_prove(CLI::App& app, int& exit_code) {
       return;
     } catch (const std::exception& e) {
       std::cerr << "uabt: prove: " << e.what() << "\n";
-      exit_code = kExitFail;
+      // A counterexample its replay disagrees with is uabt's fault, not the mission's.
+      const bool internal = std::string_view(e.what()).find("internal error") != std::string::npos;
+      exit_code = internal ? kExitUsage : kExitFail;
       return;
     }
     std::map<std::string, std::string> written;

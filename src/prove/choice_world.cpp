@@ -16,6 +16,7 @@ void Chooser::start(const std::vector<std::uint32_t>& prefix) {
 std::uint32_t Chooser::choose(std::uint32_t options) {
   if (pos_ < taken_.size()) {
     arity_[pos_] = options;
+    taken_[pos_] %= options;  // a prefix from elsewhere (a random walk) may exceed it
     return taken_[pos_++];
   }
   taken_.push_back(0);
@@ -115,7 +116,22 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
   const bool may_end = c ? now >= c->min_ticks : true;
   const std::uint32_t options =
       (may_run ? 1u : 0u) + (may_end ? static_cast<std::uint32_t>(results.size()) : 0u);
-  std::uint32_t pick = options > 1 ? chooser.choose(options) : 0;
+  std::uint32_t pick = 0;
+  if (forced_) {
+    const auto& list = (*forced_)[context.handle];
+    std::size_t& next = forced_next_[context.handle];
+    if (next >= list.size())
+      throw std::runtime_error("internal error: action '" + leaf.label +
+                               "' is ticked more often than the counterexample says");
+    const std::int32_t outcome = list[next++];
+    if ((outcome < 0 && !may_run) ||
+        (outcome >= 0 && (!may_end || static_cast<std::size_t>(outcome) >= results.size())))
+      throw std::runtime_error("internal error: action '" + leaf.label + "' cannot have outcome " +
+                               std::to_string(outcome) + " here");
+    pick = outcome < 0 ? 0 : static_cast<std::uint32_t>(outcome) + (may_run ? 1u : 0u);
+  } else if (options > 1) {
+    pick = chooser.choose(options);
+  }
   if (may_run) {
     if (pick == 0) {
       elapsed = c ? now : 1;

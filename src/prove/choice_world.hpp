@@ -53,6 +53,13 @@ class ChoiceWorld : public runtime::World {
 
   Chooser chooser;
   ActionRecorder* recorder = nullptr;
+  // From now on, until called again, the outcomes of the actions instead of the chooser's:
+  // per leaf, one per time it is ticked (-1 runs on, k >= 0 ends with its contract's k-th
+  // result), as a symbolic engine's counterexample gives them. nullptr: the chooser again.
+  void force(const std::vector<std::vector<std::int32_t>>* outcomes) {
+    forced_ = outcomes;
+    forced_next_.assign(leaves_.size(), 0);
+  }
 
   struct Leaf {
     runtime::NodeId node = runtime::kNoNode;
@@ -75,6 +82,8 @@ class ChoiceWorld : public runtime::World {
   std::set<std::string, std::less<>> state_names_;
   std::vector<Leaf> leaves_;
   std::vector<std::int64_t> elapsed_;
+  const std::vector<std::vector<std::int32_t>>* forced_ = nullptr;
+  std::vector<std::size_t> forced_next_;
 };
 
 }  // namespace uabt::prove

@@ -150,7 +150,7 @@ class Search {
         before.restore(*m_.engine);
         m_.choice->set_elapsed(from.elapsed);
         m_.choice->chooser.start(prefix);
-        successor(from, from_index, Step{e, {}});
+        successor(from, from_index, Step{e, {}, {}, {}});
       } while (m_.choice->chooser.advance(prefix));
     }
   }
@@ -238,24 +238,52 @@ class Search {
 }  // namespace
 
 SearchResult explore(Model& model, const Options& options) {
+  if (!model.explicit_refusal.empty()) throw ProveError(model.explicit_refusal);
   return Search(model, options).run();
 }
 
 void replay_path(Model& m, const std::vector<Step>& path,
                  const std::function<void(std::uint64_t)>& before_tick,
                  const std::function<void(std::uint64_t, NodeStatus)>& after_tick) {
-  const Product initial = product(m, true), env = product(m, false);
+  const bool symbolic = !path.empty() && !path.front().values.empty();
+  const Product initial = symbolic ? Product{} : product(m, true);
+  const Product env = symbolic ? Product{} : product(m, false);
   // Every variable starts at its first value; the first step sets the relevant ones.
   m.fresh.restore(*m.engine);
   m.choice->set_elapsed(std::vector<std::int64_t>(m.choice->leaves().size(), 0));
   for (std::size_t t = 0; t < path.size(); ++t) {
-    (t == 0 ? initial : env).set(m, path[t].env);
+    if (symbolic) {
+      for (std::size_t i = 0; i < m.vars.size(); ++i)
+        if (m.vars[i].relevant && (t == 0 || m.vars[i].env))
+          m.engine->blackboard().value(m.vars[i].slot) = path[t].values[i];
+    } else {
+      (t == 0 ? initial : env).set(m, path[t].env);
+    }
     before_tick(t + 1);
+    m.choice->force(symbolic ? &path[t].outcomes : nullptr);
     m.choice->chooser.start(path[t].inner);
     m.observables->begin_tick();
-    const NodeStatus root = m.engine->tick();
+    NodeStatus root;
+    try {
+      root = m.engine->tick();
+    } catch (...) {
+      m.choice->force(nullptr);
+      throw;
+    }
+    m.choice->force(nullptr);
     after_tick(t + 1, root);
   }
+}
+
+std::uint64_t environment_product(const Model& m) {
+  if (!m.explicit_refusal.empty()) return 0;
+  std::uint64_t size = 1;
+  for (const StateVar& v : m.vars) {
+    if (!v.relevant || !v.env) continue;
+    if (size > UINT64_MAX / v.values.size()) return UINT64_MAX;
+    size *= v.values.size();
+  }
+  return size;
 }
 
 }  // namespace uabt::prove

@@ -12,10 +12,14 @@ namespace uabt::prove {
 
 // One step of a path: the environment's values for the tick (an index into the product of
 // the relevant variables' values; for the first tick, of every relevant variable) and the
-// choices the actions made within it.
+// choices the actions made within it. A symbolic engine gives the values and outcomes
+// themselves instead: `values` per Model::vars (those the tick chooses), `outcomes` per
+// ChoiceWorld leaf, one per time the leaf is ticked within the tick (ChoiceWorld::force).
 struct Step {
   std::uint64_t env = 0;
   std::vector<std::uint32_t> inner;
+  std::vector<runtime::ScriptValue> values;
+  std::vector<std::vector<std::int32_t>> outcomes;
 };
 
 // What the explicit-state search found for one guarantee.
@@ -36,6 +40,10 @@ struct SearchResult {
 // monitors), each stored once by its bytes: the first violation found of each guarantee is
 // one of the shortest.
 SearchResult explore(Model& model, const Options& options);
+
+// How many combinations of environment values the explicit engine enumerates before each
+// tick after the first (saturates at UINT64_MAX; 0 when it cannot enumerate them).
+std::uint64_t environment_product(const Model& model);
 
 // Replays `path` on the model's own engine, calling `before_tick(t)` once the environment's
 // values for tick t are set and before the tick runs, and `after_tick(t, root)` after it.

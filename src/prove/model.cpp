@@ -173,6 +173,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     const fretish::ExprPtr parts[] = {mode, r->folded_condition(), r->response,
                                       r->timing.stop_condition};
     if (!c.shape) p.unsupported = c.reason;
+    p.exprs.assign(std::begin(parts), std::end(parts));
     for (const auto& part : parts) {
       if (!p.unsupported.empty()) break;
       if (!part) {
@@ -239,12 +240,12 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   for (StateVar& v : vars) {
     const bool refused = !v.relevant;
     v.relevant = read.contains(v.name);
-    if (v.relevant && refused) {
+    if (v.relevant && refused && explicit_refusal.empty()) {
       std::string why;
       values_of(*mission.domain.find(v.name), why);
-      throw ProveError("the explicit-state engine cannot enumerate " + why +
-                       " (give it a bounded range, or leave it out of what the tree and the "
-                       "properties read)");
+      explicit_refusal = "the explicit-state engine cannot enumerate " + why +
+                         " (give it a bounded range, or leave it out of what the tree and the "
+                         "properties read)";
     }
     engine->blackboard().value(v.slot) = v.values.front();
   }

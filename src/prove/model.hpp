@@ -34,7 +34,8 @@ struct Property {
   bool assumption = false;  // component Environment
   monitor::Shape shape;
   std::vector<std::shared_ptr<monitor::CompiledExpression>>
-      parts;  // mode, condition, response, stop
+      parts;                            // mode, condition, response, stop
+  std::vector<fretish::ExprPtr> exprs;  // the same four as written (null where absent)
   std::unique_ptr<PastTimeLayout> layout;
   std::size_t offset = 0;  // its words in the monitor state
   std::string unsupported;
@@ -60,6 +61,9 @@ struct Model {
   std::shared_ptr<monitor::CompiledExpression> initial;
   std::size_t monitor_words = 0;
   runtime::EngineState fresh;  // before the first tick, every variable at its first value
+  // Why the explicit-state engine cannot enumerate this world ("" when it can): a relevant
+  // real or unbounded/wide integer (such a variable has one placeholder value, empty).
+  std::string explicit_refusal;
 
   // Evaluates a state expression (initial, assumption) on the blackboard now.
   bool holds(monitor::CompiledExpression& e, std::vector<monitor::Val>& frame);

@@ -7,6 +7,35 @@ namespace uabt::prove {
 using runtime::NodeId;
 using runtime::NodeStatus;
 
+std::vector<NodeId> status_nodes(const runtime::Engine& engine, const std::string& node) {
+  std::vector<NodeId> nodes = engine.find_by_name(node);
+  if (nodes.empty())
+    for (NodeId id = 0; id < engine.node_count(); ++id)
+      if (engine.info(id).alive && engine.info(id).kind == node) nodes.push_back(id);
+  return nodes;
+}
+
+std::map<NodeId, std::string> alternative_calls(const runtime::Engine& engine,
+                                                const load::Mission& mission,
+                                                const std::string& node) {
+  std::map<NodeId, std::string> out;
+  for (NodeId id = 0; id < engine.node_count(); ++id) {
+    const runtime::NodeInfo& info = engine.info(id);
+    if (!info.alive || info.tag != "SubTree" || info.tree_id != node) continue;
+    const runtime::NodeId branch = info.parent;
+    if (branch == runtime::kNoNode) continue;
+    const runtime::NodeId selector = engine.info(branch).parent;
+    if (selector == runtime::kNoNode || engine.info(selector).name != node) continue;
+    const std::string* tree = info.element ? info.element->attribute("ID") : nullptr;
+    if (tree == nullptr) continue;
+    std::string alt = *tree;
+    for (const auto& a : mission.alternatives)
+      if (a.adaptable == node && a.tree_id == *tree) alt = a.name;
+    out[id] = alt;
+  }
+  return out;
+}
+
 Observables::Observables(const runtime::Engine& engine, const load::Mission& mission,
                          std::set<std::string, std::less<>> state, monitor::Variables& variables,
                          monitor::Symbols& symbols)
@@ -50,11 +79,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
   if (dot != std::string::npos) {
     const std::string node = name.substr(0, dot), field = name.substr(dot + 1);
     if (field == "success" || field == "failure" || field == "running") {
-      std::vector<NodeId> nodes = engine_.find_by_name(node);
-      if (nodes.empty()) {
-        for (NodeId id = 0; id < engine_.node_count(); ++id)
-          if (engine_.info(id).alive && engine_.info(id).kind == node) nodes.push_back(id);
-      }
+      std::vector<NodeId> nodes = status_nodes(engine_, node);
       if (!nodes.empty()) {
         const int slot = variables_.id(name);
         const NodeStatus s = field == "success"   ? NodeStatus::success
@@ -68,21 +93,8 @@ monitor::Resolved Observables::resolve(const std::string& name) {
       for (const auto& site : mission_.adaptables) {
         if (site.id != node) continue;
         SelectedObs obs{variables_.id(name), std::vector<int>(engine_.node_count(), -1)};
-        // The selection tree's SubTree calls of alternatives: the last child of each branch.
-        for (NodeId id = 0; id < engine_.node_count(); ++id) {
-          const runtime::NodeInfo& info = engine_.info(id);
-          if (!info.alive || info.tag != "SubTree" || info.tree_id != node) continue;
-          const runtime::NodeId branch = info.parent;
-          if (branch == runtime::kNoNode) continue;
-          const runtime::NodeId selector = engine_.info(branch).parent;
-          if (selector == runtime::kNoNode || engine_.info(selector).name != node) continue;
-          const std::string* tree = info.element ? info.element->attribute("ID") : nullptr;
-          if (tree == nullptr) continue;
-          std::string alt = *tree;
-          for (const auto& a : mission_.alternatives)
-            if (a.adaptable == node && a.tree_id == *tree) alt = a.name;
-          obs.alternative_of_call[id] = symbols_.id(alt);
-        }
+        for (const auto& [call, alt] : alternative_calls(engine_, mission_, node))
+          obs.alternative_of_call[call] = symbols_.id(alt);
         selected_.push_back(std::move(obs));
         last_alternative_.push_back(-1);
         return {R::Kind::variable, selected_.back().slot};

@@ -1,4 +1,5 @@
 #pragma once
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -16,6 +17,15 @@ namespace uabt::prove {
 // ticked last in tick t, else `none`) and the mode `<adaptable>` (its SubTree was ticked).
 // Works on any engine built from the compiled tree, so prove and the replay of a
 // counterexample read the very same observables.
+// The nodes `<node>.success|failure|running` reads: the alive nodes named `node`, else the
+// alive nodes of that kind.
+std::vector<runtime::NodeId> status_nodes(const runtime::Engine& engine, const std::string& node);
+// The SubTree calls of the alternatives of `adaptable` in its selection tree (the last child of
+// each branch), with the alternative each one calls.
+std::map<runtime::NodeId, std::string> alternative_calls(const runtime::Engine& engine,
+                                                         const load::Mission& mission,
+                                                         const std::string& adaptable);
+
 class Observables : public runtime::Observer {
  public:
   // `state` names the state variables (root blackboard keys) a property may read.

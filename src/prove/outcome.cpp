@@ -92,8 +92,13 @@ std::string result_json(const Result& result, const std::string& mission,
   j["mission"] = mission;
   j["verdict"] = result.passed() ? "pass" : "fail";
   j["engine"] = result.engine;
-  j["states"] = result.states;
-  j["transitions"] = result.transitions;
+  if (result.engine == "symbolic") {
+    j["bmc_depth"] = result.depth;
+    j["induction_k"] = result.induction_k;
+  } else {
+    j["states"] = result.states;
+    j["transitions"] = result.transitions;
+  }
   j["depth"] = result.depth;
   j["complete"] = result.complete;
   Json props = Json::array();

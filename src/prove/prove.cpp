@@ -1,10 +1,13 @@
 #include "prove/prove.hpp"
 
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 
 #include "monitor/monitor.hpp"
 #include "prove/explore.hpp"
+#include "prove/symbolic.hpp"
+#include "prove/symbolic_value.hpp"
 #include "runtime/runner.hpp"
 
 namespace uabt::prove {
@@ -191,12 +194,46 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
 
 }  // namespace
 
-Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
-             const Options& options) {
-  if (options.engine != "auto" && options.engine != "explicit")
-    throw ProveError("engine '" + options.engine +
-                     "' is not available: this build has the explicit-state engine only");
-  Model model(mission, compiled, world);
+namespace {
+
+Answer answer_of(const Property& p) {
+  Answer a;
+  a.requirement = p.requirement->id;
+  a.text = p.requirement->text;
+  a.location = p.requirement->location;
+  if (!p.layout) {
+    a.verdict = Verdict::unsupported;
+    a.reason = p.unsupported;
+  }
+  return a;
+}
+
+// One answer per guarantee: not checked, violated (with its replayed counterexample), or
+// what `decide` says of the others.
+void add_answers(Model& model, const std::vector<std::optional<Finding>>& violations, Result& r,
+                 const std::function<void(std::size_t, Answer&)>& decide) {
+  for (std::size_t i = 0; i < model.properties.size(); ++i) {
+    const Property& p = model.properties[i];
+    if (p.assumption) continue;
+    Answer a = answer_of(p);
+    if (p.layout && violations[i]) {
+      const Finding& f = *violations[i];
+      a.verdict = Verdict::violated;
+      a.depth = f.tick;
+      try {
+        a.counterexample = replay(model, p, f, scenario_of(model, p, f));
+      } catch (const runtime::TickException& e) {
+        throw ProveError("internal error: the counterexample of " + p.requirement->id +
+                         " stops the model's engine: " + e.error.message);
+      }
+    } else if (p.layout) {
+      decide(i, a);
+    }
+    r.answers.push_back(std::move(a));
+  }
+}
+
+Result prove_explicit(Model& model, const Options& options) {
   const SearchResult search = explore(model, options);
   Result r;
   r.engine = "explicit";
@@ -206,30 +243,61 @@ Result prove(const load::Mission& mission, const bt::Document& compiled, const W
   r.complete = search.complete;
   if (search.tick_error)
     r.notes.push_back("a reachable tick stops with an error: " + *search.tick_error);
-  for (std::size_t i = 0; i < model.properties.size(); ++i) {
-    const Property& p = model.properties[i];
-    if (p.assumption) continue;
-    Answer a;
-    a.requirement = p.requirement->id;
-    a.text = p.requirement->text;
-    a.location = p.requirement->location;
-    if (!p.layout) {
-      a.verdict = Verdict::unsupported;
-      a.reason = p.unsupported;
-    } else if (const auto& f = search.violations[i]) {
-      a.verdict = Verdict::violated;
-      a.depth = f->tick;
-      a.counterexample = replay(model, p, *f, scenario_of(model, p, *f));
-    } else if (search.complete) {
+  add_answers(model, search.violations, r, [&](std::size_t, Answer& a) {
+    a.verdict = search.complete ? Verdict::proved : Verdict::bounded;
+    a.depth = search.depth;
+  });
+  return r;
+}
+
+Result prove_symbolic(Model& model, const Options& options) {
+  const SymbolicSearch search = symbolic_search(model, options);
+  Result r;
+  r.engine = "symbolic";
+  r.depth = search.depth;
+  r.induction_k = search.induction_k;
+  r.complete = true;
+  add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
+    if (search.proved[i]) {
       a.verdict = Verdict::proved;
-      a.depth = search.depth;
+      a.depth = search.proved_k[i];
+      if (search.by_pdr[i])
+        r.notes.push_back(a.requirement + " is proved by IC3/PDR (Z3's Spacer)");
     } else {
       a.verdict = Verdict::bounded;
       a.depth = search.depth;
+      r.complete = false;
     }
-    r.answers.push_back(std::move(a));
-  }
+  });
   return r;
+}
+
+}  // namespace
+
+Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
+             const Options& options) {
+  if (options.engine != "auto" && options.engine != "explicit" && options.engine != "symbolic")
+    throw ProveError("unknown engine '" + options.engine + "' (auto, explicit or symbolic)");
+  Model model(mission, compiled, world);
+  std::string engine = options.engine;
+  if (engine == "auto") {
+    const std::uint64_t product = environment_product(model);
+    engine =
+        model.explicit_refusal.empty() && product <= kAutoExplicitProduct ? "explicit" : "symbolic";
+  }
+  if (engine == "explicit") return prove_explicit(model, options);
+  try {
+    return prove_symbolic(model, options);
+  } catch (const z3::exception& e) {
+    throw ProveError(std::string("internal error: the symbolic engine: Z3: ") + e.msg());
+  } catch (const SymbolicUnsupported& e) {
+    if (options.engine == "symbolic")
+      throw ProveError(std::string("the symbolic engine cannot model this mission: ") + e.what());
+    // auto: the explicit engine's answer, or its reason for refusing.
+    if (!model.explicit_refusal.empty())
+      throw ProveError(model.explicit_refusal + "; nor can the symbolic engine: " + e.what());
+    return prove_explicit(model, options);
+  }
 }
 
 }  // namespace uabt::prove

@@ -39,22 +39,28 @@ struct Answer {
   SourceLocation location;
   Verdict verdict = Verdict::unsupported;
   std::string reason;
-  std::uint64_t depth = 0;  // ticks explored (bounded), or the violation's tick
+  std::uint64_t depth = 0;  // ticks explored (bounded), the violation's tick, or for a proof
+                            // the explicit depth / the symbolic engine's k
   std::optional<Counterexample> counterexample;
 };
 
 struct Options {
   std::uint64_t depth = 0;             // 0: until every reachable state is explored
   std::size_t max_states = 2'000'000;  // beyond it the answer is bounded
-  std::string engine = "auto";         // auto | explicit
+  std::string engine = "auto";         // auto | explicit | symbolic
 };
 
+// `auto` takes the explicit-state engine when it can enumerate the world and the environment
+// offers at most this many combinations of values per tick, else the symbolic one.
+inline constexpr std::uint64_t kAutoExplicitProduct = 4096;
+
 struct Result {
-  std::vector<Answer> answers;  // one per guarantee, file order
-  std::string engine;
-  std::uint64_t states = 0, transitions = 0;
-  std::uint64_t depth = 0;  // deepest tick explored
-  bool complete = false;    // every reachable state was explored
+  std::vector<Answer> answers;                // one per guarantee, file order
+  std::string engine;                         // explicit | symbolic
+  std::uint64_t states = 0, transitions = 0;  // explicit
+  std::uint64_t induction_k = 0;              // symbolic: deepest k-induction tried
+  std::uint64_t depth = 0;                    // deepest tick explored (symbolic: the BMC depth)
+  bool complete = false;                      // every reachable state was explored
   std::vector<std::string> notes;
   bool passed() const;  // every guarantee proved
 };

@@ -40,6 +40,29 @@ TEST(ProveCli, ViolationExitsOneWithTheTable) {
   EXPECT_NE(r.out.find("1 proved, 1 violated, 0 bounded"), std::string::npos) << r.out;
 }
 
+TEST(ProveCli, SymbolicEngineNamesItsFigures) {
+  const std::string mission = mission_dir("sample_drilling").string();
+  const CliRun text = run("prove " + mission + " --engine symbolic");
+  EXPECT_EQ(text.code, 1);
+  EXPECT_NE(
+      text.out.find("requirements.fret:5:10: error: guarantee 'CoolBit' is violated at tick 1"),
+      std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("1 proved, 1 violated, 0 bounded (symbolic engine: BMC to depth 2, "
+                          "k-induction up to k = 2)"),
+            std::string::npos)
+      << text.out;
+  const CliRun json = run("prove " + mission + " --engine symbolic --format json");
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["engine"], "symbolic");
+  EXPECT_EQ(j["bmc_depth"], 2);
+  EXPECT_EQ(j["induction_k"], 2);
+  EXPECT_FALSE(j.contains("states"));
+  EXPECT_EQ(j["properties"][0]["verdict"], "violated");
+  EXPECT_EQ(j["properties"][0]["counterexample"]["tick"], 1);
+  EXPECT_EQ(j["properties"][1]["verdict"], "proved");
+}
+
 TEST(ProveCli, JsonAndCounterexampleFiles) {
   TempMission scratch({});
   const auto dir = scratch.dir() / "cex";

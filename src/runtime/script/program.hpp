@@ -85,6 +85,12 @@ class Program {
   // Throws ScriptError on undefined keys and type errors, as BT.CPP throws at tick.
   const ScriptValue& run(Blackboard& blackboard);
 
+  // The compiled form, read-only: for a model checker that interprets scripts symbolically.
+  const std::vector<Expr>& nodes() const { return nodes_; }
+  const std::vector<std::uint32_t>& statements() const { return statements_; }
+  const std::vector<std::uint32_t>& compare_operands() const { return operands_; }
+  const std::vector<CompareOp>& compare_ops() const { return compare_ops_; }
+
  private:
   friend class Parser;
   const ScriptValue& eval(std::uint32_t index, Blackboard& blackboard);

@@ -1,0 +1,230 @@
+#include "prove/symbolic.hpp"
+
+#include "prove/symbolic_tick.hpp"
+
+namespace uabt::prove {
+
+namespace {
+
+// Pins a state to fresh constants, so that terms stay one tick deep.
+SymState pin(z3::solver& s, SymbolicTick& tick, const SymState& value, const std::string& prefix) {
+  SymState fresh = tick.state(prefix);
+  s.add(tick.same(fresh, value).simplify());
+  return fresh;
+}
+
+Step step_of(const z3::model& model, SymbolicTick& tick, const Model& m, const TickInputs& in,
+             const std::vector<z3::expr>& leaf_ticks, bool first) {
+  Step step;
+  step.values.resize(m.vars.size());
+  for (std::size_t v = 0; v < m.vars.size(); ++v)
+    if (m.vars[v].relevant && (first || m.vars[v].env))
+      step.values[v] = tick.value(model, in.values[v], v);
+  for (std::size_t l = 0; l < in.outcomes.size(); ++l) {
+    step.outcomes.emplace_back();
+    const int ticked = model.eval(leaf_ticks[l], true).get_numeral_int();
+    for (int k = 0; k < ticked; ++k)
+      step.outcomes.back().push_back(static_cast<std::int32_t>(
+          model.eval(in.outcomes[l][static_cast<std::size_t>(k)], true).get_numeral_int()));
+  }
+  return step;
+}
+
+bool is_variable(const z3::expr& e) {
+  return e.is_app() && e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED;
+}
+
+// IC3/PDR (Z3's Spacer) on the guarantees k-induction could not prove: Horn clauses over an
+// invariant of the states between ticks. The answer is trusted only when it is a proof; a
+// violation is left to BMC, which finds the shortest one. Bounded by the number of frames
+// (deterministic, unlike a timeout).
+std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Model& m,
+                                const std::vector<std::size_t>& open) {
+  std::vector<bool> proved(m.properties.size(), false);
+  const SymState cur = tick.state("pdr.");
+  std::vector<z3::expr> flat = SymbolicTick::flatten(cur);
+  std::vector<std::size_t> positions;
+  z3::sort_vector sorts(ctx);
+  z3::expr_vector state_vars(ctx);
+  for (std::size_t i = 0; i < flat.size(); ++i)
+    if (is_variable(flat[i])) {
+      positions.push_back(i);
+      sorts.push_back(flat[i].get_sort());
+      state_vars.push_back(flat[i]);
+    }
+  z3::func_decl inv = ctx.function("Inv", sorts, ctx.bool_sort());
+  auto holds = [&](const SymState& s) {
+    const std::vector<z3::expr> f = SymbolicTick::flatten(s);
+    z3::expr_vector args(ctx);
+    for (std::size_t i : positions) args.push_back(f[i]);
+    return inv(args);
+  };
+  const TickInputs first_in = tick.inputs("pdr.first."), in = tick.inputs("pdr.in.");
+  auto quantified = [&](const TickInputs& x, bool with_state) {
+    z3::expr_vector vars(ctx);
+    if (with_state)
+      for (unsigned i = 0; i < state_vars.size(); ++i) vars.push_back(state_vars[i]);
+    for (const auto& v : x.values) vars.push_back(v);
+    for (const auto& per_leaf : x.outcomes)
+      for (const auto& o : per_leaf) vars.push_back(o);
+    return vars;
+  };
+  TickEncoding start = tick.encode(tick.fresh(), first_in, true);
+  TickEncoding step = tick.encode(cur, in, false);
+  for (z3::expr& f : start.fails) f = f || start.overflow;
+  for (z3::expr& f : step.fails) f = f || step.overflow;
+  for (std::size_t p : open) {
+    z3::fixedpoint fp(ctx);
+    z3::params params(ctx);
+    params.set("engine", "spacer");
+    params.set("spacer.max_level", kPdrMaxLevel);
+    fp.set(params);
+    fp.register_relation(inv);
+    z3::func_decl bad =
+        ctx.function(("Bad" + std::to_string(p)).c_str(), 0, nullptr, ctx.bool_sort());
+    fp.register_relation(bad);
+    z3::expr r0 =
+        z3::forall(quantified(first_in, false), z3::implies(start.valid, holds(start.next)));
+    z3::expr r1 =
+        z3::forall(quantified(in, true), z3::implies(holds(cur) && step.valid, holds(step.next)));
+    z3::expr b0 =
+        z3::forall(quantified(first_in, false), z3::implies(start.valid && start.fails[p], bad()));
+    z3::expr b1 = z3::forall(quantified(in, true),
+                             z3::implies(holds(cur) && step.valid && step.fails[p], bad()));
+    fp.add_rule(r0, ctx.str_symbol("init"));
+    fp.add_rule(r1, ctx.str_symbol("tick"));
+    fp.add_rule(b0, ctx.str_symbol("bad0"));
+    fp.add_rule(b1, ctx.str_symbol("bad"));
+    z3::expr query = bad();
+    try {
+      proved[p] = fp.query(query) == z3::unsat;
+    } catch (const z3::exception&) {
+      proved[p] = false;  // resource limit: not proved here
+    }
+  }
+  return proved;
+}
+
+}  // namespace
+
+SymbolicSearch symbolic_search(Model& m, const Options& options) {
+  z3::context ctx;
+  SymbolicTick tick(m, ctx);
+  const std::uint64_t bound = options.depth != 0 ? options.depth : kSymbolicBound;
+  const std::size_t count = m.properties.size();
+  SymbolicSearch out;
+  out.violations.resize(count);
+  out.proved_k.assign(count, 0);
+  out.proved.assign(count, false);
+  out.by_pdr.assign(count, false);
+  std::vector<std::size_t> open;
+  for (std::size_t p = 0; p < count; ++p)
+    if (!m.properties[p].assumption && tick.table(p)) open.push_back(p);
+
+  z3::solver bmc(ctx), ind(ctx);
+  std::vector<SymState> path{tick.fresh()};
+  std::vector<TickInputs> inputs;
+  std::vector<std::vector<z3::expr>> leaf_ticks;  // per tick, per leaf
+  std::vector<SymState> ind_states{tick.state("i0.")};
+  std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per property
+  ind.add(tick.domain(ind_states[0]) && ind_states[0].started[0]);
+
+  for (std::uint64_t k = 1; k <= bound && !open.empty(); ++k) {
+    // Base case: every run of k ticks.
+    const std::string t = "t" + std::to_string(k) + ".";
+    inputs.push_back(tick.inputs(t));
+    TickEncoding enc = tick.encode(path.back(), inputs.back(), k == 1);
+    leaf_ticks.push_back(enc.leaf_ticks);
+    bmc.add(enc.valid.simplify());
+    path.push_back(pin(bmc, tick, enc.next, "s" + std::to_string(k) + "."));
+    if (!enc.overflow.simplify().is_false()) {
+      bmc.push();
+      bmc.add(enc.overflow);
+      const bool deeper = bmc.check() == z3::sat;
+      bmc.pop();
+      if (deeper)
+        throw SymbolicUnsupported("at tick " + std::to_string(k) +
+                                  " the wake-up loop re-ticks the root more often than the "
+                                  "symbolic engine unrolls it");
+    }
+    if (bmc.check() == z3::unsat) {
+      // No run lasts k ticks: every guarantee still open holds on every run.
+      for (std::size_t p : open) {
+        out.proved[p] = true;
+        out.proved_k[p] = k - 1;
+      }
+      out.depth = k - 1;
+      open.clear();
+      break;
+    }
+    std::vector<std::size_t> still;
+    for (std::size_t p : open) {
+      bmc.push();
+      bmc.add(enc.fails[p]);
+      if (bmc.check() == z3::sat) {
+        const z3::model model = bmc.get_model();
+        Finding f;
+        f.property = p;
+        f.tick = k;
+        for (std::size_t j = 0; j < inputs.size(); ++j)
+          f.path.push_back(step_of(model, tick, m, inputs[j], leaf_ticks[j], j == 0));
+        out.violations[p] = std::move(f);
+      } else {
+        still.push_back(p);
+      }
+      bmc.pop();
+    }
+    open = std::move(still);
+    out.depth = k;
+    if (open.empty()) break;
+    // Every run over by tick k: nothing is left to prove (cheaper than any induction).
+    bmc.push();
+    bmc.add(!path.back().done[0]);
+    const bool goes_on = bmc.check() == z3::sat;
+    bmc.pop();
+    if (!goes_on) {
+      for (std::size_t p : open) {
+        out.proved[p] = true;
+        out.proved_k[p] = k;
+      }
+      open.clear();
+      break;
+    }
+
+    // Induction step: k transitions from any state, pairwise distinct sources.
+    const std::string u = "i" + std::to_string(k) + ".";
+    TickEncoding step = tick.encode(ind_states.back(), tick.inputs(u + "in."), false);
+    ind.add(step.valid.simplify());
+    ind_states.push_back(pin(ind, tick, step.next, u));
+    for (std::size_t j = 0; j + 1 < ind_states.size() - 1; ++j)
+      ind.add(!tick.same(ind_states[j], ind_states[ind_states.size() - 2]));
+    // A proof must also rule out a wake-up loop deeper than the encoding.
+    for (z3::expr& f : step.fails) f = f || step.overflow;
+    ind_fails.push_back(step.fails);
+    out.induction_k = k;
+    for (std::size_t p : open) {
+      ind.push();
+      for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) ind.add(!ind_fails[j][p]);
+      ind.add(ind_fails.back()[p]);
+      if (ind.check() == z3::unsat) {
+        out.proved[p] = true;
+        out.proved_k[p] = k;
+      }
+      ind.pop();
+    }
+    std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
+    // What k-induction has not proved by now it will rarely prove later: ask IC3/PDR once.
+    if (k == std::min<std::uint64_t>(bound, kInductionBeforePdr) && !open.empty()) {
+      const std::vector<bool> pdr = spacer_proofs(ctx, tick, m, open);
+      for (std::size_t p : open)
+        if (pdr[p]) {
+          out.proved[p] = true;
+          out.by_pdr[p] = true;
+        }
+      std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
+    }
+  }
+  return out;
+}
+
+}  // namespace uabt::prove

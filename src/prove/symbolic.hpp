@@ -1,0 +1,35 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "prove/explore.hpp"
+#include "prove/model.hpp"
+#include "prove/prove.hpp"
+
+namespace uabt::prove {
+
+// How far the symbolic engine goes when no --depth is given: BMC to this many ticks and
+// k-induction up to this k.
+inline constexpr std::uint64_t kSymbolicBound = 40;
+// k-induction runs alone up to this k; IC3/PDR (Spacer) then tries what is still open.
+inline constexpr std::uint64_t kInductionBeforePdr = 6;
+// The frames IC3/PDR may open per guarantee before it gives up (deterministic, unlike a
+// timeout).
+inline constexpr unsigned kPdrMaxLevel = 64;
+
+struct SymbolicSearch {
+  std::vector<std::optional<Finding>> violations;  // per property (guarantees only)
+  std::vector<std::uint64_t> proved_k;  // per property: the k whose induction proved it, else 0
+  std::vector<bool> proved;
+  std::vector<bool> by_pdr;  // per property: proved by IC3/PDR rather than k-induction
+  std::uint64_t depth = 0;   // BMC depth checked (no violation of the open guarantees below it)
+  std::uint64_t induction_k = 0;  // deepest induction tried
+};
+
+// BMC with increasing depth (a violation is found at its shortest tick) and k-induction with
+// all states of the path distinct (proves a guarantee for every depth), over SymbolicTick.
+// Throws SymbolicUnsupported when the mission is outside what SymbolicTick models.
+SymbolicSearch symbolic_search(Model& model, const Options& options);
+
+}  // namespace uabt::prove

@@ -1,0 +1,422 @@
+#include "prove/symbolic_value.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace uabt::prove {
+
+using runtime::ScriptValue;
+using runtime::script::CompareOp;
+using runtime::script::Op;
+
+int SymbolCodes::code(const std::string& name) {
+  const auto [it, added] = codes_.emplace(name, static_cast<int>(names_.size()));
+  if (added) names_.push_back(name);
+  return it->second;
+}
+
+z3::expr real_literal(z3::context& ctx, double value) {
+  char buffer[64];
+  const auto [end, ec] =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
+  if (ec != std::errc() || !std::isfinite(value))
+    throw SymbolicUnsupported("the real " + std::to_string(value) + " has no exact value");
+  return ctx.real_val(std::string(buffer, end).c_str());
+}
+
+z3::expr constant_of(z3::context& ctx, const ScriptValue& v, SymType type, SymbolCodes& codes) {
+  switch (type) {
+    case SymType::boolean: return ctx.bool_val(v.kind == ScriptValue::Kind::boolean && v.boolean);
+    case SymType::integer:
+      return ctx.int_val(
+          static_cast<int64_t>(v.kind == ScriptValue::Kind::integer ? v.integer : 0));
+    case SymType::real: return real_literal(ctx, v.kind == ScriptValue::Kind::real ? v.real : 0.0);
+    case SymType::symbol:
+      return ctx.int_val(v.kind == ScriptValue::Kind::string ? codes.code(v.text) : -1);
+  }
+  return ctx.bool_val(false);
+}
+
+namespace {
+
+bool integral(SymType t) {
+  return t == SymType::boolean || t == SymType::integer;
+}
+bool numeric(SymType t) {
+  return t != SymType::symbol;
+}
+z3::expr as_int(const SymValue& v) {
+  if (v.type == SymType::boolean) return z3::ite(v.e, v.e.ctx().int_val(1), v.e.ctx().int_val(0));
+  return v.e;
+}
+z3::expr as_real(const SymValue& v) {
+  if (v.type == SymType::real) return v.e;
+  return z3::to_real(as_int(v));
+}
+z3::expr truth(const SymValue& v) {
+  if (v.type == SymType::boolean) return v.e;
+  if (v.type == SymType::integer) return v.e != 0;
+  return v.e != v.e.ctx().real_val(0);
+}
+
+// BT.CPP's float epsilon, which the runtime's == and != on reals use.
+z3::expr float_epsilon(z3::context& ctx) {
+  return real_literal(ctx, static_cast<double>(std::numeric_limits<float>::epsilon()));
+}
+
+class ScriptEncoder {
+ public:
+  ScriptEncoder(z3::context& ctx, const runtime::script::Program& p, const ScriptScope& scope,
+                std::vector<z3::expr>& values, const z3::expr& guard, const std::string& where)
+      : ctx_(ctx), p_(p), scope_(scope), values_(values), guard_(guard), where_(where) {}
+
+  std::optional<SymValue> run() {
+    std::optional<SymValue> last;
+    for (std::uint32_t s : p_.statements()) last = statement(s);
+    return last;
+  }
+
+ private:
+  [[noreturn]] void refuse(const std::string& why) const {
+    throw SymbolicUnsupported(where_ + ": `" + p_.code() + "`: " + why);
+  }
+
+  int var(const runtime::script::Expr& e) const {
+    const int v = scope_.var_of(e.name);
+    if (v < 0) refuse("'" + e.name + "' is neither a domain variable nor a condition");
+    return v;
+  }
+
+  SymValue read(int v) const {
+    const SymType t = (*scope_.types)[static_cast<std::size_t>(v)];
+    SymValue out{t, values_[static_cast<std::size_t>(v)], {}};
+    if (t == SymType::symbol) out.codes = (*scope_.domains)[static_cast<std::size_t>(v)];
+    return out;
+  }
+
+  SymValue statement(std::uint32_t index) {
+    const runtime::script::Expr& e = p_.nodes()[index];
+    switch (e.op) {
+      case Op::assign_create:
+      case Op::assign:
+      case Op::add_assign:
+      case Op::sub_assign:
+      case Op::mul_assign: return assign(e);
+      case Op::div_assign: refuse("'/=' is not modelled");
+      default: return eval(index);
+    }
+  }
+
+  SymValue assign(const runtime::script::Expr& e) {
+    const int v = var(p_.nodes()[e.a]);
+    const SymValue value = eval(e.b);
+    const SymValue dst = read(v);
+    z3::expr next = dst.e;
+    if (e.op == Op::assign || e.op == Op::assign_create) {
+      switch (dst.type) {
+        case SymType::boolean:
+          if (value.type != SymType::boolean) refuse("assigns a non-boolean to a boolean");
+          next = value.e;
+          break;
+        case SymType::integer:
+          if (!integral(value.type)) refuse("assigns a non-integer to an integer");
+          next = as_int(value);
+          break;
+        case SymType::real:
+          if (!numeric(value.type)) refuse("assigns a name to a real");
+          next = as_real(value);
+          break;
+        case SymType::symbol:
+          if (value.type != SymType::symbol) refuse("assigns a number to an enumeration");
+          for (int c : value.codes)
+            if (!dst.codes.contains(c))
+              refuse("assigns '" + scope_.codes->name(c) + "', which is not a value of '" +
+                     p_.nodes()[e.a].name + "'");
+          next = value.e;
+          break;
+      }
+    } else {
+      if (!numeric(value.type) || dst.type == SymType::symbol || dst.type == SymType::boolean)
+        refuse("compound assignment on non-numbers");
+      if (dst.type == SymType::integer) {
+        if (!integral(value.type)) refuse("compound assignment of a real to an integer");
+        const z3::expr a = dst.e, b = as_int(value);
+        next = e.op == Op::add_assign ? a + b : e.op == Op::sub_assign ? a - b : a * b;
+      } else {
+        const z3::expr a = dst.e, b = as_real(value);
+        next = e.op == Op::add_assign ? a + b : e.op == Op::sub_assign ? a - b : a * b;
+      }
+    }
+    z3::expr& slot = values_[static_cast<std::size_t>(v)];
+    slot = guard_.is_true() ? next : z3::ite(guard_, next, slot);
+    SymValue out = dst;
+    out.e = next;
+    return out;
+  }
+
+  SymValue eval(std::uint32_t index) {
+    const runtime::script::Expr& e = p_.nodes()[index];
+    switch (e.op) {
+      case Op::literal:
+        switch (e.literal.kind) {
+          case ScriptValue::Kind::boolean:
+            return {SymType::boolean, ctx_.bool_val(e.literal.boolean), {}};
+          case ScriptValue::Kind::integer:
+            return {SymType::integer, ctx_.int_val(static_cast<int64_t>(e.literal.integer)), {}};
+          case ScriptValue::Kind::real:
+            return {SymType::real, real_literal(ctx_, e.literal.real), {}};
+          case ScriptValue::Kind::string: {
+            if (e.literal.text.empty()) refuse("the empty string is not modelled");
+            const int c = scope_.codes->code(e.literal.text);
+            return {SymType::symbol, ctx_.int_val(c), {c}};
+          }
+          case ScriptValue::Kind::empty: refuse("an empty literal");
+        }
+        break;
+      case Op::name: return read(var(e));
+      case Op::negate: {
+        const SymValue v = eval(e.a);
+        if (!numeric(v.type)) refuse("'-' on a name");
+        if (v.type == SymType::real) return {SymType::real, -v.e, {}};
+        return {SymType::integer, -as_int(v), {}};
+      }
+      case Op::logical_not: {
+        const SymValue v = eval(e.a);
+        if (!numeric(v.type)) refuse("'!' on a name");
+        return {SymType::boolean, !truth(v), {}};
+      }
+      case Op::add:
+      case Op::sub:
+      case Op::mul: {
+        const SymValue l = eval(e.a), r = eval(e.b);
+        if (!numeric(l.type) || !numeric(r.type)) refuse("arithmetic on names");
+        if (integral(l.type) && integral(r.type)) {
+          const z3::expr a = as_int(l), b = as_int(r);
+          return {SymType::integer, e.op == Op::add ? a + b : e.op == Op::sub ? a - b : a * b, {}};
+        }
+        const z3::expr a = as_real(l), b = as_real(r);
+        return {SymType::real, e.op == Op::add ? a + b : e.op == Op::sub ? a - b : a * b, {}};
+      }
+      case Op::logic_and:
+      case Op::logic_or: {
+        const SymValue l = eval(e.a), r = eval(e.b);
+        if (!numeric(l.type) || !numeric(r.type)) refuse("'&&'/'||' on names");
+        return {SymType::boolean,
+                e.op == Op::logic_and ? truth(l) && truth(r) : truth(l) || truth(r),
+                {}};
+      }
+      case Op::compare: return compare(e);
+      case Op::conditional: {
+        const SymValue c = eval(e.a);
+        const SymValue a = eval(e.b), b = eval(e.c);
+        if (a.type != b.type) refuse("the branches of '?:' have different types");
+        const z3::expr cond = c.type == SymType::symbol ? ctx_.bool_val(true) : truth(c);
+        SymValue out{a.type, z3::ite(cond, a.e, b.e), a.codes};
+        out.codes.insert(b.codes.begin(), b.codes.end());
+        return out;
+      }
+      default: break;
+    }
+    refuse(
+        "its operators are not all modelled (assignments inside expressions, '/', '..', bit "
+        "operations, string '+')");
+  }
+
+  SymValue compare(const runtime::script::Expr& e) {
+    std::vector<SymValue> operands;
+    z3::expr all = ctx_.bool_val(true);
+    for (std::uint32_t i = 0; i < e.list_size; ++i)
+      operands.push_back(eval(p_.compare_operands()[e.list_begin + i]));
+    for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
+      const SymValue &l = operands[i], &r = operands[i + 1];
+      const CompareOp op = p_.compare_ops()[e.ops_begin + i];
+      z3::expr holds = ctx_.bool_val(false);
+      if (l.type == SymType::symbol && r.type == SymType::symbol) {
+        if (op != CompareOp::eq && op != CompareOp::ne) refuse("orders names");
+        holds = op == CompareOp::eq ? l.e == r.e : l.e != r.e;
+      } else if (numeric(l.type) && numeric(r.type)) {
+        const bool exact = integral(l.type) && integral(r.type);
+        const z3::expr a = exact ? as_int(l) : as_real(l), b = exact ? as_int(r) : as_real(r);
+        const z3::expr equal = exact ? a == b : z3::abs(a - b) <= float_epsilon(ctx_);
+        switch (op) {
+          case CompareOp::eq: holds = equal; break;
+          case CompareOp::ne: holds = !equal; break;
+          case CompareOp::lt: holds = a < b; break;
+          case CompareOp::gt: holds = a > b; break;
+          case CompareOp::le: holds = a <= b; break;
+          case CompareOp::ge: holds = a >= b; break;
+        }
+      } else {
+        refuse("compares a name with a number");
+      }
+      all = all && holds;
+    }
+    return {SymType::boolean, all, {}};
+  }
+
+  z3::context& ctx_;
+  const runtime::script::Program& p_;
+  const ScriptScope& scope_;
+  std::vector<z3::expr>& values_;
+  z3::expr guard_;
+  std::string where_;
+};
+
+}  // namespace
+
+std::optional<SymValue> run_script(z3::context& ctx, const runtime::script::Program& program,
+                                   const ScriptScope& scope, std::vector<z3::expr>& values,
+                                   const z3::expr& guard, const std::string& where) {
+  return ScriptEncoder(ctx, program, scope, values, guard, where).run();
+}
+
+z3::expr script_truth(const SymValue& v, const std::string& where) {
+  if (!numeric(v.type)) throw SymbolicUnsupported(where + ": a script whose result is a name");
+  return truth(v);
+}
+
+namespace {
+
+using K = fretish::ExprKind;
+
+class FretishEncoder {
+ public:
+  FretishEncoder(z3::context& ctx, const std::function<SymValue(const std::string&)>& resolve,
+                 const std::string& where)
+      : ctx_(ctx), resolve_(resolve), where_(where) {}
+
+  SymValue value(const fretish::Expr& e) {
+    switch (e.kind) {
+      case K::bool_literal: return {SymType::boolean, ctx_.bool_val(e.bool_value), {}};
+      case K::number: {
+        if (e.text.find_first_not_of("0123456789") == std::string::npos)
+          return {SymType::integer, ctx_.int_val(e.text.c_str()), {}};
+        if (e.text.find_first_not_of("0123456789.") == std::string::npos)
+          return {SymType::real, ctx_.real_val(e.text.c_str()), {}};
+        refuse("the number " + e.text);
+      }
+      case K::identifier: return resolve_(e.text);
+      case K::logical_not: return {SymType::boolean, !boolean(*e.args[0]), {}};
+      case K::logical_and:
+      case K::logical_or: {
+        z3::expr acc = ctx_.bool_val(e.kind == K::logical_and);
+        for (const auto& a : e.args)
+          acc = e.kind == K::logical_and ? acc && boolean(*a) : acc || boolean(*a);
+        return {SymType::boolean, acc, {}};
+      }
+      case K::logical_xor:
+        return {SymType::boolean, boolean(*e.args[0]) != boolean(*e.args[1]), {}};
+      case K::implies:
+        return {SymType::boolean, z3::implies(boolean(*e.args[0]), boolean(*e.args[1])), {}};
+      case K::iff: return {SymType::boolean, boolean(*e.args[0]) == boolean(*e.args[1]), {}};
+      case K::eq:
+      case K::ne: {
+        const SymValue a = value(*e.args[0]), b = value(*e.args[1]);
+        z3::expr same = ctx_.bool_val(false);
+        if (a.type == SymType::boolean && b.type == SymType::boolean) {
+          same = a.e == b.e;
+        } else if (a.type == SymType::symbol && b.type == SymType::symbol) {
+          same = a.e == b.e;
+        } else if (number_kind(a) && number_kind(b)) {
+          same = both_int(a, b) ? a.e == b.e : as_real(a) == as_real(b);
+        } else {
+          refuse("'" + fretish::to_fretish(e) + "' compares values of different kinds");
+        }
+        return {SymType::boolean, e.kind == K::eq ? same : !same, {}};
+      }
+      case K::lt:
+      case K::le:
+      case K::gt:
+      case K::ge: {
+        const SymValue a = number(*e.args[0]), b = number(*e.args[1]);
+        const z3::expr x = both_int(a, b) ? a.e : as_real(a), y = both_int(a, b) ? b.e : as_real(b);
+        const z3::expr r = e.kind == K::lt   ? x < y
+                           : e.kind == K::le ? x <= y
+                           : e.kind == K::gt ? x > y
+                                             : x >= y;
+        return {SymType::boolean, r, {}};
+      }
+      case K::add:
+      case K::sub:
+      case K::mul: {
+        const SymValue a = number(*e.args[0]), b = number(*e.args[1]);
+        const bool ints = both_int(a, b);
+        const z3::expr x = ints ? a.e : as_real(a), y = ints ? b.e : as_real(b);
+        const z3::expr r = e.kind == K::add ? x + y : e.kind == K::sub ? x - y : x * y;
+        return {ints ? SymType::integer : SymType::real, r, {}};
+      }
+      case K::negate: {
+        const SymValue a = number(*e.args[0]);
+        return {a.type, -a.e, {}};
+      }
+      case K::call: return call(e);
+      default: break;
+    }
+    refuse("'" + fretish::to_fretish(e) + "' (division, modulo and powers are not modelled)");
+  }
+
+  z3::expr boolean(const fretish::Expr& e) {
+    const SymValue v = value(e);
+    if (v.type != SymType::boolean) refuse("'" + fretish::to_fretish(e) + "' is not a boolean");
+    return v.e;
+  }
+
+ private:
+  [[noreturn]] void refuse(const std::string& why) const {
+    throw SymbolicUnsupported(where_ + ": " + why);
+  }
+  static bool number_kind(const SymValue& v) {
+    return v.type == SymType::integer || v.type == SymType::real;
+  }
+  static bool both_int(const SymValue& a, const SymValue& b) {
+    return a.type == SymType::integer && b.type == SymType::integer;
+  }
+  SymValue number(const fretish::Expr& e) {
+    const SymValue v = value(e);
+    if (!number_kind(v)) refuse("'" + fretish::to_fretish(e) + "' is not a number");
+    return v;
+  }
+  SymValue call(const fretish::Expr& e) {
+    const std::string& f = e.text;
+    if ((f == "absReal" || f == "absInt") && e.args.size() == 1) {
+      const SymValue a = number(*e.args[0]);
+      return {a.type, z3::ite(a.e >= 0, a.e, -a.e), {}};
+    }
+    if ((f == "minReal" || f == "maxReal" || f == "minInt" || f == "maxInt") &&
+        e.args.size() == 2) {
+      const SymValue a = number(*e.args[0]), b = number(*e.args[1]);
+      const bool ints = both_int(a, b);
+      const z3::expr x = ints ? a.e : as_real(a), y = ints ? b.e : as_real(b);
+      const bool min = f.rfind("min", 0) == 0;
+      return {ints ? SymType::integer : SymType::real, z3::ite(min ? x <= y : x >= y, x, y), {}};
+    }
+    if (f == "ite" && e.args.size() == 3) {
+      const z3::expr c = boolean(*e.args[0]);
+      const SymValue a = value(*e.args[1]), b = value(*e.args[2]);
+      if (a.type != b.type) refuse("the branches of ite have different kinds");
+      return {a.type, z3::ite(c, a.e, b.e), {}};
+    }
+    refuse("function '" + f + "' is not modelled");
+  }
+
+  z3::context& ctx_;
+  const std::function<SymValue(const std::string&)>& resolve_;
+  std::string where_;
+};
+
+}  // namespace
+
+SymValue fretish_value(z3::context& ctx, const fretish::Expr& e,
+                       const std::function<SymValue(const std::string&)>& resolve,
+                       const std::string& where) {
+  return FretishEncoder(ctx, resolve, where).value(e);
+}
+
+z3::expr fretish_bool(z3::context& ctx, const fretish::Expr& e,
+                      const std::function<SymValue(const std::string&)>& resolve,
+                      const std::string& where) {
+  return FretishEncoder(ctx, resolve, where).boolean(e);
+}
+
+}  // namespace uabt::prove
