@@ -70,18 +70,16 @@ void register_gate(CLI::App& app, int& exit_code) {
                 : gate::run_gate(std::move(*mission), options, tool_version());
     // A mission with guarantees passes only when each one is proved (DESIGN §10).
     const auto scenarios = std::filesystem::path(args->out) / "counterexamples";
+    // How the reports tell to replay a counterexample: the style given on the command line
+    // (without one, `uabt run` compiles each node in the style the mission declares).
+    report::Proofs replay;
+    replay.mission_path =
+        running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
+    if (!args->selection.empty()) replay.run_options = "--selection " + args->selection;
     if (outcome.passed())
-      prove::add_proofs(outcome, prove::Options{}, scenarios.generic_string());
+      prove::add_proofs(outcome, prove::Options{}, scenarios.generic_string(), replay);
     else
       prove::add_proofs_not_run(outcome, "the gate failed before its proof step");
-    if (outcome.report.proofs) {
-      // How the report tells to replay a counterexample: the style given on the command line
-      // (without one, `uabt run` compiles each node in the style the mission declares).
-      outcome.report.proofs->mission_path =
-          running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
-      if (!args->selection.empty())
-        outcome.report.proofs->run_options = "--selection " + args->selection;
-    }
     outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     // What conform says about the compiled tree points at its file in the report directory.
     if (!outcome.report.compiled_tree_file.empty())

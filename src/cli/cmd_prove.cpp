@@ -109,19 +109,22 @@ void register_prove(CLI::App& app, int& exit_code) {
       }
     }
     exit_code = result.passed() ? kExitPass : kExitFail;
+    report::Proofs replay;  // how the output tells to replay a counterexample
+    replay.mission_path = args->mission;
+    if (!args->selection.empty()) replay.run_options = "--selection " + args->selection;
     if (args->format == "json") {
       emit(args->output, prove::result_json(result, outcome.mission->name, tool_version()));
       return;
     }
     if (args->format == "html") {
       report::Proofs proofs = prove::report_proofs(result, written);
-      proofs.mission_path = args->mission;
-      if (!args->selection.empty()) proofs.run_options = "--selection " + args->selection;
+      proofs.mission_path = replay.mission_path;
+      proofs.run_options = replay.run_options;
       emit(args->output, report::proofs_page_html(proofs, outcome.mission->name, tool_version()));
       return;
     }
     report::ReportInput input = report_input(*outcome.mission, {"prove"});
-    input.findings = prove::findings_of(result, written);
+    input.findings = prove::findings_of(result, written, replay);
     input.uri_prefix = sarif_uri_prefix(args->mission, "");
     if (args->format == "sarif") {
       write_findings(input, "sarif", args->output);

@@ -50,7 +50,8 @@ std::vector<std::string> table_lines(const Counterexample& cex) {
 }
 
 std::vector<Finding> findings_of(const Result& result,
-                                 const std::map<std::string, std::string>& written) {
+                                 const std::map<std::string, std::string>& written,
+                                 const report::Proofs& replay) {
   std::vector<Finding> out;
   for (const Answer& a : result.answers) {
     if (a.verdict == Verdict::proved) continue;
@@ -62,8 +63,8 @@ std::vector<Finding> findings_of(const Result& result,
                        a.location);
       const auto it = written.find(a.requirement);
       if (it != written.end())
-        f.notes.push_back("counterexample scenario: " + it->second +
-                          " (replay it with `uabt run MISSION --scenario " + it->second + "`)");
+        f.notes.push_back("counterexample scenario: " + it->second + " (replay it with `" +
+                          report::replay_command(replay, it->second) + "`)");
       for (const std::string& line : table_lines(*a.counterexample)) f.notes.push_back(line);
     } else if (a.verdict == Verdict::bounded) {
       f = make_finding("prove-bounded",
@@ -176,7 +177,8 @@ void add_proofs_not_run(gate::Outcome& outcome, const std::string& reason) {
   outcome.report.proofs = std::move(proofs);
 }
 
-void add_proofs(gate::Outcome& outcome, const Options& options, const std::string& scenario_dir) {
+void add_proofs(gate::Outcome& outcome, const Options& options, const std::string& scenario_dir,
+                const report::Proofs& replay) {
   if (!outcome.mission || !has_guarantees(*outcome.mission) || outcome.compiled_xml.empty()) return;
   std::vector<Finding> found;
   auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", found);
@@ -191,8 +193,10 @@ void add_proofs(gate::Outcome& outcome, const Options& options, const std::strin
           written[a.requirement] = (std::filesystem::path(scenario_dir) /
                                     report::counterexample_file_name(a.requirement))
                                        .generic_string();
-    found = findings_of(result, written);
+    found = findings_of(result, written, replay);
     outcome.report.proofs = report_proofs(result, written);
+    outcome.report.proofs->mission_path = replay.mission_path;
+    outcome.report.proofs->run_options = replay.run_options;
   } catch (const WorldError& e) {
     found = {make_finding("load-file", e.text, e.location)};
     add_proofs_not_run(outcome, "world.json cannot be read");

@@ -18,8 +18,10 @@ WorldModel mission_world(const load::Mission& mission);
 // Findings for the report: `prove-violated` and `prove-bounded` errors at the requirement,
 // `fretish-unsupported` for a guarantee prove cannot read. `written` maps a requirement id to
 // the file its counterexample was written to.
+// `replay` gives the mission path and run options of the replay command a note shows.
 std::vector<Finding> findings_of(const Result& result,
-                                 const std::map<std::string, std::string>& written = {});
+                                 const std::map<std::string, std::string>& written = {},
+                                 const report::Proofs& replay = {});
 
 // The tick-by-tick table of a counterexample, as text lines.
 std::vector<std::string> table_lines(const Counterexample& cex);
@@ -34,8 +36,10 @@ std::string result_json(const Result& result, const std::string& mission,
 // The report's Proofs section also gets every verdict and counterexample; `scenario_dir` is
 // where the reports put the counterexamples' scenarios (write_reports writes them there as
 // counterexamples/<id>.json; "" when they are not written), as the user sees that path.
+// `replay` gives the mission path and run options of the replay commands (as the user typed
+// them); they go to the Proofs section too.
 void add_proofs(gate::Outcome& outcome, const Options& options,
-                const std::string& scenario_dir = "");
+                const std::string& scenario_dir = "", const report::Proofs& replay = {});
 
 // For a gate that failed before its proof step: the report's Proofs section lists the
 // mission's guarantees as not checked, with the reason. Nothing when it states none.

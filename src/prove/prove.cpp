@@ -9,6 +9,7 @@
 #include "prove/symbolic.hpp"
 #include "prove/symbolic_value.hpp"
 #include "runtime/runner.hpp"
+#include "runtime/trace.hpp"
 
 namespace uabt::prove {
 
@@ -34,17 +35,6 @@ bool Result::passed() const {
 
 namespace {
 
-Json json_value(const ScriptValue& v) {
-  switch (v.kind) {
-    case ScriptValue::Kind::boolean: return v.boolean;
-    case ScriptValue::Kind::integer: return v.integer;
-    case ScriptValue::Kind::real: return v.real;
-    case ScriptValue::Kind::string: return v.text;
-    case ScriptValue::Kind::empty: break;
-  }
-  return nullptr;
-}
-
 // Collects what the actions did along a path, as scenario "runs".
 class RunRecorder : public ActionRecorder {
  public:
@@ -68,7 +58,7 @@ class RunRecorder : public ActionRecorder {
       Json effects = Json::object();
       for (const std::string& name : writes)
         if (const ScriptValue* v = m_.engine->blackboard().get(name))
-          effects[name] = json_value(*v);
+          effects[name] = runtime::value_json(*v);
       run["effects"] = effects;
     }
   }
@@ -114,9 +104,9 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
         for (std::size_t i = 0; i < m.vars.size(); ++i) {
           const ScriptValue& v = m.engine->blackboard().value(m.vars[i].slot);
           if (tick == 1)
-            initial[m.vars[i].name] = json_value(v);
+            initial[m.vars[i].name] = runtime::value_json(v);
           else if (!(v == last[i]))
-            set[m.vars[i].name] = json_value(v);
+            set[m.vars[i].name] = runtime::value_json(v);
         }
         if (!set.empty()) events.push_back(Json{{"at", tick}, {"set", set}});
       },

@@ -92,13 +92,6 @@ std::string shell_word(const std::string& word) {
 
 }  // namespace
 
-std::string replay_text(const Proofs& proofs, const std::string& scenario_file) {
-  std::string out =
-      "uabt run " + (proofs.mission_path.empty() ? "MISSION" : shell_word(proofs.mission_path));
-  if (!proofs.run_options.empty()) out += " " + proofs.run_options;
-  return out + " --scenario " + shell_word(scenario_file.empty() ? "cex.json" : scenario_file);
-}
-
 std::string proofs_summary(const Proofs& proofs) {
   if (!proofs.not_run.empty()) return "uabt prove did not run: " + proofs.not_run + ".";
   const std::string engine =
@@ -110,5 +103,14 @@ std::string proofs_summary(const Proofs& proofs) {
 }
 
 }  // namespace detail
+
+std::string replay_command(const Proofs& proofs, const std::string& scenario_file) {
+  std::string out =
+      "uabt run " +
+      (proofs.mission_path.empty() ? "MISSION" : detail::shell_word(proofs.mission_path));
+  if (!proofs.run_options.empty()) out += " " + proofs.run_options;
+  return out + " --scenario " +
+         detail::shell_word(scenario_file.empty() ? "cex.json" : scenario_file);
+}
 
 }  // namespace uabt::report

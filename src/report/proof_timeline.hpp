@@ -36,10 +36,6 @@ struct TimelineRow {
 // the order it first does something.
 std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex);
 
-// `uabt run MISSION [OPTIONS] --scenario FILE`, paths shell-quoted when they need it (FILE is
-// "cex.json" when the scenario was not written).
-std::string replay_text(const Proofs& proofs, const std::string& scenario_file);
-
 // "explicit-state engine: 12 states, 30 transitions, every reachable state explored."
 std::string proofs_summary(const Proofs& proofs);
 

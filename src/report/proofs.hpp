@@ -66,4 +66,8 @@ std::string proofs_markdown(const Proofs& proofs);
 std::string proofs_page_html(const Proofs& proofs, const std::string& mission,
                              const std::string& tool_version);
 
+// The command that replays a counterexample scenario: `uabt run MISSION [run_options]
+// --scenario FILE`, MISSION as `mission_path` says ("MISSION" when it is not known).
+std::string replay_command(const Proofs& proofs, const std::string& scenario_file);
+
 }  // namespace uabt::report

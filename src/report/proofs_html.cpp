@@ -53,7 +53,7 @@ void timeline_html(const ProofAnswer& a, const ProofCounterexample& cex, const P
       "</tbody></table></div>\n<p class=\"legend\"><span class=\"key on\"></span>true "
       "<span class=\"key off\"></span>false <span class=\"key run\"></span>action running "
       "<span class=\"key viol\"></span>the violating tick</p>\n";
-  out += "<p>Replay: " + code(detail::replay_text(proofs, cex.scenario_file)) +
+  out += "<p>Replay: " + code(replay_command(proofs, cex.scenario_file)) +
          (cex.scenario_file.empty() ? " (save the scenario below as <code>cex.json</code>)" : "") +
          " runs the same violation at tick " + std::to_string(cex.tick) + ".</p>\n";
   out += "<details><summary>The scenario" +

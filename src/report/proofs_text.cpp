@@ -65,7 +65,7 @@ void timeline_markdown(const ProofAnswer& a, const ProofCounterexample& cex, con
     out += "\n";
   }
   out += "\n■ true, □ false, ▬ action running. Replay: " +
-         code(detail::replay_text(proofs, cex.scenario_file)) + "\n";
+         code(replay_command(proofs, cex.scenario_file)) + "\n";
 }
 
 }  // namespace
@@ -112,7 +112,7 @@ nlohmann::ordered_json proofs_json(const Proofs& proofs) {
       c["tick"] = a.counterexample->tick;
       if (!a.counterexample->scenario_file.empty())
         c["scenario_file"] = a.counterexample->scenario_file;
-      c["replay"] = replay_text(proofs, a.counterexample->scenario_file);
+      c["replay"] = replay_command(proofs, a.counterexample->scenario_file);
       j["counterexample"] = std::move(c);
     }
     answers.push_back(std::move(j));
