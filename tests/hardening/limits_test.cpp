@@ -177,7 +177,6 @@ TEST(Limits, XmlDeeperThanBehaviorTreeCppAccepts) {
     EXPECT_EQ(f->location.line, 4 + (bt::kMaxDepth + 1 - 3));
     EXPECT_EQ(f->location.column, 1);
     EXPECT_NE(f->message.find("nested deeper than 256"), std::string::npos) << f->message;
-    EXPECT_LT(run.seconds, 30.0);
   }
 }
 
@@ -210,7 +209,6 @@ TEST(Limits, ManyElementsAndAttributes) {
   body += "    </Sequence>";
   const GateRun run = gate_with("mission.xml", mission_with(body));
   EXPECT_TRUE(run.passed()) << run.text().substr(0, 2000);
-  EXPECT_LT(run.seconds, 120.0);
 }
 
 TEST(Limits, SubTreeChainsAreNotRecursedInto) {
@@ -228,7 +226,6 @@ TEST(Limits, SubTreeChainsAreNotRecursedInto) {
   xml += "</root>\n";
   const GateRun run = gate_with("mission.xml", xml);
   ASSERT_TRUE(run.outcome.has_value());
-  EXPECT_LT(run.seconds, 120.0);
 }
 
 // --- file size ---------------------------------------------------------------------------------
@@ -255,7 +252,7 @@ std::string atoms(const char* op, int n) {
 }
 
 // A guard with 10,000 atoms either goes through the whole gate in reasonable time or is refused
-// with a clear finding; it never hangs.
+// with a clear finding; it never hangs (ctest fails a test that outlives its TIMEOUT).
 TEST(Limits, GuardWithTenThousandAtoms) {
   for (const char* op : {"|", "&"}) {
     SCOPED_TRACE(op);
@@ -269,7 +266,6 @@ TEST(Limits, GuardWithTenThousandAtoms) {
     TempMission m(files);
     const GateRun run = run_real_gate(m.dir(), 2000);
     ASSERT_TRUE(run.outcome.has_value());
-    EXPECT_LT(run.seconds, 120.0);
     for (const Finding& f : run.findings()) {
       if (f.severity == Severity::error) {
         EXPECT_FALSE(f.location.file.empty()) << f.message;
@@ -296,7 +292,6 @@ TEST(Limits, ManyRequirementsOnOneNode) {
   TempMission m(files);
   const GateRun run = run_real_gate(m.dir(), 2000);
   ASSERT_TRUE(run.outcome.has_value());
-  EXPECT_LT(run.seconds, 120.0);
   EXPECT_TRUE(run.passed()) << run.text().substr(0, 3000);
   ASSERT_EQ(run.outcome->verification.coverage.size(), 1u);
   EXPECT_TRUE(run.outcome->verification.coverage[0].counted);
