@@ -28,6 +28,7 @@ enum class NK {
   inverter,
   force_success,
   force_failure,
+  keep_running_until_failure,
   repeat,
   subtree,
   always_success,
@@ -48,6 +49,7 @@ const std::map<std::string, NK, std::less<>>& builtins() {
       {"Inverter", NK::inverter},
       {"ForceSuccess", NK::force_success},
       {"ForceFailure", NK::force_failure},
+      {"KeepRunningUntilFailure", NK::keep_running_until_failure},
       {"Repeat", NK::repeat},
       {"SubTree", NK::subtree},
       {"SubTreePlus", NK::subtree},
@@ -61,15 +63,9 @@ const std::map<std::string, NK, std::less<>>& builtins() {
 
 // Built-in nodes the runtime has and this encoding does not (yet) model.
 bool unmodelled_builtin(const std::string& kind) {
-  static const std::set<std::string, std::less<>> kinds = {"SequenceWithMemory",
-                                                           "SequenceStar",
-                                                           "Parallel",
-                                                           "ParallelAll",
-                                                           "WhileDoElse",
-                                                           "RetryUntilSuccessful",
-                                                           "RetryUntilSuccesful",
-                                                           "KeepRunningUntilFailure",
-                                                           "RunOnce"};
+  static const std::set<std::string, std::less<>> kinds = {
+      "SequenceWithMemory",   "SequenceStar",        "Parallel", "ParallelAll", "WhileDoElse",
+      "RetryUntilSuccessful", "RetryUntilSuccesful", "RunOnce"};
   return kinds.contains(kind);
 }
 
@@ -293,6 +289,7 @@ struct SymbolicTick::Impl {
       case NK::inverter:
       case NK::force_success:
       case NK::force_failure:
+      case NK::keep_running_until_failure:
       case NK::repeat:
       case NK::subtree:
         if (n != 1) throw SymbolicUnsupported(d.where + ": a decorator needs one child");
@@ -385,6 +382,14 @@ struct SymbolicTick::Impl {
                 ? z3::ite(s == kSuccess, ctx.int_val(kFailure), ctx.int_val(kSuccess))
                 : ctx.int_val(d.kind == NK::force_success ? kSuccess : kFailure);
         return z3::ite(completed, forced, s);
+      }
+      case NK::keep_running_until_failure: {
+        // runtime/decorators/keep_running_until_failure.cpp: SUCCESS restarts the child next
+        // tick (RUNNING); only FAILURE ends it.
+        set(x.cur.status[id], g, ctx.int_val(kRunning));
+        const z3::expr s = exec(x, d.children[0], g);
+        halt_child(x, id, 0, g && (s == kSuccess || s == kFailure));
+        return z3::ite(s == kFailure, ctx.int_val(kFailure), ctx.int_val(kRunning));
       }
       case NK::subtree: {
         set(x.cur.status[id], g && x.cur.status[id] == kIdle, ctx.int_val(kRunning));

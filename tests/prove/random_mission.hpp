@@ -67,6 +67,7 @@ class RandomMission {
       case 5: return wrap("Inverter", named, children(1));
       case 6: return wrap("ForceSuccess", named, children(1));
       case 7: return wrap("ForceFailure", named, children(1));
+      case 10: return wrap("KeepRunningUntilFailure", named, children(1));
       case 9:
         if (!repeated_) {  // one Repeat at most: its wake-up re-ticks multiply the tick
           repeated_ = true;
