@@ -87,7 +87,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       options.engine = args->engine;
       result = prove::prove(*outcome.mission, *doc, world, options);
     } catch (const prove::WorldError& e) {
-      std::cerr << e.what() << "\n";
+      // world.json named as opened from the current directory, like every other finding.
+      std::cerr << path_prefix_for(outcome.mission->dir) << e.what() << "\n";
       exit_code = kExitUsage;
       return;
     } catch (const std::exception& e) {
