@@ -134,8 +134,8 @@ class Search {
     m_.choice->set_elapsed(from.elapsed);
   }
 
-  void expand(const Node& from_ref, std::uint32_t from_index, bool first) {
-    const Node from = from_ref;  // nodes_ may grow below
+  // `from` may be an element of nodes_: a std::deque keeps references valid as it grows.
+  void expand(const Node& from, std::uint32_t from_index, bool first) {
     const Product& env = first ? initial_ : env_;
     for (std::uint64_t e = 0; e < env.size; ++e) {
       restore(from);

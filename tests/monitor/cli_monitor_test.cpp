@@ -2,11 +2,7 @@
 // not-monitored with its reason, exit codes, and errors that name file and line.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
-
+#include "cli/cli_support.hpp"
 #include "monitor_test_support.hpp"
 #include "temp_mission.hpp"
 
@@ -15,22 +11,9 @@ namespace {
 
 using Files = std::map<std::string, std::string>;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-};
-
 CliRun uabt_in(const std::filesystem::path& dir, const std::string& args) {
-  const std::string command =
-      "cd '" + dir.string() + "' && '" + std::string(UABT_BINARY) + "' " + args + " 2>&1";
-  CliRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.out += buffer.data();
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return run_shell("cd '" + dir.string() + "' && '" + std::string(UABT_BINARY) + "' " + args +
+                   " 2>&1");
 }
 
 const char* kRequirements =

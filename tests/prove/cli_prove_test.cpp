@@ -7,30 +7,19 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_support.hpp"
 #include "prove_support.hpp"
 
 namespace uabt::testing {
 namespace {
 
-struct CliRun {
-  int code;
-  std::string out;
-};
-
 CliRun run(const std::string& args) {
-  const std::string cmd = std::string(UABT_BINARY) + " " + args + " 2>&1";
-  CliRun r{0, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  char buffer[4096];
-  while (std::size_t n = fread(buffer, 1, sizeof buffer, p)) r.out.append(buffer, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return run_shell(std::string(UABT_BINARY) + " " + args + " 2>&1");
 }
 
 TEST(ProveCli, ViolationExitsOneWithTheTable) {
   const CliRun r = run("prove " + mission_dir("sample_drilling").string());
-  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.out.find("requirements.fret:5:10: error: guarantee 'CoolBit' is violated at tick 1"),
             std::string::npos)
       << r.out;
@@ -43,7 +32,7 @@ TEST(ProveCli, ViolationExitsOneWithTheTable) {
 TEST(ProveCli, SymbolicEngineNamesItsFigures) {
   const std::string mission = mission_dir("sample_drilling").string();
   const CliRun text = run("prove " + mission + " --engine symbolic");
-  EXPECT_EQ(text.code, 1);
+  EXPECT_EQ(text.exit_code, 1);
   EXPECT_NE(
       text.out.find("requirements.fret:5:10: error: guarantee 'CoolBit' is violated at tick 1"),
       std::string::npos)
@@ -68,7 +57,7 @@ TEST(ProveCli, JsonAndCounterexampleFiles) {
   const auto dir = scratch.dir() / "cex";
   const CliRun r = run("prove " + mission_dir("sample_drilling").string() +
                        " --format json --counterexamples " + dir.string());
-  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.exit_code, 1);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["verdict"], "fail");
   EXPECT_EQ(j["complete"], true);
@@ -84,7 +73,7 @@ TEST(ProveCli, JsonAndCounterexampleFiles) {
   EXPECT_NE(replay.out.find("tick 1: drilling selects rotary (Soft)"), std::string::npos)
       << replay.out;
   // `uabt run` monitors the mission's properties: it reports the same violation at the same tick.
-  EXPECT_EQ(replay.code, 1) << replay.out;
+  EXPECT_EQ(replay.exit_code, 1) << replay.out;
   EXPECT_NE(replay.out.find("tick 1: guarantee CoolBit violated (Drill.running=true, "
                             "IsBitCool=false)"),
             std::string::npos)
@@ -95,7 +84,7 @@ TEST(ProveCli, JsonAndCounterexampleFiles) {
 
 TEST(ProveCli, SarifPointsAtTheRequirement) {
   const CliRun r = run("prove " + mission_dir("sample_drilling").string() + " --format sarif");
-  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.exit_code, 1);
   const auto j = nlohmann::json::parse(r.out);
   const auto& result = j["runs"][0]["results"][0];
   EXPECT_EQ(result["ruleId"], "prove-violated");
@@ -107,7 +96,7 @@ TEST(ProveCli, GateFailsOnAViolatedGuaranteeAndKeepsTheRejectedTree) {
   TempMission scratch({});
   const CliRun broken =
       run("gate " + mission_dir("sample_drilling").string() + " --out " + scratch.dir().string());
-  EXPECT_EQ(broken.code, 1);
+  EXPECT_EQ(broken.exit_code, 1);
   EXPECT_NE(broken.out.find("[prove-violated]"), std::string::npos) << broken.out;
   EXPECT_TRUE(std::filesystem::exists(scratch.dir() / "compiled.rejected.xml"));
   EXPECT_FALSE(std::filesystem::exists(scratch.dir() / "compiled.xml"));
@@ -123,7 +112,7 @@ TEST(ProveCli, CuriosityGateProvesItsGuaranteesAndRejectsTheSequenceStyle) {
   TempMission scratch({});
   const CliRun msl =
       run("gate " + mission_dir("msl_curiosity").string() + " --out " + scratch.dir().string());
-  EXPECT_EQ(msl.code, 0) << msl.out;
+  EXPECT_EQ(msl.exit_code, 0) << msl.out;
   std::ifstream summary(scratch.dir() / "summary.md");
   const std::string summary_text((std::istreambuf_iterator<char>(summary)),
                                  std::istreambuf_iterator<char>());
@@ -133,18 +122,18 @@ TEST(ProveCli, CuriosityGateProvesItsGuaranteesAndRejectsTheSequenceStyle) {
   const auto sequence_out = scratch.dir() / "sequence";
   const CliRun sequence = run("gate " + mission_dir("msl_curiosity").string() +
                               " --selection sequence --out " + sequence_out.string());
-  EXPECT_EQ(sequence.code, 1) << sequence.out;
+  EXPECT_EQ(sequence.exit_code, 1) << sequence.out;
   EXPECT_NE(sequence.out.find("guarantee 'HoldOnUnknown' is violated at tick 3"), std::string::npos)
       << sequence.out;
   EXPECT_TRUE(std::filesystem::exists(sequence_out / "compiled.rejected.xml"));
   EXPECT_FALSE(std::filesystem::exists(sequence_out / "compiled.xml"));
 
   const CliRun proved = run("prove " + mission_dir("msl_curiosity").string());
-  EXPECT_EQ(proved.code, 0) << proved.out;
+  EXPECT_EQ(proved.exit_code, 0) << proved.out;
   EXPECT_NE(proved.out.find("4 guarantees: 4 proved, 0 violated"), std::string::npos) << proved.out;
   const CliRun violated =
       run("prove " + mission_dir("msl_curiosity").string() + " --selection sequence");
-  EXPECT_EQ(violated.code, 1) << violated.out;
+  EXPECT_EQ(violated.exit_code, 1) << violated.out;
   EXPECT_NE(violated.out.find("4 guarantees: 3 proved, 1 violated"), std::string::npos)
       << violated.out;
 }
@@ -154,14 +143,14 @@ TEST(ProveCli, BadWorldFileIsAUsageError) {
   files["world.json"] = "{\"actions\": {\"Drill\": {\"ticks\": [3, 1]}}}";
   TempMission m(files);
   const CliRun r = run("prove " + m.dir().string());
-  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("world.json:1:24: error: ticks [3, 1]: min is above max"), std::string::npos)
       << r.out;
 }
 
 TEST(ProveCli, ExplainKnowsTheChecks) {
-  EXPECT_EQ(run("explain prove-violated").code, 0);
-  EXPECT_EQ(run("explain prove-bounded").code, 0);
+  EXPECT_EQ(run("explain prove-violated").exit_code, 0);
+  EXPECT_EQ(run("explain prove-bounded").exit_code, 0);
 }
 
 }  // namespace
@@ -177,7 +166,7 @@ TEST(ProveCli, GateReportsShowTheProofs) {
   TempMission scratch({});
   const auto out = scratch.dir() / "report";
   const std::string mission = mission_dir("sample_drilling").string();
-  EXPECT_EQ(run("gate " + mission + " --out " + out.string()).code, 1);
+  EXPECT_EQ(run("gate " + mission + " --out " + out.string()).exit_code, 1);
   const std::string html = read_all(out / "report.html");
   EXPECT_NE(html.find("<section id=\"proofs\">"), std::string::npos);
   EXPECT_NE(html.find("<table class=\"timeline\">"), std::string::npos);
@@ -211,14 +200,14 @@ TEST(ProveCli, GateReportsShowTheProofs) {
   files["alternatives/drilling/rotary.xml"] = kFixedRotary;
   TempMission fixed(files);
   const CliRun pass = run("gate " + fixed.dir().string() + " --out " + out.string());
-  EXPECT_EQ(pass.code, 0) << pass.out;
+  EXPECT_EQ(pass.exit_code, 0) << pass.out;
   EXPECT_FALSE(std::filesystem::exists(out / "counterexamples"));
   EXPECT_EQ(read_all(out / "report.html").find("<table class=\"timeline\">"), std::string::npos);
 }
 
 TEST(ProveCli, HtmlFormatIsAPageWithTheTimeline) {
   const CliRun r = run("prove " + mission_dir("sample_drilling").string() + " --format html");
-  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.out.rfind("<!DOCTYPE html>", 0), 0u) << r.out;
   EXPECT_NE(r.out.find("<table class=\"timeline\">"), std::string::npos);
   EXPECT_EQ(r.out.find("<script"), std::string::npos);
@@ -237,7 +226,7 @@ TEST(ProveCli, SequenceGateReplaysInItsStyle) {
   TempMission scratch({});
   const auto out = scratch.dir() / "report";
   const std::string mission = mission_dir("msl_curiosity").string();
-  EXPECT_EQ(run("gate " + mission + " --selection sequence --out " + out.string()).code, 1);
+  EXPECT_EQ(run("gate " + mission + " --selection sequence --out " + out.string()).exit_code, 1);
   const auto json = nlohmann::json::parse(read_all(out / "findings.json"));
   std::string replay;
   std::uint64_t tick = 0;
