@@ -77,6 +77,22 @@ void register_prove(CLI::App& app, int& exit_code) {
       exit_code = kExitFail;
       return;
     }
+    // Nothing to explore: say so rather than report an engine's figures over no property
+    // (SARIF and HTML are simply empty then).
+    if (!prove::has_guarantees(*outcome.mission) &&
+        (args->format == "text" || args->format == "json")) {
+      exit_code = kExitPass;
+      prove::Result none;
+      none.engine = "none";
+      none.complete = true;
+      emit(args->output,
+           args->format == "json"
+               ? prove::result_json(none, outcome.mission->name, tool_version())
+               : "prove: " + outcome.mission->name +
+                     " states no guarantees (requirements that choose no alternative and are "
+                     "not about the Environment): nothing to prove\n");
+      return;
+    }
     std::vector<Finding> ignored;
     auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", ignored);
     prove::Result result;

@@ -148,6 +148,20 @@ TEST(ProveCli, BadWorldFileIsAUsageError) {
       << r.out;
 }
 
+// A mission that states no guarantee: nothing to prove, said in one line, exit 0.
+TEST(ProveCli, NoGuaranteesIsSaid) {
+  const CliRun text = run("prove " + mission_dir("planetary_landing").string());
+  EXPECT_EQ(text.exit_code, 0) << text.out;
+  EXPECT_EQ(text.out,
+            "prove: planetary_landing states no guarantees (requirements that choose no "
+            "alternative and are not about the Environment): nothing to prove\n");
+  const CliRun json = run("prove " + mission_dir("planetary_landing").string() + " --format json");
+  const auto j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["engine"], "none");
+  EXPECT_EQ(j["verdict"], "pass");
+  EXPECT_TRUE(j["properties"].empty());
+}
+
 TEST(ProveCli, ExplainKnowsTheChecks) {
   EXPECT_EQ(run("explain prove-violated").exit_code, 0);
   EXPECT_EQ(run("explain prove-bounded").exit_code, 0);
