@@ -12,9 +12,10 @@
 //                                                     (min, median, max), CPU, peak memory
 //   uabt_bench selection                              --selection optimized against Fig. 4:
 //                                                     condition ticks per selection, compile time
-//   uabt_bench prove-family binary|checklist SIZE DIR [--counters V]
+//   uabt_bench prove-family binary|checklist|preflight|lunar SIZE DIR [--counters V]
 //                                                     write a mission of a model-checking
 //                                                     family (prove_families.hpp) to DIR
+//                                                     (lunar has one size: 1)
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -57,7 +58,8 @@ int usage() {
                "       uabt_bench scale [--quick]\n"
                "       uabt_bench process RUNS COMMAND [ARGS...]\n"
                "       uabt_bench selection\n"
-               "       uabt_bench prove-family binary|checklist SIZE DIR [--counters V]\n");
+               "       uabt_bench prove-family binary|checklist|preflight|lunar SIZE DIR "
+               "[--counters V]\n");
   return 2;
 }
 
@@ -68,7 +70,8 @@ std::optional<int> positive(const char* text) {
   return static_cast<int>(v);
 }
 
-// Prints the compiled tree's node count and the expected verdicts, for prove_families.sh.
+// Prints the compiled tree's node count and the expected verdicts (a violated one with its
+// tick: `BelowMax=violated@8`), for prove_families.sh.
 int prove_family(int argc, char** argv) {
   if (argc != 5 && argc != 7) return usage();
   const std::string family = argv[2];
@@ -79,11 +82,24 @@ int prove_family(int argc, char** argv) {
     if (std::string(argv[5]) != "--counters" || !v) return usage();
     counters = *v;
   }
-  if (!size || (family != "binary" && family != "checklist")) return usage();
-  const FamilyMission m = family == "binary" ? generate_binary_tree(argv[4], *size, counters)
-                                             : generate_checklist(argv[4], *size);
+  if (!size || (family == "lunar" && *size != 1)) return usage();
+  FamilyMission m;
+  if (family == "binary")
+    m = generate_binary_tree(argv[4], *size, counters);
+  else if (family == "checklist")
+    m = generate_checklist(argv[4], *size);
+  else if (family == "preflight")
+    m = generate_preflight(argv[4], *size);
+  else if (family == "lunar")
+    m = generate_lunar(argv[4]);
+  else
+    return usage();
   std::printf("%d", m.tree_nodes);
-  for (const auto& [id, verdict] : m.verdicts) std::printf(" %s=%s", id.c_str(), verdict.c_str());
+  for (const auto& [id, verdict] : m.verdicts) {
+    std::printf(" %s=%s", id.c_str(), verdict.c_str());
+    if (const auto tick = m.violation_ticks.find(id); tick != m.violation_ticks.end())
+      std::printf("@%llu", static_cast<unsigned long long>(tick->second));
+  }
   std::printf("\n");
   return 0;
 }

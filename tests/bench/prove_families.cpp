@@ -21,6 +21,13 @@ std::string mission_xml(const std::string& body) {
          body + "    </KeepRunningUntilFailure>\n  </BehaviorTree>\n</root>\n";
 }
 
+// The robot's registered nodes. Without it the compiler tells conditions from actions by their
+// names (Is…, Has…), and would take Ok_1 or AtSite for an action.
+std::string nodes_xml(const std::string& models) {
+  return "<root BTCPP_format=\"4\">\n  <TreeNodesModel>\n" + models +
+         "  </TreeNodesModel>\n</root>\n";
+}
+
 std::string indent(int depth) {
   return std::string(static_cast<std::size_t>(2 * depth), ' ');
 }
@@ -124,6 +131,162 @@ FamilyMission generate_checklist(const std::filesystem::path& dir, int checks) {
   m.tree_nodes = 3 * checks + 4;
   m.verdicts = {{"Ready", "proved"}, {"NeverWorks", "violated"}};
   m.violation_ticks = {{"NeverWorks", static_cast<std::uint64_t>(checks) + 1}};
+  return m;
+}
+
+FamilyMission generate_preflight(const std::filesystem::path& dir, int flags) {
+  if (flags < 1) throw std::invalid_argument("a pre-flight checklist has at least one flag");
+  std::string body = "      <ForceSuccess>\n        <Sequence name=\"preflight\">\n";
+  std::string domain =
+      "# Sensor flags the vehicle reports. No action writes them, so the environment may set\n"
+      "# each of them anew before every tick.\n";
+  std::string actions, conditions, nodes;
+  for (int i = 1; i <= flags; ++i) {
+    const std::string ok = "Ok_" + std::to_string(i), repair = "Repair_" + std::to_string(i);
+    body += "          <Fallback>\n            <" + ok + "/>\n            <" + repair +
+            "/>\n          </Fallback>\n";
+    conditions += "    <Condition ID=\"" + ok + "\"/>\n";
+    nodes += "    <Action ID=\"" + repair + "\"/>\n";
+    domain += "boolean " + ok + "\n";
+    actions += "    \"" + repair + "\": {\"ticks\": [1, 2], \"results\": [\"success\"]},\n";
+  }
+  body += "          <Launch/>\n        </Sequence>\n      </ForceSuccess>\n";
+  write(dir / "mission.xml", mission_xml(body));
+  write(dir / "domain.fret", domain);
+  write(dir / "nodes.xml", nodes_xml(conditions + nodes + "    <Action ID=\"Launch\"/>\n"));
+  write(dir / "world.json",
+        "{\n  \"description\": \"A repair takes one or two ticks and succeeds without setting its "
+        "flag; the launch takes two ticks.\",\n  \"actions\": {\n" +
+            actions + "    \"Launch\": {\"ticks\": 2, \"results\": [\"success\"]}\n  }\n}\n");
+  const std::string last = std::to_string(flags);
+  write(dir / "requirements.fret",
+        "# A repair runs only for a flag that was found failed (proved).\n"
+        "RepairOnlyWhenNeeded: Mission shall always satisfy Repair_" +
+            last + ".running -> !Ok_" + last +
+            "\n"
+            "# The launch runs only while the first sensor is ok (violated: a repair does not set\n"
+            "# the flag and nothing checks it again).\n"
+            "LaunchOnlyWhenOk: Mission shall always satisfy Launch.running -> Ok_1\n");
+  FamilyMission m;
+  m.dir = dir;
+  m.tree_nodes = 3 * flags + 4;
+  m.verdicts = {{"RepairOnlyWhenNeeded", "proved"}, {"LaunchOnlyWhenOk", "violated"}};
+  m.violation_ticks = {{"LaunchOnlyWhenOk", 1}};
+  return m;
+}
+
+namespace {
+
+std::string alternative(const std::string& id, const std::string& body) {
+  return "<root BTCPP_format=\"4\" main_tree_to_execute=\"" + id + "\">\n  <BehaviorTree ID=\"" +
+         id + "\">\n" + body + "  </BehaviorTree>\n</root>\n";
+}
+
+}  // namespace
+
+FamilyMission generate_lunar(const std::filesystem::path& dir) {
+  write(dir / "mission.xml",
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        "<!-- A lunar sampling sortie, over and over: reach the site, take a sample, stow it.\n"
+        "     How to drive depends on the slope, the battery and the light (re-checked every\n"
+        "     tick); how to sample depends on the battery and the light (chosen once). -->\n" +
+            mission_xml("      <ForceSuccess>\n"
+                        "        <Sequence name=\"sortie\">\n"
+                        "          <Fallback name=\"reach_site\">\n"
+                        "            <AtSite/>\n"
+                        "            <Adaptable ID=\"traverse\" selection=\"reactive\"/>\n"
+                        "          </Fallback>\n"
+                        "          <Fallback name=\"collect\">\n"
+                        "            <HasSample/>\n"
+                        "            <Adaptable ID=\"sample\"/>\n"
+                        "          </Fallback>\n"
+                        "          <StowSample/>\n"
+                        "        </Sequence>\n"
+                        "      </ForceSuccess>\n"));
+  write(dir / "alternatives/traverse/drive_direct.xml",
+        alternative("drive_direct", "    <DriveDirect/>\n"));
+  write(dir / "alternatives/traverse/drive_cautious.xml",
+        alternative("drive_cautious",
+                    "    <Sequence>\n      <ScanHazards/>\n      <DriveSlow/>\n    </Sequence>\n"));
+  write(dir / "alternatives/traverse/hold_position.xml",
+        alternative("hold_position", "    <HoldPosition/>\n"));
+  write(dir / "alternatives/sample/drill_core.xml",
+        alternative("drill_core",
+                    "    <Sequence>\n      <DeployArm/>\n      <DrillCore/>\n    </Sequence>\n"));
+  write(
+      dir / "alternatives/sample/scoop_regolith.xml",
+      alternative("scoop_regolith",
+                  "    <Sequence>\n      <DeployArm/>\n      <ScoopRegolith/>\n    </Sequence>\n"));
+  write(dir / "nodes.xml", nodes_xml("    <Condition ID=\"AtSite\"/>\n"
+                                     "    <Condition ID=\"HasSample\"/>\n"
+                                     "    <Action ID=\"DriveDirect\"/>\n"
+                                     "    <Action ID=\"ScanHazards\"/>\n"
+                                     "    <Action ID=\"DriveSlow\"/>\n"
+                                     "    <Action ID=\"HoldPosition\"/>\n"
+                                     "    <Action ID=\"DeployArm\"/>\n"
+                                     "    <Action ID=\"DrillCore\"/>\n"
+                                     "    <Action ID=\"ScoopRegolith\"/>\n"
+                                     "    <Action ID=\"StowSample\"/>\n"));
+  write(dir / "domain.fret",
+        "# The terrain's slope under the rover (degrees) and the battery's charge (percent).\n"
+        "real slope in [0, 30]\n"
+        "real battery in [0, 100]\n"
+        "# The light at the rover: full sun, a crater's shadow, or lunar night.\n"
+        "enum illumination in {sun, shadow, night}\n"
+        "# The mission's own state, written by its actions.\n"
+        "boolean AtSite, HasSample\n");
+  write(dir / "requirements.fret",
+        "# How to reach the site, in priority order; together the guards cover every state once.\n"
+        "Direct: In traverse if battery >= 40 & slope < 10 & illumination = sun Mission shall "
+        "satisfy selected_alt = drive_direct\n"
+        "Cautious: In traverse if battery >= 40 & slope < 25 & (slope >= 10 | illumination != sun) "
+        "Mission shall satisfy selected_alt = drive_cautious\n"
+        "Hold: In traverse if battery < 40 | slope >= 25 Mission shall satisfy selected_alt = "
+        "hold_position\n"
+        "# How to take the sample: a core needs charge and light; otherwise scoop.\n"
+        "Core: In sample if battery >= 60 & illumination != night Mission shall satisfy "
+        "selected_alt = drill_core\n"
+        "Scoop: In sample if battery < 60 | illumination = night Mission shall satisfy "
+        "selected_alt = scoop_regolith\n"
+        "\n"
+        "# Guarantees. The direct drive runs only on flat, sunlit ground (proved: the traverse\n"
+        "# guards are re-checked every tick).\n"
+        "DirectOnFlat: Mission shall always satisfy traverse.selected = drive_direct -> slope < 10 "
+        "& illumination = sun\n"
+        "# On a steep slope the rover holds its position (proved).\n"
+        "HoldWhenSteep: Mission shall always satisfy traverse & slope >= 25 -> traverse.selected = "
+        "hold_position\n"
+        "# Samples are taken at the site only (proved).\n"
+        "SampleAtSite: Mission shall always satisfy DrillCore.running | ScoopRegolith.running -> "
+        "AtSite\n"
+        "# The drill runs only on a charged battery (violated at tick 2: the sample selection is\n"
+        "# made once, and the battery may drop while the drill runs).\n"
+        "DrillOnCharge: Mission shall always satisfy DrillCore.running -> battery >= 60\n");
+  write(dir / "world.json",
+        R"({
+  "description": "Drives reach the site; holding fails so that the sortie starts over; the drill may fail; stowing the sample sends the rover on to the next site.",
+  "initial": "!AtSite & !HasSample",
+  "actions": {
+    "DriveDirect": {"ticks": [1, 2], "results": ["success"], "on_success": "AtSite = true"},
+    "ScanHazards": {"ticks": 1, "results": ["success"]},
+    "DriveSlow": {"ticks": [2, 3], "results": ["success"], "on_success": "AtSite = true"},
+    "HoldPosition": {"ticks": [1, 2], "results": ["failure"]},
+    "DeployArm": {"ticks": 1, "results": ["success"]},
+    "DrillCore": {"ticks": [2, 3], "results": ["success", "failure"], "on_success": "HasSample = true"},
+    "ScoopRegolith": {"ticks": [1, 2], "results": ["success"], "on_success": "HasSample = true"},
+    "StowSample": {"ticks": 1, "results": ["success"], "on_success": "AtSite = false; HasSample = false"}
+  }
+}
+)");
+  FamilyMission m;
+  m.dir = dir;
+  // MainTree 10, the selection trees 20 (traverse) and 11 (sample), the alternatives 11.
+  m.tree_nodes = 52;
+  m.verdicts = {{"DirectOnFlat", "proved"},
+                {"HoldWhenSteep", "proved"},
+                {"SampleAtSite", "proved"},
+                {"DrillOnCharge", "violated"}};
+  m.violation_ticks = {{"DrillOnCharge", 2}};
   return m;
 }
 

@@ -11,7 +11,7 @@ namespace uabt::bench {
 
 struct FamilyMission {
   std::filesystem::path dir;
-  int tree_nodes = 0;  // BT nodes of the mission's tree (= of the compiled tree)
+  int tree_nodes = 0;  // BT nodes of the compiled tree (its selection trees and alternatives too)
   // The verdict each guarantee must get, and the tick of a violated one's counterexample.
   std::map<std::string, std::string> verdicts;
   std::map<std::string, std::uint64_t> violation_ticks;
@@ -33,5 +33,71 @@ FamilyMission generate_binary_tree(const std::filesystem::path& dir, int fallbac
 // Guarantees: `Ready` (always Work.running -> every IsOk_i: proved) and `NeverWorks` (always
 // !Work.running: violated at tick N + 1, when the last repair ends and Work starts).
 FamilyMission generate_checklist(const std::filesystem::path& dir, int checks);
+
+// A pre-flight checklist over N sensor flags Ok_1 .. Ok_N: booleans of domain.fret, conditions
+// of nodes.xml, written by no action, so the environment may set each of them anew before every
+// tick. A Sequence of N Fallback[Ok_i, Repair_i] and then Launch, under ForceSuccess and
+// KeepRunningUntilFailure (3 N + 4 nodes). Repair_i takes 1 or 2 ticks and succeeds without
+// touching Ok_i; Launch takes 2 ticks and succeeds. Every initial state is allowed. Guarantees:
+// - `RepairOnlyWhenNeeded`: always Repair_N.running -> !Ok_N. Proved. Repair_N returns RUNNING
+//   only in the first tick of a 2-tick repair (in its second tick, or in the only tick of a
+//   1-tick one, it returns SUCCESS). A Fallback resumes a running child without its earlier
+//   children, so a repair in its first tick was reached through Ok_N in that same tick, and
+//   Ok_N failed. Values are set before a tick and stay for it, and no action writes Ok_N, so
+//   Ok_N is still false after the tick, when the property reads it. (With 3-tick repairs the
+//   Fallback would resume Repair_N in a second RUNNING tick without reading Ok_N, which the
+//   environment may have set meanwhile: violated at tick 2.)
+// - `LaunchOnlyWhenOk`: always Launch.running -> Ok_1. Violated at tick 1: Ok_1 is false, a
+//   1-tick Repair_1 succeeds without setting it, every other flag is true (or its repair also
+//   takes one tick), so Launch starts in tick 1 and returns RUNNING with Ok_1 false. No run can
+//   violate it earlier than the first tick.
+FamilyMission generate_preflight(const std::filesystem::path& dir, int flags);
+
+// A lunar sampling sortie (one size): two real environment variables `slope in [0, 30]`
+// (degrees) and `battery in [0, 100]` (percent), an enum `illumination in {sun, shadow, night}`,
+// and the mission's own booleans AtSite and HasSample (conditions, written by actions only), a
+// nodes.xml that registers every leaf. The tree:
+//   KeepRunningUntilFailure > ForceSuccess > Sequence sortie [
+//     Fallback reach_site [AtSite, Adaptable traverse (selection="reactive")],
+//     Fallback collect [HasSample, Adaptable sample (sequence selection)],
+//     StowSample ]
+// traverse, in priority order (a partition of the domain, no default):
+//   Direct   battery >= 40 & slope < 10 & illumination = sun             -> drive_direct
+//   Cautious battery >= 40 & slope < 25 & (slope >= 10 | illumination != sun) -> drive_cautious
+//   Hold     battery < 40 | slope >= 25                                    -> hold_position
+// sample (a partition too):
+//   Core     battery >= 60 & illumination != night                          -> drill_core
+//   Scoop    battery < 60 | illumination = night                            -> scoop_regolith
+// drive_direct = DriveDirect (1-2 ticks, AtSite = true); drive_cautious = Sequence[ScanHazards
+// (1 tick), DriveSlow (2-3 ticks, AtSite = true)]; hold_position = HoldPosition (1-2 ticks,
+// fails: the sortie starts over); drill_core = Sequence[DeployArm (1 tick), DrillCore (2-3
+// ticks, success with HasSample = true or failure)]; scoop_regolith = Sequence[DeployArm,
+// ScoopRegolith (1-2 ticks, HasSample = true)]; StowSample (1 tick) ends the sortie with
+// AtSite = HasSample = false (on to the next site). Initially !AtSite & !HasSample; the
+// environment sets slope, battery and illumination freely before every tick.
+// Guarantees (a property reads a value after the tick, which is the value the tree read in it:
+// values are set before a tick and no action writes these three):
+// - `DirectOnFlat`: always traverse.selected = drive_direct -> slope < 10 & illumination = sun.
+//   Proved: the selection is reactive, so in every tick that ticks traverse the ReactiveFallback
+//   starts again at the Direct branch and re-checks its guard; drive_direct is the last
+//   alternative ticked only when that guard held in this tick (DriveDirect never fails, so
+//   nothing falls through after it). In the sequence style a drive started in tick 1 runs on
+//   unchecked in tick 2: violated at tick 2.
+// - `HoldWhenSteep`: always traverse & slope >= 25 -> traverse.selected = hold_position.
+//   Proved: in a tick that ticks traverse with slope >= 25 the Direct and Cautious guards fail
+//   (they need slope < 10, slope < 25) and the Hold guard holds, so the last alternative ticked
+//   is hold_position, whatever it returns. (Violated at tick 2 in the sequence style, as above.)
+// - `SampleAtSite`: always DrillCore.running | ScoopRegolith.running -> AtSite. Proved: collect
+//   is ticked only after reach_site succeeded in the same tick (AtSite read true, or a drive
+//   succeeded and set it; hold_position only fails), or when the sortie resumes a running
+//   collect; only StowSample clears AtSite, and it ends the sortie, which then starts again at
+//   reach_site.
+// - `DrillOnCharge`: always DrillCore.running -> battery >= 60. Violated at tick 2: in tick 1
+//   (battery >= 60, sun, slope < 10) a 1-tick DriveDirect reaches the site and the sample
+//   selection starts a 3-tick DrillCore; the selection is not reactive, so in tick 2 the
+//   sortie resumes the running drill without re-checking the guard while the environment has
+//   dropped the battery below 60. Not at tick 1: then the Core guard read battery >= 60 in that
+//   very tick.
+FamilyMission generate_lunar(const std::filesystem::path& dir);
 
 }  // namespace uabt::bench

@@ -1,23 +1,64 @@
 // The benchmark families (tests/bench/prove_families.*) at small sizes: the generated missions
 // load, pass the gate and get the verdicts the families promise, so the generator cannot rot.
+#include <cctype>
+
 #include "bench/prove_families.hpp"
 #include "prove_support.hpp"
 
 namespace uabt::testing {
 namespace {
 
-void expect_answers(const bench::FamilyMission& family) {
-  ASSERT_TRUE(std::filesystem::exists(family.dir / "mission.xml"));
-  const prove::Result r = prove_dir(family.dir);
+// BT nodes of a compiled file: every element of its trees but <root> and <BehaviorTree>.
+std::size_t compiled_nodes(const std::string& xml) {
+  const std::string trees = xml.substr(0, xml.find("<TreeNodesModel>"));
+  std::size_t nodes = 0;
+  for (auto at = trees.find('<'); at != std::string::npos; at = trees.find('<', at + 1))
+    if (at + 1 < trees.size() && std::isalpha(static_cast<unsigned char>(trees[at + 1])) &&
+        trees.compare(at, 5, "<root") != 0 && trees.compare(at, 13, "<BehaviorTree") != 0)
+      ++nodes;
+  return nodes;
+}
+
+// The gate as `uabt gate` runs it, without its proofs (gate::run_gate leaves them to
+// prove::add_proofs): each adaptable node compiled in the selection style it declares.
+gate::Outcome gated(const std::filesystem::path& dir) {
+  std::string error;
+  auto mission = load::load_mission(dir, {}, error);
+  EXPECT_TRUE(mission) << error;
+  if (!mission) return {};
+  return gate::run_gate(std::move(*mission), {}, "test");
+}
+
+void check_answers(const prove::Result& r, const bench::FamilyMission& family) {
   EXPECT_TRUE(r.complete);
   ASSERT_EQ(r.answers.size(), family.verdicts.size());
   for (const prove::Answer& a : r.answers) {
+    ASSERT_TRUE(family.verdicts.count(a.requirement)) << a.requirement;
     EXPECT_EQ(prove::verdict_name(a.verdict), family.verdicts.at(a.requirement)) << a.requirement;
     if (family.violation_ticks.count(a.requirement)) {
       EXPECT_EQ(a.depth, family.violation_ticks.at(a.requirement)) << a.requirement;
-      ASSERT_TRUE(a.counterexample);
+      ASSERT_TRUE(a.counterexample) << a.requirement;
+      EXPECT_EQ(a.counterexample->tick, family.violation_ticks.at(a.requirement));
     }
   }
+}
+
+// Proves the guarantees on the tree the gate compiled, as `uabt prove` does (prove_dir would
+// force one selection style on every adaptable node).
+void expect_answers(const bench::FamilyMission& family, const gate::Outcome& outcome,
+                    const prove::Options& options = {}) {
+  ASSERT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+  ASSERT_TRUE(doc);
+  check_answers(
+      prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), options),
+      family);
+}
+
+void expect_answers(const bench::FamilyMission& family) {
+  ASSERT_TRUE(std::filesystem::exists(family.dir / "mission.xml"));
+  expect_answers(family, gated(family.dir));
 }
 
 TEST(ProveFamilies, BinaryTreeOf23Nodes) {
@@ -50,10 +91,76 @@ TEST(ProveFamilies, ChecklistOfFive) {
   expect_answers(family);
 }
 
+TEST(ProveFamilies, PreflightOfThree) {
+  TempMission scratch({});
+  const auto family = bench::generate_preflight(scratch.dir() / "preflight", 3);
+  EXPECT_EQ(family.tree_nodes, 13);
+  // The flags are the environment's: declared, conditions of the robot, written by no action.
+  EXPECT_NE(read_all(family.dir / "domain.fret").find("boolean Ok_3\n"), std::string::npos);
+  EXPECT_NE(read_all(family.dir / "nodes.xml").find("<Condition ID=\"Ok_3\"/>"), std::string::npos);
+  EXPECT_EQ(read_all(family.dir / "world.json").find("on_success"), std::string::npos);
+  const gate::Outcome outcome = gated(family.dir);
+  EXPECT_TRUE(outcome.passed()) << format_text(outcome.report.findings);
+  EXPECT_EQ(compiled_nodes(outcome.compiled_xml), 13u);
+  // Both engines, and the same answers (the explicit one is what `auto` takes here).
+  for (const char* engine : {"explicit", "symbolic"}) {
+    SCOPED_TRACE(engine);
+    prove::Options options;
+    options.engine = engine;
+    expect_answers(family, outcome, options);
+  }
+}
+
+TEST(ProveFamilies, PreflightOfTen) {
+  TempMission scratch({});
+  expect_answers(bench::generate_preflight(scratch.dir() / "preflight", 10));
+}
+
+// The benchmark's largest size: the mission loads and passes the gate (its proofs are the
+// benchmark's job), and its compiled tree is the checklist of 100 flags.
+TEST(ProveFamilies, PreflightOfAHundredPassesTheGate) {
+  TempMission scratch({});
+  const auto family = bench::generate_preflight(scratch.dir() / "preflight", 100);
+  EXPECT_EQ(family.tree_nodes, 304);
+  const gate::Outcome outcome = gated(family.dir);
+  EXPECT_TRUE(outcome.passed()) << format_text(outcome.report.findings);
+  EXPECT_EQ(compiled_nodes(outcome.compiled_xml), 304u);
+  EXPECT_NE(outcome.compiled_xml.find("<Ok_100/>"), std::string::npos);
+  EXPECT_NE(outcome.compiled_xml.find("<Condition ID=\"Ok_100\"/>"), std::string::npos);
+}
+
+// Two reals and an enum of the environment, two adaptable nodes (traverse reactive, sample
+// not): the gate finds nothing to say about the guards (they partition the domain), then the
+// four guarantees get their verdicts. Today the symbolic engine answers (the explicit one
+// refuses real variables).
+TEST(ProveFamilies, LunarSortie) {
+  TempMission scratch({});
+  const auto family = bench::generate_lunar(scratch.dir() / "lunar");
+  const gate::Outcome outcome = gated(family.dir);
+  EXPECT_TRUE(outcome.passed()) << format_text(outcome.report.findings);
+  EXPECT_TRUE(outcome.report.findings.empty()) << format_text(outcome.report.findings);
+  EXPECT_EQ(compiled_nodes(outcome.compiled_xml), static_cast<std::size_t>(family.tree_nodes));
+  EXPECT_NE(outcome.compiled_xml.find("<ReactiveFallback name=\"traverse\">"), std::string::npos);
+  EXPECT_NE(outcome.compiled_xml.find("<Fallback name=\"sample\">"), std::string::npos);
+  expect_answers(family, outcome);
+}
+
+// The two traverse guarantees need the reactive selection the mission declares: compiled in the
+// paper's sequence style, a direct drive started on flat sunlit ground in tick 1 runs on
+// unchecked in tick 2, whatever slope and light the environment has chosen for it.
+TEST(ProveFamilies, LunarSortieInTheSequenceStyle) {
+  TempMission scratch({});
+  auto family = bench::generate_lunar(scratch.dir() / "lunar");
+  family.verdicts["DirectOnFlat"] = family.verdicts["HoldWhenSteep"] = "violated";
+  family.violation_ticks["DirectOnFlat"] = family.violation_ticks["HoldWhenSteep"] = 2;
+  check_answers(prove_dir(family.dir), family);
+}
+
 TEST(ProveFamilies, BadSizesAreRefused) {
   TempMission scratch({});
   EXPECT_THROW(bench::generate_binary_tree(scratch.dir() / "b", 24), std::invalid_argument);
   EXPECT_THROW(bench::generate_checklist(scratch.dir() / "c", 0), std::invalid_argument);
+  EXPECT_THROW(bench::generate_preflight(scratch.dir() / "p", 0), std::invalid_argument);
 }
 
 }  // namespace
