@@ -14,13 +14,14 @@ namespace uabt::cli {
 namespace {
 
 std::string summary_line(const prove::Result& r) {
-  int counts[4] = {0, 0, 0, 0};
+  int counts[5] = {0, 0, 0, 0, 0};
   for (const auto& a : r.answers) ++counts[static_cast<int>(a.verdict)];
   std::string line = "prove: " + std::to_string(r.answers.size()) + " guarantee" +
                      (r.answers.size() == 1 ? "" : "s") + ": " + std::to_string(counts[0]) +
                      " proved, " + std::to_string(counts[1]) + " violated, " +
                      std::to_string(counts[2]) + " bounded";
-  if (counts[3]) line += ", " + std::to_string(counts[3]) + " not checked";
+  if (counts[3]) line += ", " + std::to_string(counts[3]) + " vacuous";
+  if (counts[4]) line += ", " + std::to_string(counts[4]) + " not checked";
   if (r.engine == "symbolic")
     line += " (symbolic engine: BMC to depth " + std::to_string(r.depth) +
             ", k-induction up to k = " + std::to_string(r.induction_k) + ")";
@@ -29,6 +30,18 @@ std::string summary_line(const prove::Result& r) {
             std::to_string(r.transitions) + " transitions, " +
             (r.complete ? "every reachable state" : "depth " + std::to_string(r.depth)) + ")";
   return line;
+}
+
+// What a proof covered: the reachable runs' size, and when the guarantee first asks something.
+std::string proof_extent(const prove::Result& r, const prove::Answer& a) {
+  if (r.engine == "symbolic") return "k-induction with k = " + std::to_string(a.depth);
+  std::string out = "over " + std::to_string(r.states) + " reachable states and " +
+                    std::to_string(r.transitions) + " transitions";
+  if (a.has_trigger)
+    out += a.first_trigger == 0
+               ? "; its trigger never holds"
+               : "; its trigger first holds at tick " + std::to_string(a.first_trigger);
+  return out;
 }
 
 }  // namespace
@@ -155,7 +168,9 @@ void register_prove(CLI::App& app, int& exit_code) {
       if (a.verdict == prove::Verdict::proved)
         text += text_options.path_prefix + a.location.file + ":" + std::to_string(a.location.line) +
                 ":" + std::to_string(a.location.column) + ": note: guarantee '" + a.requirement +
-                "' is proved: " + a.text + "\n";
+                "' is proved: " + a.text + " (" + proof_extent(result, a) + ")\n";
+    if (!result.engine_reason.empty())
+      text += "note: the symbolic engine was chosen: " + result.engine_reason + "\n";
     for (const auto& n : result.notes) text += "note: " + n + "\n";
     text += summary_line(result) + "\n";
     emit(args->output, text);

@@ -1,6 +1,7 @@
 // The paper's compilation: adaptable BT + alternatives + requirements → one executable BT.
 #include "compile/compile.hpp"
 
+#include <functional>
 #include <map>
 #include <set>
 
@@ -234,6 +235,16 @@ Result compile_mission(const load::Mission& m, const Options& options) {
       add_model(doc.node_models, known, bt::NodeModel{"Condition", atom->text, {}, 0});
     }
   }
+  // A leaf named after a boolean of the domain reads that boolean: a condition, whatever its
+  // name looks like (`Ok_1` as much as `IsDug`).
+  std::function<void(const bt::Node&)> leaves = [&](const bt::Node& n) {
+    for (const auto& c : n.children) leaves(c);
+    if (!n.children.empty() || n.tag != n.kind()) return;
+    const fretish::Variable* v = m.domain.find(n.tag);
+    if (v != nullptr && v->type == fretish::VarType::boolean)
+      add_model(doc.node_models, known, bt::NodeModel{"Condition", n.tag, {}, 0});
+  };
+  for (const auto& t : doc.trees) leaves(t.root);
   result.ok = !has_errors(result.findings);
   return result;
 }

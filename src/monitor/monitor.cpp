@@ -1,5 +1,6 @@
 #include "monitor/monitor.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -200,14 +201,11 @@ std::string value_text(const Val& v, const Symbols& symbols) {
     case Val::Kind::boolean: return v.number != 0 ? "true" : "false";
     case Val::Kind::symbol: return symbols.name(v.symbol);
     case Val::Kind::number: {
+      // The shortest text that reads back the same number, as people write it: 50, 9.5, 0.1
+      // (printf's %g would give 5e+01).
       char buffer[64];
-      std::snprintf(buffer, sizeof buffer, "%.17g", v.number);
-      // Shortest text that reads back the same number.
-      for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buffer, sizeof buffer, "%.*g", precision, v.number);
-        if (std::strtod(buffer, nullptr) == v.number) break;
-      }
-      return buffer;
+      const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v.number);
+      return ec == std::errc() ? std::string(buffer, end) : std::string("?");
     }
   }
   return "?";

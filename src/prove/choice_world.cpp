@@ -11,9 +11,15 @@ void Chooser::start(const std::vector<std::uint32_t>& prefix) {
   taken_ = prefix;
   arity_.assign(prefix.size(), 0);
   pos_ = 0;
+  forced_ = prefix.size();
 }
 
-std::uint32_t Chooser::choose(std::uint32_t options) {
+std::uint32_t Chooser::choose(std::uint32_t options, std::uint32_t site) {
+  if (pos_ >= forced_ && seen && seen(site)) {
+    taken_.resize(pos_);
+    arity_.resize(pos_);
+    throw ChoicePruned{};
+  }
   if (pos_ < taken_.size()) {
     arity_[pos_] = options;
     taken_[pos_] %= options;  // a prefix from elsewhere (a random walk) may exceed it
@@ -102,7 +108,7 @@ std::uint32_t ChoiceWorld::bind_leaf(const runtime::LeafBinding& binding) {
 NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
   Leaf& leaf = leaves_[context.handle];
   if (leaf.condition) {
-    const runtime::ScriptValue& v = context.blackboard.value(leaf.key);
+    const runtime::ScriptValue& v = context.blackboard.read(leaf.key);
     return v.is_number() && v.as_double() != 0.0 ? NodeStatus::success : NodeStatus::failure;
   }
   std::int64_t& elapsed = elapsed_[context.handle];
@@ -130,7 +136,7 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
                                std::to_string(outcome) + " here");
     pick = outcome < 0 ? 0 : static_cast<std::uint32_t>(outcome) + (may_run ? 1u : 0u);
   } else if (options > 1) {
-    pick = chooser.choose(options);
+    pick = chooser.choose(options, 2 * context.handle);
   }
   if (may_run) {
     if (pick == 0) {

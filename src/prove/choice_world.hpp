@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
@@ -11,20 +12,31 @@
 
 namespace uabt::prove {
 
+// Thrown out of a tick by Chooser::choose when the tick reaches a choice point in a state it
+// has already explored from: every continuation from there was seen. Not a std::exception, so
+// that nothing in the engine takes it for a tick error.
+struct ChoicePruned {};
+
 // The nondeterminism inside one tick, resolved one choice at a time. A tick is replayed with a
 // forced prefix of choices; choices past it take option 0 and are recorded, so that every
 // sequence of choices of a tick can be enumerated like an odometer.
 class Chooser {
  public:
   void start(const std::vector<std::uint32_t>& prefix);
-  std::uint32_t choose(std::uint32_t options);
+  // `site` names the choice point (an action, an environment variable) for `seen`.
+  std::uint32_t choose(std::uint32_t options, std::uint32_t site = 0);
+  // When set, asked at every choice point past the forced prefix: true when the tick has
+  // reached this point before in the same state (in an earlier sequence of choices). Then
+  // the sequences below it were all explored already, and choose() throws ChoicePruned;
+  // advance() goes on with the next sequence that differs before it.
+  std::function<bool(std::uint32_t site)> seen;
   const std::vector<std::uint32_t>& taken() const { return taken_; }
   // The next sequence after the one just taken, false when every one was.
   bool advance(std::vector<std::uint32_t>& prefix) const;
 
  private:
   std::vector<std::uint32_t> taken_, arity_;
-  std::size_t pos_ = 0;
+  std::size_t pos_ = 0, forced_ = 0;
 };
 
 // What an action did, for building a counterexample.

@@ -1,5 +1,7 @@
 #include "prove/explore.hpp"
 
+#include "prove/environment.hpp"
+
 #include <deque>
 #include <functional>
 #include <map>
@@ -50,12 +52,14 @@ void fixed_values(const fretish::Expr& e, const Model& m,
   }
 }
 
-Product product(const Model& m, bool initial) {
+// The mission's own variables (those actions write) at the first tick; the environment's are
+// chosen on demand (Environment).
+Product initial_product(const Model& m) {
   std::map<std::string, runtime::ScriptValue> fixed;
-  if (initial && m.world.initial) fixed_values(*m.world.initial, m, fixed);
+  if (m.world.initial) fixed_values(*m.world.initial, m, fixed);
   Product p;
   for (const StateVar& v : m.vars) {
-    if (!v.relevant || (!initial && !v.env)) continue;
+    if (!v.relevant || v.env) continue;
     std::vector<runtime::ScriptValue> values = v.values;
     // Only a boolean literal is fixed here; the initial condition is still checked on each.
     if (const auto it = fixed.find(v.name); it != fixed.end() && values.size() == 2 &&
@@ -64,8 +68,8 @@ Product product(const Model& m, bool initial) {
     p.vars.push_back(&v);
     if (p.size > (std::uint64_t{1} << 40) / values.size())
       throw ProveError(
-          "the explicit-state engine cannot enumerate the environment: more than 2^40 "
-          "combinations of values per tick");
+          "the explicit-state engine cannot enumerate the mission's initial states: more than "
+          "2^40 combinations of values");
     p.size *= values.size();
     p.values.push_back(std::move(values));
   }
@@ -88,8 +92,7 @@ bool completed(NodeStatus s) {
 class Search {
  public:
   Search(Model& m, const Options& o) : m_(m), o_(o) {
-    initial_ = product(m, true);
-    env_ = product(m, false);
+    initial_ = initial_product(m);
     base_.engine = m.fresh;
     base_.elapsed.assign(m.choice->leaves().size(), 0);
     base_.monitors.assign(m.monitor_words, 0);
@@ -99,23 +102,32 @@ class Search {
         std::copy(init.begin(), init.end(), base_.monitors.begin() + p.offset);
       }
     result_.violations.resize(m.properties.size());
+    result_.first_trigger.assign(m.properties.size(), 0);
   }
 
   SearchResult run() {
+    // Choices within a tick often meet again (a flag read true, or read false and repaired at
+    // once, leave the same state): a choice point reached again in the same mid-tick state
+    // has nothing new below it.
+    m_.choice->chooser.seen = [this](std::uint32_t site) { return seen_mid_tick(site); };
+    struct Unset {
+      Chooser& c;
+      ~Unset() { c.seen = nullptr; }
+    } unset{m_.choice->chooser};
     expand(base_, UINT32_MAX, true);
     std::uint64_t depth = 1;
-    while (!frontier_.empty() && !all_violated()) {
+    while (!frontier_.empty() && !all_violated() && !result_.vacuous) {
       if (o_.depth != 0 && depth >= o_.depth) break;
       if (nodes_.size() >= o_.max_states) break;
       std::vector<std::uint32_t> next;
       next.swap(frontier_);
       for (std::uint32_t i : next) {
         expand(nodes_[i], i, false);
-        if (nodes_.size() >= o_.max_states) break;
+        if (nodes_.size() >= o_.max_states || result_.vacuous) break;
       }
       ++depth;
     }
-    result_.complete = frontier_.empty();
+    result_.complete = frontier_.empty() && !result_.vacuous;
     result_.depth = depth;
     result_.states = nodes_.size();
     return std::move(result_);
@@ -129,6 +141,49 @@ class Search {
     return true;
   }
 
+  // The state in the middle of a tick as bytes: the engine's (blackboard included), what is
+  // still pending, the actions' progress, what the tick has recorded, the monitors' words it
+  // started from, and the choice point.
+  bool seen_mid_tick(std::uint32_t site) {
+    // Building the key costs a pass over the engine's state: where choices never meet again
+    // (each path of the tick ends in a state of its own), stop looking after a while.
+    if (!memo_on_) return false;
+    if (++memo_checks_ == kMemoTrial && memo_hits_ * 16 < memo_checks_) memo_on_ = false;
+    std::string& key = mid_key_;
+    key.clear();
+    EngineState state = EngineState::save(*m_.engine);
+    const runtime::Blackboard& bb = m_.engine->blackboard();
+    for (std::size_t i = 0; i < m_.vars.size(); ++i) {
+      const StateVar& v = m_.vars[i];
+      if (!v.env || !v.relevant) continue;
+      key += static_cast<char>(bb.pending(v.slot));
+      // A value chosen and read where nothing can read it again no longer matters.
+      if (!m_.environment->live(i)) state.values[v.slot] = v.values.front();
+    }
+    state.append_key(key);
+    for (std::int64_t e : m_.choice->elapsed())
+      key.append(reinterpret_cast<const char*>(&e), sizeof e);
+    m_.observables->append_tick_key(key);
+    for (std::uint64_t w : *mid_monitors_) key.append(reinterpret_cast<const char*>(&w), sizeof w);
+    key.append(reinterpret_cast<const char*>(&site), sizeof site);
+    // Two independent 64-bit hashes: a collision would wrongly skip choices.
+    std::uint64_t fnv = 1469598103934665603ull;
+    for (unsigned char c : key) fnv = (fnv ^ c) * 1099511628211ull;
+    const std::pair<std::uint64_t, std::uint64_t> h{std::hash<std::string>{}(key), fnv};
+    const bool seen = !mid_tick_.insert(h).second;
+    memo_hits_ += seen;
+    return seen;
+  }
+  static constexpr std::uint64_t kMemoTrial = 4096;
+  bool memo_on_ = true;
+  std::uint64_t memo_checks_ = 0, memo_hits_ = 0;
+
+  struct PairHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& p) const {
+      return static_cast<std::size_t>(p.first ^ (p.second * 0x9e3779b97f4a7c15ull));
+    }
+  };
+
   void restore(const Node& from) {
     from.engine.restore(*m_.engine);
     m_.choice->set_elapsed(from.elapsed);
@@ -136,33 +191,107 @@ class Search {
 
   // `from` may be an element of nodes_: a std::deque keeps references valid as it grows.
   void expand(const Node& from, std::uint32_t from_index, bool first) {
-    const Product& env = first ? initial_ : env_;
-    for (std::uint64_t e = 0; e < env.size; ++e) {
-      restore(from);
-      env.set(m_, e);
-      if (first && m_.initial && !m_.holds(*m_.initial, frame_)) continue;
-      bool assumed = true;
-      for (auto& a : m_.assumptions) assumed = assumed && m_.holds(*a, frame_);
-      if (!assumed) continue;
+    const Product& start = first ? initial_ : next_;
+    Outcomes outcomes;
+    mid_tick_.clear();
+    mid_monitors_ = &from.monitors;
+    for (std::uint64_t e = 0; e < start.size; ++e) {
+      if (!possible_start(from, start, e, first)) continue;
       const EngineState before = EngineState::save(*m_.engine);
       std::vector<std::uint32_t> prefix;
       do {
         before.restore(*m_.engine);
         m_.choice->set_elapsed(from.elapsed);
         m_.choice->chooser.start(prefix);
-        successor(from, from_index, Step{e, {}, {}, {}});
+        m_.environment->start_tick(first);
+        try {
+          successor(from, from_index, Step{e, {}, {}, {}}, outcomes);
+        } catch (const ChoicePruned&) {
+        }
+        m_.environment->end_tick();
       } while (m_.choice->chooser.advance(prefix));
     }
+    if (outcomes.kept == 0 && !outcomes.errors) vacuous(from, first, outcomes);
   }
 
-  void successor(const Node& from, std::uint32_t from_index, Step step) {
-    ++result_.transitions;
+  struct Outcomes {
+    std::uint64_t kept = 0;                 // transitions the assumptions allow
+    bool errors = false;                    // a tick that stopped with an error
+    const Property* excluded_by = nullptr;  // an Environment requirement that pruned one
+  };
+
+  // Nothing can follow `from`: the first tick has no initial state, or a reachable state has
+  // no allowed tick (a deadlock). Either way every "proof" from here on would be vacuous.
+  void vacuous(const Node& from, bool first, const Outcomes& outcomes) {
+    Vacuity v;
+    auto assumption_names = [&] {
+      std::string names;
+      for (const auto& a : m_.mission.domain.assumptions)
+        names += (names.empty() ? "" : ", ") + a.name + " (" + a.location.file + ":" +
+                 std::to_string(a.location.line) + ")";
+      return names;
+    };
+    if (outcomes.excluded_by) {
+      const fretish::Requirement& r = *outcomes.excluded_by->requirement;
+      v.location = r.location;
+      v.message = first ? "the Environment requirement '" + r.id + "' rules out every first tick"
+                        : "after tick " + std::to_string(from.tick) +
+                              " of a reachable run, the Environment requirement '" + r.id +
+                              "' rules out every next tick: the run cannot go on (a deadlock)";
+    } else if (first && m_.world.initial && initial_without_it()) {
+      v.location = {m_.world.file, m_.world.initial->range.begin_line,
+                    m_.world.initial->range.begin_column};
+      v.message = "no state of the domain satisfies the initial condition `" +
+                  fretish::to_fretish(*m_.world.initial) + "`" +
+                  (m_.mission.domain.assumptions.empty()
+                       ? std::string()
+                       : " together with the assumptions " + assumption_names());
+    } else if (first) {
+      const auto& a = m_.mission.domain.assumptions;
+      if (!a.empty()) v.location = a.front().location;
+      v.message = "the assumptions " + assumption_names() + " rule out every state of the domain";
+    } else {
+      const auto& a = m_.mission.domain.assumptions;
+      if (!a.empty()) v.location = a.front().location;
+      v.message = "after tick " + std::to_string(from.tick) +
+                  " of a reachable run, no value of the environment satisfies the assumptions " +
+                  assumption_names() +
+                  " in the state the mission is in: the run cannot go on "
+                  "(a deadlock)";
+    }
+    result_.vacuous = std::move(v);
+  }
+
+  // Whether the domain's assumptions alone leave some first state (so the initial condition
+  // is what rules them all out).
+  bool initial_without_it() {
+    for (std::uint64_t e = 0; e < initial_.size; ++e)
+      if (possible_start(base_, initial_, e, false)) return true;
+    return false;
+  }
+
+  // Restores `from` with the start's e-th values: can the environment satisfy the assumptions
+  // (`with_initial`: and the initial condition) there?
+  bool possible_start(const Node& from, const Product& start, std::uint64_t e, bool with_initial) {
+    restore(from);
+    start.set(m_, e);
+    m_.environment->start_tick(with_initial);
+    const bool possible = m_.environment->satisfiable();
+    m_.environment->end_tick();
+    return possible;
+  }
+
+  void successor(const Node& from, std::uint32_t from_index, Step step, Outcomes& outcomes) {
     m_.observables->begin_tick();
     NodeStatus root;
     try {
       root = m_.engine->tick();
+      m_.environment->resolve_monitor_reads();
+      ++result_.transitions;
     } catch (const runtime::TickException& e) {
+      ++result_.transitions;
       if (!result_.tick_error) result_.tick_error = e.error.message;
+      outcomes.errors = true;
       return;
     }
     step.inner = m_.choice->chooser.taken();
@@ -172,7 +301,7 @@ class Search {
     const bool done = completed(root);
     m_.observables->fill(frame_);
     m_.fill_state(frame_);
-    std::vector<std::size_t> violated;
+    std::vector<std::size_t> violated, triggered;
     for (std::size_t i = 0; i < m_.properties.size(); ++i) {
       const Property& p = m_.properties[i];
       if (!p.layout) continue;
@@ -185,15 +314,22 @@ class Search {
           throw ProveError(p.requirement->id + ": at tick " + std::to_string(next.tick) + ": " +
                            error);
       }
+      if ((!p.parts[0] || inputs[0]) && (!p.parts[1] || inputs[1])) triggered.push_back(i);
       std::vector<std::uint64_t> words(next.monitors.begin() + p.offset,
                                        next.monitors.begin() + p.offset + p.layout->words());
       const bool now = p.layout->step(inputs, words, scratch_);
       std::copy(words.begin(), words.end(), next.monitors.begin() + p.offset);
       const bool fails = !now && (monitor::verdict_is_final_once_violated(p.shape) || done);
       if (!fails) continue;
-      if (p.assumption) return;  // a world the assumptions exclude
+      if (p.assumption) {  // a world the assumptions exclude
+        outcomes.excluded_by = &p;
+        return;
+      }
       violated.push_back(i);
     }
+    ++outcomes.kept;
+    for (std::size_t i : triggered)
+      if (result_.first_trigger[i] == 0) result_.first_trigger[i] = next.tick;
     for (std::size_t i : violated) {
       if (result_.violations[i]) continue;
       Finding f;
@@ -203,9 +339,9 @@ class Search {
       f.path.push_back(step);
       result_.violations[i] = std::move(f);
     }
-    // The environment's values are chosen afresh before every tick: once the monitors have
-    // read them they do not matter, and states that differ only in them are one state.
-    for (const StateVar* v : env_.vars) m_.engine->blackboard().value(v->slot) = v->values.front();
+    // The environment's values are chosen afresh in every tick: once the monitors have read
+    // them they do not matter, and states that differ only in them are one state.
+    m_.environment->end_tick();
     next.engine = EngineState::save(*m_.engine);
     next.elapsed = m_.choice->elapsed();
     std::string key = key_of(next, done);
@@ -225,10 +361,13 @@ class Search {
 
   Model& m_;
   const Options& o_;
-  Product initial_, env_;
+  Product initial_, next_;  // next_: nothing to set before a later tick
   Node base_;
   std::deque<Node> nodes_;
   std::unordered_set<std::string> seen_;
+  std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, PairHash> mid_tick_;
+  const std::vector<std::uint64_t>* mid_monitors_ = nullptr;
+  std::string mid_key_;
   std::vector<std::uint32_t> frontier_;
   std::vector<monitor::Val> frame_;
   std::vector<char> scratch_;
@@ -244,20 +383,22 @@ SearchResult explore(Model& model, const Options& options) {
 
 void replay_path(Model& m, const std::vector<Step>& path,
                  const std::function<void(std::uint64_t)>& before_tick,
-                 const std::function<void(std::uint64_t, NodeStatus)>& after_tick) {
+                 const std::function<void(std::uint64_t, NodeStatus,
+                                          const std::vector<std::size_t>&)>& after_tick) {
   const bool symbolic = !path.empty() && !path.front().values.empty();
-  const Product initial = symbolic ? Product{} : product(m, true);
-  const Product env = symbolic ? Product{} : product(m, false);
+  const Product initial = symbolic ? Product{} : initial_product(m);
   // Every variable starts at its first value; the first step sets the relevant ones.
   m.fresh.restore(*m.engine);
   m.choice->set_elapsed(std::vector<std::int64_t>(m.choice->leaves().size(), 0));
+  static const std::vector<std::size_t> kNone;
   for (std::size_t t = 0; t < path.size(); ++t) {
     if (symbolic) {
       for (std::size_t i = 0; i < m.vars.size(); ++i)
         if (m.vars[i].relevant && (t == 0 || m.vars[i].env))
           m.engine->blackboard().value(m.vars[i].slot) = path[t].values[i];
     } else {
-      (t == 0 ? initial : env).set(m, path[t].env);
+      if (t == 0) initial.set(m, path[t].env);
+      m.environment->start_tick(t == 0);
     }
     before_tick(t + 1);
     m.choice->force(symbolic ? &path[t].outcomes : nullptr);
@@ -266,24 +407,16 @@ void replay_path(Model& m, const std::vector<Step>& path,
     NodeStatus root;
     try {
       root = m.engine->tick();
+      m.environment->resolve_monitor_reads();
     } catch (...) {
       m.choice->force(nullptr);
+      m.environment->end_tick();
       throw;
     }
     m.choice->force(nullptr);
-    after_tick(t + 1, root);
+    after_tick(t + 1, root, symbolic ? kNone : m.environment->chosen());
+    if (!symbolic) m.environment->end_tick();
   }
-}
-
-std::uint64_t environment_product(const Model& m) {
-  if (!m.explicit_refusal.empty()) return 0;
-  std::uint64_t size = 1;
-  for (const StateVar& v : m.vars) {
-    if (!v.relevant || !v.env) continue;
-    if (size > UINT64_MAX / v.values.size()) return UINT64_MAX;
-    size *= v.values.size();
-  }
-  return size;
 }
 
 }  // namespace uabt::prove

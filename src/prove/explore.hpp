@@ -10,9 +10,10 @@
 
 namespace uabt::prove {
 
-// One step of a path: the environment's values for the tick (an index into the product of
-// the relevant variables' values; for the first tick, of every relevant variable) and the
-// choices the actions made within it. A symbolic engine gives the values and outcomes
+// One step of a path: for the first tick, the mission's initial values (an index into the
+// product of the relevant mission variables' values), and the choices made within the tick
+// (the environment's values as the tick read them, the actions' outcomes), in the order the
+// tick made them. A symbolic engine gives the values and outcomes
 // themselves instead: `values` per Model::vars (those the tick chooses), `outcomes` per
 // ChoiceWorld leaf, one per time the leaf is ticked within the tick (ChoiceWorld::force).
 struct Step {
@@ -31,9 +32,11 @@ struct Finding {
 
 struct SearchResult {
   std::vector<std::optional<Finding>> violations;  // per property (guarantees only)
+  std::vector<std::uint64_t> first_trigger;  // per property: first tick its trigger holds, 0 never
   std::uint64_t states = 0, transitions = 0, depth = 0;
   bool complete = false;
   std::optional<std::string> tick_error;  // the first reachable tick error, if any
+  std::optional<Vacuity> vacuous;
 };
 
 // Breadth-first search over the model's states (engine state, action progress, property
@@ -41,15 +44,14 @@ struct SearchResult {
 // one of the shortest.
 SearchResult explore(Model& model, const Options& options);
 
-// How many combinations of environment values the explicit engine enumerates before each
-// tick after the first (saturates at UINT64_MAX; 0 when it cannot enumerate them).
-std::uint64_t environment_product(const Model& model);
-
-// Replays `path` on the model's own engine, calling `before_tick(t)` once the environment's
-// values for tick t are set and before the tick runs, and `after_tick(t, root)` after it.
-// The model's ChoiceWorld::recorder is used as it is set.
+// Replays `path` on the model's own engine, calling `before_tick(t)` once the values set before
+// tick t are on the blackboard (the initial ones; a symbolic path's environment), and
+// `after_tick(t, root, chosen)` after the tick and the monitors' reads, with the environment's
+// values the tick chose on demand (indices into Model::vars; their values are still on the
+// blackboard). The model's ChoiceWorld::recorder is used as it is set.
 void replay_path(Model& model, const std::vector<Step>& path,
                  const std::function<void(std::uint64_t)>& before_tick,
-                 const std::function<void(std::uint64_t, runtime::NodeStatus)>& after_tick);
+                 const std::function<void(std::uint64_t, runtime::NodeStatus,
+                                          const std::vector<std::size_t>&)>& after_tick);
 
 }  // namespace uabt::prove

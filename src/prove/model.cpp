@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <map>
+#include <optional>
 
 #include "fretish/expr.hpp"
 #include "monitor/monitor.hpp"
 #include "monitor/property_set.hpp"
+#include "prove/cells.hpp"
+#include "prove/environment.hpp"
 #include "prove/prove.hpp"
 
 namespace uabt::prove {
@@ -45,6 +49,9 @@ struct ProbeWorld : runtime::World {
   void halt_leaf(const runtime::LeafContext&) override {}
 };
 
+// A variable with more values than this is cut into cells or left to the symbolic engine.
+constexpr long long kMaxValues = 4096;
+
 bool uses_previous(const fretish::Expr& e) {
   if (e.kind == fretish::ExprKind::call && e.text.rfind("pre", 0) == 0) return true;
   for (const auto& a : e.args)
@@ -65,12 +72,17 @@ std::vector<ScriptValue> values_of(const fretish::Variable& v, std::string& why)
         why = "integer '" + v.name + "' has no bounds";
         return out;
       }
-      const long long lo = std::stoll(v.lower), hi = std::stoll(v.upper);
-      if (hi - lo > 4096) {
-        why = "integer '" + v.name + "' ranges over more than 4096 values";
+      const auto lo = verify::detail::Fraction::parse(v.lower);
+      const auto hi = verify::detail::Fraction::parse(v.upper);
+      if (!lo || !hi || lo->denominator() != 1 || hi->denominator() != 1 ||
+          *hi - *lo > verify::detail::Fraction(kMaxValues)) {
+        why = "integer '" + v.name + "' ranges over more than " + std::to_string(kMaxValues) +
+              " values";
         return out;
       }
-      for (long long i = lo; i <= hi; ++i) out.push_back(ScriptValue::of_int(i));
+      const auto first = static_cast<long long>(lo->numerator());
+      const auto last = static_cast<long long>(hi->numerator());
+      for (long long i = first; i <= last; ++i) out.push_back(ScriptValue::of_int(i));
       return out;
     }
     case fretish::VarType::real:
@@ -78,6 +90,29 @@ std::vector<ScriptValue> values_of(const fretish::Variable& v, std::string& why)
       return out;
   }
   return out;
+}
+
+// The constant a top-level conjunct `name = c` of the initial condition gives a variable.
+std::optional<ScriptValue> fixed_number(const fretish::Expr& e, const fretish::Variable& v) {
+  using K = fretish::ExprKind;
+  if (e.kind == K::logical_and) {
+    for (const auto& a : e.args)
+      if (auto x = fixed_number(*a, v)) return x;
+    return std::nullopt;
+  }
+  if (e.kind != K::eq || e.args.size() != 2) return std::nullopt;
+  const fretish::Expr* id = e.args[0].get();
+  const fretish::Expr* number = e.args[1].get();
+  if (id->kind != K::identifier) std::swap(id, number);
+  if (id->kind != K::identifier || id->text != v.name || number->kind != K::number)
+    return std::nullopt;
+  const auto f = verify::detail::Fraction::parse(number->text);
+  if (!f) return std::nullopt;
+  if (v.type == fretish::VarType::integer) {
+    if (f->denominator() != 1) return std::nullopt;
+    return ScriptValue::of_int(static_cast<std::int64_t>(f->numerator()));
+  }
+  return ScriptValue::of_real(f->to_double());
 }
 
 }  // namespace
@@ -101,13 +136,14 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   } catch (const std::exception& e) {
     throw ProveError(std::string("the compiled tree does not load: ") + e.what());
   }
+  std::map<std::string, std::string, std::less<>> unenumerable;  // variable: why
   for (const auto& v : mission.domain.variables) {
     StateVar s;
     s.name = v.name;
     std::string why;
     s.values = values_of(v, why);
-    if (s.values.empty()) s.values.push_back(ScriptValue{});  // refused below if relevant
-    if (!why.empty()) s.relevant = false;                     // marked; checked below
+    if (!why.empty()) unenumerable[v.name] = why;
+    if (s.values.empty()) s.values.push_back(ScriptValue{});  // cut into cells or refused below
     vars.push_back(std::move(s));
     state_names.insert(v.name);
   }
@@ -215,6 +251,8 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   if (world.initial) initial = state_expression(world.initial, world.file + ": initial");
 
   // Names the tree itself reads: conditions and scripts.
+  tree_scripts.clear();
+  port_reads.clear();
   for (const auto& leaf : choice->leaves()) {
     if (leaf.condition) read.insert(leaf.label);
     for (const auto* p : {&leaf.on_success, &leaf.on_failure})
@@ -225,31 +263,129 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     for (const auto& [attr, value] : n.attributes) {
       if (attr == "code" || (!attr.empty() && attr[0] == '_')) {
         try {
-          for (const auto& name : runtime::script::Program::parse(value).names()) read.insert(name);
+          auto program = runtime::script::Program::parse(value);
+          for (const auto& name : program.names()) read.insert(name);
+          tree_scripts.push_back({std::move(program), "the " + attr + " of " + n.tag + " at line " +
+                                                          std::to_string(n.line) +
+                                                          " of the compiled tree"});
         } catch (const std::exception&) {
         }
       }
       const auto open = value.find('{');
-      if (open != std::string::npos && value.back() == '}')
+      if (open != std::string::npos && value.back() == '}') {
         read.insert(value.substr(open + 1, value.size() - open - 2));
+        port_reads.push_back(value.substr(open + 1, value.size() - open - 2));
+      }
     }
     for (const auto& c : n.children) scan(c);
   };
   for (const auto& t : doc.trees) scan(t.root);
 
-  for (StateVar& v : vars) {
-    const bool refused = !v.relevant;
-    v.relevant = read.contains(v.name);
-    if (v.relevant && refused && explicit_refusal.empty()) {
-      std::string why;
-      values_of(*mission.domain.find(v.name), why);
-      explicit_refusal = "the explicit-state engine cannot enumerate " + why +
-                         " (give it a bounded range, or leave it out of what the tree and the "
-                         "properties read)";
-    }
-    engine->blackboard().value(v.slot) = v.values.front();
-  }
+  for (StateVar& v : vars) v.relevant = read.contains(v.name);
+  choose_values(unenumerable);
+  mark_read_once();
+  for (StateVar& v : vars) engine->blackboard().value(v.slot) = v.values.front();
+  environment = std::make_unique<Environment>(*this);
   fresh = runtime::EngineState::save(*engine);
+}
+
+Model::~Model() = default;
+
+void Model::choose_values(const std::map<std::string, std::string, std::less<>>& unenumerable) {
+  // Numeric environment variables are cut into cells by every atom that reads them.
+  std::set<std::string, std::less<>> numeric;
+  for (const StateVar& v : vars) {
+    const fretish::Variable* d = mission.domain.find(v.name);
+    if (v.relevant && v.env && d &&
+        (d->type == fretish::VarType::integer || d->type == fretish::VarType::real))
+      numeric.insert(v.name);
+  }
+  Cuts cuts(numeric);
+  if (!numeric.empty()) {
+    auto where = [](const SourceLocation& l) {
+      return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
+    };
+    for (const Property& p : properties)
+      for (const auto& e : p.exprs)
+        if (e) cuts.add(*e, where(p.requirement->location));
+    for (const auto& a : mission.domain.assumptions)
+      if (a.expr) cuts.add(*a.expr, where(a.location));
+    if (world.initial) cuts.add(*world.initial, world.file + ": initial");
+    for (const auto& [program, what] : tree_scripts) cuts.add(program, what);
+    for (const auto& leaf : choice->leaves()) {
+      if (leaf.condition) cuts.add_truth_read(leaf.label, "condition " + leaf.name);
+      for (const auto* effect : {&leaf.on_success, &leaf.on_failure})
+        if (*effect) cuts.add(**effect, world.file + ": the effect of " + leaf.label);
+    }
+    for (const std::string& key : port_reads)
+      cuts.add_uncut(key, "a port of the tree reads {" + key + "}");
+  }
+  for (StateVar& v : vars) {
+    if (!v.relevant) continue;
+    const fretish::Variable* d = mission.domain.find(v.name);
+    const auto why = unenumerable.find(v.name);
+    if (numeric.contains(v.name)) {
+      const std::string uncut = cuts.uncut(v.name);
+      if (uncut.empty()) {
+        v.values = cell_values(*d, cuts.breaks(v.name));
+        v.cells = true;
+        if (v.values.empty()) v.values.push_back(ScriptValue{});
+        continue;
+      }
+      if (why == unenumerable.end()) continue;  // few enough values to take each one
+      if (explicit_refusal.empty())
+        explicit_refusal = "the explicit-state engine cannot cut " +
+                           why->second.substr(0, why->second.find(' ')) + " '" + v.name +
+                           "' into cells: " + uncut;
+      continue;
+    }
+    if (why == unenumerable.end()) continue;
+    // A numeric variable the mission writes: only its initial value is chosen.
+    if (world.initial && d)
+      if (auto fixed = fixed_number(*world.initial, *d)) {
+        v.values = {*fixed};
+        continue;
+      }
+    if (explicit_refusal.empty())
+      explicit_refusal = "the explicit-state engine cannot enumerate " + why->second +
+                         " (the mission writes it: fix its initial value in world.json's "
+                         "`initial`, or bound its range)";
+  }
+}
+
+void Model::mark_read_once() {
+  // Repeat, RetryUntilSuccessful and SequenceWithMemory ask for wake-up re-ticks: the whole
+  // tree may then run again within the tick.
+  bool loops = false;
+  std::function<void(const bt::Node&)> scan = [&](const bt::Node& n) {
+    const std::string kind = n.kind();
+    loops =
+        loops || kind == "Repeat" || kind == "RetryUntilSuccessful" || kind == "SequenceWithMemory";
+    for (const auto& c : n.children) scan(c);
+  };
+  for (const auto& t : doc.trees) scan(t.root);
+  if (loops) return;
+  auto bare = [](const std::string& name) {
+    return !name.empty() && name.front() == '@' ? name.substr(1) : name;
+  };
+  std::set<std::string, std::less<>> env;
+  for (const StateVar& v : vars)
+    if (v.env && v.relevant) env.insert(v.name);
+  std::map<std::string, int, std::less<>> sites;
+  for (const auto& leaf : choice->leaves()) {
+    if (leaf.condition) ++sites[leaf.label];
+    for (const auto* effect : {&leaf.on_success, &leaf.on_failure})
+      if (*effect)
+        for (const auto& n : (*effect)->names()) sites[bare(n)] += 2;
+  }
+  for (const auto& [program, what] : tree_scripts) {
+    std::set<std::string> names;
+    for (const auto& n : program.names())
+      if (env.contains(bare(n))) names.insert(bare(n));
+    for (const auto& n : names) sites[n] += names.size() > 1 ? 2 : 1;
+  }
+  for (const auto& key : port_reads) sites[bare(key)] += 2;
+  for (StateVar& v : vars) v.read_once = v.env && v.relevant && sites[v.name] == 1;
 }
 
 void Model::fill_state(std::vector<monitor::Val>& frame) const {

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -24,6 +25,11 @@ struct StateVar {
   std::vector<runtime::ScriptValue> values;
   bool env = true;       // no action writes it: the environment may change it every tick
   bool relevant = true;  // something reads it (else it keeps its first value)
+  bool cells = false;    // `values` are one per cell of its range (DESIGN §10.1), not every value
+  // One place in the tree reads it (a condition leaf, or a script that reads no other
+  // environment variable), and nothing re-ticks the tree within a tick: once that place has
+  // read it, the rest of the tick cannot read it again (unless a monitor or an assumption does).
+  bool read_once = false;
   runtime::SlotId slot = runtime::kNoSlot;
   int frame = -1;  // its monitor::Variables slot
 };
@@ -43,6 +49,8 @@ struct Property {
 
 // The product the explorer walks: the runtime's engine over the compiled tree, the choice
 // world, the observables and every property's monitor.
+class Environment;
+
 struct Model {
   Model(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world);
 
@@ -56,6 +64,7 @@ struct Model {
   std::unique_ptr<ChoiceWorld> choice;
   std::unique_ptr<runtime::Engine> engine;
   std::unique_ptr<Observables> observables;
+  std::unique_ptr<Environment> environment;  // the environment's values, chosen on demand
   std::vector<Property> properties;
   std::vector<std::shared_ptr<monitor::CompiledExpression>> assumptions;
   std::shared_ptr<monitor::CompiledExpression> initial;
@@ -65,9 +74,19 @@ struct Model {
   // real or unbounded/wide integer (such a variable has one placeholder value, empty).
   std::string explicit_refusal;
 
+  ~Model();
+
   // Evaluates a state expression (initial, assumption) on the blackboard now.
   bool holds(monitor::CompiledExpression& e, std::vector<monitor::Val>& frame);
   void fill_state(std::vector<monitor::Val>& frame) const;
+
+ private:
+  // The values the explicit engine branches over, per relevant variable (cells for numeric
+  // environment variables), or why it cannot (explicit_refusal).
+  void choose_values(const std::map<std::string, std::string, std::less<>>& unenumerable);
+  void mark_read_once();
+  std::vector<std::pair<runtime::script::Program, std::string>> tree_scripts;  // and where
+  std::vector<std::string> port_reads;  // blackboard keys ports read
 };
 
 }  // namespace uabt::prove

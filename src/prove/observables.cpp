@@ -85,6 +85,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
         const NodeStatus s = field == "success"   ? NodeStatus::success
                              : field == "failure" ? NodeStatus::failure
                                                   : NodeStatus::running;
+        observed_.insert(observed_.end(), nodes.begin(), nodes.end());
         statuses_.push_back({std::move(nodes), s, slot});
         return {R::Kind::variable, slot};
       }
@@ -105,6 +106,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
   for (const auto& site : mission_.adaptables) {
     if (site.id != name) continue;
     ModeObs mode{engine_.subtree_calls(name), variables_.id(name)};
+    observed_.insert(observed_.end(), mode.calls.begin(), mode.calls.end());
     modes_.push_back(std::move(mode));
     return {R::Kind::variable, modes_.back().slot};
   }
@@ -118,6 +120,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
 void Observables::begin_tick() {
   for (NodeId n : touched_) last_[n] = NodeStatus::idle;
   touched_.clear();
+  open_.clear();
   std::fill(last_alternative_.begin(), last_alternative_.end(), -1);
 }
 
@@ -125,10 +128,29 @@ void Observables::on_node_ticked(NodeId node, NodeStatus result) {
   if (node >= last_.size()) last_.resize(node + 1, NodeStatus::idle);
   last_[node] = result;
   touched_.push_back(node);
+  std::erase_if(open_, [&](NodeId child) { return engine_.info(child).parent == node; });
+  if (std::find(open_.begin(), open_.end(), node) == open_.end()) open_.push_back(node);
   for (std::size_t i = 0; i < selected_.size(); ++i)
     if (node < selected_[i].alternative_of_call.size() &&
         selected_[i].alternative_of_call[node] >= 0)
       last_alternative_[i] = selected_[i].alternative_of_call[node];
+}
+
+void Observables::append_tick_key(std::string& out) const {
+  // Returns a node's parent has not yet consumed (its loop may still look at them), and every
+  // return a property reads; a return whose parent has returned since matters to nothing.
+  std::vector<std::pair<NodeId, NodeStatus>> record;
+  for (NodeId n : open_) record.emplace_back(n, last_[n]);
+  for (NodeId n : observed_)
+    if (n < last_.size() && last_[n] != NodeStatus::idle) record.emplace_back(n, last_[n]);
+  std::sort(record.begin(), record.end());
+  record.erase(std::unique(record.begin(), record.end()), record.end());
+  for (const auto& [n, status] : record) {
+    out.append(reinterpret_cast<const char*>(&n), sizeof n);
+    out += static_cast<char>(status);
+  }
+  out += '|';
+  for (int a : last_alternative_) out.append(reinterpret_cast<const char*>(&a), sizeof a);
 }
 
 void Observables::fill(std::vector<monitor::Val>& frame) const {

@@ -41,6 +41,10 @@ class Observables : public runtime::Observer {
   void on_node_ticked(runtime::NodeId node, runtime::NodeStatus result) override;
   // The frame after the tick, one value per variable slot.
   void fill(std::vector<monitor::Val>& frame) const;
+  // What this tick has recorded so far, as bytes: every node ticked with the status it last
+  // returned, and the alternatives selected. With the engine's state it decides how the rest
+  // of the tick goes and what the monitors see (a model checker's mid-tick state).
+  void append_tick_key(std::string& out) const;
 
   static monitor::Val value_of(const runtime::ScriptValue& v, monitor::Symbols& symbols);
 
@@ -73,7 +77,9 @@ class Observables : public runtime::Observer {
   std::vector<ModeObs> modes_;
   std::vector<runtime::NodeStatus> last_;  // per node, this tick (idle: not ticked)
   std::vector<runtime::NodeId> touched_;
-  std::vector<int> last_alternative_;  // per SelectedObs: symbol, -1 for none
+  std::vector<runtime::NodeId> open_;      // ticked, and their parent has not returned since
+  std::vector<runtime::NodeId> observed_;  // nodes whose returns a property reads
+  std::vector<int> last_alternative_;      // per SelectedObs: symbol, -1 for none
 };
 
 }  // namespace uabt::prove

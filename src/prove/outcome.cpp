@@ -53,8 +53,34 @@ std::vector<Finding> findings_of(const Result& result,
                                  const std::map<std::string, std::string>& written,
                                  const report::Proofs& replay) {
   std::vector<Finding> out;
+  if (result.vacuity) {
+    Finding f =
+        make_finding("prove-vacuous", "no guarantee can be proved: " + result.vacuity->message,
+                     result.vacuity->location);
+    for (const Answer& a : result.answers)
+      if (a.verdict == Verdict::vacuous) f.requirements.push_back(a.requirement);
+    f.notes.push_back(
+        "a proof over runs that cannot happen, or cannot go on, would hold of any "
+        "guarantee: fix the world model (domain assumptions, world.json) first");
+    out.push_back(std::move(f));
+  }
   for (const Answer& a : result.answers) {
-    if (a.verdict == Verdict::proved) continue;
+    if (a.verdict == Verdict::vacuous) continue;
+    if (a.verdict == Verdict::proved) {
+      if (result.engine == "explicit" && a.has_trigger && a.first_trigger == 0) {
+        Finding f = make_finding("prove-trigger-unreachable",
+                                 "guarantee '" + a.requirement +
+                                     "' is proved, but its trigger (its mode and condition) "
+                                     "holds on no run, so it never asks anything: " +
+                                     a.text,
+                                 a.location);
+        f.notes.push_back("explored " + std::to_string(result.states) + " reachable states and " +
+                          std::to_string(result.transitions) + " transitions");
+        f.requirements = {a.requirement};
+        out.push_back(std::move(f));
+      }
+      continue;
+    }
     Finding f;
     if (a.verdict == Verdict::violated) {
       f = make_finding("prove-violated",
@@ -100,8 +126,15 @@ std::string result_json(const Result& result, const std::string& mission,
     j["states"] = result.states;
     j["transitions"] = result.transitions;
   }
+  if (!result.engine_reason.empty()) j["engine_reason"] = result.engine_reason;
   j["depth"] = result.depth;
   j["complete"] = result.complete;
+  if (result.vacuity)
+    j["vacuity"] = {{"message", result.vacuity->message},
+                    {"location",
+                     {{"file", result.vacuity->location.file},
+                      {"line", result.vacuity->location.line},
+                      {"column", result.vacuity->location.column}}}};
   Json props = Json::array();
   for (const Answer& a : result.answers) {
     Json p = Json::object();
@@ -110,6 +143,7 @@ std::string result_json(const Result& result, const std::string& mission,
     p["location"] = {
         {"file", a.location.file}, {"line", a.location.line}, {"column", a.location.column}};
     p["depth"] = a.depth;
+    if (result.engine == "explicit" && a.has_trigger) p["first_trigger"] = a.first_trigger;
     if (!a.reason.empty()) p["reason"] = a.reason;
     if (a.counterexample) {
       Json trace = Json::array();

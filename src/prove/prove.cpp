@@ -22,6 +22,7 @@ const char* verdict_name(Verdict v) {
     case Verdict::proved: return "proved";
     case Verdict::violated: return "violated";
     case Verdict::bounded: return "bounded";
+    case Verdict::vacuous: return "vacuous";
     case Verdict::unsupported: return "unsupported";
   }
   return "?";
@@ -96,23 +97,34 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
   RunRecorder recorder(m);
   m.choice->recorder = &recorder;
   Json initial = Json::object(), events = Json::array();
-  std::vector<ScriptValue> last(m.vars.size());
+  // What the simulated world holds for each variable (it keeps a value until an event sets it).
+  std::vector<ScriptValue> held(m.vars.size());
+  Json set = Json::object();
+  auto give = [&](std::uint64_t tick, std::size_t i, const ScriptValue& v) {
+    if (v.empty()) return;  // a variable nothing reads, with no value to give
+    if (tick == 1)
+      initial[m.vars[i].name] = runtime::value_json(v);
+    else if (!(v == held[i]))
+      set[m.vars[i].name] = runtime::value_json(v);
+    held[i] = v;
+  };
+  const runtime::Blackboard& bb = m.engine->blackboard();
   replay_path(
       m, f.path,
       [&](std::uint64_t tick) {
-        Json set = Json::object();
-        for (std::size_t i = 0; i < m.vars.size(); ++i) {
-          const ScriptValue& v = m.engine->blackboard().value(m.vars[i].slot);
-          if (tick == 1)
-            initial[m.vars[i].name] = runtime::value_json(v);
-          else if (!(v == last[i]))
-            set[m.vars[i].name] = runtime::value_json(v);
-        }
-        if (!set.empty()) events.push_back(Json{{"at", tick}, {"set", set}});
-      },
-      [&](std::uint64_t, NodeStatus) {
+        set = Json::object();
+        // What is on the blackboard before the tick: the initial state, or a symbolic path's
+        // environment; values still pending are given once the tick has chosen them.
         for (std::size_t i = 0; i < m.vars.size(); ++i)
-          last[i] = m.engine->blackboard().value(m.vars[i].slot);
+          if (!bb.pending(m.vars[i].slot) && (tick == 1 || m.vars[i].env))
+            give(tick, i, bb.value(m.vars[i].slot));
+      },
+      [&](std::uint64_t tick, NodeStatus, const std::vector<std::size_t>& chosen) {
+        for (std::size_t i : chosen) give(tick, i, bb.value(m.vars[i].slot));
+        if (!set.empty()) events.push_back(Json{{"at", tick}, {"set", set}});
+        // The mission's own variables as the tick's effects left them.
+        for (std::size_t i = 0; i < m.vars.size(); ++i)
+          if (!m.vars[i].env) held[i] = bb.value(m.vars[i].slot);
       });
   m.choice->recorder = nullptr;
   Json s = Json::object();
@@ -233,9 +245,14 @@ Result prove_explicit(Model& model, const Options& options) {
   r.complete = search.complete;
   if (search.tick_error)
     r.notes.push_back("a reachable tick stops with an error: " + *search.tick_error);
-  add_answers(model, search.violations, r, [&](std::size_t, Answer& a) {
-    a.verdict = search.complete ? Verdict::proved : Verdict::bounded;
+  if (search.vacuous) r.vacuity = Vacuity{search.vacuous->message, search.vacuous->location};
+  add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
+    a.verdict = search.vacuous    ? Verdict::vacuous
+                : search.complete ? Verdict::proved
+                                  : Verdict::bounded;
     a.depth = search.depth;
+    a.first_trigger = search.first_trigger[i];
+    a.has_trigger = model.properties[i].parts[0] || model.properties[i].parts[1];
   });
   return r;
 }
@@ -270,14 +287,12 @@ Result prove(const load::Mission& mission, const bt::Document& compiled, const W
     throw ProveError("unknown engine '" + options.engine + "' (auto, explicit or symbolic)");
   Model model(mission, compiled, world);
   std::string engine = options.engine;
-  if (engine == "auto") {
-    const std::uint64_t product = environment_product(model);
-    engine =
-        model.explicit_refusal.empty() && product <= kAutoExplicitProduct ? "explicit" : "symbolic";
-  }
+  if (engine == "auto") engine = model.explicit_refusal.empty() ? "explicit" : "symbolic";
   if (engine == "explicit") return prove_explicit(model, options);
   try {
-    return prove_symbolic(model, options);
+    Result r = prove_symbolic(model, options);
+    if (options.engine == "auto") r.engine_reason = model.explicit_refusal;
+    return r;
   } catch (const z3::exception& e) {
     throw ProveError(std::string("internal error: the symbolic engine: Z3: ") + e.msg());
   } catch (const SymbolicUnsupported& e) {

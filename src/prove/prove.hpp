@@ -14,8 +14,9 @@
 namespace uabt::prove {
 
 // Per guarantee (DESIGN §10): proved for every depth, violated with a counterexample, bounded
-// (no violation up to the depth explored, nothing proved), or not checked (why in `reason`).
-enum class Verdict { proved, violated, bounded, unsupported };
+// (no violation up to the depth explored, nothing proved), vacuous (the world model leaves no
+// run, or runs that cannot go on: Result::vacuity says why), or not checked (why in `reason`).
+enum class Verdict { proved, violated, bounded, vacuous, unsupported };
 const char* verdict_name(Verdict v);
 
 // One tick of a counterexample as its replay saw it: the root's status and the values the
@@ -42,6 +43,16 @@ struct Answer {
   std::uint64_t depth = 0;  // ticks explored (bounded), the violation's tick, or for a proof
                             // the explicit depth / the symbolic engine's k
   std::optional<Counterexample> counterexample;
+  // The explicit engine: the first tick at which the guarantee's trigger (its mode and its
+  // condition) holds on some run; 0 when it never does (a proof that says nothing).
+  std::uint64_t first_trigger = 0;
+  bool has_trigger = false;  // the guarantee has a mode or a condition
+};
+
+// Why a proof would be vacuous (`prove-vacuous`).
+struct Vacuity {
+  std::string message;
+  SourceLocation location;
 };
 
 struct Options {
@@ -50,10 +61,6 @@ struct Options {
   std::string engine = "auto";         // auto | explicit | symbolic
 };
 
-// `auto` takes the explicit-state engine when it can enumerate the world and the environment
-// offers at most this many combinations of values per tick, else the symbolic one.
-inline constexpr std::uint64_t kAutoExplicitProduct = 4096;
-
 struct Result {
   std::vector<Answer> answers;                // one per guarantee, file order
   std::string engine;                         // explicit | symbolic
@@ -61,6 +68,8 @@ struct Result {
   std::uint64_t induction_k = 0;              // symbolic: deepest k-induction tried
   std::uint64_t depth = 0;                    // deepest tick explored (symbolic: the BMC depth)
   bool complete = false;                      // every reachable state was explored
+  std::optional<Vacuity> vacuity;             // the world leaves no run, or a run stuck
+  std::string engine_reason;                  // why `auto` took the symbolic engine
   std::vector<std::string> notes;
   bool passed() const;  // every guarantee proved
 };
@@ -76,6 +85,8 @@ class ProveError : public std::runtime_error {
 // Model-checks every guarantee of `mission` on `compiled` (the gate's compiled tree) in the
 // world `world` allows. Every counterexample is replayed on the runtime's simulated world
 // before it is returned.
+// `auto` takes the explicit-state engine whenever it can cut every environment variable into
+// finitely many cells (DESIGN §10.1), else the symbolic one, and says why.
 Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
              const Options& options);
 

@@ -111,9 +111,33 @@ void Blackboard::rollback(const Mark& mark) {
   }
   journal_.resize(mark.journal);
   scopes_.resize(mark.scopes);
+  for (std::size_t slot = mark.slots; slot < pending_.size(); ++slot)
+    set_pending(static_cast<SlotId>(slot), false);
+  if (pending_.size() > mark.slots) pending_.resize(mark.slots);
   values_.resize(mark.slots);
   keys_.resize(mark.slots);
   owners_.resize(mark.slots);
+}
+
+void Blackboard::set_pending(SlotId slot, bool pending) {
+  if (slot >= pending_.size()) {
+    if (!pending) return;
+    pending_.resize(values_.size(), 0);
+  }
+  if (pending_[slot] == static_cast<char>(pending)) return;
+  pending_[slot] = static_cast<char>(pending);
+  pending ? ++pending_count_ : --pending_count_;
+}
+
+void Blackboard::clear_pending() {
+  std::fill(pending_.begin(), pending_.end(), 0);
+  pending_count_ = 0;
+}
+
+void Blackboard::resolve_pending(SlotId slot) const {
+  pending_[slot] = 0;
+  --pending_count_;
+  if (resolver_ != nullptr) resolver_->resolve(slot);
 }
 
 }  // namespace uabt::runtime

@@ -15,6 +15,13 @@ using SlotId = std::uint32_t;
 using ScopeId = std::uint32_t;
 inline constexpr SlotId kNoSlot = UINT32_MAX;
 
+// Gives a pending slot its value when it is first read (Blackboard::set_pending).
+class PendingResolver {
+ public:
+  virtual ~PendingResolver() = default;
+  virtual void resolve(SlotId slot) = 0;
+};
+
 // The blackboards of one engine: one scope per tree instance (the main tree's is the root,
 // where the simulated world keeps its state), entries in flat slots.
 //
@@ -40,8 +47,26 @@ class Blackboard {
   // Same as resolve() without creating anything.
   std::optional<SlotId> find(ScopeId scope, std::string_view key) const;
 
+  // The stored value as it is, pending or not (the world's own bookkeeping, saved states).
   ScriptValue& value(SlotId slot) { return values_[slot]; }
   const ScriptValue& value(SlotId slot) const { return values_[slot]; }
+  // The value a node, a script or a port reads: a pending slot is resolved first.
+  const ScriptValue& read(SlotId slot) const {
+    if (pending_count_ != 0 && slot < pending_.size() && pending_[slot]) resolve_pending(slot);
+    return values_[slot];
+  }
+  ScriptValue& read_for_update(SlotId slot) {
+    read(slot);
+    return values_[slot];
+  }
+
+  // A model checker's on-demand environment: a pending slot has a value that is chosen only
+  // when something reads it (`resolver` sets it then), so that values nobody reads in a tick
+  // are never enumerated. With no slot pending, read() is value().
+  void set_resolver(PendingResolver* resolver) { resolver_ = resolver; }
+  void set_pending(SlotId slot, bool pending);
+  bool pending(SlotId slot) const { return slot < pending_.size() && pending_[slot]; }
+  void clear_pending();
   const std::string& key(SlotId slot) const { return keys_[slot]; }
   ScopeId owner(SlotId slot) const { return owners_[slot]; }
   std::size_t slot_count() const { return values_.size(); }
@@ -69,12 +94,17 @@ class Blackboard {
     std::map<std::string, std::string, std::less<>> remapped;
   };
   SlotId create(ScopeId scope, std::string_view key);
+  void resolve_pending(SlotId slot) const;
 
   std::vector<Scope> scopes_;
   std::vector<ScriptValue> values_;
   std::vector<std::string> keys_;
   std::vector<ScopeId> owners_;
   std::vector<std::pair<ScopeId, std::string>> journal_;  // slots created in existing scopes
+  // Pending slots: a read resolves them (logically the value was there all along).
+  mutable std::vector<char> pending_;
+  mutable std::size_t pending_count_ = 0;
+  PendingResolver* resolver_ = nullptr;
 };
 
 inline bool is_private_key(std::string_view key) {

@@ -210,7 +210,7 @@ bool Core::try_read_int(const Input& input, std::int64_t& out) const {
     return true;
   }
   std::int64_t v = 0;
-  if (!int_from_value(bb.value(input.slot), v)) return false;
+  if (!int_from_value(bb.read(input.slot), v)) return false;
   out = v;
   return true;
 }
@@ -219,7 +219,7 @@ std::int64_t Core::read_int(NodeId id, const Input& input, const char* port) {
   std::int64_t out = 0;
   if (try_read_int(input, out)) return out;
   if (!input.present) fail(id, std::string("missing required input [") + port + "]");
-  const ScriptValue& v = bb.value(input.slot);
+  const ScriptValue& v = bb.read(input.slot);
   if (v.empty())
     fail(id, std::string("input [") + port + "] reads blackboard key '" + bb.key(input.slot) +
                  "', which is not set");
@@ -233,7 +233,7 @@ bool Core::try_read_bool(const Input& input, bool& out) const {
     out = input.value != 0;
     return true;
   }
-  const ScriptValue& v = bb.value(input.slot);
+  const ScriptValue& v = bb.read(input.slot);
   std::int64_t i = 0;
   if (v.kind == ScriptValue::Kind::boolean) {
     out = v.boolean;

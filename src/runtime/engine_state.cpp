@@ -55,9 +55,21 @@ void put(std::string& out, const T& v) {
 }  // namespace
 
 void EngineState::append_key(std::string& out) const {
-  for (NodeStatus s : status) out += static_cast<char>(s);
-  for (std::int32_t v : counters) put(out, v);
-  out.append(reinterpret_cast<const char*>(child_done.data()), child_done.size());
+  // Sparse: between two ticks almost every node is IDLE with zero counters, and a model
+  // checker hashes and stores one key per state.
+  for (std::uint32_t i = 0; i < status.size(); ++i) {
+    const std::int32_t* c = &counters[3 * static_cast<std::size_t>(i)];
+    if (status[i] == NodeStatus::idle && c[0] == 0 && c[1] == 0 && c[2] == 0) continue;
+    put(out, i);
+    out += static_cast<char>(status[i]);
+    put(out, c[0]);
+    put(out, c[1]);
+    put(out, c[2]);
+  }
+  put(out, UINT32_MAX);
+  for (std::uint32_t i = 0; i < child_done.size(); ++i)
+    if (child_done[i] != 0) put(out, i);
+  put(out, UINT32_MAX);
   for (const ScriptValue& v : values) {
     out += static_cast<char>(v.kind);
     switch (v.kind) {

@@ -140,7 +140,7 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
     case Op::literal: return e.literal;
 
     case Op::name: {
-      const ScriptValue& v = bb.value(e.slot);
+      const ScriptValue& v = bb.read(e.slot);
       if (v.empty())
         fail("undefined blackboard key '" + e.name + "' (assign it first, e.g. " + e.name +
                  " := 0, or give it a value in the scenario)",
@@ -337,7 +337,8 @@ const ScriptValue& Program::eval_compare(const Expr& e, Blackboard& bb) {
 const ScriptValue& Program::eval_assign(std::uint32_t index, Blackboard& bb) {
   const Expr& e = nodes_[index];
   const Expr& target = nodes_[e.a];
-  ScriptValue& dst = bb.value(target.slot);
+  // Read, not only written: `x = x + 1` reads x, and a pending entry must be resolved first.
+  ScriptValue& dst = bb.read_for_update(target.slot);
   const std::string& key = target.name;
   if (dst.empty() && e.op == Op::assign)
     fail("the blackboard entry '" + key +

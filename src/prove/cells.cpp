@@ -1,0 +1,285 @@
+#include "prove/cells.hpp"
+
+#include <functional>
+#include <optional>
+
+#include "verify/real_cells.hpp"
+
+namespace uabt::prove {
+
+using fretish::Expr;
+using fretish::ExprKind;
+using runtime::ScriptValue;
+using verify::detail::Fraction;
+namespace script = runtime::script;
+
+namespace {
+
+// a·x + b over one variable x (a may be 0: a constant).
+struct Affine {
+  std::string variable;  // "" for a constant
+  Fraction a, b;
+};
+
+std::optional<Affine> combine(const Affine& l, const Affine& r, int sign) {
+  if (!l.variable.empty() && !r.variable.empty() && l.variable != r.variable) return std::nullopt;
+  Affine out{l.variable.empty() ? r.variable : l.variable, l.a, l.b};
+  out.a += sign > 0 ? r.a : -r.a;
+  out.b += sign > 0 ? r.b : -r.b;
+  return out;
+}
+
+std::optional<Affine> scale(const Affine& x, const Fraction& k) {
+  return Affine{x.variable, x.a * k, x.b * k};
+}
+
+std::optional<Affine> product(const std::optional<Affine>& l, const std::optional<Affine>& r) {
+  if (!l || !r) return std::nullopt;
+  if (l->variable.empty() || l->a.is_zero()) return scale(*r, l->b);
+  if (r->variable.empty() || r->a.is_zero()) return scale(*l, r->b);
+  return std::nullopt;
+}
+
+std::optional<Affine> quotient(const std::optional<Affine>& l, const std::optional<Affine>& r) {
+  if (!l || !r || !(r->variable.empty() || r->a.is_zero()) || r->b.is_zero()) return std::nullopt;
+  return scale(*l, Fraction(1) / r->b);
+}
+
+// The breakpoint of `lhs op rhs` when it is an atom over one variable.
+std::optional<std::pair<std::string, Fraction>> breakpoint(const std::optional<Affine>& l,
+                                                           const std::optional<Affine>& r) {
+  if (!l || !r) return std::nullopt;
+  const auto d = combine(*l, *r, -1);
+  if (!d || d->variable.empty() || d->a.is_zero()) return std::nullopt;
+  return std::make_pair(d->variable, -d->b / d->a);
+}
+
+class FretishAffine {
+ public:
+  explicit FretishAffine(const std::set<std::string, std::less<>>& numeric) : numeric_(numeric) {}
+  std::optional<Affine> of(const Expr& e) const {
+    try {
+      switch (e.kind) {
+        case ExprKind::number: {
+          const auto f = Fraction::parse(e.text);
+          if (!f) return std::nullopt;
+          return Affine{"", Fraction(0), *f};
+        }
+        case ExprKind::identifier:
+          if (!numeric_.contains(e.text)) return std::nullopt;
+          return Affine{e.text, Fraction(1), Fraction(0)};
+        case ExprKind::negate: {
+          const auto x = of(*e.args[0]);
+          return x ? scale(*x, Fraction(-1)) : std::nullopt;
+        }
+        case ExprKind::add:
+        case ExprKind::sub: {
+          std::optional<Affine> acc = of(*e.args[0]);
+          for (std::size_t i = 1; i < e.args.size() && acc; ++i) {
+            const auto r = of(*e.args[i]);
+            acc = r ? combine(*acc, *r, e.kind == ExprKind::add ? 1 : -1) : std::nullopt;
+          }
+          return acc;
+        }
+        case ExprKind::mul: return product(of(*e.args[0]), of(*e.args[1]));
+        case ExprKind::div: return quotient(of(*e.args[0]), of(*e.args[1]));
+        default: return std::nullopt;
+      }
+    } catch (const verify::detail::FractionOverflow&) {
+      return std::nullopt;
+    }
+  }
+
+ private:
+  const std::set<std::string, std::less<>>& numeric_;
+};
+
+class ScriptAffine {
+ public:
+  ScriptAffine(const script::Program& p, const std::set<std::string, std::less<>>& numeric)
+      : p_(p), numeric_(numeric) {}
+  std::optional<Affine> of(std::uint32_t index) const {
+    const script::Expr& e = p_.nodes()[index];
+    try {
+      switch (e.op) {
+        case script::Op::literal: {
+          if (e.literal.kind != ScriptValue::Kind::integer &&
+              e.literal.kind != ScriptValue::Kind::real)
+            return std::nullopt;
+          const auto f = Fraction::parse(e.literal.to_string());
+          if (!f) return std::nullopt;
+          return Affine{"", Fraction(0), *f};
+        }
+        case script::Op::name:
+          if (!numeric_.contains(bare(e.name))) return std::nullopt;
+          return Affine{bare(e.name), Fraction(1), Fraction(0)};
+        case script::Op::negate: {
+          const auto x = of(e.a);
+          return x ? scale(*x, Fraction(-1)) : std::nullopt;
+        }
+        case script::Op::add:
+        case script::Op::sub: {
+          const auto l = of(e.a), r = of(e.b);
+          if (!l || !r) return std::nullopt;
+          return combine(*l, *r, e.op == script::Op::add ? 1 : -1);
+        }
+        case script::Op::mul: return product(of(e.a), of(e.b));
+        case script::Op::div: return quotient(of(e.a), of(e.b));
+        default: return std::nullopt;
+      }
+    } catch (const verify::detail::FractionOverflow&) {
+      return std::nullopt;
+    }
+  }
+  static std::string bare(const std::string& name) {
+    return !name.empty() && name.front() == '@' ? name.substr(1) : name;
+  }
+
+ private:
+  const script::Program& p_;
+  const std::set<std::string, std::less<>>& numeric_;
+};
+
+}  // namespace
+
+void Cuts::add(const Expr& e, const std::string& where) {
+  walk(e, where);
+}
+
+void Cuts::walk(const Expr& e, const std::string& where) {
+  if (fretish::is_relation(e.kind) && e.args.size() == 2) {
+    const FretishAffine affine(numeric_);
+    if (const auto b = breakpoint(affine.of(*e.args[0]), affine.of(*e.args[1]))) {
+      breaks_[b->first].insert(b->second);
+      return;
+    }
+  }
+  if (e.kind == ExprKind::identifier && numeric_.contains(e.text)) {
+    add_uncut(e.text, "`" + fretish::to_fretish(e) +
+                          "` is read outside an atom that compares it "
+                          "with a constant (" +
+                          where + ")");
+    return;
+  }
+  for (const auto& a : e.args)
+    if (a) walk(*a, where);
+}
+
+void Cuts::add(const script::Program& program, const std::string& where) {
+  const auto& nodes = program.nodes();
+  const ScriptAffine affine(program, numeric_);
+  // Operands inside a cut comparison are accounted for; any other read of a numeric name is not.
+  std::vector<char> covered(nodes.size(), 0);
+  std::function<void(std::uint32_t)> cover = [&](std::uint32_t i) {
+    covered[i] = 1;
+    const script::Expr& e = nodes[i];
+    if (e.op == script::Op::literal || e.op == script::Op::name) return;
+    if (e.op == script::Op::negate) return cover(e.a);
+    cover(e.a);
+    cover(e.b);
+  };
+  for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+    const script::Expr& e = nodes[i];
+    if (e.op != script::Op::compare || e.list_size != 2) continue;
+    const std::uint32_t l = program.compare_operands()[e.list_begin];
+    const std::uint32_t r = program.compare_operands()[e.list_begin + 1];
+    if (const auto b = breakpoint(affine.of(l), affine.of(r))) {
+      breaks_[b->first].insert(b->second);
+      cover(l);
+      cover(r);
+    }
+  }
+  for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+    const script::Expr& e = nodes[i];
+    if (e.op != script::Op::name || covered[i]) continue;
+    const std::string name = ScriptAffine::bare(e.name);
+    if (numeric_.contains(name))
+      add_uncut(name, "the script `" + program.code() + "` (" + where +
+                          ") reads it outside a comparison with a constant");
+  }
+}
+
+void Cuts::add_truth_read(const std::string& variable, const std::string& where) {
+  (void)where;
+  if (numeric_.contains(variable)) breaks_[variable].insert(Fraction(0));
+}
+
+void Cuts::add_uncut(const std::string& variable, const std::string& why) {
+  if (!uncut_.contains(variable)) uncut_[variable] = why;
+}
+
+const std::set<Fraction>& Cuts::breaks(const std::string& variable) const {
+  static const std::set<Fraction> kNone;
+  const auto it = breaks_.find(variable);
+  return it == breaks_.end() ? kNone : it->second;
+}
+
+std::string Cuts::uncut(const std::string& variable) const {
+  const auto it = uncut_.find(variable);
+  return it == uncut_.end() ? std::string() : it->second;
+}
+
+namespace {
+
+__int128 floor_of(const Fraction& f) {
+  const __int128 n = f.numerator(), d = f.denominator();
+  __int128 q = n / d;
+  if (n % d != 0 && n < 0) --q;
+  return q;
+}
+
+// The integer inside the open interval (lo, hi) nearest to its middle, if there is one.
+std::optional<__int128> integer_inside(const std::optional<Fraction>& lo,
+                                       const std::optional<Fraction>& hi) {
+  if (!lo && !hi) return 0;
+  // The integers strictly inside: from floor(lo) + 1 to the last one below hi.
+  const __int128 last = hi ? (hi->denominator() == 1 ? floor_of(*hi) - 1 : floor_of(*hi)) : 0;
+  if (!lo) return last;
+  const __int128 first = floor_of(*lo) + 1;
+  if (!hi) return first;
+  if (first > last) return std::nullopt;
+  const __int128 middle = floor_of((*lo + *hi) / Fraction(2));
+  return middle < first ? first : middle > last ? last : middle;
+}
+
+ScriptValue number_value(const Fraction& f, bool integer) {
+  if (integer) return ScriptValue::of_int(static_cast<std::int64_t>(f.numerator()));
+  return ScriptValue::of_real(f.to_double());
+}
+
+}  // namespace
+
+std::vector<ScriptValue> cell_values(const fretish::Variable& v, const std::set<Fraction>& breaks) {
+  const bool integer = v.type == fretish::VarType::integer;
+  std::optional<Fraction> lo, hi;
+  if (!v.lower.empty()) lo = Fraction::parse(v.lower);
+  if (!v.upper.empty()) hi = Fraction::parse(v.upper);
+  if (integer) {  // the integers of the range: [ceil(lo), floor(hi)]
+    if (lo) lo = Fraction(static_cast<long long>(-floor_of(-*lo)));
+    if (hi) hi = Fraction(static_cast<long long>(floor_of(*hi)));
+  }
+  std::vector<Fraction> points;  // sorted: bounds and the breakpoints inside them
+  if (lo) points.push_back(*lo);
+  for (const Fraction& b : breaks)
+    if ((!lo || b > *lo) && (!hi || b < *hi)) points.push_back(b);
+  if (hi && (!lo || *hi > *lo)) points.push_back(*hi);
+  if (lo && hi && *hi < *lo) return {};  // an empty range
+  std::vector<ScriptValue> out;
+  auto interval = [&](const std::optional<Fraction>& from, const std::optional<Fraction>& to) {
+    if (const auto k = integer_inside(from, to)) {
+      out.push_back(integer ? ScriptValue::of_int(static_cast<std::int64_t>(*k))
+                            : ScriptValue::of_real(static_cast<double>(*k)));
+    } else if (!integer && from && to) {
+      out.push_back(ScriptValue::of_real(((*from + *to) / Fraction(2)).to_double()));
+    }
+  };
+  if (!lo) interval(std::nullopt, points.empty() ? std::optional<Fraction>() : points.front());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!integer || points[i].denominator() == 1) out.push_back(number_value(points[i], integer));
+    if (i + 1 < points.size()) interval(points[i], points[i + 1]);
+  }
+  if (!hi && !points.empty()) interval(points.back(), std::nullopt);
+  return out;
+}
+
+}  // namespace uabt::prove

@@ -1,0 +1,216 @@
+#include "prove/environment.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "prove/model.hpp"
+#include "prove/prove.hpp"
+
+namespace uabt::prove {
+
+namespace {
+
+// Beyond this many combinations of unchosen values, deciding an assumption by enumeration is
+// too slow for the explicit engine (a mission whose assumptions relate so many variables).
+constexpr std::uint64_t kMaxCompletions = std::uint64_t{1} << 20;
+
+void append_val(std::string& key, const monitor::Val& v) {
+  key += static_cast<char>(v.kind);
+  key.append(reinterpret_cast<const char*>(&v.number), sizeof v.number);
+  key.append(reinterpret_cast<const char*>(&v.symbol), sizeof v.symbol);
+}
+
+}  // namespace
+
+Environment::Environment(Model& m) : m_(m) {
+  std::vector<std::size_t> var_of_frame;
+  for (std::size_t i = 0; i < m.vars.size(); ++i) {
+    const StateVar& v = m.vars[i];
+    if (v.frame >= 0) {
+      if (var_of_frame.size() <= static_cast<std::size_t>(v.frame))
+        var_of_frame.resize(static_cast<std::size_t>(v.frame) + 1, SIZE_MAX);
+      var_of_frame[static_cast<std::size_t>(v.frame)] = i;
+    }
+    if (v.slot != runtime::kNoSlot) {
+      if (var_of_slot_.size() <= v.slot) var_of_slot_.resize(v.slot + 1, SIZE_MAX);
+      var_of_slot_[v.slot] = i;
+    }
+    std::vector<monitor::Val> vals;
+    for (const auto& value : v.values) vals.push_back(Observables::value_of(value, m.symbols));
+    choices_.push_back(std::move(vals));
+    if (v.relevant && v.env) env_.push_back(i);
+  }
+  auto vars_of = [&](const monitor::CompiledExpression& e) {
+    std::vector<std::size_t> out;
+    for (int slot : e.variables())
+      if (static_cast<std::size_t>(slot) < var_of_frame.size() &&
+          var_of_frame[static_cast<std::size_t>(slot)] != SIZE_MAX)
+        out.push_back(var_of_frame[static_cast<std::size_t>(slot)]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  };
+  for (const auto& a : m.assumptions) constraints_.push_back({a, vars_of(*a), false});
+  if (m.initial) constraints_.push_back({m.initial, vars_of(*m.initial), true});
+  constraints_of_.resize(m.vars.size());
+  for (std::size_t c = 0; c < constraints_.size(); ++c)
+    for (std::size_t v : constraints_[c].vars) constraints_of_[v].push_back(c);
+  for (const Property& p : m.properties)
+    for (const auto& part : p.parts)
+      if (part)
+        for (std::size_t v : vars_of(*part)) monitor_reads_.push_back(v);
+  std::sort(monitor_reads_.begin(), monitor_reads_.end());
+  monitor_reads_.erase(std::unique(monitor_reads_.begin(), monitor_reads_.end()),
+                       monitor_reads_.end());
+  assigned_.assign(m.vars.size(), 1);
+  live_.assign(m.vars.size(), 1);
+  for (std::size_t i = 0; i < m.vars.size(); ++i)
+    live_[i] = !m.vars[i].read_once || !constraints_of_[i].empty() ||
+               std::binary_search(monitor_reads_.begin(), monitor_reads_.end(), i);
+  frame_.resize(m.variables.size());
+  m.engine->blackboard().set_resolver(this);
+}
+
+void Environment::start_tick(bool first) {
+  first_ = first;
+  chosen_.clear();
+  runtime::Blackboard& bb = m_.engine->blackboard();
+  for (std::size_t i = 0; i < m_.vars.size(); ++i) {
+    const StateVar& v = m_.vars[i];
+    if (v.frame >= 0)
+      frame_[static_cast<std::size_t>(v.frame)] =
+          Observables::value_of(bb.value(v.slot), m_.symbols);
+  }
+  for (std::size_t i : env_) {
+    assigned_[i] = 0;
+    bb.set_pending(m_.vars[i].slot, true);
+  }
+}
+
+bool Environment::satisfiable() {
+  std::vector<std::size_t> seeds;
+  for (std::size_t c = 0; c < constraints_.size(); ++c)
+    if (active(constraints_[c])) seeds.push_back(c);
+  // Each connected group separately: one unsatisfiable group is enough.
+  std::vector<char> done(constraints_.size(), 0);
+  for (std::size_t c : seeds) {
+    if (done[c]) continue;
+    std::vector<std::size_t> group = {c};
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      done[group[k]] = 1;
+      for (std::size_t v : constraints_[group[k]].vars)
+        if (!assigned_[v])
+          for (std::size_t other : constraints_of_[v])
+            if (!done[other] && active(constraints_[other]) &&
+                std::find(group.begin(), group.end(), other) == group.end())
+              group.push_back(other);
+    }
+    if (!component_satisfiable(group)) return false;
+  }
+  return true;
+}
+
+bool Environment::holds(Constraint& c) {
+  std::string error;
+  const bool v = c.expr->evaluate_bool(frame_, error);
+  if (!error.empty()) throw ProveError(error);
+  return v;
+}
+
+bool Environment::component_satisfiable(std::vector<std::size_t> group) {
+  // Close the group over unassigned variables.
+  for (std::size_t k = 0; k < group.size(); ++k)
+    for (std::size_t v : constraints_[group[k]].vars)
+      if (!assigned_[v])
+        for (std::size_t other : constraints_of_[v])
+          if (active(constraints_[other]) &&
+              std::find(group.begin(), group.end(), other) == group.end())
+            group.push_back(other);
+  std::sort(group.begin(), group.end());
+  std::vector<std::size_t> free, read;
+  for (std::size_t c : group)
+    for (std::size_t v : constraints_[c].vars) read.push_back(v);
+  std::sort(read.begin(), read.end());
+  read.erase(std::unique(read.begin(), read.end()), read.end());
+  std::string key;
+  for (std::size_t c : group) key.append(reinterpret_cast<const char*>(&c), sizeof c);
+  key += '|';
+  for (std::size_t v : read) {
+    key.append(reinterpret_cast<const char*>(&v), sizeof v);
+    if (assigned_[v]) {
+      append_val(key, frame_[static_cast<std::size_t>(m_.vars[v].frame)]);
+    } else {
+      key += '*';
+      free.push_back(v);
+    }
+  }
+  if (const auto it = cache_.find(key); it != cache_.end()) return it->second;
+
+  std::uint64_t combinations = 1;
+  for (std::size_t v : free) {
+    if (choices_[v].empty()) return cache_[key] = false;
+    if (combinations > kMaxCompletions / choices_[v].size())
+      throw ProveError(
+          "the explicit-state engine cannot decide the assumptions: they relate "
+          "more than 2^20 combinations of environment values");
+    combinations *= choices_[v].size();
+  }
+  std::vector<monitor::Val> saved;
+  for (std::size_t v : free) saved.push_back(frame_[static_cast<std::size_t>(m_.vars[v].frame)]);
+  bool any = false;
+  for (std::uint64_t n = 0; n < combinations && !any; ++n) {
+    std::uint64_t index = n;
+    for (std::size_t v : free) {
+      frame_[static_cast<std::size_t>(m_.vars[v].frame)] = choices_[v][index % choices_[v].size()];
+      index /= choices_[v].size();
+    }
+    any = std::all_of(group.begin(), group.end(),
+                      [&](std::size_t c) { return holds(constraints_[c]); });
+  }
+  for (std::size_t k = 0; k < free.size(); ++k)
+    frame_[static_cast<std::size_t>(m_.vars[free[k]].frame)] = saved[k];
+  return cache_[key] = any;
+}
+
+void Environment::resolve(runtime::SlotId slot) {
+  const std::size_t i = slot < var_of_slot_.size() ? var_of_slot_[slot] : SIZE_MAX;
+  if (i == SIZE_MAX) return;
+  const StateVar& v = m_.vars[i];
+  const std::size_t frame = static_cast<std::size_t>(v.frame);
+  // The values that keep the assumptions satisfiable by what is still unchosen.
+  std::vector<std::uint32_t> options;
+  assigned_[i] = 1;
+  for (std::uint32_t k = 0; k < choices_[i].size(); ++k) {
+    frame_[frame] = choices_[i][k];
+    std::vector<std::size_t> seeds;
+    for (std::size_t c : constraints_of_[i])
+      if (active(constraints_[c])) seeds.push_back(c);
+    if (seeds.empty() || component_satisfiable(seeds)) options.push_back(k);
+  }
+  if (options.empty())
+    throw ProveError("internal error: no value of '" + v.name +
+                     "' keeps the assumptions satisfiable, although the tick started with one");
+  const std::uint32_t pick = options.size() == 1
+                                 ? options[0]
+                                 : options[m_.choice->chooser.choose(
+                                       static_cast<std::uint32_t>(options.size()), 2 * slot + 1)];
+  frame_[frame] = choices_[i][pick];
+  m_.engine->blackboard().value(slot) = v.values[pick];
+  chosen_.push_back(i);
+}
+
+void Environment::resolve_monitor_reads() {
+  const runtime::Blackboard& bb = m_.engine->blackboard();
+  for (std::size_t v : monitor_reads_) bb.read(m_.vars[v].slot);
+}
+
+void Environment::end_tick() {
+  runtime::Blackboard& bb = m_.engine->blackboard();
+  bb.clear_pending();
+  for (std::size_t i : env_) {
+    bb.value(m_.vars[i].slot) = m_.vars[i].values.front();
+    assigned_[i] = 1;
+  }
+}
+
+}  // namespace uabt::prove

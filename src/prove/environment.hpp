@@ -1,0 +1,74 @@
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "monitor/expression.hpp"
+#include "runtime/blackboard.hpp"
+
+namespace uabt::prove {
+
+struct Model;
+
+// The environment of one tick, chosen on demand (DESIGN §10.1): every relevant environment
+// variable is pending when the tick starts, and gets its value when the tick, an effect or a
+// monitor first reads it; the value then stays for the rest of the tick. Each value offered
+// keeps the tick's state assumptions (the domain's `assume`s, and on the first tick
+// world.json's `initial`) satisfiable by the variables not chosen yet, so every run the search
+// takes can go on with a full state that satisfies them. Values nobody reads are never chosen
+// and are not part of the successor state.
+class Environment : public runtime::PendingResolver {
+ public:
+  explicit Environment(Model& model);
+
+  // Takes the mission's values as they are now (the tick's start) and marks the environment
+  // pending. `first`: the initial condition applies too.
+  void start_tick(bool first);
+  // Whether some choice of the environment satisfies the assumptions in this state (when not,
+  // the run cannot go on: no tick follows). Cached by the values the assumptions read.
+  bool satisfiable();
+  // The monitors' reads, after the tick: resolves what the properties read, in a fixed order.
+  void resolve_monitor_reads();
+  // Leaves the tick: nothing pending, every environment variable back at its placeholder value.
+  void end_tick();
+
+  // The variables (indices into Model::vars) chosen in this tick, in order.
+  const std::vector<std::size_t>& chosen() const { return chosen_; }
+
+  void resolve(runtime::SlotId slot) override;
+
+  // Whether the variable's value may still be read once the tick has chosen it: false for a
+  // variable only one place of the tree reads (StateVar::read_once) and that neither a monitor
+  // nor an assumption reads. Such a value is not part of a mid-tick state.
+  bool live(std::size_t var) const { return live_[var]; }
+
+ private:
+  struct Constraint {
+    std::shared_ptr<monitor::CompiledExpression> expr;
+    std::vector<std::size_t> vars;  // Model::vars it reads
+    bool first_only = false;        // world.json's initial
+  };
+  bool active(const Constraint& c) const { return first_ || !c.first_only; }
+  // Whether the constraints connected to `seeds` through unassigned variables can all hold.
+  bool component_satisfiable(std::vector<std::size_t> seeds);
+  bool holds(Constraint& c);
+
+  Model& m_;
+  std::vector<Constraint> constraints_;
+  std::vector<std::vector<std::size_t>> constraints_of_;  // per variable
+  std::vector<std::vector<monitor::Val>> choices_;        // per variable: its values as read
+  std::vector<std::size_t> env_;                          // relevant environment variables
+  std::vector<std::size_t> var_of_slot_;
+  std::vector<std::size_t> monitor_reads_;
+  std::vector<char> assigned_;
+  std::vector<char> live_;
+  std::vector<monitor::Val> frame_;
+  std::vector<std::size_t> chosen_;
+  bool first_ = false;
+  std::unordered_map<std::string, bool> cache_;
+};
+
+}  // namespace uabt::prove

@@ -1,0 +1,326 @@
+// The explicit engine's on-demand environment (DESIGN §10.1): values chosen when first read,
+// numeric variables branched over the cells their atoms draw, and proofs that cannot be vacuous.
+#include <nlohmann/json.hpp>
+
+#include "fretish/parse.hpp"
+#include "prove/cells.hpp"
+#include "prove_support.hpp"
+#include "runtime/script/program.hpp"
+
+namespace uabt::testing {
+namespace {
+
+using prove::Verdict;
+using runtime::ScriptValue;
+using verify::detail::Fraction;
+
+constexpr auto kReactive = compile::SelectionStyle::reactive;
+
+fretish::Variable variable(fretish::VarType type, std::string lower, std::string upper) {
+  fretish::Variable v;
+  v.name = "x";
+  v.type = type;
+  v.lower = std::move(lower);
+  v.upper = std::move(upper);
+  return v;
+}
+
+std::vector<std::string> texts(const std::vector<ScriptValue>& values) {
+  std::vector<std::string> out;
+  for (const auto& v : values) out.push_back(v.to_string());
+  return out;
+}
+
+TEST(Cells, ARealIsCutAtEveryBreakpointWithRoundValuesInside) {
+  const auto values =
+      prove::cell_values(variable(fretish::VarType::real, "0", "30"), {Fraction(10), Fraction(15)});
+  // Points 0, 10, 15, 30 and one value inside each open interval, an integer near its middle.
+  EXPECT_EQ(texts(values),
+            (std::vector<std::string>{"0.0", "5.0", "10.0", "12.0", "15.0", "22.0", "30.0"}));
+}
+
+TEST(Cells, AnIntervalWithoutAnIntegerGetsItsMiddle) {
+  const auto values = prove::cell_values(variable(fretish::VarType::real, "0.1", "0.2"), {});
+  EXPECT_EQ(texts(values), (std::vector<std::string>{"0.1", "0.15", "0.2"}));
+}
+
+TEST(Cells, IntegerCellsHoldIntegersOnly) {
+  auto v = variable(fretish::VarType::integer, "1", "10");
+  EXPECT_EQ(texts(prove::cell_values(v, {Fraction(5)})),
+            (std::vector<std::string>{"1", "3", "5", "7", "10"}));
+  // A breakpoint between two integers is no cell of its own; (1, 2.5) holds only 2.
+  EXPECT_EQ(texts(prove::cell_values(v, {*Fraction::parse("2.5")})),
+            (std::vector<std::string>{"1", "2", "6", "10"}));
+  // Adjacent breakpoints leave no integer between them.
+  EXPECT_EQ(texts(prove::cell_values(v, {Fraction(4), Fraction(5)})),
+            (std::vector<std::string>{"1", "2", "4", "5", "7", "10"}));
+}
+
+TEST(Cells, AnUnboundedRealGetsAValueBeyondEachEnd) {
+  const auto values = prove::cell_values(variable(fretish::VarType::real, "", ""), {Fraction(0)});
+  EXPECT_EQ(texts(values), (std::vector<std::string>{"-1.0", "0.0", "1.0"}));
+}
+
+fretish::ExprPtr expression(const std::string& text) {
+  std::vector<Finding> findings;
+  auto e = fretish::parse_expression(text, fretish::TextOrigin{"t", 1, 1}, findings);
+  EXPECT_TRUE(e) << text;
+  return e;
+}
+
+TEST(Cuts, LinearAtomsOverOneVariableGiveBreakpoints) {
+  prove::Cuts cuts({"slope", "battery"});
+  cuts.add(*expression("slope < 10 & 2 * slope + 1 >= 31 & !(battery - 40 > 0)"), "here");
+  EXPECT_EQ(cuts.breaks("slope"), (std::set<Fraction>{Fraction(10), Fraction(15)}));
+  EXPECT_EQ(cuts.breaks("battery"), (std::set<Fraction>{Fraction(40)}));
+  EXPECT_EQ(cuts.uncut("slope"), "");
+  EXPECT_EQ(cuts.uncut("battery"), "");
+}
+
+TEST(Cuts, AnAtomOverTwoVariablesOrACopyCannotBeCut) {
+  prove::Cuts cuts({"slope", "battery", "wind"});
+  cuts.add(*expression("slope > battery"), "requirements.fret:3:1");
+  EXPECT_NE(cuts.uncut("slope").find("requirements.fret:3:1"), std::string::npos)
+      << cuts.uncut("slope");
+  EXPECT_NE(cuts.uncut("battery"), "");
+  const auto copy = runtime::script::Program::parse("reserve = wind * 2");
+  cuts.add(copy, "an effect");
+  EXPECT_NE(cuts.uncut("wind").find("reserve = wind * 2"), std::string::npos) << cuts.uncut("wind");
+}
+
+TEST(Cuts, ScriptComparisonsWithConstantsGiveBreakpoints) {
+  prove::Cuts cuts({"wind", "battery"});
+  cuts.add(runtime::script::Program::parse("@wind < 15 && battery > 10 && 'flat' == terrain"),
+           "a guard");
+  EXPECT_EQ(cuts.breaks("wind"), (std::set<Fraction>{Fraction(15)}));
+  EXPECT_EQ(cuts.breaks("battery"), (std::set<Fraction>{Fraction(10)}));
+  EXPECT_EQ(cuts.uncut("wind"), "");
+}
+
+// planetary_landing with a world and guarantees: a real (wind), an integer (battery) and an
+// enum (terrain), all environment variables that only meet constants.
+std::map<std::string, std::string> landing_with_guarantees() {
+  auto files = mission_files("planetary_landing");
+  files["requirements.fret"] +=
+      "HoverOnlyInWind: Mission shall always satisfy landing.selected = hover_and_wait -> wind "
+      ">= 15\n"
+      "NeverHover: Mission shall always satisfy landing.selected != hover_and_wait\n"
+      "LowTouchdown: Mission shall always satisfy landing.selected = direct_touchdown -> battery "
+      "<= 10\n";
+  files["world.json"] =
+      R"({"actions": {"JettisonHeatShield": {"ticks": 1, "results": ["success"]},
+                      "DeployParachute": {"ticks": 1, "results": ["success"]},
+                      "ClassifyTerrain": {"ticks": 1, "results": ["success"]}}})";
+  return files;
+}
+
+TEST(OnDemand, RealsAreProvedByTheExplicitEngine) {
+  TempMission m(landing_with_guarantees());
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  // Reactive: the guards are re-checked every tick (in the sequence style a started hover runs
+  // on after the wind drops, and HoverOnlyInWind is violated).
+  const prove::Result r = prove_dir(m.dir(), explicit_engine, kReactive);
+  EXPECT_EQ(r.engine, "explicit");
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(answer(r, "HoverOnlyInWind").verdict, Verdict::proved);
+  EXPECT_EQ(answer(r, "LowTouchdown").verdict, Verdict::proved);
+  const prove::Answer& never = answer(r, "NeverHover");
+  ASSERT_EQ(never.verdict, Verdict::violated);
+  ASSERT_TRUE(never.counterexample);
+  // The counterexample picks a value inside each cell, written as the domain writes numbers.
+  const auto scenario = nlohmann::json::parse(never.counterexample->scenario);
+  const double wind = scenario["initial"]["wind"].get<double>();
+  const std::int64_t battery = scenario["initial"]["battery"].get<std::int64_t>();
+  EXPECT_GE(wind, 15.0);
+  EXPECT_GT(battery, 10);
+  bool shown = false;
+  for (const auto& [name, value] : never.counterexample->rows.back().values)
+    shown = shown || name == "landing.selected";
+  EXPECT_TRUE(shown);
+  // auto takes the explicit engine for such a world.
+  EXPECT_EQ(prove_dir(m.dir(), {}, kReactive).engine, "explicit");
+}
+
+TEST(OnDemand, TheSymbolicEngineAgreesOnReals) {
+  TempMission m(landing_with_guarantees());
+  prove::Options explicit_engine, symbolic_engine;
+  explicit_engine.engine = "explicit";
+  symbolic_engine.engine = "symbolic";
+  for (const auto style : {compile::SelectionStyle::sequence, kReactive}) {
+    const prove::Result e = prove_dir(m.dir(), explicit_engine, style);
+    const prove::Result s = prove_dir(m.dir(), symbolic_engine, style);
+    ASSERT_EQ(e.answers.size(), s.answers.size());
+    for (std::size_t i = 0; i < e.answers.size(); ++i) {
+      EXPECT_EQ(e.answers[i].verdict, s.answers[i].verdict) << e.answers[i].requirement;
+      if (e.answers[i].verdict == Verdict::violated) {
+        EXPECT_EQ(e.answers[i].depth, s.answers[i].depth) << e.answers[i].requirement;
+      }
+    }
+  }
+}
+
+TEST(OnDemand, AnAtomRelatingTwoRealsGoesToTheSymbolicEngineAndSaysWhy) {
+  auto files = landing_with_guarantees();
+  files["domain.fret"] += "real gust in [0, 40]\n";
+  files["requirements.fret"] += "Gusty: Mission shall always satisfy gust >= wind | gust < wind\n";
+  TempMission m(files);
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  try {
+    prove_dir(m.dir(), explicit_engine);
+    ADD_FAILURE() << "the explicit engine cut an atom over two reals";
+  } catch (const prove::ProveError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("cannot cut real"), std::string::npos) << why;
+    EXPECT_NE(why.find("requirements.fret:13:"), std::string::npos) << why;
+  }
+}
+
+// A pre-flight checklist whose N sensor flags the environment may flip before every tick: the
+// tick reads them in order and stops at the first that fails, so the search branches N + 1
+// ways per tick, never 2^N.
+std::map<std::string, std::string> flags_mission(int n) {
+  std::string domain = "boolean";
+  std::string checks;
+  for (int i = 1; i <= n; ++i) {
+    domain += std::string(i == 1 ? " " : ", ") + "Ok" + std::to_string(i);
+    checks += "<Fallback><Ok" + std::to_string(i) + "/><Repair name=\"repair" + std::to_string(i) +
+              "\" item=\"" + std::to_string(i) + "\"/></Fallback>\n";
+  }
+  std::map<std::string, std::string> files;
+  files["domain.fret"] = domain + "\n";
+  files["mission.xml"] =
+      mission_with("<KeepRunningUntilFailure><ForceSuccess><Sequence>\n" + checks +
+                   "<Adaptable ID=\"go\"/>\n</Sequence></ForceSuccess></KeepRunningUntilFailure>");
+  files["alternatives/go/launch.xml"] = alternative_tree("launch", "<Launch/>");
+  files["requirements.fret"] =
+      "Go: In go Mission shall satisfy selected_alt = launch\n"
+      "CheckedLaunch: Mission shall always satisfy Launch.running -> Ok1\n"
+      "RepairOnlyBroken: Mission shall always satisfy repair1.running -> !Ok1\n";
+  // Repair 1 may take three ticks, so it runs on in its second tick without re-reading Ok1.
+  std::string actions = R"("Launch": {"ticks": 1, "results": ["success"]})";
+  for (int i = 1; i <= n; ++i)
+    actions += ", \"Repair(item=" + std::to_string(i) + ")\": {\"ticks\": [1, " +
+               (i == 1 ? "3" : "2") + "], \"results\": [\"success\"]}";
+  files["world.json"] = "{\"actions\": {" + actions + "}}";
+  return files;
+}
+
+TEST(OnDemand, FreeFlagsBranchOnlyWhereTheTickReadsThem) {
+  TempMission m(flags_mission(40));
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  const prove::Result r = prove_dir(m.dir(), explicit_engine);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(answer(r, "CheckedLaunch").verdict, Verdict::proved);
+  // Repair1 may run on for a second tick after the environment fixed the flag.
+  const prove::Answer& repair = answer(r, "RepairOnlyBroken");
+  ASSERT_EQ(repair.verdict, Verdict::violated);
+  EXPECT_EQ(repair.depth, 2u);
+  // A state is the repair in progress (none, one of 40, or repair 1 in its second tick) and the
+  // monitors' words, never the flags: a few per sensor, not 2^40.
+  EXPECT_LE(r.states, 2u * (40u + 2u));
+  EXPECT_LT(r.transitions, 3u * 40u * 40u);
+}
+
+TEST(OnDemand, FreeFlagsAgreeWithTheSymbolicEngine) {
+  TempMission m(flags_mission(3));
+  prove::Options explicit_engine, symbolic_engine;
+  explicit_engine.engine = "explicit";
+  symbolic_engine.engine = "symbolic";
+  const prove::Result e = prove_dir(m.dir(), explicit_engine);
+  const prove::Result s = prove_dir(m.dir(), symbolic_engine);
+  ASSERT_EQ(e.answers.size(), s.answers.size());
+  for (std::size_t i = 0; i < e.answers.size(); ++i) {
+    EXPECT_EQ(e.answers[i].verdict, s.answers[i].verdict) << e.answers[i].requirement;
+    EXPECT_EQ(e.answers[i].depth,
+              s.answers[i].verdict == Verdict::violated ? s.answers[i].depth : e.answers[i].depth);
+  }
+}
+
+// --- Vacuity -------------------------------------------------------------------------------
+
+std::map<std::string, std::string> drilling_with(const std::string& world,
+                                                 const std::string& extra_domain = "") {
+  auto files = mission_files("sample_drilling");
+  files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+  files["world.json"] = world;
+  files["domain.fret"] += extra_domain;
+  return files;
+}
+
+const char* kDrillingActions =
+    R"("actions": {"Drill": {"ticks": 1, "results": ["success"]},
+                   "CoolDown": {"ticks": 1, "results": ["success"], "on_success": "IsBitCool = true"}})";
+
+TEST(Vacuity, AnInitialConditionNoStateSatisfiesIsAnErrorAtTheExpression) {
+  TempMission m(drilling_with(std::string(R"({"initial": "depth > 20", )") + kDrillingActions + "}",
+                              "integer depth in [0, 10]\n"));
+  const prove::Result r = prove_dir(m.dir());
+  ASSERT_TRUE(r.vacuity);
+  EXPECT_NE(r.vacuity->message.find("`depth > 20`"), std::string::npos) << r.vacuity->message;
+  EXPECT_EQ(r.vacuity->location.file, "world.json");
+  EXPECT_EQ(r.vacuity->location.line, 1);
+  EXPECT_EQ(r.vacuity->location.column, 14);
+  for (const auto& a : r.answers) EXPECT_EQ(a.verdict, Verdict::vacuous) << a.requirement;
+  EXPECT_FALSE(r.passed());
+  const auto findings = prove::findings_of(r);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].check, "prove-vacuous");
+  EXPECT_EQ(findings[0].severity, Severity::error);
+}
+
+TEST(Vacuity, AnAssumptionTheMissionBreaksIsADeadlock) {
+  // The bit starts hot and the assumption says it stays hot, but CoolDown cools it: after the
+  // tick that cools it, no state satisfies the assumption.
+  TempMission m(drilling_with(
+      R"({"initial": "!IsBitCool", "actions": {"Drill": {"ticks": 2, "results": ["success"]},
+          "CoolDown": {"ticks": 1, "results": ["success"], "on_success": "IsBitCool = true"}}})",
+      "assume hot: !IsBitCool\n"));
+  const prove::Result r = prove_dir(m.dir());
+  ASSERT_TRUE(r.vacuity);
+  EXPECT_NE(r.vacuity->message.find("deadlock"), std::string::npos) << r.vacuity->message;
+  EXPECT_NE(r.vacuity->message.find("hot"), std::string::npos) << r.vacuity->message;
+  EXPECT_EQ(r.vacuity->location.file, "domain.fret");
+  EXPECT_FALSE(r.passed());
+}
+
+TEST(Vacuity, ATriggerThatNeverHoldsIsProvedWithAWarning) {
+  // The bit starts cool and nothing heats it: the trigger never holds.
+  auto files = drilling_with(std::string(R"({"initial": "IsBitCool", )") + kDrillingActions + "}");
+  files["requirements.fret"] +=
+      "CoolsDown: Mission shall always satisfy !IsBitCool -> CoolDown.running\n"
+      "CoolsSoon: upon !IsBitCool Mission shall within 2 ticks satisfy IsBitCool\n";
+  TempMission m(files);
+  const prove::Result r = prove_dir(m.dir());
+  EXPECT_FALSE(r.vacuity);
+  const prove::Answer& soon = answer(r, "CoolsSoon");
+  ASSERT_EQ(soon.verdict, Verdict::proved);
+  EXPECT_TRUE(soon.has_trigger);
+  EXPECT_EQ(soon.first_trigger, 0u);
+  bool warned = false;
+  for (const auto& f : prove::findings_of(r))
+    if (f.check == "prove-trigger-unreachable") {
+      warned = true;
+      EXPECT_EQ(f.requirements, std::vector<std::string>{"CoolsSoon"});
+      EXPECT_EQ(f.severity, Severity::warning);
+    }
+  EXPECT_TRUE(warned);
+  // A guarantee without mode or condition has no trigger to miss.
+  EXPECT_FALSE(answer(r, "CoolBit").has_trigger);
+}
+
+TEST(Vacuity, AReachableTriggerSaysWhenItFirstHolds) {
+  const prove::Result r =
+      prove_dir(mission_dir("msl_curiosity"), {}, compile::SelectionStyle::reactive);
+  EXPECT_FALSE(r.vacuity);
+  const prove::Answer& hold = answer(r, "HoldOnUnknown");
+  ASSERT_EQ(hold.verdict, Verdict::proved);
+  EXPECT_TRUE(hold.has_trigger);
+  EXPECT_EQ(hold.first_trigger, 1u);
+  for (const auto& f : prove::findings_of(r)) EXPECT_NE(f.check, "prove-trigger-unreachable");
+}
+
+}  // namespace
+}  // namespace uabt::testing
