@@ -2,6 +2,7 @@
 
 #include "prove/environment.hpp"
 
+#include <cstring>
 #include <deque>
 #include <functional>
 #include <map>
@@ -76,13 +77,33 @@ Product initial_product(const Model& m) {
   return p;
 }
 
-std::string key_of(const Node& n, bool completed) {
+// The state after a tick as bytes: the engine's, the actions' progress, the monitors' words.
+std::string key_of(const runtime::Engine& engine, const std::vector<std::int64_t>& elapsed,
+                   const std::vector<std::uint64_t>& monitors, bool completed) {
   std::string key;
-  n.engine.append_key(key);
-  for (std::int64_t e : n.elapsed) key.append(reinterpret_cast<const char*>(&e), sizeof e);
-  for (std::uint64_t w : n.monitors) key.append(reinterpret_cast<const char*>(&w), sizeof w);
+  EngineState::append_key(engine, key);
+  for (std::int64_t e : elapsed) key.append(reinterpret_cast<const char*>(&e), sizeof e);
+  for (std::uint64_t w : monitors) key.append(reinterpret_cast<const char*>(&w), sizeof w);
   key += static_cast<char>(completed);
   return key;
+}
+
+// A 64-bit hash of its own (word by word, FNV-style with a final avalanche), to pair with
+// std::hash so that two different mid-tick states practically never share both.
+std::uint64_t mix64(const std::string& bytes) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ull ^ bytes.size();
+  std::size_t i = 0;
+  for (; i + 8 <= bytes.size(); i += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, bytes.data() + i, 8);
+    h = (h ^ w) * 0x100000001b3ull;
+    h ^= h >> 29;
+  }
+  for (; i < bytes.size(); ++i) h = (h ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ull;
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdull;
+  h ^= h >> 33;
+  return h;
 }
 
 bool completed(NodeStatus s) {
@@ -110,10 +131,14 @@ class Search {
     // once, leave the same state): a choice point reached again in the same mid-tick state
     // has nothing new below it.
     m_.choice->chooser.seen = [this](std::uint32_t site) { return seen_mid_tick(site); };
+    m_.observables->track_open(true);
     struct Unset {
-      Chooser& c;
-      ~Unset() { c.seen = nullptr; }
-    } unset{m_.choice->chooser};
+      Model& m;
+      ~Unset() {
+        m.choice->chooser.seen = nullptr;
+        m.observables->track_open(false);
+      }
+    } unset{m_};
     expand(base_, UINT32_MAX, true);
     std::uint64_t depth = 1;
     while (!frontier_.empty() && !all_violated() && !result_.vacuous) {
@@ -148,28 +173,34 @@ class Search {
     // Building the key costs a pass over the engine's state: where choices never meet again
     // (each path of the tick ends in a state of its own), stop looking after a while.
     if (!memo_on_) return false;
-    if (++memo_checks_ == kMemoTrial && memo_hits_ * 16 < memo_checks_) memo_on_ = false;
+    if (++memo_checks_ == kMemoTrial && memo_hits_ * 16 < memo_checks_) {
+      memo_on_ = false;
+      m_.observables->track_open(false);
+    }
     std::string& key = mid_key_;
     key.clear();
-    EngineState state = EngineState::save(*m_.engine);
-    const runtime::Blackboard& bb = m_.engine->blackboard();
+    runtime::Blackboard& bb = m_.engine->blackboard();
+    // A value chosen and read where nothing can read it again no longer matters: it is left
+    // out (put back to its placeholder while the key is taken).
+    hidden_.clear();
     for (std::size_t i = 0; i < m_.vars.size(); ++i) {
       const StateVar& v = m_.vars[i];
       if (!v.env || !v.relevant) continue;
       key += static_cast<char>(bb.pending(v.slot));
-      // A value chosen and read where nothing can read it again no longer matters.
-      if (!m_.environment->live(i)) state.values[v.slot] = v.values.front();
+      if (!m_.environment->live(i) && !bb.pending(v.slot)) {
+        hidden_.emplace_back(v.slot, bb.value(v.slot));
+        bb.value(v.slot) = v.values.front();
+      }
     }
-    state.append_key(key);
+    EngineState::append_key(*m_.engine, key);
+    for (auto& [slot, value] : hidden_) bb.value(slot) = std::move(value);
     for (std::int64_t e : m_.choice->elapsed())
       key.append(reinterpret_cast<const char*>(&e), sizeof e);
     m_.observables->append_tick_key(key);
     for (std::uint64_t w : *mid_monitors_) key.append(reinterpret_cast<const char*>(&w), sizeof w);
     key.append(reinterpret_cast<const char*>(&site), sizeof site);
     // Two independent 64-bit hashes: a collision would wrongly skip choices.
-    std::uint64_t fnv = 1469598103934665603ull;
-    for (unsigned char c : key) fnv = (fnv ^ c) * 1099511628211ull;
-    const std::pair<std::uint64_t, std::uint64_t> h{std::hash<std::string>{}(key), fnv};
+    const std::pair<std::uint64_t, std::uint64_t> h{std::hash<std::string>{}(key), mix64(key)};
     const bool seen = !mid_tick_.insert(h).second;
     memo_hits_ += seen;
     return seen;
@@ -342,10 +373,10 @@ class Search {
     // The environment's values are chosen afresh in every tick: once the monitors have read
     // them they do not matter, and states that differ only in them are one state.
     m_.environment->end_tick();
+    std::string key = key_of(*m_.engine, m_.choice->elapsed(), next.monitors, done);
+    if (!seen_.insert(std::move(key)).second) return;
     next.engine = EngineState::save(*m_.engine);
     next.elapsed = m_.choice->elapsed();
-    std::string key = key_of(next, done);
-    if (!seen_.insert(std::move(key)).second) return;
     next.parent = from_index;
     next.step = std::move(step);
     nodes_.push_back(std::move(next));
@@ -368,6 +399,7 @@ class Search {
   std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, PairHash> mid_tick_;
   const std::vector<std::uint64_t>* mid_monitors_ = nullptr;
   std::string mid_key_;
+  std::vector<std::pair<runtime::SlotId, runtime::ScriptValue>> hidden_;
   std::vector<std::uint32_t> frontier_;
   std::vector<monitor::Val> frame_;
   std::vector<char> scratch_;

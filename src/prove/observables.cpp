@@ -128,12 +128,17 @@ void Observables::on_node_ticked(NodeId node, NodeStatus result) {
   if (node >= last_.size()) last_.resize(node + 1, NodeStatus::idle);
   last_[node] = result;
   touched_.push_back(node);
-  std::erase_if(open_, [&](NodeId child) { return engine_.info(child).parent == node; });
-  if (std::find(open_.begin(), open_.end(), node) == open_.end()) open_.push_back(node);
   for (std::size_t i = 0; i < selected_.size(); ++i)
     if (node < selected_[i].alternative_of_call.size() &&
         selected_[i].alternative_of_call[node] >= 0)
       last_alternative_[i] = selected_[i].alternative_of_call[node];
+  if (!track_open_) return;
+  if (parent_.size() != engine_.node_count()) {
+    parent_.resize(engine_.node_count());
+    for (NodeId n = 0; n < parent_.size(); ++n) parent_[n] = engine_.info(n).parent;
+  }
+  std::erase_if(open_, [&](NodeId child) { return parent_[child] == node; });
+  if (std::find(open_.begin(), open_.end(), node) == open_.end()) open_.push_back(node);
 }
 
 void Observables::append_tick_key(std::string& out) const {

@@ -45,6 +45,8 @@ class Observables : public runtime::Observer {
   // returned, and the alternatives selected. With the engine's state it decides how the rest
   // of the tick goes and what the monitors see (a model checker's mid-tick state).
   void append_tick_key(std::string& out) const;
+  // Whether to keep what append_tick_key needs (off: nobody asks, and it costs per node tick).
+  void track_open(bool on) { track_open_ = on; }
 
   static monitor::Val value_of(const runtime::ScriptValue& v, monitor::Symbols& symbols);
 
@@ -77,7 +79,9 @@ class Observables : public runtime::Observer {
   std::vector<ModeObs> modes_;
   std::vector<runtime::NodeStatus> last_;  // per node, this tick (idle: not ticked)
   std::vector<runtime::NodeId> touched_;
-  std::vector<runtime::NodeId> open_;      // ticked, and their parent has not returned since
+  std::vector<runtime::NodeId> open_;    // ticked, and their parent has not returned since
+  std::vector<runtime::NodeId> parent_;  // per node
+  bool track_open_ = false;
   std::vector<runtime::NodeId> observed_;  // nodes whose returns a property reads
   std::vector<int> last_alternative_;      // per SelectedObs: symbol, -1 for none
 };

@@ -28,6 +28,8 @@ struct EngineState {
   // The state as bytes, the tick number left out (two states that differ only in when they
   // were reached behave alike).
   void append_key(std::string& out) const;
+  // The same bytes as save(engine).append_key(out), without the copy.
+  static void append_key(const Engine& engine, std::string& out);
 };
 
 }  // namespace uabt::runtime
