@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fretish/parse.hpp"
+#include "monitor/monitor.hpp"
 #include "prove/cells.hpp"
 #include "prove_support.hpp"
 #include "runtime/script/program.hpp"
@@ -95,6 +96,19 @@ TEST(Cuts, ScriptComparisonsWithConstantsGiveBreakpoints) {
   EXPECT_EQ(cuts.breaks("wind"), (std::set<Fraction>{Fraction(15)}));
   EXPECT_EQ(cuts.breaks("battery"), (std::set<Fraction>{Fraction(10)}));
   EXPECT_EQ(cuts.uncut("wind"), "");
+}
+
+TEST(Numbers, PrintAsPeopleWriteThem) {
+  // What counterexample tables, the HTML timeline and run's violation lines show.
+  monitor::Symbols symbols;
+  auto text = [&](double x) { return monitor::value_text(monitor::Val::of_number(x), symbols); };
+  EXPECT_EQ(text(50), "50");
+  EXPECT_EQ(text(10), "10");
+  EXPECT_EQ(text(9.5), "9.5");
+  EXPECT_EQ(text(0.1), "0.1");
+  EXPECT_EQ(text(-3), "-3");
+  EXPECT_EQ(text(12.5), "12.5");
+  EXPECT_EQ(text(1e22), "1e+22");
 }
 
 // planetary_landing with a world and guarantees: a real (wind), an integer (battery) and an
