@@ -148,13 +148,13 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
                                   "symbolic engine unrolls it");
     }
     if (bmc.check() == z3::unsat) {
-      // No run lasts k ticks: every guarantee still open holds on every run.
-      for (std::size_t p : open) {
-        out.proved[p] = true;
-        out.proved_k[p] = k - 1;
-      }
+      // No run lasts k ticks, yet tick k - 1 left one going (else the search would have
+      // stopped there): that run is stuck, and a proof would be vacuous.
+      if (k == 1)
+        out.no_first_tick = true;
+      else
+        out.deadlock_after = k - 1;
       out.depth = k - 1;
-      open.clear();
       break;
     }
     std::vector<std::size_t> still;

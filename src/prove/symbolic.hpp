@@ -25,6 +25,12 @@ struct SymbolicSearch {
   std::vector<bool> by_pdr;  // per property: proved by IC3/PDR rather than k-induction
   std::uint64_t depth = 0;   // BMC depth checked (no violation of the open guarantees below it)
   std::uint64_t induction_k = 0;  // deepest induction tried
+  // No first tick satisfies world.json's initial and the assumptions: every "proof" would be
+  // vacuous.
+  bool no_first_tick = false;
+  // A run still going after this tick cannot take another (a deadlock: the assumptions leave
+  // the environment no value); 0 when none.
+  std::uint64_t deadlock_after = 0;
 };
 
 // BMC with increasing depth (a violation is found at its shortest tick) and k-induction with

@@ -285,6 +285,18 @@ TEST(Vacuity, AnInitialConditionNoStateSatisfiesIsAnErrorAtTheExpression) {
   EXPECT_EQ(findings[0].severity, Severity::error);
 }
 
+TEST(Vacuity, TheSymbolicEngineRefusesAnEmptyFirstTickToo) {
+  TempMission m(drilling_with(std::string(R"({"initial": "depth > 20", )") + kDrillingActions + "}",
+                              "integer depth in [0, 10]\n"));
+  prove::Options symbolic_engine;
+  symbolic_engine.engine = "symbolic";
+  const prove::Result r = prove_dir(m.dir(), symbolic_engine);
+  ASSERT_TRUE(r.vacuity);
+  EXPECT_EQ(r.vacuity->location.file, "world.json");
+  for (const auto& a : r.answers) EXPECT_EQ(a.verdict, Verdict::vacuous) << a.requirement;
+  EXPECT_FALSE(r.passed());
+}
+
 TEST(Vacuity, AnAssumptionTheMissionBreaksIsADeadlock) {
   // The bit starts hot and the assumption says it stays hot, but CoolDown cools it: after the
   // tick that cools it, no state satisfies the assumption.
@@ -292,12 +304,17 @@ TEST(Vacuity, AnAssumptionTheMissionBreaksIsADeadlock) {
       R"({"initial": "!IsBitCool", "actions": {"Drill": {"ticks": 2, "results": ["success"]},
           "CoolDown": {"ticks": 1, "results": ["success"], "on_success": "IsBitCool = true"}}})",
       "assume hot: !IsBitCool\n"));
-  const prove::Result r = prove_dir(m.dir());
-  ASSERT_TRUE(r.vacuity);
-  EXPECT_NE(r.vacuity->message.find("deadlock"), std::string::npos) << r.vacuity->message;
-  EXPECT_NE(r.vacuity->message.find("hot"), std::string::npos) << r.vacuity->message;
-  EXPECT_EQ(r.vacuity->location.file, "domain.fret");
-  EXPECT_FALSE(r.passed());
+  for (const char* engine : {"explicit", "symbolic"}) {
+    prove::Options options;
+    options.engine = engine;
+    const prove::Result r = prove_dir(m.dir(), options);
+    ASSERT_TRUE(r.vacuity) << engine;
+    EXPECT_NE(r.vacuity->message.find("deadlock"), std::string::npos) << r.vacuity->message;
+    EXPECT_NE(r.vacuity->message.find("after tick 1"), std::string::npos) << r.vacuity->message;
+    EXPECT_NE(r.vacuity->message.find("hot"), std::string::npos) << r.vacuity->message;
+    EXPECT_EQ(r.vacuity->location.file, "domain.fret");
+    EXPECT_FALSE(r.passed());
+  }
 }
 
 TEST(Vacuity, ATriggerThatNeverHoldsIsProvedWithAWarning) {
