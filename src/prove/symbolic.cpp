@@ -9,7 +9,7 @@ namespace {
 // Pins a state to fresh constants, so that terms stay one tick deep.
 SymState pin(z3::solver& s, SymbolicTick& tick, const SymState& value, const std::string& prefix) {
   SymState fresh = tick.state(prefix);
-  s.add(tick.same(fresh, value).simplify());
+  s.add(tick.same(fresh, value));
   return fresh;
 }
 
@@ -60,6 +60,10 @@ std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Mode
     return inv(args);
   };
   const TickInputs first_in = tick.inputs("pdr.first."), in = tick.inputs("pdr.in.");
+  // Named terms: the transition stays linear in the tree (measured: Spacer 18x faster on a
+  // binary tree of 24 nodes than over the closed terms).
+  TickEncoding start = tick.encode(tick.fresh(), first_in, true, true);
+  TickEncoding step = tick.encode(cur, in, false, true);
   auto quantified = [&](const TickInputs& x, bool with_state) {
     z3::expr_vector vars(ctx);
     if (with_state)
@@ -67,10 +71,9 @@ std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Mode
     for (const auto& v : x.values) vars.push_back(v);
     for (const auto& per_leaf : x.outcomes)
       for (const auto& o : per_leaf) vars.push_back(o);
+    for (const auto& l : with_state ? step.locals : start.locals) vars.push_back(l);
     return vars;
   };
-  TickEncoding start = tick.encode(tick.fresh(), first_in, true);
-  TickEncoding step = tick.encode(cur, in, false);
   for (z3::expr& f : start.fails) f = f || start.overflow;
   for (z3::expr& f : step.fails) f = f || step.overflow;
   for (std::size_t p : open) {
@@ -121,32 +124,39 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   for (std::size_t p = 0; p < count; ++p)
     if (!m.properties[p].assumption && tick.table(p)) open.push_back(p);
 
-  z3::solver bmc(ctx), ind(ctx);
+  // Z3's SMT core, incremental; each question is asked under assumption literals rather than
+  // in a push/pop scope, so what the solver learns stays for the next question and depth.
+  z3::solver bmc(ctx, z3::solver::simple()), ind(ctx, z3::solver::simple());
+  unsigned literals = 0;
+  auto literal = [&](z3::solver& s, const z3::expr& meaning) {
+    const z3::expr l = ctx.bool_const(("q!" + std::to_string(literals++)).c_str());
+    s.add(l == meaning);
+    return l;
+  };
+  auto holds_under = [&](z3::solver& s, std::initializer_list<z3::expr> assumptions) {
+    z3::expr_vector a(ctx);
+    for (const z3::expr& e : assumptions) a.push_back(e);
+    return s.check(a) == z3::sat;
+  };
   std::vector<SymState> path{tick.fresh()};
   std::vector<TickInputs> inputs;
   std::vector<std::vector<z3::expr>> leaf_ticks;  // per tick, per leaf
   std::vector<SymState> ind_states{tick.state("i0.")};
-  std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per property
+  std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per property: a literal
   ind.add(tick.domain(ind_states[0]) && ind_states[0].started[0]);
 
   for (std::uint64_t k = 1; k <= bound && !open.empty(); ++k) {
     // Base case: every run of k ticks.
     const std::string t = "t" + std::to_string(k) + ".";
     inputs.push_back(tick.inputs(t));
-    TickEncoding enc = tick.encode(path.back(), inputs.back(), k == 1);
+    TickEncoding enc = tick.encode(path.back(), inputs.back(), k == 1, true);
     leaf_ticks.push_back(enc.leaf_ticks);
-    bmc.add(enc.valid.simplify());
+    bmc.add(enc.valid);
     path.push_back(pin(bmc, tick, enc.next, "s" + std::to_string(k) + "."));
-    if (!enc.overflow.simplify().is_false()) {
-      bmc.push();
-      bmc.add(enc.overflow);
-      const bool deeper = bmc.check() == z3::sat;
-      bmc.pop();
-      if (deeper)
-        throw SymbolicUnsupported("at tick " + std::to_string(k) +
-                                  " the wake-up loop re-ticks the root more often than the "
-                                  "symbolic engine unrolls it");
-    }
+    if (!enc.overflow.simplify().is_false() && holds_under(bmc, {literal(bmc, enc.overflow)}))
+      throw SymbolicUnsupported("at tick " + std::to_string(k) +
+                                " the wake-up loop re-ticks the root more often than the "
+                                "symbolic engine unrolls it");
     if (bmc.check() == z3::unsat) {
       // No run lasts k ticks, yet tick k - 1 left one going (else the search would have
       // stopped there): that run is stuck, and a proof would be vacuous.
@@ -159,9 +169,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     }
     std::vector<std::size_t> still;
     for (std::size_t p : open) {
-      bmc.push();
-      bmc.add(enc.fails[p]);
-      if (bmc.check() == z3::sat) {
+      if (holds_under(bmc, {literal(bmc, enc.fails[p])})) {
         const z3::model model = bmc.get_model();
         Finding f;
         f.property = p;
@@ -172,17 +180,12 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
       } else {
         still.push_back(p);
       }
-      bmc.pop();
     }
     open = std::move(still);
     out.depth = k;
     if (open.empty()) break;
     // Every run over by tick k: nothing is left to prove (cheaper than any induction).
-    bmc.push();
-    bmc.add(!path.back().done[0]);
-    const bool goes_on = bmc.check() == z3::sat;
-    bmc.pop();
-    if (!goes_on) {
+    if (!holds_under(bmc, {literal(bmc, !path.back().done[0])})) {
       for (std::size_t p : open) {
         out.proved[p] = true;
         out.proved_k[p] = k;
@@ -193,24 +196,41 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
 
     // Induction step: k transitions from any state, pairwise distinct sources.
     const std::string u = "i" + std::to_string(k) + ".";
-    TickEncoding step = tick.encode(ind_states.back(), tick.inputs(u + "in."), false);
-    ind.add(step.valid.simplify());
+    TickEncoding step = tick.encode(ind_states.back(), tick.inputs(u + "in."), false, true);
+    ind.add(step.valid);
     ind_states.push_back(pin(ind, tick, step.next, u));
-    for (std::size_t j = 0; j + 1 < ind_states.size() - 1; ++j)
-      ind.add(!tick.same(ind_states[j], ind_states[ind_states.size() - 2]));
     // A proof must also rule out a wake-up loop deeper than the encoding.
-    for (z3::expr& f : step.fails) f = f || step.overflow;
-    ind_fails.push_back(step.fails);
+    std::vector<z3::expr> fails;
+    for (std::size_t p = 0; p < count; ++p)
+      fails.push_back(literal(ind, step.fails[p] || step.overflow));
+    ind_fails.push_back(std::move(fails));
     out.induction_k = k;
     for (std::size_t p : open) {
-      ind.push();
-      for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) ind.add(!ind_fails[j][p]);
-      ind.add(ind_fails.back()[p]);
-      if (ind.check() == z3::unsat) {
-        out.proved[p] = true;
-        out.proved_k[p] = k;
+      z3::expr_vector a(ctx);
+      for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) a.push_back(!ind_fails[j][p]);
+      a.push_back(ind_fails.back()[p]);
+      // The simple-path constraints (sources pairwise distinct), added lazily: only for
+      // the pairs a counterexample to induction repeats. The answer is the one all pairs
+      // give: unsat under some of them is unsat under all, and a model that repeats no
+      // pair satisfies all of them.
+      for (;;) {
+        if (ind.check(a) == z3::unsat) {
+          out.proved[p] = true;
+          out.proved_k[p] = k;
+          break;
+        }
+        const z3::model model = ind.get_model();
+        bool repeated = false;
+        for (std::size_t x = 0; x + 1 < k; ++x)
+          for (std::size_t y = x + 1; y < k; ++y) {
+            const z3::expr same = tick.same(ind_states[x], ind_states[y]);
+            if (model.eval(same, true).is_true()) {
+              ind.add(!same);
+              repeated = true;
+            }
+          }
+        if (!repeated) break;
       }
-      ind.pop();
     }
     std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
     // What k-induction has not proved by now it will rarely prove later: ask IC3/PDR once.

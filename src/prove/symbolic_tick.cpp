@@ -129,7 +129,26 @@ struct SymbolicTick::Impl {
     std::vector<z3::expr> leaf_ticks;  // per leaf, so far in this tick
     const TickInputs* in = nullptr;
     std::vector<z3::expr> constraints;
+    bool naming = false;
+    std::vector<z3::expr> locals;  // the constants name() introduced
   };
+  unsigned names = 0;  // constants name() made so far, for unique names
+
+  // A fresh constant defined as `e`, so that the terms built on it refer to it instead of
+  // repeating it: Z3's preprocessing flattens nested guards, and without names one tick of a
+  // tree of n nodes grew to hundreds of kilobytes.
+  z3::expr name(Exec& x, const z3::expr& e) {
+    if (!x.naming) return e;
+    // Each term named is small (its parts are names), so simplifying it is cheap, and it
+    // folds what a concrete state decides (the first tick).
+    const z3::expr v = e.simplify();
+    if (v.is_numeral() || v.is_true() || v.is_false() || (v.is_app() && v.num_args() == 0))
+      return v;
+    const z3::expr c = ctx.constant(("tick!" + std::to_string(names++)).c_str(), v.get_sort());
+    x.constraints.push_back(c == v);
+    x.locals.push_back(c);
+    return c;
+  }
 
   Impl(Model& model, z3::context& c) : m(model), ctx(c) {}
 
@@ -333,10 +352,12 @@ struct SymbolicTick::Impl {
 
   // --- The tick, node kind by node kind (src/runtime/controls, decorators, leaves).
 
-  z3::expr exec(Exec& x, NodeId id, const z3::expr& g) {
-    const z3::expr s = tick_kind(x, id, g);
+  z3::expr exec(Exec& x, NodeId id, const z3::expr& guard) {
+    const z3::expr g = name(x, guard);
+    const z3::expr s = name(x, tick_kind(x, id, g));
     set(x.cur.status[id], g, s);  // Core::execute_tick (no SKIPPED in this subset)
-    set(x.ret[id], g, s);         // Observables::on_node_ticked
+    x.cur.status[id] = name(x, x.cur.status[id]);
+    set(x.ret[id], g, s);  // Observables::on_node_ticked
     for (std::size_t a = 0; a < alternatives.size(); ++a)
       if (const auto it = alternatives[a].find(id); it != alternatives[a].end())
         set(x.selected[a], g, ctx.int_val(it->second));
@@ -345,8 +366,9 @@ struct SymbolicTick::Impl {
 
   void halt_child(Exec& x, NodeId parent, std::size_t i, const z3::expr& g) {
     const NodeId c = nodes[parent].children[i];
-    halt_node(x, c, g && x.cur.status[c] == kRunning);
+    halt_node(x, c, name(x, g && x.cur.status[c] == kRunning));
     set(x.cur.status[c], g, ctx.int_val(kIdle));
+    x.cur.status[c] = name(x, x.cur.status[c]);
   }
   void reset_children(Exec& x, NodeId parent, const z3::expr& g) {
     for (std::size_t i = 0; i < nodes[parent].children.size(); ++i) halt_child(x, parent, i, g);
@@ -430,20 +452,25 @@ struct SymbolicTick::Impl {
   z3::expr sequence(Exec& x, NodeId id, const z3::expr& g, int go, int stop) {
     const std::size_t count = nodes[id].children.size();
     set(x.cur.status[id], g, ctx.int_val(kRunning));
-    z3::expr looping = ctx.bool_val(true);
+    z3::expr looping = ctx.bool_val(true), stopped = ctx.bool_val(false);
     z3::expr result = ctx.int_val(go);
     for (std::size_t i = 0; i < count; ++i) {
       const z3::expr gi = g && looping && x.cur.counter[id] == static_cast<int>(i);
       const z3::expr s = exec(x, nodes[id].children[i], gi);
-      const z3::expr run = gi && s == kRunning, ended = gi && s == stop, next = gi && s == go;
-      result = z3::ite(run, ctx.int_val(kRunning), z3::ite(ended, ctx.int_val(stop), result));
-      reset_children(x, id, ended);
+      const z3::expr run = gi && s == kRunning, ended = name(x, gi && s == stop),
+                     next = gi && s == go;
+      result =
+          name(x, z3::ite(run, ctx.int_val(kRunning), z3::ite(ended, ctx.int_val(stop), result)));
+      stopped = stopped || ended;
       set(x.cur.counter[id], ended, ctx.int_val(0));
       set(x.cur.counter[id], next, ctx.int_val(static_cast<int>(i + 1)));
-      looping = looping && !run && !ended;
+      x.cur.counter[id] = name(x, x.cur.counter[id]);
+      looping = name(x, looping && !run && !ended);
     }
     const z3::expr all = g && looping;
-    reset_children(x, id, all);
+    // A child that ended the sequence stops the loop: no child is ticked after the reset, so
+    // one reset after the loop is the runtime's reset within it.
+    reset_children(x, id, name(x, stopped || all));
     set(x.cur.counter[id], all, ctx.int_val(0));
     return z3::ite(all, ctx.int_val(go), result);
   }
@@ -452,21 +479,26 @@ struct SymbolicTick::Impl {
   z3::expr reactive(Exec& x, NodeId id, const z3::expr& g, int go, int stop) {
     const std::size_t count = nodes[id].children.size();
     set(x.cur.status[id], g, ctx.int_val(kRunning));
-    z3::expr looping = ctx.bool_val(true);
+    z3::expr looping = ctx.bool_val(true), stopped = ctx.bool_val(false);
     z3::expr result = ctx.int_val(go);
+    std::vector<z3::expr> runs;
     for (std::size_t i = 0; i < count; ++i) {
       const z3::expr gi = g && looping;
       const z3::expr s = exec(x, nodes[id].children[i], gi);
-      const z3::expr run = gi && s == kRunning, ended = gi && s == stop;
-      for (std::size_t j = 0; j < count; ++j)
-        if (j != i) halt_child(x, id, j, run);
-      reset_children(x, id, ended);
-      result = z3::ite(run, ctx.int_val(kRunning), z3::ite(ended, ctx.int_val(stop), result));
-      looping = looping && !run && !ended;
+      const z3::expr run = name(x, gi && s == kRunning), ended = name(x, gi && s == stop);
+      runs.push_back(run);
+      stopped = stopped || ended;
+      result =
+          name(x, z3::ite(run, ctx.int_val(kRunning), z3::ite(ended, ctx.int_val(stop), result)));
+      looping = name(x, looping && !run && !ended);
     }
-    const z3::expr all = g && looping;
-    reset_children(x, id, all);
-    return z3::ite(all, ctx.int_val(go), result);
+    // The halts of the loop, after it: a running or ending child stops the loop, so no child
+    // is ticked after them, and each child's subtree is its own.
+    const z3::expr reset = name(x, stopped || (g && looping));
+    z3::expr any_run = ctx.bool_val(false);
+    for (const z3::expr& r : runs) any_run = any_run || r;
+    for (std::size_t j = 0; j < count; ++j) halt_child(x, id, j, reset || (any_run && !runs[j]));
+    return z3::ite(g && looping, ctx.int_val(go), result);
   }
 
   z3::expr if_then_else(Exec& x, NodeId id, const z3::expr& g) {
@@ -792,9 +824,9 @@ z3::expr SymbolicTick::same(const SymState& a, const SymState& b) const {
   return eq;
 }
 
-TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool first) {
+TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool first, bool named) {
   Impl& i = *impl_;
-  Impl::Exec x{s, {}, {}, {}, &in, {}};
+  Impl::Exec x{s, {}, {}, {}, &in, {}, named, {}};
   for (std::size_t n = 0; n < i.nodes.size(); ++n) x.ret.push_back(i.ctx.int_val(kIdle));
   x.leaf_ticks.assign(i.m.choice->leaves().size(), i.ctx.int_val(0));
   for (std::size_t a = 0; a < i.adaptable_names.size(); ++a)
@@ -820,11 +852,15 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
     root = z3::ite(again, i.exec(x, i.root, again), root);
   }
   const z3::expr overflow = i.ctx.bool_val(i.wake_ups > 0) && root == kRunning && x.cur.wake[0];
-  for (const z3::expr& c : x.constraints) valid = valid && c;
+  // One n-ary conjunction: with a chain of thousands of binary ones, deleting the context
+  // took 0.4 s.
+  z3::expr_vector constraints(i.ctx);
+  for (const z3::expr& c : x.constraints) constraints.push_back(c);
+  valid = valid && z3::mk_and(constraints);
   const z3::expr done = root == kSuccess || root == kFailure;
   Impl::set(x.cur.status[i.root], done, i.ctx.int_val(kIdle));  // BT.CPP's resetStatus()
 
-  TickEncoding out{x.cur, root, x.ret, {}, valid, {}, overflow, x.leaf_ticks};
+  TickEncoding out{x.cur, root, x.ret, {}, valid, {}, overflow, x.leaf_ticks, x.locals};
   for (std::size_t p = 0; p < i.m.properties.size(); ++p) {
     const Property& prop = i.m.properties[p];
     const MonitorTable* t = i.tables[p].get();

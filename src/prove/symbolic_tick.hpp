@@ -41,6 +41,8 @@ struct TickEncoding {
   std::vector<z3::expr> fails;   // per property: a guarantee violated at this tick
   z3::expr overflow;             // the wake-up loop wants more re-ticks than the encoding unrolls
   std::vector<z3::expr> leaf_ticks;  // per leaf: how often it was ticked
+  // With named terms: the constants `valid` defines (existential, like the inputs).
+  std::vector<z3::expr> locals;
 };
 
 // One tick of the runtime's engine (Engine::tick on the ChoiceWorld) as a formula, written
@@ -58,7 +60,10 @@ class SymbolicTick {
   z3::expr same(const SymState& a, const SymState& b) const;
   // Every component of a state in one order (constants where state() has them too).
   static std::vector<z3::expr> flatten(const SymState& s);
-  TickEncoding encode(const SymState& s, const TickInputs& in, bool first);
+  // `named`: intermediate terms become constants that `valid` defines, which keeps the formula
+  // linear in the tree for a solver; without it every term is a closed expression over the
+  // state and inputs (what a test evaluates).
+  TickEncoding encode(const SymState& s, const TickInputs& in, bool first, bool named = false);
 
   // The runtime value of variable `var` in a model of the solver.
   runtime::ScriptValue value(const z3::model& m, const z3::expr& e, std::size_t var) const;
