@@ -254,43 +254,12 @@ class Search {
   // Nothing can follow `from`: the first tick has no initial state, or a reachable state has
   // no allowed tick (a deadlock). Either way every "proof" from here on would be vacuous.
   void vacuous(const Node& from, bool first, const Outcomes& outcomes) {
-    Vacuity v;
-    auto assumption_names = [&] {
-      std::string names;
-      for (const auto& a : m_.mission.domain.assumptions)
-        names += (names.empty() ? "" : ", ") + a.name + " (" + a.location.file + ":" +
-                 std::to_string(a.location.line) + ")";
-      return names;
-    };
-    if (outcomes.excluded_by) {
-      const fretish::Requirement& r = *outcomes.excluded_by->requirement;
-      v.location = r.location;
-      v.message = first ? "the Environment requirement '" + r.id + "' rules out every first tick"
-                        : "after tick " + std::to_string(from.tick) +
-                              " of a reachable run, the Environment requirement '" + r.id +
-                              "' rules out every next tick: the run cannot go on (a deadlock)";
-    } else if (first && m_.world.initial && initial_without_it()) {
-      v.location = {m_.world.file, m_.world.initial->range.begin_line,
-                    m_.world.initial->range.begin_column};
-      v.message = "no state of the domain satisfies the initial condition `" +
-                  fretish::to_fretish(*m_.world.initial) + "`" +
-                  (m_.mission.domain.assumptions.empty()
-                       ? std::string()
-                       : " together with the assumptions " + assumption_names());
-    } else if (first) {
-      const auto& a = m_.mission.domain.assumptions;
-      if (!a.empty()) v.location = a.front().location;
-      v.message = "the assumptions " + assumption_names() + " rule out every state of the domain";
-    } else {
-      const auto& a = m_.mission.domain.assumptions;
-      if (!a.empty()) v.location = a.front().location;
-      v.message = "after tick " + std::to_string(from.tick) +
-                  " of a reachable run, no value of the environment satisfies the assumptions " +
-                  assumption_names() +
-                  " in the state the mission is in: the run cannot go on "
-                  "(a deadlock)";
-    }
-    result_.vacuous = std::move(v);
+    const Stuck kind = !first ? Stuck::deadlock
+                       : outcomes.excluded_by == nullptr && m_.world.initial && initial_without_it()
+                           ? Stuck::initial
+                           : Stuck::assumptions;
+    result_.vacuous = vacuity_of(
+        m_, kind, from.tick, outcomes.excluded_by ? outcomes.excluded_by->requirement : nullptr);
   }
 
   // Whether the domain's assumptions alone leave some first state (so the initial condition
@@ -407,6 +376,39 @@ class Search {
 };
 
 }  // namespace
+
+Vacuity vacuity_of(const Model& m, Stuck kind, std::uint64_t tick,
+                   const fretish::Requirement* excluded_by) {
+  std::string names;
+  for (const auto& a : m.mission.domain.assumptions)
+    names += (names.empty() ? "" : ", ") + a.name + " (" + a.location.file + ":" +
+             std::to_string(a.location.line) + ")";
+  Vacuity v;
+  if (!m.mission.domain.assumptions.empty())
+    v.location = m.mission.domain.assumptions.front().location;
+  const std::string stuck = "after tick " + std::to_string(tick) + " of a reachable run, ";
+  const std::string cannot = ": the run cannot go on (a deadlock)";
+  if (excluded_by != nullptr) {
+    v.location = excluded_by->location;
+    v.message =
+        kind == Stuck::deadlock
+            ? stuck + "the Environment requirement '" + excluded_by->id +
+                  "' rules out every next tick" + cannot
+            : "the Environment requirement '" + excluded_by->id + "' rules out every first tick";
+  } else if (kind == Stuck::initial) {
+    v.location = {m.world.file, m.world.initial->range.begin_line,
+                  m.world.initial->range.begin_column};
+    v.message = "no state of the domain satisfies the initial condition `" +
+                fretish::to_fretish(*m.world.initial) + "`" +
+                (names.empty() ? std::string() : " together with the assumptions " + names);
+  } else if (kind == Stuck::assumptions) {
+    v.message = "the assumptions " + names + " rule out every state of the domain";
+  } else {
+    v.message = stuck + "no value of the environment satisfies the assumptions " + names +
+                " in the state the mission is in" + cannot;
+  }
+  return v;
+}
 
 SearchResult explore(Model& model, const Options& options) {
   if (!model.explicit_refusal.empty()) throw ProveError(model.explicit_refusal);

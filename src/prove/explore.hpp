@@ -39,6 +39,13 @@ struct SearchResult {
   std::optional<Vacuity> vacuous;
 };
 
+// Why runs stop before they could show anything (`prove-vacuous`), as both engines report it:
+// no first state (`initial`, or the assumptions alone), or a run stuck after `tick` (by the
+// assumptions, or by the Environment requirement `excluded_by`).
+enum class Stuck { initial, assumptions, deadlock };
+Vacuity vacuity_of(const Model& model, Stuck kind, std::uint64_t tick = 0,
+                   const fretish::Requirement* excluded_by = nullptr);
+
 // Breadth-first search over the model's states (engine state, action progress, property
 // monitors), each stored once by its bytes: the first violation found of each guarantee is
 // one of the shortest.

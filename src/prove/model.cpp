@@ -334,9 +334,9 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
       }
       if (why == unenumerable.end()) continue;  // few enough values to take each one
       if (explicit_refusal.empty())
-        explicit_refusal = "the explicit-state engine cannot cut " +
-                           why->second.substr(0, why->second.find(' ')) + " '" + v.name +
-                           "' into cells: " + uncut;
+        explicit_refusal = std::string("the explicit-state engine cannot cut ") +
+                           (d->type == fretish::VarType::real ? "real" : "integer") + " '" +
+                           v.name + "' into cells: " + uncut;
       continue;
     }
     if (why == unenumerable.end()) continue;

@@ -264,31 +264,10 @@ Result prove_symbolic(Model& model, const Options& options) {
   r.depth = search.depth;
   r.induction_k = search.induction_k;
   r.complete = true;
-  if (search.no_first_tick || search.deadlock_after != 0) {
-    SourceLocation where;
-    std::string names;
-    for (const auto& a : model.mission.domain.assumptions)
-      names += (names.empty() ? "" : ", ") + a.name;
-    if (!model.mission.domain.assumptions.empty())
-      where = model.mission.domain.assumptions.front().location;
-    std::string message;
-    if (search.no_first_tick) {
-      if (model.world.initial)
-        where = {model.world.file, model.world.initial->range.begin_line,
-                 model.world.initial->range.begin_column};
-      message = "no first state satisfies " +
-                std::string(model.world.initial ? "world.json's initial condition `" +
-                                                      fretish::to_fretish(*model.world.initial) +
-                                                      "` and the assumptions"
-                                                : "the assumptions");
-    } else {
-      message = "after tick " + std::to_string(search.deadlock_after) +
-                " of a reachable run, no value of the environment satisfies the assumptions" +
-                (names.empty() ? std::string() : " " + names) +
-                ": the run cannot go on (a deadlock)";
-    }
-    r.vacuity = Vacuity{message + " (symbolic engine)", where};
-  }
+  if (search.no_first_tick)
+    r.vacuity = vacuity_of(model, model.world.initial ? Stuck::initial : Stuck::assumptions);
+  else if (search.deadlock_after != 0)
+    r.vacuity = vacuity_of(model, Stuck::deadlock, search.deadlock_after);
   add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
     if (r.vacuity) {
       a.verdict = Verdict::vacuous;
