@@ -143,26 +143,29 @@ class ScriptAffine {
 }  // namespace
 
 void Cuts::add(const Expr& e, const std::string& where) {
-  walk(e, where);
+  walk(e, where, nullptr);
 }
 
-void Cuts::walk(const Expr& e, const std::string& where) {
+void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom) {
   if (fretish::is_relation(e.kind) && e.args.size() == 2) {
     const FretishAffine affine(numeric_);
     if (const auto b = breakpoint(affine.of(*e.args[0]), affine.of(*e.args[1]))) {
       breaks_[b->first].insert(b->second);
       return;
     }
+    atom = &e;
   }
   if (e.kind == ExprKind::identifier && numeric_.contains(e.text)) {
-    add_uncut(e.text, "`" + fretish::to_fretish(e) +
-                          "` is read outside an atom that compares it "
-                          "with a constant (" +
-                          where + ")");
+    add_uncut(e.text, atom ? "the atom `" + fretish::to_fretish(*atom) + "` (" + where +
+                                 ") does not compare it with a constant"
+                           : "`" + e.text +
+                                 "` is read outside an atom that compares it with a "
+                                 "constant (" +
+                                 where + ")");
     return;
   }
   for (const auto& a : e.args)
-    if (a) walk(*a, where);
+    if (a) walk(*a, where, atom);
 }
 
 void Cuts::add(const script::Program& program, const std::string& where) {

@@ -35,7 +35,8 @@ class Cuts {
   std::string uncut(const std::string& variable) const;
 
  private:
-  void walk(const fretish::Expr& e, const std::string& where);
+  // `atom`: the innermost relation around `e` that could not be cut, for the reason.
+  void walk(const fretish::Expr& e, const std::string& where, const fretish::Expr* atom);
   std::set<std::string, std::less<>> numeric_;
   std::map<std::string, std::set<verify::detail::Fraction>, std::less<>> breaks_;
   std::map<std::string, std::string, std::less<>> uncut_;
