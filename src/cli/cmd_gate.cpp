@@ -6,7 +6,6 @@
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
 #include "gate/uplink.hpp"
-#include "prove/outcome.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
 
@@ -65,21 +64,18 @@ void register_gate(CLI::App& app, int& exit_code) {
     options.verify.timeout_ms = args->timeout_ms;
     options.conform.timeout_ms = args->timeout_ms;
     apply_selection(args->selection, options.compile);
+    // How the reports tell to replay a counterexample: the style given on the command line
+    // (without one, `uabt run` compiles each node in the style the mission declares).
+    options.proof_reporting.counterexample_dir =
+        (std::filesystem::path(args->out) / "counterexamples").generic_string();
+    options.proof_reporting.mission_path =
+        running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
+    if (!args->selection.empty())
+      options.proof_reporting.run_options = "--selection " + args->selection;
+    // A mission with guarantees passes only when each one is proved (DESIGN §10).
     gate::Outcome outcome =
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());
-    // A mission with guarantees passes only when each one is proved (DESIGN §10).
-    const auto scenarios = std::filesystem::path(args->out) / "counterexamples";
-    // How the reports tell to replay a counterexample: the style given on the command line
-    // (without one, `uabt run` compiles each node in the style the mission declares).
-    report::Proofs replay;
-    replay.mission_path =
-        running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
-    if (!args->selection.empty()) replay.run_options = "--selection " + args->selection;
-    if (outcome.passed())
-      prove::add_proofs(outcome, prove::Options{}, scenarios.generic_string(), replay);
-    else
-      prove::add_proofs_not_run(outcome, "the gate failed before its proof step");
     outcome.report.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
     // What conform says about the compiled tree points at its file in the report directory.
     if (!outcome.report.compiled_tree_file.empty())

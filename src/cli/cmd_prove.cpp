@@ -83,7 +83,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     gate::Options gate_options;
     apply_selection(args->selection, gate_options.compile);
-    gate::Outcome outcome = gate::run_gate(std::move(*mission), gate_options, tool_version());
+    gate::Outcome outcome = gate::check_mission(std::move(*mission), gate_options, tool_version());
     if (outcome.compiled_xml.empty()) {
       std::cerr << "uabt: the mission does not compile; nothing to prove\n"
                 << format_text(outcome.report.findings);

@@ -7,7 +7,7 @@
 #include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
-#include "runtime/manager.hpp"
+#include "manager/manager.hpp"
 
 namespace uabt::cli {
 
@@ -97,15 +97,15 @@ void register_run(CLI::App& app, int& exit_code) {
     }
     try {
       runtime::Scenario scenario = runtime::load_scenario(args->scenario);
-      runtime::ManagerOptions options;
+      manager::ManagerOptions options;
       options.max_ticks = args->max_ticks;
       options.trace_nodes = args->trace_level == "nodes";
       options.smart_selection = args->smart_selection;
       apply_selection(args->selection, options.gate.compile);
-      runtime::BehaviorTreeManager manager(args->mission, std::move(scenario), options);
-      for (const auto& [tick, package] : uplinks) manager.add_uplink(tick, package);
-      runtime::ManagerRun run = manager.run();
-      std::cout << runtime::trace_summary(run) << runtime::property_summary(run);
+      manager::BehaviorTreeManager bt_manager(args->mission, std::move(scenario), options);
+      for (const auto& [tick, package] : uplinks) bt_manager.add_uplink(tick, package);
+      manager::ManagerRun run = bt_manager.run();
+      std::cout << manager::trace_summary(run) << manager::property_summary(run);
       if (args->stats) {
         char per_tick[32];
         std::snprintf(

@@ -1,12 +1,14 @@
 #include "gate/gate.hpp"
 
 #include "bt/xml_io.hpp"
+#include "gate/proofs.hpp"
 #include "gate/properties.hpp"
 #include "report/reports.hpp"
 
 namespace uabt::gate {
 
-Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version) {
+Outcome check_mission(load::Mission mission, const Options& options,
+                      const std::string& tool_version) {
   Outcome out;
   out.mission = std::make_unique<load::Mission>(std::move(mission));
   const load::Mission& m = *out.mission;
@@ -62,6 +64,15 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
       if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
   }
   sort_findings(report.findings);
+  return out;
+}
+
+Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version) {
+  Outcome out = check_mission(std::move(mission), options, tool_version);
+  if (out.passed())
+    add_proofs(out, options.prove, options.proof_reporting);
+  else
+    add_proofs_not_run(out, "the gate failed before its proof step");
   return out;
 }
 

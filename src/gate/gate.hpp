@@ -5,20 +5,33 @@
 #include "compile/compile.hpp"
 #include "conform/conform.hpp"
 #include "load/mission.hpp"
+#include "prove/prove.hpp"
 #include "report/model.hpp"
 #include "verify/verify.hpp"
 
 namespace uabt::gate {
 
+// How the reports name what the proof step writes; presentation only, never the verdict.
+struct ProofReporting {
+  // Where the reports put each counterexample's scenario (counterexamples/<id>.json under it),
+  // as the user sees that path; "" when none are written.
+  std::string counterexample_dir;
+  // The mission path and run options of the replay command the reports show.
+  std::string mission_path;
+  std::string run_options;
+};
+
 struct Options {
   verify::Options verify;
   compile::Options compile;
   conform::Options conform;
+  prove::Options prove;
+  ProofReporting proof_reporting;
 };
 
 // The outcome of the pre-uplink gate on one mission: load → verify guards → compile →
-// conform the compiled tree. It passes only when no stage reported an error; anything
-// inconclusive is an error (fail closed).
+// conform the compiled tree → prove the guarantees. It passes only when no stage reported an
+// error; anything inconclusive is an error (fail closed).
 struct Outcome {
   std::unique_ptr<load::Mission> mission;  // owned here: `report.mission` points into it
   verify::Result verification;
@@ -30,9 +43,17 @@ struct Outcome {
   bool passed() const { return report.passed(); }
 };
 
-// Runs every stage on a loaded mission. Stages that cannot run (nothing compiled) are left
-// out of `report.stages`; their absence is itself a failure because the load errors that
-// stopped them are in the findings.
+// The gate's one admission decision (DESIGN §12), the same for `gate`, `gate --uplink`,
+// `run --uplink` and a scenario's uplink event: every check of check_mission, then, when they
+// pass, every guarantee proved on the compiled tree in the mission's world.json (a failed
+// check leaves the proofs "not checked" in the report).
 Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version);
+
+// The checks alone, without the proof step: load findings, mission properties, verify,
+// compile, conform. `uabt prove` uses it to obtain the compiled tree it proves. Stages that
+// cannot run (nothing compiled) are left out of `report.stages`; their absence is itself a
+// failure because the load errors that stopped them are in the findings.
+Outcome check_mission(load::Mission mission, const Options& options,
+                      const std::string& tool_version);
 
 }  // namespace uabt::gate

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "bt/xml_io.hpp"
-#include "monitor/property_set.hpp"
 #include "report/reports.hpp"
 
 namespace uabt::prove {
@@ -199,56 +197,6 @@ report::Proofs report_proofs(const Result& result,
     out.answers.push_back(std::move(p));
   }
   return out;
-}
-
-void add_proofs_not_run(gate::Outcome& outcome, const std::string& reason) {
-  if (!outcome.mission || !has_guarantees(*outcome.mission)) return;
-  report::Proofs proofs;
-  proofs.not_run = reason;
-  for (const auto& r : outcome.mission->properties)
-    if (!monitor::is_assumption(r))
-      proofs.answers.push_back({r.id, r.text, r.location, "unsupported", reason, 0, std::nullopt});
-  outcome.report.proofs = std::move(proofs);
-}
-
-void add_proofs(gate::Outcome& outcome, const Options& options, const std::string& scenario_dir,
-                const report::Proofs& replay) {
-  if (!outcome.mission || !has_guarantees(*outcome.mission) || outcome.compiled_xml.empty()) return;
-  std::vector<Finding> found;
-  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", found);
-  if (!doc) return;  // conform reports a compiled tree that does not read back
-  try {
-    const WorldModel world = mission_world(*outcome.mission);
-    const Result result = prove(*outcome.mission, *doc, world, options);
-    std::map<std::string, std::string> written;
-    if (!scenario_dir.empty())
-      for (const Answer& a : result.answers)
-        if (a.counterexample)
-          written[a.requirement] = (std::filesystem::path(scenario_dir) /
-                                    report::counterexample_file_name(a.requirement))
-                                       .generic_string();
-    found = findings_of(result, written, replay);
-    outcome.report.proofs = report_proofs(result, written);
-    outcome.report.proofs->mission_path = replay.mission_path;
-    outcome.report.proofs->run_options = replay.run_options;
-  } catch (const WorldError& e) {
-    found = {make_finding("load-file", e.text, e.location)};
-    add_proofs_not_run(outcome, "world.json cannot be read");
-  } catch (const std::exception& e) {
-    found = {make_finding("prove-bounded", std::string("the mission cannot be proved: ") + e.what(),
-                          {outcome.mission->requirements_file, 0, 0})};
-    add_proofs_not_run(outcome, std::string("the mission cannot be proved: ") + e.what());
-  }
-  auto& findings = outcome.report.findings;
-  findings.insert(findings.end(), found.begin(), found.end());
-  // Like any failing gate, a failed proof keeps the candidate as compiled.rejected.xml.
-  if (!outcome.report.passed()) {
-    outcome.report.compiled_tree_file = report::kRejectedTree;
-    for (auto& f : findings)
-      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
-  }
-  sort_findings(findings);
-  outcome.report.stages.push_back("prove");
 }
 
 }  // namespace uabt::prove

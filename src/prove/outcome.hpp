@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "base/finding.hpp"
-#include "gate/gate.hpp"
+#include "load/mission.hpp"
 #include "prove/prove.hpp"
 #include "report/proofs.hpp"
 
@@ -29,21 +29,6 @@ std::vector<std::string> table_lines(const Counterexample& cex);
 // JSON (`uabt prove --format json`).
 std::string result_json(const Result& result, const std::string& mission,
                         const std::string& version);
-
-// The gate's proof step (DESIGN §10): when the mission states guarantees and the gate has a
-// compiled tree, proves them on it and adds the findings (and the `prove` stage) to the
-// outcome's report. A world.json or model error is itself an error finding.
-// The report's Proofs section also gets every verdict and counterexample; `scenario_dir` is
-// where the reports put the counterexamples' scenarios (write_reports writes them there as
-// counterexamples/<id>.json; "" when they are not written), as the user sees that path.
-// `replay` gives the mission path and run options of the replay commands (as the user typed
-// them); they go to the Proofs section too.
-void add_proofs(gate::Outcome& outcome, const Options& options,
-                const std::string& scenario_dir = "", const report::Proofs& replay = {});
-
-// For a gate that failed before its proof step: the report's Proofs section lists the
-// mission's guarantees as not checked, with the reason. Nothing when it states none.
-void add_proofs_not_run(gate::Outcome& outcome, const std::string& reason);
 
 // What the report shows of a result: `written` maps a requirement id to the path its
 // counterexample's scenario is (or will be) written to.

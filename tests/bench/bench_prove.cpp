@@ -45,7 +45,7 @@ const Gated& gated(const std::string& name, int size, int counters) {
     g.error = "load: " + error;
     return g;
   }
-  gate::Outcome outcome = gate::run_gate(std::move(*mission), {}, "bench");
+  gate::Outcome outcome = gate::check_mission(std::move(*mission), {}, "bench");
   if (outcome.compiled_xml.empty() || !outcome.passed()) {
     g.error = "the generated mission does not pass the gate";
     return g;

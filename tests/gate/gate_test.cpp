@@ -45,7 +45,8 @@ TEST(Gate, CuriosityPasses) {
   Outcome o = gate_on(uabt::testing::mission_dir("msl_curiosity"));
   EXPECT_TRUE(o.passed()) << format_text(o.report.findings);
   EXPECT_FALSE(o.compiled_xml.empty());
-  EXPECT_EQ(o.report.stages, (std::vector<std::string>{"load", "verify", "compile", "conform"}));
+  EXPECT_EQ(o.report.stages,
+            (std::vector<std::string>{"load", "verify", "compile", "conform", "prove"}));
   ASSERT_EQ(o.report.coverage.size(), 1u);
   const auto& c = o.report.coverage[0];
   EXPECT_TRUE(c.counted);

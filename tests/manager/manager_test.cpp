@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
 
-#include "runtime/manager.hpp"
+#include "manager/manager.hpp"
 #include "test_support.hpp"
 
-namespace uabt::runtime {
+namespace uabt::manager {
 namespace {
+
+using namespace uabt::runtime;  // the scenarios and traces the manager runs on
 
 std::filesystem::path curiosity() {
   return uabt::testing::mission_dir("msl_curiosity");
@@ -65,29 +67,43 @@ TEST(Manager, RocksMidDrivePreemptOnDustWithTheReactiveSelection) {
 }
 
 TEST(Manager, MudUplinkIsGatedSwappedAndCompletesTheMission) {
-  for (auto style : {compile::SelectionStyle::sequence, compile::SelectionStyle::reactive}) {
-    ManagerRun run = run_scenario("mud_uplink", style);
-    const TraceEvent* uplink = first(run, "uplink");
-    ASSERT_NE(uplink, nullptr);
-    EXPECT_EQ(uplink->verdict, "accepted");
-    EXPECT_EQ(uplink->tick, 30u);
-    EXPECT_NE(std::find(uplink->swapped.begin(), uplink->swapped.end(), "navigation"),
-              uplink->swapped.end());
-    EXPECT_NE(std::find(uplink->swapped.begin(), uplink->swapped.end(), "on_mud"),
-              uplink->swapped.end());
-    auto alternatives = selected(run);
-    ASSERT_FALSE(alternatives.empty());
-    EXPECT_EQ(alternatives.front(), "on_rocks");
-    EXPECT_EQ(alternatives.back(), "on_mud") << trace_summary(run);
-    // Reactive: mud pre-empts on_rocks and, unknown until the uplink, gets the safe default.
-    // Sequence: on_rocks keeps driving until the swap halts it.
-    const bool held =
-        std::find(alternatives.begin(), alternatives.end(), "hold_position") != alternatives.end();
-    EXPECT_EQ(held, style == compile::SelectionStyle::reactive) << trace_summary(run);
-    EXPECT_EQ(uplink->halted, 1u) << "the running navigation instance is halted and rebuilt";
-    EXPECT_EQ(run.accepted_uplinks, std::vector<std::string>{"uplinks/on_mud"});
-    EXPECT_EQ(run.status, NodeStatus::success) << trace_summary(run);
-  }
+  ManagerRun run = run_scenario("mud_uplink", compile::SelectionStyle::reactive);
+  const TraceEvent* uplink = first(run, "uplink");
+  ASSERT_NE(uplink, nullptr);
+  EXPECT_EQ(uplink->verdict, "accepted");
+  EXPECT_EQ(uplink->tick, 30u);
+  EXPECT_NE(std::find(uplink->swapped.begin(), uplink->swapped.end(), "navigation"),
+            uplink->swapped.end());
+  EXPECT_NE(std::find(uplink->swapped.begin(), uplink->swapped.end(), "on_mud"),
+            uplink->swapped.end());
+  auto alternatives = selected(run);
+  ASSERT_FALSE(alternatives.empty());
+  EXPECT_EQ(alternatives.front(), "on_rocks");
+  EXPECT_EQ(alternatives.back(), "on_mud") << trace_summary(run);
+  // Mud pre-empts on_rocks and, unknown until the uplink, gets the safe default.
+  EXPECT_NE(std::find(alternatives.begin(), alternatives.end(), "hold_position"),
+            alternatives.end())
+      << trace_summary(run);
+  EXPECT_EQ(uplink->halted, 1u) << "the running navigation instance is halted and rebuilt";
+  EXPECT_EQ(run.accepted_uplinks, std::vector<std::string>{"uplinks/on_mud"});
+  EXPECT_EQ(run.status, NodeStatus::success) << trace_summary(run);
+}
+
+// The hot swap takes the gate's whole decision, proofs included: compiled with the plain
+// Sequence selection, the merged mission cannot hold HoldOnUnknown (on_rocks keeps driving on
+// mud), so `uabt gate --selection sequence --uplink` rejects the package and so does the run.
+TEST(Manager, MudUplinkWithTheSequenceSelectionIsRejectedByItsProof) {
+  ManagerRun run = run_scenario("mud_uplink", compile::SelectionStyle::sequence);
+  const TraceEvent* uplink = first(run, "uplink");
+  ASSERT_NE(uplink, nullptr);
+  EXPECT_EQ(uplink->verdict, "rejected");
+  bool violated = false;
+  for (const Finding& f : uplink->findings)
+    violated |=
+        f.check == "prove-violated" && f.requirements == std::vector<std::string>{"HoldOnUnknown"};
+  EXPECT_TRUE(violated) << trace_summary(run);
+  EXPECT_TRUE(run.accepted_uplinks.empty());
+  EXPECT_EQ(selected(run), std::vector<std::string>{"on_rocks"}) << trace_summary(run);
 }
 
 TEST(Manager, AmbiguousUplinkIsRejectedAndTheRunningVersionIsUntouched) {
@@ -140,4 +156,4 @@ TEST(Manager, TraceIsJsonLinesWithTheDesignFields) {
 }
 
 }  // namespace
-}  // namespace uabt::runtime
+}  // namespace uabt::manager

@@ -3,12 +3,14 @@
 // the property read.
 #include <gtest/gtest.h>
 
-#include "runtime/manager.hpp"
+#include "manager/manager.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
-namespace uabt::runtime {
+namespace uabt::manager {
 namespace {
+
+using namespace uabt::runtime;  // the scenarios and traces the manager runs on
 
 std::filesystem::path curiosity() {
   return uabt::testing::mission_dir("msl_curiosity");
@@ -145,4 +147,4 @@ TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
 }
 
 }  // namespace
-}  // namespace uabt::runtime
+}  // namespace uabt::manager

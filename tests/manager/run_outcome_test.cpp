@@ -2,11 +2,13 @@
 // timeout), the outcome is printed once; and what --trace-level nodes adds.
 #include <gtest/gtest.h>
 
-#include "runtime/manager.hpp"
+#include "manager/manager.hpp"
 #include "test_support.hpp"
 
-namespace uabt::runtime {
+namespace uabt::manager {
 namespace {
+
+using namespace uabt::runtime;  // the scenarios and traces the manager runs on
 
 ManagerRun run_mission(const std::string& mission, const std::string& scenario_json,
                        ManagerOptions options = {}) {
@@ -128,10 +130,12 @@ TEST(RunOutcome, NodeTraceShowsWhatAnUnsetConditionRead) {
 }
 
 }  // namespace
-}  // namespace uabt::runtime
+}  // namespace uabt::manager
 
-namespace uabt::runtime {
+namespace uabt::manager {
 namespace {
+
+using namespace uabt::runtime;  // the scenarios and traces the manager runs on
 
 std::string scenario_errors(const std::string& mission, const std::string& json) {
   try {
@@ -195,4 +199,4 @@ TEST(ScenarioCheck, NamesAnUplinkBringsAreKnown) {
 }
 
 }  // namespace
-}  // namespace uabt::runtime
+}  // namespace uabt::manager

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <random>
 
-#include "runtime/manager.hpp"
+#include "manager/manager.hpp"
 #include "selection_missions.hpp"
 #include "test_support.hpp"
 
-namespace uabt::runtime {
+namespace uabt::manager {
 namespace {
+
+using namespace uabt::runtime;  // the scenarios and traces the manager runs on
 
 using compile::SelectionStyle;
 
@@ -147,4 +149,4 @@ TEST(SmartSelection, RandomBatteryScenariosSelectTheSame) {
 }
 
 }  // namespace
-}  // namespace uabt::runtime
+}  // namespace uabt::manager

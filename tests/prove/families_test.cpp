@@ -19,14 +19,14 @@ std::size_t compiled_nodes(const std::string& xml) {
   return nodes;
 }
 
-// The gate as `uabt gate` runs it, without its proofs (gate::run_gate leaves them to
-// prove::add_proofs): each adaptable node compiled in the selection style it declares.
+// The gate's checks as `uabt gate` runs them, without its proofs (gate::check_mission): each
+// adaptable node compiled in the selection style it declares.
 gate::Outcome gated(const std::filesystem::path& dir) {
   std::string error;
   auto mission = load::load_mission(dir, {}, error);
   EXPECT_TRUE(mission) << error;
   if (!mission) return {};
-  return gate::run_gate(std::move(*mission), {}, "test");
+  return gate::check_mission(std::move(*mission), {}, "test");
 }
 
 void check_answers(const prove::Result& r, const bench::FamilyMission& family) {

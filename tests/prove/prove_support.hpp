@@ -25,7 +25,7 @@ inline prove::Result prove_dir(const std::filesystem::path& dir, prove::Options 
   gate::Options gate_options;
   gate_options.compile.selection = style;
   gate_options.compile.selection_forced = true;
-  gate::Outcome outcome = gate::run_gate(std::move(*mission), gate_options, "test");
+  gate::Outcome outcome = gate::check_mission(std::move(*mission), gate_options, "test");
   EXPECT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
   std::vector<Finding> findings;
   auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);

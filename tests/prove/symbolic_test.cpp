@@ -26,7 +26,7 @@ struct Gated {
     gate::Options options;
     options.compile.selection = style;
     options.compile.selection_forced = true;
-    outcome = std::make_unique<gate::Outcome>(gate::run_gate(std::move(*mission), options, "t"));
+    outcome = std::make_unique<gate::Outcome>(gate::check_mission(std::move(*mission), options, "t"));
     if (outcome->compiled_xml.empty()) return;
     std::vector<Finding> findings;
     doc = bt::parse_document(outcome->compiled_xml, "compiled.xml", findings);

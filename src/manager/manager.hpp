@@ -13,7 +13,12 @@
 #include "runtime/status.hpp"
 #include "runtime/trace.hpp"
 
-namespace uabt::runtime {
+namespace uabt::manager {
+
+using runtime::NodeStatus;
+using runtime::Scenario;
+using runtime::TickError;
+using runtime::TraceEvent;
 
 struct ManagerOptions {
   gate::Options gate;          // also chooses the selector style of every compiled version
@@ -71,4 +76,4 @@ std::string trace_summary(const ManagerRun& run);
 // One line per mission property: its verdict at the end of the run.
 std::string property_summary(const ManagerRun& run);
 
-}  // namespace uabt::runtime
+}  // namespace uabt::manager

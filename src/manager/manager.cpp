@@ -1,4 +1,4 @@
-#include "runtime/manager.hpp"
+#include "manager/manager.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -7,6 +7,7 @@
 
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
+#include "gate/uplink.hpp"
 #include "runtime/condition_count.hpp"
 #include "runtime/property_monitor.hpp"
 #include "runtime/runner.hpp"
@@ -14,7 +15,9 @@
 #include "runtime/selection.hpp"
 #include "runtime/source_map.hpp"
 
-namespace uabt::runtime {
+namespace uabt::manager {
+
+using namespace runtime;
 
 namespace fs = std::filesystem;
 
@@ -25,15 +28,22 @@ struct Version {
   bt::Document document;  // the compiled tree as read back from its bytes
 };
 
-// Loads the mission with the given uplinks merged and runs the gate on it.
-Version gated_version(const fs::path& dir, const std::vector<std::string>& uplinks,
-                      const gate::Options& options) {
+fs::path package_path(const fs::path& dir, const std::string& uplink) {
+  return dir / uplink;
+}
+
+load::Mission load_version(const fs::path& dir, const std::vector<std::string>& uplinks) {
   load::LoadOptions load_options;
-  for (const auto& u : uplinks) load_options.uplinks.push_back(dir / u);
+  for (const auto& u : uplinks) load_options.uplinks.push_back(package_path(dir, u));
   std::string error;
   auto mission = load::load_mission(dir, load_options, error);
   if (!mission) throw std::runtime_error(dir.generic_string() + ": " + error);
-  Version v{gate::run_gate(std::move(*mission), options, "runtime"), {}};
+  return std::move(*mission);
+}
+
+// A gated version: the compiled tree is read back from the bytes the gate passed.
+Version admitted(gate::Outcome outcome) {
+  Version v{std::move(outcome), {}};
   if (v.outcome.passed()) {
     std::vector<Finding> findings;
     auto doc = bt::parse_document(v.outcome.compiled_xml, "compiled.xml", findings);
@@ -76,14 +86,25 @@ BehaviorTreeManager::BehaviorTreeManager(fs::path mission_dir, Scenario scenario
 void BehaviorTreeManager::check_against_mission(const load::Mission& mission) const {
   ScenarioVocabulary vocabulary;
   vocabulary.add(mission);
+  std::vector<std::string> errors;
   for (const ScenarioEvent& event : scenario_.events) {
     if (event.uplink.empty()) continue;
+    // A typo must not let a run go on without the uplink it was meant to test.
+    std::error_code ec;
+    if (!fs::is_directory(package_path(dir_, event.uplink), ec)) {
+      errors.push_back(scenario_.where("/events/" + std::to_string(event.index) + "/uplink", true) +
+                       ": error: uplink package '" + event.uplink +
+                       "' is not a directory (a path from the mission directory " +
+                       dir_.generic_string() + ")");
+      continue;
+    }
     load::LoadOptions with_uplink;
     with_uplink.uplinks.push_back(dir_ / event.uplink);
     std::string error;  // a package that does not load is the gate's to reject, at its tick
     if (auto merged = load::load_mission(dir_, with_uplink, error)) vocabulary.add(*merged);
   }
-  const std::vector<std::string> errors = check_scenario(scenario_, vocabulary);
+  const std::vector<std::string> names = check_scenario(scenario_, vocabulary);
+  errors.insert(errors.end(), names.begin(), names.end());
   if (errors.empty()) return;
   std::string text;
   for (const std::string& e : errors) text += (text.empty() ? "" : "\n") + e;
@@ -103,10 +124,16 @@ void BehaviorTreeManager::add_uplink(std::int64_t tick, const std::string& packa
 ManagerRun BehaviorTreeManager::run() {
   ManagerRun result;
   std::vector<std::string> accepted;
-  Version running = gated_version(dir_, accepted, options_.gate);
+  // The mission a run starts from must be executable: the gate's checks. Its guarantees are
+  // monitored by the run rather than required proved, because a run is also how a
+  // counterexample of `uabt prove` is replayed. What changes a running mission, an uplink,
+  // goes through the whole gate below, proofs included.
+  Version running =
+      admitted(gate::check_mission(load_version(dir_, accepted), options_.gate, "runtime"));
   if (!running.outcome.passed())
-    throw std::runtime_error("the mission does not pass the gate; only a verified version runs:\n" +
-                             format_text(running.outcome.report.findings));
+    throw std::runtime_error(
+        "the mission does not pass the gate's checks; only a verified version runs:\n" +
+        format_text(running.outcome.report.findings));
 
   check_against_mission(*running.outcome.mission);
 
@@ -140,7 +167,9 @@ ManagerRun BehaviorTreeManager::run() {
     e.uplink = event.uplink;
     std::vector<std::string> candidate = accepted;
     candidate.push_back(event.uplink);
-    Version next = gated_version(dir_, candidate, options_.gate);
+    // As `uabt gate MISSION --uplink DIR` decides it, against the version running now.
+    Version next = admitted(gate::run_uplink_gate(
+        *running.outcome.mission, load_version(dir_, candidate), options_.gate, "runtime"));
     if (!next.outcome.passed()) {
       e.verdict = "rejected";
       for (const auto& f : next.outcome.report.findings)
@@ -253,4 +282,4 @@ std::string property_summary(const ManagerRun& run) {
   return out;
 }
 
-}  // namespace uabt::runtime
+}  // namespace uabt::manager

@@ -1,0 +1,19 @@
+#pragma once
+#include <string>
+
+#include "gate/gate.hpp"
+
+namespace uabt::gate {
+
+// The gate's proof step (DESIGN §10): when the mission states guarantees and the gate has a
+// compiled tree, proves them on it and adds the findings (and the `prove` stage) to the
+// outcome's report. A world.json or model error is itself an error finding. The report's
+// Proofs section gets every verdict and counterexample, named as `reporting` says.
+void add_proofs(Outcome& outcome, const prove::Options& options,
+                const ProofReporting& reporting = {});
+
+// For a gate that failed before its proof step: the report's Proofs section lists the
+// mission's guarantees as not checked, with the reason. Nothing when it states none.
+void add_proofs_not_run(Outcome& outcome, const std::string& reason);
+
+}  // namespace uabt::gate
