@@ -13,7 +13,7 @@ namespace uabt::cli {
 
 namespace {
 
-std::string summary_line(const prove::Result& r) {
+std::string summary_line(const prove::Result& r, const report::Proofs& proofs) {
   int counts[5] = {0, 0, 0, 0, 0};
   for (const auto& a : r.answers) ++counts[static_cast<int>(a.verdict)];
   std::string line = "prove: " + std::to_string(r.answers.size()) + " guarantee" +
@@ -22,14 +22,7 @@ std::string summary_line(const prove::Result& r) {
                      std::to_string(counts[2]) + " bounded";
   if (counts[3]) line += ", " + std::to_string(counts[3]) + " vacuous";
   if (counts[4]) line += ", " + std::to_string(counts[4]) + " not checked";
-  if (r.engine == "symbolic")
-    line += " (symbolic engine: BMC to depth " + std::to_string(r.depth) +
-            ", k-induction up to k = " + std::to_string(r.induction_k) + ")";
-  else
-    line += " (" + r.engine + "-state engine: " + std::to_string(r.states) + " states, " +
-            std::to_string(r.transitions) + " transitions, " +
-            (r.complete ? "every reachable state" : "depth " + std::to_string(r.depth)) + ")";
-  return line;
+  return line + " (" + report::engine_figures(proofs) + ")";
 }
 
 // What a proof covered: the reachable runs' size, and when the guarantee first asks something.
@@ -139,22 +132,21 @@ void register_prove(CLI::App& app, int& exit_code) {
       }
     }
     exit_code = result.passed() ? kExitPass : kExitFail;
-    report::Proofs replay;  // how the output tells to replay a counterexample
-    replay.mission_path = args->mission;
-    if (!args->selection.empty()) replay.run_options = "--selection " + args->selection;
+    // Every format draws from the one model of the proofs (the gate's reports too).
+    report::Proofs proofs = prove::report_proofs(result, written);
+    proofs.mission_path = args->mission;
+    if (!args->selection.empty()) proofs.run_options = "--selection " + args->selection;
     if (args->format == "json") {
-      emit(args->output, prove::result_json(result, outcome.mission->name, tool_version()));
+      emit(args->output,
+           prove::result_json(result, outcome.mission->name, tool_version(), written, proofs));
       return;
     }
     if (args->format == "html") {
-      report::Proofs proofs = prove::report_proofs(result, written);
-      proofs.mission_path = replay.mission_path;
-      proofs.run_options = replay.run_options;
       emit(args->output, report::proofs_page_html(proofs, outcome.mission->name, tool_version()));
       return;
     }
     report::ReportInput input = report_input(*outcome.mission, {"prove"});
-    input.findings = prove::findings_of(result, written, replay);
+    input.findings = prove::findings_of(result, written, proofs);
     input.uri_prefix = sarif_uri_prefix(args->mission, "");
     if (args->format == "sarif") {
       write_findings(input, "sarif", args->output);
@@ -172,7 +164,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     if (!result.engine_reason.empty())
       text += "note: the symbolic engine was chosen: " + result.engine_reason + "\n";
     for (const auto& n : result.notes) text += "note: " + n + "\n";
-    text += summary_line(result) + "\n";
+    text += summary_line(result, proofs) + "\n";
     emit(args->output, text);
   });
 }

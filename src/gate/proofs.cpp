@@ -12,8 +12,15 @@ void add_proofs_not_run(Outcome& outcome, const std::string& reason) {
   report::Proofs proofs;
   proofs.not_run = reason;
   for (const auto& r : outcome.mission->properties)
-    if (!monitor::is_assumption(r))
-      proofs.answers.push_back({r.id, r.text, r.location, "unsupported", reason, 0, std::nullopt});
+    if (!monitor::is_assumption(r)) {
+      report::ProofAnswer answer;
+      answer.requirement = r.id;
+      answer.text = r.text;
+      answer.location = r.location;
+      answer.verdict = "unsupported";
+      answer.reason = reason;
+      proofs.answers.push_back(std::move(answer));
+    }
   outcome.report.proofs = std::move(proofs);
 }
 

@@ -110,55 +110,19 @@ std::vector<Finding> findings_of(const Result& result,
 }
 
 std::string result_json(const Result& result, const std::string& mission,
-                        const std::string& version) {
+                        const std::string& version,
+                        const std::map<std::string, std::string>& written,
+                        const report::Proofs& replay) {
   Json j = Json::object();
   j["tool"] = "uabt";
   j["version"] = version;
   j["mission"] = mission;
   j["verdict"] = result.passed() ? "pass" : "fail";
-  j["engine"] = result.engine;
-  if (result.engine == "symbolic") {
-    j["bmc_depth"] = result.depth;
-    j["induction_k"] = result.induction_k;
-  } else {
-    j["states"] = result.states;
-    j["transitions"] = result.transitions;
-  }
-  if (!result.engine_reason.empty()) j["engine_reason"] = result.engine_reason;
-  j["depth"] = result.depth;
-  j["complete"] = result.complete;
-  if (result.vacuity)
-    j["vacuity"] = {{"message", result.vacuity->message},
-                    {"location",
-                     {{"file", result.vacuity->location.file},
-                      {"line", result.vacuity->location.line},
-                      {"column", result.vacuity->location.column}}}};
-  Json props = Json::array();
-  for (const Answer& a : result.answers) {
-    Json p = Json::object();
-    p["id"] = a.requirement;
-    p["verdict"] = verdict_name(a.verdict);
-    p["location"] = {
-        {"file", a.location.file}, {"line", a.location.line}, {"column", a.location.column}};
-    p["depth"] = a.depth;
-    if (result.engine == "explicit" && a.has_trigger) p["first_trigger"] = a.first_trigger;
-    if (!a.reason.empty()) p["reason"] = a.reason;
-    if (a.counterexample) {
-      Json trace = Json::array();
-      for (const TickRow& r : a.counterexample->rows) {
-        Json values = Json::object();
-        for (const auto& [name, value] : r.values) values[name] = value;
-        trace.push_back(
-            {{"tick", r.tick}, {"root", r.root}, {"values", values}, {"actions", r.actions}});
-      }
-      p["counterexample"] = {{"tick", a.counterexample->tick},
-                             {"scenario", Json::parse(a.counterexample->scenario)},
-                             {"trace", trace}};
-    }
-    props.push_back(std::move(p));
-  }
-  j["properties"] = props;
-  j["notes"] = result.notes;
+  report::Proofs proofs = report_proofs(result, written);
+  proofs.mission_path = replay.mission_path;
+  proofs.run_options = replay.run_options;
+  Json body = report::proofs_json(proofs);
+  for (auto& [key, value] : body.items()) j[key] = std::move(value);
   return j.dump(2) + "\n";
 }
 
@@ -168,12 +132,22 @@ report::Proofs report_proofs(const Result& result,
   out.engine = result.engine;
   out.states = result.states;
   out.transitions = result.transitions;
+  out.induction_k = result.induction_k;
   out.depth = result.depth;
   out.complete = result.complete;
+  out.engine_reason = result.engine_reason;
+  if (result.vacuity)
+    out.vacuity = report::ProofVacuity{result.vacuity->message, result.vacuity->location};
   out.notes = result.notes;
   for (const Answer& a : result.answers) {
-    report::ProofAnswer p{a.requirement, a.text,  a.location,  verdict_name(a.verdict),
-                          a.reason,      a.depth, std::nullopt};
+    report::ProofAnswer p;
+    p.requirement = a.requirement;
+    p.text = a.text;
+    p.location = a.location;
+    p.verdict = verdict_name(a.verdict);
+    p.reason = a.reason;
+    p.depth = a.depth;
+    if (result.engine == "explicit" && a.has_trigger) p.first_trigger = a.first_trigger;
     if (a.counterexample) {
       report::ProofCounterexample c;
       c.tick = a.counterexample->tick;

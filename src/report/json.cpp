@@ -154,7 +154,7 @@ std::string to_json(const ReportInput& input) {
   out["coverage"] = std::move(coverage);
   if (input.uplink) out["uplink"] = detail::uplink_json(*input.uplink);
   if (input.proofs && !input.proofs->answers.empty())
-    out["proofs"] = detail::proofs_json(*input.proofs);
+    out["proofs"] = proofs_json(*input.proofs);
   // A message with invalid UTF-8 (from a broken input file) must not abort the report.
   return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -92,17 +92,27 @@ std::string shell_word(const std::string& word) {
 
 }  // namespace
 
-std::string proofs_summary(const Proofs& proofs) {
-  if (!proofs.not_run.empty()) return "uabt prove did not run: " + proofs.not_run + ".";
-  const std::string engine =
-      proofs.engine == "explicit" ? "explicit-state engine" : proofs.engine + " engine";
-  return engine + ": " + std::to_string(proofs.states) + " states, " +
+}  // namespace detail
+
+std::string engine_figures(const Proofs& proofs) {
+  if (proofs.engine == "symbolic")
+    return "symbolic engine: BMC to depth " + std::to_string(proofs.depth) +
+           ", k-induction up to k = " + std::to_string(proofs.induction_k);
+  return proofs.engine + (proofs.engine == "explicit" ? "-state" : "") +
+         " engine: " + std::to_string(proofs.states) + " states, " +
          std::to_string(proofs.transitions) + " transitions, " +
-         (proofs.complete ? std::string("every reachable state explored.")
-                          : "runs explored up to tick " + std::to_string(proofs.depth) + ".");
+         (proofs.complete ? std::string("every reachable state explored")
+                          : "runs explored up to tick " + std::to_string(proofs.depth));
 }
 
-}  // namespace detail
+std::string proofs_summary(const Proofs& proofs) {
+  if (!proofs.not_run.empty()) return "uabt prove did not run: " + proofs.not_run + ".";
+  std::string out = engine_figures(proofs) + ".";
+  if (!proofs.engine_reason.empty())
+    out += " The symbolic engine was chosen: " + proofs.engine_reason + ".";
+  if (proofs.vacuity) out += " No guarantee can be proved: " + proofs.vacuity->message + ".";
+  return out;
+}
 
 std::string replay_command(const Proofs& proofs, const std::string& scenario_file) {
   std::string out =

@@ -36,13 +36,6 @@ struct TimelineRow {
 // the order it first does something.
 std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex);
 
-// "explicit-state engine: 12 states, 30 transitions, every reachable state explored."
-std::string proofs_summary(const Proofs& proofs);
-
-// The proofs in findings.json: engine figures, and per guarantee its verdict and where its
-// counterexample's scenario is (the timeline itself is in the notes of its finding).
-nlohmann::ordered_json proofs_json(const Proofs& proofs);
-
 // CSS of the report page and of the timeline.
 const char* page_style();
 const char* proofs_style();

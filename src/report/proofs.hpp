@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "base/location.hpp"
 
 namespace uabt::report {
@@ -31,16 +33,28 @@ struct ProofAnswer {
   std::string requirement;
   std::string text;
   SourceLocation location;
-  std::string verdict;  // proved | violated | bounded | unsupported
-  std::string reason;   // why not checked
-  std::uint64_t depth = 0;
+  std::string verdict;      // proved | violated | bounded | unsupported
+  std::string reason;       // why not checked
+  std::uint64_t depth = 0;  // violated: the tick; bounded: the depth; symbolic proved: k
+  // Explicit engine, for a guarantee with a trigger: the first tick it holds (0: never).
+  std::optional<std::uint64_t> first_trigger;
   std::optional<ProofCounterexample> counterexample;
 };
 
+// Why no guarantee could be proved: the world model leaves no run, or runs that cannot go on.
+struct ProofVacuity {
+  std::string message;
+  SourceLocation location;
+};
+
 struct Proofs {
-  std::string engine;
-  std::uint64_t states = 0, transitions = 0, depth = 0;
-  bool complete = false;
+  std::string engine;                         // explicit | symbolic | none
+  std::uint64_t states = 0, transitions = 0;  // explicit engine
+  std::uint64_t induction_k = 0;              // symbolic engine: deepest k-induction tried
+  std::uint64_t depth = 0;                    // deepest tick explored (symbolic: BMC depth)
+  bool complete = false;                      // every reachable state explored
+  std::string engine_reason;                  // why `--engine auto` took the symbolic engine
+  std::optional<ProofVacuity> vacuity;
   std::vector<ProofAnswer> answers;
   std::vector<std::string> notes;
   // Why prove did not run at all (every answer is then "unsupported" with this reason); "".
@@ -57,6 +71,19 @@ std::string proof_verdict_text(const ProofAnswer& answer);
 // A file name for a requirement's counterexample: the id with every character other than
 // letters, digits, '-', '_' and '.' replaced by '_', then ".json".
 std::string counterexample_file_name(const std::string& requirement);
+
+// What the engine covered: "explicit-state engine: 12 states, 30 transitions, every reachable
+// state explored" or "symbolic engine: BMC to depth 6, k-induction up to k = 6".
+std::string engine_figures(const Proofs& proofs);
+
+// engine_figures as a sentence, with why the symbolic engine was chosen and why nothing could
+// be proved when that is so (or why prove did not run). Every output format says it in these
+// words.
+std::string proofs_summary(const Proofs& proofs);
+
+// The one JSON shape of the proofs: `uabt prove --format json` (with the tool, mission and
+// verdict around it) and the `proofs` member of the gate's findings.json.
+nlohmann::ordered_json proofs_json(const Proofs& proofs);
 
 // The report sections (report.html and summary.md); "" when `proofs` has no answer.
 std::string proofs_html(const Proofs& proofs);

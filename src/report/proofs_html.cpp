@@ -100,7 +100,7 @@ pre { background: #f6f8fa; padding: 8px; overflow-x: auto; font-size: 12px; }
 std::string proofs_html(const Proofs& proofs) {
   if (proofs.answers.empty()) return "";
   std::string out = "<section id=\"proofs\">\n<h2>Proofs</h2>\n";
-  out += "<p>" + html_escape(detail::proofs_summary(proofs)) + "</p>\n";
+  out += "<p>" + html_escape(proofs_summary(proofs)) + "</p>\n";
   out +=
       "<table class=\"proofs\">\n<thead><tr><th>Guarantee</th><th>Verdict</th>"
       "<th>Requirement</th><th>Where</th></tr></thead><tbody>\n";

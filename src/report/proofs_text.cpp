@@ -72,7 +72,7 @@ void timeline_markdown(const ProofAnswer& a, const ProofCounterexample& cex, con
 
 std::string proofs_markdown(const Proofs& proofs) {
   if (proofs.answers.empty()) return "";
-  std::string out = "\n### Proofs\n\n" + cell(detail::proofs_summary(proofs)) + "\n\n";
+  std::string out = "\n### Proofs\n\n" + cell(proofs_summary(proofs)) + "\n\n";
   out += "| Guarantee | Verdict | Requirement | Location |\n|---|---|---|---|\n";
   for (const ProofAnswer& a : proofs.answers) {
     std::string verdict = proof_verdict_text(a);
@@ -87,40 +87,62 @@ std::string proofs_markdown(const Proofs& proofs) {
   return out;
 }
 
-namespace detail {
-
 nlohmann::ordered_json proofs_json(const Proofs& proofs) {
   using Json = nlohmann::ordered_json;
+  const auto location = [](const SourceLocation& at) {
+    return Json{{"file", at.file}, {"line", at.line}, {"column", at.column}};
+  };
   Json out = Json::object();
   if (!proofs.not_run.empty()) out["not_run"] = proofs.not_run;
   out["engine"] = proofs.engine;
-  out["states"] = proofs.states;
-  out["transitions"] = proofs.transitions;
+  if (proofs.engine == "symbolic") {
+    out["bmc_depth"] = proofs.depth;
+    out["induction_k"] = proofs.induction_k;
+  } else {
+    out["states"] = proofs.states;
+    out["transitions"] = proofs.transitions;
+  }
+  if (!proofs.engine_reason.empty()) out["engine_reason"] = proofs.engine_reason;
   out["depth"] = proofs.depth;
   out["complete"] = proofs.complete;
+  out["summary"] = proofs_summary(proofs);
+  if (proofs.vacuity)
+    out["vacuity"] = {{"message", proofs.vacuity->message},
+                      {"location", location(proofs.vacuity->location)}};
   Json answers = Json::array();
   for (const ProofAnswer& a : proofs.answers) {
     Json j = Json::object();
     j["id"] = a.requirement;
     j["verdict"] = a.verdict;
-    j["location"] =
-        Json{{"file", a.location.file}, {"line", a.location.line}, {"column", a.location.column}};
+    j["location"] = location(a.location);
     j["depth"] = a.depth;
+    if (a.first_trigger) j["first_trigger"] = *a.first_trigger;
     if (!a.reason.empty()) j["reason"] = a.reason;
     if (a.counterexample) {
+      const ProofCounterexample& cex = *a.counterexample;
+      Json trace = Json::array();
+      for (const ProofTick& t : cex.ticks) {
+        Json values = Json::object();
+        for (const auto& [name, value] : t.values) values[name] = value;
+        Json actions = Json::array();
+        for (const auto& [action, event] : t.actions)
+          actions.push_back(event.empty() ? action : action + " " + event);
+        trace.push_back(
+            {{"tick", t.tick}, {"root", t.root}, {"values", values}, {"actions", actions}});
+      }
       Json c = Json::object();
-      c["tick"] = a.counterexample->tick;
-      if (!a.counterexample->scenario_file.empty())
-        c["scenario_file"] = a.counterexample->scenario_file;
-      c["replay"] = replay_command(proofs, a.counterexample->scenario_file);
+      c["tick"] = cex.tick;
+      c["scenario"] = Json::parse(cex.scenario, nullptr, false);
+      if (!cex.scenario_file.empty()) c["scenario_file"] = cex.scenario_file;
+      c["replay"] = replay_command(proofs, cex.scenario_file);
+      c["trace"] = std::move(trace);
       j["counterexample"] = std::move(c);
     }
     answers.push_back(std::move(j));
   }
   out["properties"] = std::move(answers);
+  out["notes"] = proofs.notes;
   return out;
 }
-
-}  // namespace detail
 
 }  // namespace uabt::report

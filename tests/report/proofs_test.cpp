@@ -37,6 +37,7 @@ report::Proofs three_ticks() {
                        "violated",
                        "",
                        3,
+                       std::nullopt,
                        cex});
   p.answers.push_back({"Fine",
                        "Mission shall always satisfy z",
@@ -44,6 +45,7 @@ report::Proofs three_ticks() {
                        "proved",
                        "",
                        3,
+                       std::nullopt,
                        std::nullopt});
   return p;
 }
