@@ -192,6 +192,10 @@ ManagerRun BehaviorTreeManager::run() {
       }
       accepted = std::move(candidate);
       running = std::move(next);
+      // The new version's properties from the next tick on; the swapped-in trees' nodes are
+      // observed too.
+      for (const PropertyViolation& v : properties.adopt(*running.outcome.mission, r.ticks()))
+        result.trace.push_back(violation_event(v));
     }
     e.latency_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
@@ -276,6 +280,12 @@ std::string property_summary(const ManagerRun& run) {
     out += std::string(p.assumption ? "assumption " : "property ") + p.id + ": " +
            monitor::verdict_name(p.verdict);
     if (p.first_violation) out += " from tick " + std::to_string(*p.first_violation);
+    if (p.monitored_from)
+      out += " (added by an uplink: monitored from tick " + std::to_string(*p.monitored_from);
+    if (p.monitored_until)
+      out += std::string(p.monitored_from ? ", " : " (") + "monitored until tick " +
+             std::to_string(*p.monitored_until) + ", when an uplink replaced or removed it";
+    if (p.monitored_from || p.monitored_until) out += ")";
     if (!p.reason.empty()) out += ": " + p.reason;
     out += "\n";
   }

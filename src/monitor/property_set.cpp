@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "fretish/expr.hpp"
+
 namespace uabt::monitor {
 
 const char* verdict_name(Verdict v) {
@@ -23,6 +25,12 @@ PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
                          const std::vector<fretish::Assumption>& assumptions,
                          const Vocabulary& vocabulary, std::optional<double> tick_seconds)
     : vocabulary_(vocabulary) {
+  add_all(requirements, assumptions, tick_seconds, entries_);
+}
+
+void PropertySet::add_all(const std::vector<fretish::Requirement>& requirements,
+                          const std::vector<fretish::Assumption>& assumptions,
+                          std::optional<double> tick_seconds, std::vector<Entry>& out) const {
   const Resolver resolve = [this](const std::string& name) -> Resolved {
     if (const auto slot = vocabulary_.variables->find(name))
       return {Resolved::Kind::variable, *slot};
@@ -30,20 +38,21 @@ PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
       return {Resolved::Kind::literal, vocabulary_.symbols->id(name)};
     return {};
   };
-  const auto add = [&](const fretish::Requirement& r, bool assumption) {
+  const auto add = [&](const fretish::Requirement& r, bool assumption, std::string text) {
     Entry e;
     e.base.id = r.id;
     e.base.assumption = assumption;
     e.base.location = r.location;
+    e.text = std::move(text);
     std::string reason;
     e.monitor = RequirementMonitor::compile(r, resolve, tick_seconds, reason);
     if (!e.monitor) {
       e.base.verdict = Verdict::not_monitored;
       e.base.reason = reason;
     }
-    entries_.push_back(std::move(e));
+    out.push_back(std::move(e));
   };
-  for (const fretish::Requirement& r : requirements) add(r, is_assumption(r));
+  for (const fretish::Requirement& r : requirements) add(r, is_assumption(r), r.text);
   for (const fretish::Assumption& a : assumptions) {
     fretish::Requirement r;
     r.id = a.name;
@@ -51,19 +60,52 @@ PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
     r.component = "Environment";
     r.timing.keyword = "always";
     r.response = a.expr;
-    add(r, true);
+    add(r, true, "assume " + (a.expr ? fretish::to_fretish(*a.expr) : std::string()));
   }
 }
 
-std::vector<std::size_t> PropertySet::step(const std::vector<Val>& frame, std::uint64_t tick) {
-  if (!started_) {
-    started_ = true;
-    first_tick_ = tick;
+std::vector<std::size_t> PropertySet::update(const std::vector<fretish::Requirement>& requirements,
+                                             const std::vector<fretish::Assumption>& assumptions,
+                                             const std::set<std::string>& literals,
+                                             std::optional<double> tick_seconds,
+                                             std::uint64_t last_tick) {
+  vocabulary_.literals.insert(literals.begin(), literals.end());
+  std::vector<Entry> next;
+  add_all(requirements, assumptions, tick_seconds, next);
+  std::vector<std::size_t> ended;
+  std::vector<bool> kept(next.size(), false);
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    Entry& e = entries_[i];
+    if (e.stopped) continue;
+    bool same = false;
+    for (std::size_t k = 0; k < next.size() && !same; ++k)
+      if (!kept[k] && next[k].base.id == e.base.id &&
+          next[k].base.assumption == e.base.assumption && next[k].text == e.text)
+        same = kept[k] = true;
+    if (same) continue;
+    e.stopped = true;
+    e.base.monitored_until = last_tick;
+    if (e.monitor && !e.monitor->failed() && e.started && !e.reported && !e.monitor->holds())
+      ended.push_back(i);
   }
+  for (std::size_t k = 0; k < next.size(); ++k) {
+    if (kept[k]) continue;
+    next[k].base.monitored_from = last_tick + 1;
+    entries_.push_back(std::move(next[k]));
+  }
+  return ended;
+}
+
+std::vector<std::size_t> PropertySet::step(const std::vector<Val>& frame, std::uint64_t tick) {
+  started_ = true;
   std::vector<std::size_t> fresh;
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     Entry& e = entries_[i];
-    if (!e.monitor || e.monitor->failed()) continue;
+    if (e.stopped || !e.monitor || e.monitor->failed()) continue;
+    if (!e.started) {
+      e.started = true;
+      e.first_tick = tick;
+    }
     e.monitor->step(frame);
     if (!e.reported && e.monitor->final_violation() && !e.monitor->failed()) {
       e.reported = true;
@@ -77,7 +119,9 @@ std::vector<std::size_t> PropertySet::violated_at_end() const {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     const Entry& e = entries_[i];
-    if (e.monitor && !e.monitor->failed() && !e.reported && !e.monitor->holds()) out.push_back(i);
+    if (e.monitor && !e.stopped && e.started && !e.monitor->failed() && !e.reported &&
+        !e.monitor->holds())
+      out.push_back(i);
   }
   return out;
 }
@@ -91,14 +135,14 @@ PropertyResult PropertySet::result(std::size_t index) const {
     r.reason = e.monitor->error();
     return r;
   }
-  if (!started_) {
+  if (!e.started) {
     r.verdict = Verdict::not_monitored;
-    r.reason = "the trace is empty";
+    r.reason = started_ ? "no tick after the uplink that added it" : "the trace is empty";
     return r;
   }
   if (e.monitor->holds()) return r;
   r.verdict = Verdict::violated;
-  r.first_violation = first_tick_ + e.monitor->violated_since();
+  r.first_violation = e.first_tick + e.monitor->violated_since();
   const auto& slots = e.monitor->variables();
   const auto& values = e.monitor->violation_values();
   for (std::size_t k = 0; k < slots.size() && k < values.size(); ++k)

@@ -29,6 +29,9 @@ struct PropertyResult {
   std::optional<std::uint64_t> first_violation;             // tick (as numbered by the caller)
   std::vector<std::pair<std::string, std::string>> values;  // read at first_violation
   std::string reason;                                       // not-monitored: why
+  // A property an uplink added or restated mid-run is monitored from the tick after the swap;
+  // one it removed or restated stops at the swap (both unset: the whole trace).
+  std::optional<std::uint64_t> monitored_from, monitored_until;
 };
 
 // What the properties may read: the trace's (or the run's) variables and the names that are
@@ -52,6 +55,17 @@ class PropertySet {
   // violation became final at this tick (safety properties, at the tick it happens).
   std::vector<std::size_t> step(const std::vector<Val>& frame, std::uint64_t tick);
 
+  // A new version of the requirements from the next tick on (an uplink swapped in after tick
+  // `last_tick`): a property with the same id and text keeps its monitor; the others stop at
+  // `last_tick`, and the new version's new or restated properties start on the next tick, each
+  // read over the trace from there. `literals` joins the vocabulary's (the new alternatives and
+  // enum values); the variables must already hold every name they read. Returns the stopped
+  // properties violated at their last tick that step() did not report (as violated_at_end).
+  std::vector<std::size_t> update(const std::vector<fretish::Requirement>& requirements,
+                                  const std::vector<fretish::Assumption>& assumptions,
+                                  const std::set<std::string>& literals,
+                                  std::optional<double> tick_seconds, std::uint64_t last_tick);
+
   // Verdicts of the trace so far, read as a whole finite trace.
   std::vector<PropertyResult> results() const;
   std::size_t size() const { return entries_.size(); }
@@ -63,13 +77,20 @@ class PropertySet {
  private:
   struct Entry {
     PropertyResult base;
+    std::string text;                             // what identifies it across versions
     std::unique_ptr<RequirementMonitor> monitor;  // null: not monitored (base.reason)
     bool reported = false;                        // a final violation was returned by step()
+    bool started = false;                         // stepped at least once, from first_tick
+    std::uint64_t first_tick = 0;
+    bool stopped = false;  // an uplink removed or restated it (base.monitored_until)
   };
+  // Every requirement, then every assumption as "always E", as one list.
+  void add_all(const std::vector<fretish::Requirement>& requirements,
+               const std::vector<fretish::Assumption>& assumptions,
+               std::optional<double> tick_seconds, std::vector<Entry>& out) const;
   std::vector<Entry> entries_;
-  const Vocabulary vocabulary_;
-  bool started_ = false;
-  std::uint64_t first_tick_ = 0;
+  Vocabulary vocabulary_;
+  bool started_ = false;  // step() was called: the trace is not empty
 };
 
 }  // namespace uabt::monitor

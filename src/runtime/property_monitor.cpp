@@ -24,6 +24,23 @@ void collect(const fretish::ExprPtr& e, std::set<std::string>& names) {
 
 PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& engine)
     : engine_(engine) {
+  const std::set<std::string> literals = bind(mission);
+  monitor::Vocabulary vocabulary{&variables_, &symbols_, literals};
+  properties_.emplace(mission.properties, mission.domain.assumptions, vocabulary,
+                      mission.domain.tick_seconds);
+}
+
+std::vector<PropertyViolation> PropertyMonitor::adopt(const load::Mission& mission,
+                                                      std::uint64_t last_tick) {
+  const std::set<std::string> literals = bind(mission);
+  std::vector<PropertyViolation> out;
+  for (std::size_t i : properties_->update(mission.properties, mission.domain.assumptions, literals,
+                                           mission.domain.tick_seconds, last_tick))
+    out.push_back({last_tick, properties_->result(i)});
+  return out;
+}
+
+std::set<std::string> PropertyMonitor::bind(const load::Mission& mission) {
   // Every name the properties read.
   std::set<std::string> names;
   for (const fretish::Requirement& r : mission.properties) {
@@ -37,26 +54,33 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
   }
   for (const auto& a : mission.domain.assumptions) collect(a.expr, names);
 
-  monitor::Vocabulary vocabulary{&variables_, &symbols_, {"none"}};
-  for (const load::Alternative& alt : mission.alternatives) vocabulary.literals.insert(alt.name);
+  std::set<std::string> literals{"none"};
+  for (const load::Alternative& alt : mission.alternatives) literals.insert(alt.name);
   for (const fretish::Variable& v : mission.domain.variables)
-    for (const std::string& literal : v.enum_values) vocabulary.literals.insert(literal);
+    for (const std::string& literal : v.enum_values) literals.insert(literal);
 
   // Node labels: the name attribute, else the ID where no other node has it.
   std::map<std::string, std::vector<NodeId>> by_name, by_kind;
   std::set<std::string> leaf_kinds;
-  for (NodeId id = 0; id < engine.node_count(); ++id) {
-    const NodeInfo& info = engine.info(id);
+  for (NodeId id = 0; id < engine_.node_count(); ++id) {
+    const NodeInfo& info = engine_.info(id);
     if (!info.alive) continue;
     if (!info.name.empty()) by_name[info.name].push_back(id);
     by_kind[info.kind].push_back(id);
-    if (engine.children(id).empty()) leaf_kinds.insert(info.kind);
+    if (engine_.children(id).empty()) leaf_kinds.insert(info.kind);
   }
   std::set<std::string> adaptable_ids;
   for (const load::AdaptableSite& site : mission.adaptables) adaptable_ids.insert(site.id);
 
+  // A selection in progress carries over a swap (the adaptable keeps its id).
+  std::vector<Adaptable> before = std::move(adaptables_);
+  nodes_.clear();
+  adaptables_.clear();
+  blackboard_.clear();
+  boolean_variable_.clear();
   for (const std::string& name : names) {
-    if (vocabulary.literals.count(name) != 0 && mission.domain.find(name) == nullptr) continue;
+    if (literals.count(name) != 0 && mission.domain.find(name) == nullptr) continue;
+    bool node_observable = false;
     for (const char* suffix : {".success", ".failure", ".running"}) {
       if (!ends_with(name, suffix)) continue;
       const std::string label = name.substr(0, name.size() - std::string(suffix).size());
@@ -69,8 +93,9 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
       if (it == nodes_.end()) it = nodes_.insert(nodes_.end(), make_node_observable(nodes));
       const int slot = variables_.id(name);
       (suffix[1] == 's' ? it->success : suffix[1] == 'f' ? it->failure : it->running) = slot;
+      node_observable = true;
     }
-    if (variables_.find(name)) continue;
+    if (node_observable) continue;
     std::string adaptable = name;
     const bool selected = ends_with(name, ".selected");
     if (selected) adaptable = name.substr(0, name.size() - 9);
@@ -79,7 +104,12 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
                              [&](const Adaptable& a) { return a.id == adaptable; });
       if (it == adaptables_.end()) {
         it = adaptables_.insert(adaptables_.end(), make_adaptable(adaptable));
-        it->calls = engine.subtree_calls(adaptable);
+        it->calls = engine_.subtree_calls(adaptable);
+        for (const Adaptable& old : before)
+          if (old.id == adaptable) {
+            it->chosen = old.chosen;
+            it->running = old.running;
+          }
       }
       (selected ? it->selected : it->mode) = variables_.id(name);
       continue;
@@ -87,15 +117,16 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
     // A variable of the world: declared, a robot leaf, or set on the blackboard.
     const fretish::Variable* declared = mission.domain.find(name);
     if (declared != nullptr || leaf_kinds.count(name) != 0 ||
-        engine.blackboard().get(name) != nullptr) {
+        engine_.blackboard().get(name) != nullptr) {
       blackboard_.emplace_back(variables_.id(name), name);
       boolean_variable_[name] = declared == nullptr || declared->type == fretish::VarType::boolean;
     }
   }
+  // Every bound slot is written before each step; a name the new version no longer shows
+  // reads as unknown rather than its last value.
   frame_.assign(variables_.size(), monitor::Val{});
-  seen_.assign(engine.node_count(), 0);
-  properties_.emplace(mission.properties, mission.domain.assumptions, vocabulary,
-                      mission.domain.tick_seconds);
+  seen_.resize(engine_.node_count(), 0);
+  return literals;
 }
 
 void PropertyMonitor::on_status_change(NodeId node, NodeStatus, NodeStatus next) {

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,12 @@ class PropertyMonitor : public Observer {
   // reported yet (eventually, finally, …).
   std::vector<PropertyViolation> at_end(std::uint64_t last_tick) const;
 
+  // An uplink swapped `mission` in after tick `last_tick` (its trees are in the engine now):
+  // the observables are bound again, to the nodes of the swapped-in trees too, and the
+  // properties follow PropertySet::update (kept, stopped, or monitored from the next tick).
+  // Returns the stopped properties violated at their last tick, not reported yet.
+  std::vector<PropertyViolation> adopt(const load::Mission& mission, std::uint64_t last_tick);
+
   std::vector<monitor::PropertyResult> results() const { return properties_->results(); }
   bool empty() const { return properties_->size() == 0; }
   // A guarantee violated or not monitored: the run fails.
@@ -68,6 +75,10 @@ class PropertyMonitor : public Observer {
     o.nodes = std::move(nodes);
     return o;
   }
+
+  // Binds every name `mission`'s properties and assumptions read to what the engine shows;
+  // returns the vocabulary's literals (alternatives, enum values).
+  std::set<std::string> bind(const load::Mission& mission);
 
   const Engine& engine_;
   monitor::Variables variables_;

@@ -3,6 +3,9 @@
 // the property read.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "manager/manager.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
@@ -41,7 +44,9 @@ const monitor::PropertyResult& property(const ManagerRun& run, const std::string
 TEST(MissionProperties, CuriosityHoldsItsPropertiesInItsScenarios) {
   for (const char* scenario : {"dusty_start.json", "rocks_mid_drive.json", "mud_uplink.json"}) {
     const ManagerRun run = run_in(curiosity(), scenario, compile::SelectionStyle::reactive);
-    ASSERT_EQ(run.properties.size(), 5u) << "four properties and the domain's assumption";
+    // Four properties and the domain's assumption; on_mud restates HoldOnUnknown and adds
+    // the assumption mud_alone.
+    ASSERT_EQ(run.properties.size(), scenario == std::string("mud_uplink.json") ? 7u : 5u);
     for (const auto& p : run.properties)
       EXPECT_EQ(p.verdict, monitor::Verdict::held) << scenario << ": " << p.id << " " << p.reason;
     EXPECT_FALSE(run.guarantees_failed);
@@ -84,6 +89,65 @@ TEST(MissionProperties, UnknownTerrainNeedsTheReactiveSelection) {
       {"OnRocks", "false"},
       {"navigation.selected", "on_rocks"}};
   EXPECT_EQ(found[0]->values, values);
+}
+
+// The version an uplink swaps in brings its own properties: the restated HoldOnUnknown
+// stops at the swap and its new text is monitored from the next tick on, like the package's
+// new assumption, over the trace from there.
+TEST(MissionProperties, AnUplinksPropertiesAreMonitoredFromTheSwap) {
+  const ManagerRun run = run_in(curiosity(), "mud_uplink.json", compile::SelectionStyle::reactive);
+  std::vector<const monitor::PropertyResult*> hold;
+  for (const auto& p : run.properties)
+    if (p.id == "HoldOnUnknown") hold.push_back(&p);
+  ASSERT_EQ(hold.size(), 2u) << property_summary(run);
+  EXPECT_EQ(hold[0]->monitored_until, 29u);
+  EXPECT_FALSE(hold[0]->monitored_from);
+  EXPECT_EQ(hold[1]->monitored_from, 30u);
+  EXPECT_FALSE(hold[1]->monitored_until);
+  EXPECT_EQ(property(run, "mud_alone").monitored_from, 30u);
+  EXPECT_FALSE(property(run, "NoDrillAway").monitored_from) << "kept: monitored throughout";
+  EXPECT_FALSE(property(run, "NoDrillAway").monitored_until);
+  EXPECT_NE(property_summary(run).find(
+                "property HoldOnUnknown: held (added by an uplink: monitored from tick 30)"),
+            std::string::npos)
+      << property_summary(run);
+}
+
+// A guarantee the package adds about a node of its own alternative: the gate proves it in
+// world.json's world (a drive takes 1 to 3 ticks), the rehearsal's scenario drives through
+// mud for 25 ticks, and the run sees the swapped-in node run too long.
+TEST(MissionProperties, ANewGuaranteeReadsTheSwappedInTreesNodes) {
+  uabt::testing::TempMission scratch({}, "work");
+  const auto dir = scratch.dir() / "msl";
+  std::filesystem::copy(curiosity(), dir, std::filesystem::copy_options::recursive);
+  const auto package = dir / "uplinks" / "mud_timed";
+  std::filesystem::copy(dir / "uplinks" / "on_mud", package,
+                        std::filesystem::copy_options::recursive);
+  scratch.write(
+      "msl/uplinks/mud_timed/alternatives/navigation/on_mud.xml",
+      uabt::testing::alternative_tree(
+          "on_mud", "<Sequence><IsTowardObject/><MoveForward name=\"crawl\"/></Sequence>"));
+  {
+    std::ofstream add(package / "requirements.fret", std::ios::app);
+    add << "CrawlBrief: upon crawl.running the rover shall within 3 ticks satisfy !crawl.running\n";
+  }
+  std::ifstream in(dir / "scenarios" / "mud_uplink.json");
+  std::string scenario((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "\"uplinks/on_mud\"";
+  scenario.replace(scenario.find(from), from.size(), "\"uplinks/mud_timed\"");
+  scratch.write("msl/scenarios/mud_timed.json", scenario);
+
+  const ManagerRun run = run_in(dir, "mud_timed.json", compile::SelectionStyle::reactive);
+  ASSERT_EQ(run.accepted_uplinks, std::vector<std::string>{"uplinks/mud_timed"})
+      << trace_summary(run);
+  const monitor::PropertyResult& crawl = property(run, "CrawlBrief");
+  EXPECT_EQ(crawl.monitored_from, 30u);
+  EXPECT_EQ(crawl.verdict, monitor::Verdict::violated) << property_summary(run);
+  EXPECT_EQ(crawl.first_violation, 33u) << "crawl runs from tick 30; within 3 ticks ends at 33";
+  EXPECT_TRUE(run.guarantees_failed);
+  const auto found = violations(run);
+  ASSERT_EQ(found.size(), 1u) << trace_summary(run);
+  EXPECT_EQ(found[0]->requirement, "CrawlBrief");
 }
 
 // Sequence[Adaptable nav, Drill] with one alternative `go` (MoveForward), the selection
