@@ -56,15 +56,17 @@ Outcome check_mission(load::Mission mission, const Options& options,
                              out.conformance.findings.end());
     }
   }
-  // A failing gate keeps the candidate as compiled.rejected.xml: what it says
-  // about the tree points there.
-  if (out.compiled.ok && !report.passed()) {
-    report.compiled_tree_file = report::kRejectedTree;
-    for (auto& f : report.findings)
-      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
-  }
+  keep_rejected_candidate(out);
   sort_findings(report.findings);
   return out;
+}
+
+void keep_rejected_candidate(Outcome& outcome) {
+  report::ReportInput& report = outcome.report;
+  if (!outcome.compiled.ok || report.passed()) return;
+  report.compiled_tree_file = report::kRejectedTree;
+  for (auto& f : report.findings)
+    if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
 }
 
 Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version) {

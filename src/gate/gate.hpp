@@ -56,4 +56,8 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
 Outcome check_mission(load::Mission mission, const Options& options,
                       const std::string& tool_version);
 
+// A failing gate keeps the candidate as compiled.rejected.xml: the report and what it says
+// about the tree point there. Call after adding findings; nothing when the outcome passes.
+void keep_rejected_candidate(Outcome& outcome);
+
 }  // namespace uabt::gate

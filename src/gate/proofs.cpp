@@ -57,12 +57,7 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
   }
   auto& findings = outcome.report.findings;
   findings.insert(findings.end(), found.begin(), found.end());
-  // Like any failing gate, a failed proof keeps the candidate as compiled.rejected.xml.
-  if (!outcome.report.passed()) {
-    outcome.report.compiled_tree_file = report::kRejectedTree;
-    for (auto& f : findings)
-      if (f.location.file == report::kCompiledTree) f.location.file = report::kRejectedTree;
-  }
+  keep_rejected_candidate(outcome);
   sort_findings(findings);
   outcome.report.stages.push_back("prove");
 }

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "base/files.hpp"
+#include "gate/contract.hpp"
 #include "report/impact.hpp"
 #include "verify/impact.hpp"
 
@@ -26,7 +27,8 @@ Outcome run_uplink_gate(const load::Mission& running, load::Mission merged, cons
   findings.insert(findings.end(), notes.begin(), notes.end());
   findings.insert(findings.end(), impact.findings.begin(), impact.findings.end());
   sort_findings(findings);
-  out.report.uplink = report::UplinkChange{package, std::move(merges), std::move(impact)};
+  out.report.uplink = report::UplinkChange{package, std::move(merges), std::move(impact), {}};
+  check_contract(running, out, options);
   return out;
 }
 

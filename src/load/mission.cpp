@@ -285,6 +285,10 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
     has_content = true;
   }
   merge_requirements(m, std::move(incoming), plan, shown);
+  for (GuaranteeConsent consent : plan.consent) {
+    consent.package = shown;
+    m.consents.push_back(std::move(consent));
+  }
   if (fs::is_regular_file(uplink / "domain.fret", ec)) {
     load_domain(m, uplink / "domain.fret");
     has_content = true;

@@ -42,6 +42,16 @@ struct UplinkMerge {
   int priority = 0, of = 0;
 };
 
+// uplink.json's consent that a guarantee of the mission may stop holding (DESIGN §11):
+// "retire": {"HammerPower": "reason"} or "weaken": {"LandSoon": "reason"}.
+struct GuaranteeConsent {
+  std::string package;      // displayed path of the uplink package
+  std::string requirement;  // the guarantee's id
+  std::string kind;         // "retire" | "weaken"
+  std::string reason;
+  SourceLocation location;  // its key in uplink.json
+};
+
 // One alternative behaviour: alternatives/<adaptable>/<name>.xml (or the replication
 // package's resource/<adaptable>/<name>/<name>.xml).
 struct Alternative {
@@ -70,8 +80,9 @@ struct Mission {
   fretish::Domain domain;                        // declared + inferred booleans
 
   std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present
-  std::vector<std::string> uplinks;  // uplink packages merged on top, in order (displayed)
-  std::vector<UplinkMerge> merges;   // what each uplink did to the requirements, in order
+  std::vector<std::string> uplinks;        // uplink packages merged on top, in order (displayed)
+  std::vector<UplinkMerge> merges;         // what each uplink did to the requirements, in order
+  std::vector<GuaranteeConsent> consents;  // guarantees the uplinks may retire or weaken
 
   // Everything the loader found wrong (syntax, references, structure, types).
   std::vector<Finding> findings;

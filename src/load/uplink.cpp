@@ -97,6 +97,31 @@ void read_remove(const Json& remove, const Locator& where, std::size_t from, Upl
   }
 }
 
+// "retire" / "weaken": {"Id": "why"}: the reason is what the report shows, so it is required.
+void read_consent(const std::string& kind, const Json& entries, const Locator& where,
+                  std::size_t from, UplinkPlan& plan, std::vector<Finding>& findings) {
+  if (!entries.is_object()) {
+    invalid(findings,
+            "\"" + kind +
+                "\" must be an object of guarantee ids and reasons: {\"HammerPower\": "
+                "\"the hammer is broken\"}",
+            where.at(from));
+    return;
+  }
+  for (const auto& [id, reason] : entries.items()) {
+    const std::size_t at = where.offset_of(id, from);
+    if (!reason.is_string() || reason.get<std::string>().empty()) {
+      invalid(findings,
+              "\"" + kind + "\" needs a reason for '" + id + "': {\"" + id +
+                  "\": \"why it may stop holding\"}",
+              where.at(at));
+    } else {
+      plan.consent.push_back({"", id, kind, reason.get<std::string>(), where.at(at)});
+    }
+    from = at + 1;
+  }
+}
+
 std::vector<std::string> ids_of(const std::vector<fretish::Requirement>& requirements) {
   std::vector<std::string> ids;
   for (const auto& r : requirements) ids.push_back(r.id);
@@ -187,9 +212,12 @@ UplinkPlan read_uplink_plan(const std::filesystem::path& path, const std::string
       read_place(value, where, at, plan, findings);
     else if (key == "remove")
       read_remove(value, where, at, plan, findings);
+    else if (key == "retire" || key == "weaken")
+      read_consent(key, value, where, at, plan, findings);
     else
       invalid(findings,
-              "unknown key \"" + key + "\" in uplink.json: expected \"place\" or \"remove\"",
+              "unknown key \"" + key +
+                  "\" in uplink.json: expected \"place\", \"remove\", \"retire\" or \"weaken\"",
               where.at(at));
   }
   return plan;

@@ -11,7 +11,8 @@
 
 namespace uabt::load {
 
-// uplink.json: {"place": {"Storm": {"before": "Req2"}}, "remove": ["Req3"]}
+// uplink.json: {"place": {"Storm": {"before": "Req2"}}, "remove": ["Req3"],
+//               "retire": {"HammerPower": "reason"}, "weaken": {"LandSoon": "reason"}}
 struct Placement {
   std::string requirement, relation, anchor;  // relation: "before" | "after"
   SourceLocation location;                    // the "Storm" key
@@ -24,6 +25,7 @@ struct Removal {
 struct UplinkPlan {
   std::vector<Placement> place;  // in file order
   std::vector<Removal> remove;
+  std::vector<GuaranteeConsent> consent;  // "retire" and "weaken", in file order
 };
 
 // Reads `path` (shown as `shown`). Every mistake is an `uplink-invalid` finding with its line

@@ -267,7 +267,7 @@ const char* detail::page_style() {
 
 std::string to_html(const ReportInput& input) {
   const bool passed = input.passed();
-  const char* verdict = passed ? "PASS" : "FAIL";
+  const std::string verdict = input.banner();
   const auto shown = detail::adaptables_shown(input);
   const std::string mission = input.mission_name.empty() ? "mission" : input.mission_name;
 
@@ -276,10 +276,10 @@ std::string to_html(const ReportInput& input) {
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>uabt report: " +
-      html_escape(mission) + " " + verdict + "</title>\n<style>" + kStyle +
+      html_escape(mission) + " " + html_escape(verdict) + "</title>\n<style>" + kStyle +
       (input.proofs ? detail::proofs_style() : "") + "</style>\n</head>\n<body>\n";
   out += std::string("<header class=\"") + (passed ? "pass" : "fail") +
-         "\">\n<div class=\"badge\">" + verdict + "</div>\n<div>\n<h1>Mission " +
+         "\">\n<div class=\"badge\">" + html_escape(verdict) + "</div>\n<div>\n<h1>Mission " +
          html_escape(mission) + "</h1>\n<p>" +
          (passed ? "No error-severity finding in the stages that ran."
                  : "Error-severity findings: the mission must not be uplinked as it is.") +

@@ -146,6 +146,10 @@ std::string to_json(const ReportInput& input) {
   out["version"] = input.tool_version;
   out["mission"] = input.mission_name;
   out["verdict"] = input.passed() ? "pass" : "fail";
+  // What the banners say when it is more than the verdict: "pass with 1 guarantee retired"
+  // (an uplink gave one up with uplink.json's consent).
+  if (const std::string text = input.verdict_text(); text != out["verdict"])
+    out["verdict_text"] = text;
   Json findings = Json::array();
   for (const auto& finding : input.findings) findings.push_back(finding_json(finding));
   out["findings"] = std::move(findings);
@@ -153,8 +157,7 @@ std::string to_json(const ReportInput& input) {
   for (const auto& entry : input.coverage) coverage.push_back(coverage_json(entry));
   out["coverage"] = std::move(coverage);
   if (input.uplink) out["uplink"] = detail::uplink_json(*input.uplink);
-  if (input.proofs && !input.proofs->answers.empty())
-    out["proofs"] = proofs_json(*input.proofs);
+  if (input.proofs && !input.proofs->answers.empty()) out["proofs"] = proofs_json(*input.proofs);
   // A message with invalid UTF-8 (from a broken input file) must not abort the report.
   return out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -1,5 +1,3 @@
-#include <cctype>
-
 #include "report/common.hpp"
 #include "report/coverage_view.hpp"
 #include "report/reports.hpp"
@@ -131,12 +129,11 @@ void coverage_section(const verify::Coverage& coverage, std::string& out) {
 }  // namespace
 
 std::string to_markdown(const ReportInput& input) {
-  const bool passed = input.passed();
   const auto counts = detail::count_severities(input.findings);
   std::string out;
   out += "## uabt: " + md(input.mission_name) + "\n\n";
-  out += std::string("**Verdict: ") + (passed ? "PASS" : "FAIL") + "** | " +
-         detail::counts_text(counts) + " | uabt " + md(input.tool_version);
+  out += "**Verdict: " + input.banner() + "** | " + detail::counts_text(counts) + " | uabt " +
+         md(input.tool_version);
   if (!input.stages.empty()) {
     out += " | stages:";
     for (std::size_t i = 0; i < input.stages.size(); ++i)

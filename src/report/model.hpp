@@ -13,10 +13,27 @@ namespace uabt::report {
 
 // What `gate --uplink` adds to a report (DESIGN §11): the package, where the merge put each
 // requirement, and the behaviour change from the running version to the merged one.
+// A guarantee whose statement an uplink changes (DESIGN §11: the guarantees are the mission's
+// contract), with its status on the version on board and on the merged mission.
+struct ContractChange {
+  std::string requirement;
+  // added | restated (the merged mission still satisfies the old text) | weakened (restated,
+  // and it does not) | removed
+  std::string change;
+  std::string before_text, after_text;  // "" where it is not stated
+  std::string before;     // the old text on the version on board ("proved", "violated at tick 3")
+  std::string old_after;  // the old text on the merged mission
+  std::string after;      // the new text on the merged mission ("" when removed)
+  std::string consent;    // "retire" | "weaken" when uplink.json allows it, else ""
+  std::string consent_reason;
+  bool old_holds = false;  // the merged mission satisfies the old text (proved)
+};
+
 struct UplinkChange {
   std::string package;  // as given on the command line
   std::vector<load::UplinkMerge> merges;
   verify::Impact impact;
+  std::vector<ContractChange> contract;  // added, restated, weakened, removed, in that order
 };
 
 // Everything a report shows about one mission, gathered by the gate (or by `verify`).
@@ -43,6 +60,11 @@ struct ReportInput {
   std::optional<Proofs> proofs;        // set when the mission states guarantees
 
   bool passed() const { return !has_errors(findings); }
+  // "pass", "fail", or "pass with 1 guarantee retired" (and/or weakened) when an uplink gives
+  // up guarantees with uplink.json's consent: every format's banner says it in these words.
+  std::string verdict_text() const;
+  // verdict_text with its first word in capitals, for banners: "PASS with 1 guarantee retired".
+  std::string banner() const;
 };
 
 }  // namespace uabt::report

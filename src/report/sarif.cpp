@@ -197,6 +197,9 @@ std::string to_sarif(const ReportInput& input) {
                                                     "work tree that holds the mission, or "
                                                     "--source-root."}}}}}};
   run["results"] = std::move(results);
+  // The verdict in the reports' words ("pass with 1 guarantee retired"), for code scanning
+  // integrations that show run properties.
+  run["properties"] = Json{{"verdict", input.verdict_text()}};
 
   Json sarif;
   sarif["$schema"] = "https://json.schemastore.org/sarif-2.1.0.json";

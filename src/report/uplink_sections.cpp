@@ -56,6 +56,32 @@ std::string html_code(const std::string& text) {
   return "<code>" + html_escape(text) + "</code>";
 }
 
+// "weakened (uplink.json: weaken, "reason")".
+std::string change_text(const ContractChange& c) {
+  std::string out = c.change;
+  if (c.change == "removed" && c.old_holds) out += ", still holds";
+  if (!c.consent.empty()) out += " (uplink.json " + c.consent + "s it: " + c.consent_reason + ")";
+  return out;
+}
+
+// The cells of one contract row: guarantee, change, status on board, the old statement on the
+// merged mission, the new statement on the merged mission.
+std::vector<std::string> contract_cells(const ContractChange& c) {
+  return {c.requirement, change_text(c), c.before.empty() ? "-" : c.before,
+          c.old_after.empty() ? "-" : c.old_after, c.after.empty() ? "-" : c.after};
+}
+
+const char* const kContractHeader[] = {"Guarantee", "Change", "Before (on board)",
+                                       "Old statement, merged", "New statement, merged"};
+
+// JSON null for "not there" (an empty text, an unset priority), the value otherwise.
+Json or_null(const std::string& text) {
+  return text.empty() ? Json(nullptr) : Json(text);
+}
+Json or_null(int number) {
+  return number == 0 ? Json(nullptr) : Json(number);
+}
+
 }  // namespace
 
 Json uplink_json(const UplinkChange& uplink) {
@@ -64,17 +90,33 @@ Json uplink_json(const UplinkChange& uplink) {
     Json j;
     j["requirement"] = m.requirement;
     j["rule"] = m.rule;
-    j["relation"] = m.relation.empty() ? Json(nullptr) : Json(m.relation);
-    j["anchor"] = m.anchor.empty() ? Json(nullptr) : Json(m.anchor);
-    j["adaptable"] = m.adaptable.empty() ? Json(nullptr) : Json(m.adaptable);
-    j["priority"] = m.priority == 0 ? Json(nullptr) : Json(m.priority);
+    j["relation"] = or_null(m.relation);
+    j["anchor"] = or_null(m.anchor);
+    j["adaptable"] = or_null(m.adaptable);
+    j["priority"] = or_null(m.priority);
     j["of"] = m.priority == 0 ? Json(nullptr) : Json(m.of);
     j["location"] =
         Json{{"file", m.location.file}, {"line", m.location.line}, {"column", m.location.column}};
     merges.push_back(std::move(j));
   }
+  Json contract = Json::array();
+  for (const ContractChange& c : uplink.contract) {
+    Json j;
+    j["requirement"] = c.requirement;
+    j["change"] = c.change;
+    j["before_text"] = or_null(c.before_text);
+    j["after_text"] = or_null(c.after_text);
+    j["before"] = or_null(c.before);
+    j["old_after"] = or_null(c.old_after);
+    j["after"] = or_null(c.after);
+    j["old_holds"] = c.old_holds;
+    j["consent"] = or_null(c.consent);
+    j["consent_reason"] = or_null(c.consent_reason);
+    contract.push_back(std::move(j));
+  }
   Json out;
   out["package"] = uplink.package;
+  out["contract"] = std::move(contract);
   out["merge"] = std::move(merges);
   out["behaviour_change"] = impact_nodes_json(uplink.impact);
   return out;
@@ -82,6 +124,23 @@ Json uplink_json(const UplinkChange& uplink) {
 
 std::string uplink_markdown(const UplinkChange& uplink) {
   std::string out = "\n### Uplink " + span(uplink.package) + "\n\n";
+  if (!uplink.contract.empty()) {
+    out += "Guarantees the uplink changes (the mission's contract):\n\n|";
+    for (const char* h : kContractHeader) out += std::string(" ") + h + " |";
+    out += "\n|---|---|---|---|---|\n";
+    for (const ContractChange& c : uplink.contract) {
+      const std::vector<std::string> cells = contract_cells(c);
+      out += "| " + span(cells[0]) + " |";
+      for (std::size_t i = 1; i < cells.size(); ++i) {
+        std::string text;
+        for (char ch : clean_text(cells[i]))
+          text += ch == '|' ? std::string("\\|") : std::string(1, ch);
+        out += " " + html_escape(text) + " |";
+      }
+      out += "\n";
+    }
+    out += "\n";
+  }
   out += "Where the merge put each requirement:\n\n";
   out += "| Requirement | Node | Rule | Priority |\n|---|---|---|---|\n";
   for (const auto& m : uplink.merges)
@@ -102,6 +161,21 @@ std::string uplink_markdown(const UplinkChange& uplink) {
 
 std::string uplink_html(const UplinkChange& uplink) {
   std::string out = "<section id=\"uplink\">\n<h2>Uplink " + html_code(uplink.package) + "</h2>\n";
+  if (!uplink.contract.empty()) {
+    out +=
+        "<table><caption>Guarantees the uplink changes (the mission's contract)</caption>\n"
+        "<thead><tr>";
+    for (const char* h : kContractHeader) out += std::string("<th>") + h + "</th>";
+    out += "</tr></thead>\n<tbody>\n";
+    for (const ContractChange& c : uplink.contract) {
+      const std::vector<std::string> cells = contract_cells(c);
+      out += "<tr><td>" + html_code(cells[0]) + "</td>";
+      for (std::size_t i = 1; i < cells.size(); ++i)
+        out += "<td>" + html_escape(cells[i]) + "</td>";
+      out += "</tr>\n";
+    }
+    out += "</tbody></table>\n";
+  }
   out +=
       "<table><caption>Where the merge put each requirement</caption>\n<thead><tr><th>Requirement"
       "</th><th>Node</th><th>Rule</th><th>Priority</th></tr></thead>\n<tbody>\n";

@@ -92,3 +92,21 @@ TEST_F(BarePackage, AScenarioUplinkToNoFolderFailsBeforeTickOne) {
 }
 
 }  // namespace
+
+namespace {
+
+// The contract check is part of the one gate: without its uplink.json consent, on_mud's weaker
+// HoldOnUnknown is refused by the running manager as by `gate --uplink`.
+TEST_F(BarePackage, AWeakenedGuaranteeWithoutConsentIsRejectedByTheRunToo) {
+  fs::remove(mission() / "uplinks" / "on_mud" / "uplink.json");
+  const CliRun gate = uabt_in(root(), "gate msl --uplink msl/uplinks/on_mud --out out");
+  EXPECT_EQ(gate.exit_code, 1) << gate.out;
+  EXPECT_NE(gate.out.find("[uplink-guarantee-weakened]"), std::string::npos) << gate.out;
+  const CliRun run = uabt_in(root(), "run msl --scenario msl/scenarios/mud_uplink.json");
+  EXPECT_NE(run.out.find("uplink uplinks/on_mud rejected"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("guarantee 'HoldOnUnknown' is restated in a weaker form"),
+            std::string::npos)
+      << run.out;
+}
+
+}  // namespace

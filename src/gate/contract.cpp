@@ -1,0 +1,228 @@
+#include "gate/contract.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "base/suggest.hpp"
+#include "bt/xml_io.hpp"
+#include "monitor/property_set.hpp"
+#include "prove/outcome.hpp"
+#include "report/reports.hpp"
+
+namespace uabt::gate {
+
+namespace {
+
+using Requirements = std::vector<fretish::Requirement>;
+
+Requirements guarantees_of(const load::Mission& m) {
+  Requirements out;
+  for (const auto& r : m.properties)
+    if (!monitor::is_assumption(r)) out.push_back(r);
+  return out;
+}
+
+const fretish::Requirement* find(const Requirements& in, const std::string& id) {
+  for (const auto& r : in)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+// `mission` (compiled as `xml`) proving `guarantees` in its own world: its assumptions and
+// Environment requirements stay, its guarantees are replaced. Verdicts by requirement id.
+std::map<std::string, prove::Answer> prove_on(const load::Mission& mission, const std::string& xml,
+                                              const Requirements& guarantees,
+                                              const prove::Options& options) {
+  std::map<std::string, prove::Answer> out;
+  if (guarantees.empty()) return out;
+  std::vector<Finding> ignored;
+  auto doc = bt::parse_document(xml, "compiled.xml", ignored);
+  load::Mission probe = mission;
+  probe.properties.erase(
+      std::remove_if(probe.properties.begin(), probe.properties.end(),
+                     [](const fretish::Requirement& r) { return !monitor::is_assumption(r); }),
+      probe.properties.end());
+  probe.properties.insert(probe.properties.end(), guarantees.begin(), guarantees.end());
+  const auto not_checked = [&](const std::string& why) {
+    for (const auto& g : guarantees) {
+      prove::Answer a;
+      a.requirement = g.id;
+      a.text = g.text;
+      a.location = g.location;
+      a.verdict = prove::Verdict::unsupported;
+      a.reason = why;
+      out[g.id] = a;
+    }
+  };
+  if (!doc) {
+    not_checked("the compiled tree does not read back");
+    return out;
+  }
+  try {
+    const prove::Result result = prove::prove(probe, *doc, prove::mission_world(mission), options);
+    for (const prove::Answer& a : result.answers) out[a.requirement] = a;
+  } catch (const std::exception& e) {
+    not_checked(e.what());
+  }
+  return out;
+}
+
+std::string status_of(const std::map<std::string, prove::Answer>& answers, const std::string& id) {
+  const auto it = answers.find(id);
+  if (it == answers.end()) return "";
+  const prove::Answer& a = it->second;
+  report::ProofAnswer shown;
+  shown.verdict = prove::verdict_name(a.verdict);
+  shown.depth = a.depth;
+  std::string text = report::proof_verdict_text(shown);
+  if (!a.reason.empty()) text += " (" + a.reason + ")";
+  return text;
+}
+
+// Where a removal was said: its uplink.json entry, else the package.
+SourceLocation removal_location(const load::Mission& merged, const std::string& id) {
+  for (const auto& record : merged.merges)
+    if (record.requirement == id && record.rule == "removed") return record.location;
+  return {merged.uplinks.empty() ? std::string() : merged.uplinks.back(), 0, 0};
+}
+
+}  // namespace
+
+void check_contract(const load::Mission& running, Outcome& merged, const Options& options) {
+  if (!merged.mission || !merged.report.uplink) return;
+  const load::Mission& now = *merged.mission;
+  const Requirements before = guarantees_of(running), after = guarantees_of(now);
+
+  // What the package changes: restated (same id, other text) or no longer stated.
+  Requirements changed;
+  for (const auto& g : before) {
+    const fretish::Requirement* kept = find(after, g.id);
+    if (kept == nullptr || kept->text != g.text) changed.push_back(g);
+  }
+  std::map<std::string, const load::GuaranteeConsent*> consent;
+  for (const auto& c : now.consents) consent[c.requirement] = &c;
+
+  std::vector<Finding> found;
+  std::vector<std::string> old_ids;
+  for (const auto& g : before) old_ids.push_back(g.id);
+  for (const auto& c : now.consents) {
+    if (find(before, c.requirement) != nullptr) continue;
+    Finding f = make_finding("uplink-invalid",
+                             "uplink.json may " + c.kind + " '" + c.requirement +
+                                 "', which is not a guarantee of the mission on board",
+                             c.location);
+    if (const std::string hint = did_you_mean(c.requirement, old_ids); !hint.empty())
+      f.notes.push_back(hint);
+    found.push_back(std::move(f));
+  }
+
+  // The old statements on both versions; the new ones come from the gate's own proof step.
+  std::map<std::string, prove::Answer> on_board, on_merged;
+  if (!changed.empty() && !merged.compiled_xml.empty()) {
+    on_merged = prove_on(now, merged.compiled_xml, changed, options.prove);
+    const compile::Result compiled = compile::compile_mission(running, options.compile);
+    if (compiled.ok)
+      on_board =
+          prove_on(running, bt::write_document(compiled.document, {}), changed, options.prove);
+  }
+  std::map<std::string, std::string> new_status;
+  if (merged.report.proofs)
+    for (const auto& a : merged.report.proofs->answers)
+      new_status[a.requirement] = report::proof_verdict_text(a);
+
+  std::vector<report::ContractChange> contract;
+  for (const auto& g : after)
+    if (find(before, g.id) == nullptr)
+      contract.push_back({g.id, "added", "", g.text, "", "", new_status[g.id], "", "", false});
+  for (const auto& g : changed) {
+    const fretish::Requirement* restated = find(after, g.id);
+    const auto answer = on_merged.find(g.id);
+    const bool holds =
+        answer != on_merged.end() && answer->second.verdict == prove::Verdict::proved;
+    const load::GuaranteeConsent* agreed = consent.count(g.id) ? consent[g.id] : nullptr;
+    report::ContractChange change{g.id,
+                                  restated ? (holds ? "restated" : "weakened") : "removed",
+                                  g.text,
+                                  restated ? restated->text : "",
+                                  status_of(on_board, g.id),
+                                  status_of(on_merged, g.id),
+                                  restated ? new_status[g.id] : "",
+                                  agreed ? agreed->kind : "",
+                                  agreed ? agreed->reason : "",
+                                  holds};
+    const SourceLocation at = restated ? restated->location : removal_location(now, g.id);
+    const std::string old_on_merged = change.old_after.empty() ? "not checked" : change.old_after;
+    Finding f;
+    if (holds) {
+      f = make_finding(restated ? "uplink-guarantee-restated" : "uplink-guarantee-removed",
+                       restated ? "guarantee '" + g.id +
+                                      "' is restated, and the merged mission still satisfies "
+                                      "what it said before: " +
+                                      g.text
+                                : "guarantee '" + g.id +
+                                      "' is no longer stated, and the merged mission still "
+                                      "satisfies it: " +
+                                      g.text,
+                       at);
+      f.severity = Severity::note;
+    } else {
+      f = make_finding(restated ? "uplink-guarantee-weakened" : "uplink-guarantee-removed",
+                       "guarantee '" + g.id + "' " +
+                           (restated ? "is restated in a weaker form" : "is no longer stated") +
+                           ": the merged mission does not satisfy what it said before (" +
+                           old_on_merged + "): " + g.text,
+                       at);
+      f.severity = agreed ? Severity::warning : Severity::error;
+      if (agreed)
+        f.notes.push_back("uplink.json may " + agreed->kind + " it: " + agreed->reason);
+      else
+        f.notes.push_back(
+            "if the mission may give it up, say so in the package's uplink.json: "
+            "{\"" +
+            std::string(restated ? "weaken" : "retire") + "\": {\"" + g.id + "\": \"why\"}}");
+      if (answer != on_merged.end() && answer->second.counterexample)
+        for (const std::string& line : prove::table_lines(*answer->second.counterexample))
+          f.notes.push_back(line);
+    }
+    f.requirements = {g.id};
+    found.push_back(std::move(f));
+    if (holds && agreed) {
+      Finding unneeded =
+          make_finding("uplink-consent-unneeded",
+                       "uplink.json may " + agreed->kind + " '" + g.id +
+                           "', but the merged mission still satisfies it: not needed",
+                       agreed->location);
+      unneeded.requirements = {g.id};
+      found.push_back(std::move(unneeded));
+    }
+    contract.push_back(std::move(change));
+  }
+  // A consent for a guarantee the package leaves as it is.
+  for (const auto& c : now.consents) {
+    if (find(before, c.requirement) == nullptr) continue;
+    if (std::any_of(changed.begin(), changed.end(),
+                    [&](const fretish::Requirement& g) { return g.id == c.requirement; }))
+      continue;
+    Finding f = make_finding("uplink-consent-unneeded",
+                             "uplink.json may " + c.kind + " '" + c.requirement +
+                                 "', but the package leaves it as it is: not needed",
+                             c.location);
+    f.requirements = {c.requirement};
+    found.push_back(std::move(f));
+  }
+  // Contract changes first: added, restated, weakened, removed.
+  const auto rank = [](const std::string& change) {
+    return change == "added" ? 0 : change == "restated" ? 1 : change == "weakened" ? 2 : 3;
+  };
+  std::stable_sort(contract.begin(), contract.end(),
+                   [&](const report::ContractChange& a, const report::ContractChange& b) {
+                     return rank(a.change) < rank(b.change);
+                   });
+  merged.report.uplink->contract = std::move(contract);
+  auto& findings = merged.report.findings;
+  findings.insert(findings.end(), found.begin(), found.end());
+  keep_rejected_candidate(merged);
+  sort_findings(findings);
+}
+
+}  // namespace uabt::gate
