@@ -70,5 +70,19 @@ TEST(PropertyObservables, AnUplinkThatRetiresTheLastNodeSaysSo) {
   EXPECT_NE(found[0].message.find("Req2"), std::string::npos) << found[0].message;
 }
 
+// A condition only the retired alternative checks is no observable either, for the same reason.
+TEST(PropertyObservables, AnUplinkThatRetiresTheLastConditionSaysSo) {
+  auto files = mission_files("msl_curiosity");
+  files["requirements.fret"] += "Left: the rover shall never satisfy IsRockAtLeft & IsDug\n";
+  const TempMission t(files, "msl_curiosity");
+  EXPECT_TRUE(references(load_merged(t.dir())).empty());
+  const std::vector<Finding> found =
+      references(load_merged(t.dir(), {t.dir() / "uplinks/retire_rocks"}));
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].location.line, 23);
+  EXPECT_NE(found[0].message.find("removed the last node 'IsRockAtLeft'"), std::string::npos)
+      << found[0].message;
+}
+
 }  // namespace
 }  // namespace uabt::gate
