@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
+
+#include "test_support.hpp"
 
 namespace uabt::testing {
 
@@ -50,6 +53,23 @@ inline std::string mission_with(const std::string& body) {
 inline std::string alternative_tree(const std::string& id, const std::string& body = "<Stop/>") {
   return "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"" + id + "\">\n    " + body +
          "\n  </BehaviorTree>\n</root>\n";
+}
+
+inline std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The files of a shipped mission, to vary one of them in a temporary copy.
+inline std::map<std::string, std::string> mission_files(const std::string& name) {
+  std::map<std::string, std::string> files;
+  const auto root = mission_dir(name);
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root))
+    if (e.is_regular_file())
+      files[std::filesystem::relative(e.path(), root).generic_string()] = read_all(e.path());
+  return files;
 }
 
 }  // namespace uabt::testing

@@ -24,9 +24,7 @@ void register_compile(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", args->output, "output XML file (default: stdout)");
   cmd->add_option("--bt-format", args->bt_format, "BehaviorTree.CPP XML format")
       ->check(CLI::IsMember({3, 4}));
-  cmd->add_option("--selection", args->selection,
-                  "selector style of every adaptable node (default: its own selection attribute, "
-                  "else sequence)")
+  cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);

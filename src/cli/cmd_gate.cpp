@@ -27,9 +27,7 @@ void register_gate(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--selection", args->selection,
-                  "selector style of every adaptable node (default: its own selection attribute, "
-                  "else sequence)")
+  cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");

@@ -58,9 +58,7 @@ void register_prove(CLI::App& app, int& exit_code) {
   cmd->add_option("--engine", args->engine,
                   "auto | explicit (state enumeration) | symbolic (Z3: BMC and k-induction)")
       ->check(CLI::IsMember({"auto", "explicit", "symbolic"}));
-  cmd->add_option("--selection", args->selection,
-                  "selector style of every adaptable node (default: its own selection attribute, "
-                  "else sequence)")
+  cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--counterexamples", args->counterexamples,
                   "write each counterexample as DIR/<requirement>.json (a runtime scenario)");

@@ -69,9 +69,7 @@ void register_run(CLI::App& app, int& exit_code) {
       "TICK:DIR — an uplink package (a path from the current directory) arriving before tick "
       "TICK");
   cmd->add_option("--trace", args->trace, "write the trace as JSON lines to FILE");
-  cmd->add_option("--selection", args->selection,
-                  "selector style of every adaptable node (default: its own selection attribute, "
-                  "else sequence)")
+  cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--max-ticks", args->max_ticks,
                   "stop after this many ticks, verdict timeout (default: the scenario's)")

@@ -31,6 +31,10 @@ compile::SelectionStyle selection_style(const std::string& name);
 // --selection NAME: the style of every adaptable node; "" (not given): each node's own
 // `<Adaptable selection=…>`, else sequence.
 void apply_selection(const std::string& name, compile::Options& options);
+// The help of every command's --selection.
+inline constexpr const char* kSelectionHelp =
+    "selector style of every adaptable node (default: its own selection attribute, else "
+    "sequence); optimized keeps a node's declared reactive (a decision re-checked every tick)";
 
 // Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
 void emit(const std::string& path, const std::string& content);

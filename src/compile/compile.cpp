@@ -90,6 +90,15 @@ SelectionStyle selection_style_of(const load::Mission& m, const std::string& ada
   return options.selection;
 }
 
+bool reactive_selection(const load::Mission& m, const std::string& adaptable,
+                        const Options& options) {
+  const SelectionStyle style = selection_style_of(m, adaptable, options);
+  if (style != SelectionStyle::optimized) return style == SelectionStyle::reactive;
+  for (const auto& site : m.adaptables)
+    if (site.id == adaptable && site.selection == "reactive") return true;
+  return false;
+}
+
 namespace {
 
 // Fig. 4: Fallback[Sequence[guard_i, SubTree alt_i] …] in priority order, default last.
@@ -97,7 +106,7 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
                            const Options& options, std::vector<TraceEntry>& trace,
                            std::vector<Finding>& findings, std::vector<SelectionStats>& stats) {
   const SelectionStyle style = selection_style_of(m, adaptable, options);
-  const bool reactive = style == SelectionStyle::reactive;
+  const bool reactive = reactive_selection(m, adaptable, options);
   const std::size_t trace_start = trace.size();
   const std::size_t findings_start = findings.size();
   bt::TreeDef tree;
@@ -114,7 +123,8 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
     branch.set_attribute("name", req->id);
     if (req->guard) {
       try {
-        branch.children.push_back(guard_to_tree(*req->guard, m.domain, style));
+        branch.children.push_back(guard_to_tree(
+            *req->guard, m.domain, reactive ? SelectionStyle::reactive : SelectionStyle::sequence));
       } catch (const UnsupportedGuard& e) {
         Finding f = make_finding("compile-unsupported", "requirement " + req->id + ": " + e.what(),
                                  req->guard_location);
@@ -162,8 +172,8 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
   if (style == SelectionStyle::optimized && findings.size() == findings_start) {
     std::vector<TraceEntry> decision_trace;
     SelectionStats& node_stats = stats.emplace_back();
-    if (auto root =
-            optimized_selector(m, adaptable, options.bt_format, decision_trace, node_stats)) {
+    if (auto root = optimized_selector(m, adaptable, options.bt_format, reactive, decision_trace,
+                                       node_stats)) {
       tree.root = std::move(*root);
       trace.resize(trace_start);
       trace.insert(trace.end(), decision_trace.begin(), decision_trace.end());

@@ -56,6 +56,11 @@ struct Result {
 SelectionStyle selection_style_of(const load::Mission& mission, const std::string& adaptable,
                                   const Options& options);
 
+// Whether `adaptable`'s selection is re-checked every tick: `reactive`, or `optimized` on a node
+// that declares selection="reactive" (optimized chooses the layout, not the reactivity).
+bool reactive_selection(const load::Mission& mission, const std::string& adaptable,
+                        const Options& options);
+
 // Algorithm 1 + Fig. 4: every <Adaptable ID="A"/> becomes <SubTree ID="A" _autoremap="true"/>
 // and a selection tree A = Fallback[Sequence[guard_i, SubTree alt_i]...] in priority order.
 Result compile_mission(const load::Mission& mission, const Options& options);
@@ -68,9 +73,12 @@ bt::Node guard_to_tree(const fretish::Expr& guard, const fretish::Domain& domain
 // --selection optimized: the decision structure of one adaptable node's selection, when it ticks
 // fewer conditions than Fig. 4 (on average, then in the worst case); nullopt otherwise (the
 // reason is in `stats`). Appends its trace entries (every leaf names its requirement).
+// `reactive`: the decision is re-checked every tick (WhileDoElse, ReactiveSequence), so a
+// changed state pre-empts a running alternative as a ReactiveFallback does.
 std::optional<bt::Node> optimized_selector(const load::Mission& mission,
                                            const std::string& adaptable, int bt_format,
-                                           std::vector<TraceEntry>& trace, SelectionStats& stats);
+                                           bool reactive, std::vector<TraceEntry>& trace,
+                                           SelectionStats& stats);
 
 // BT.CPP script text of a relational atom: "battery < 20", "terrain == 'rocks'".
 std::string atom_to_script(const fretish::Expr& atom, const fretish::Domain& domain);

@@ -1,6 +1,7 @@
 // --selection optimized: a selection tree that decides over the guards' atoms instead of
 // trying the guards one after the other, emitted with BT.CPP 4.10 nodes only (IfThenElse,
-// Sequence, Inverter, condition leaves, ScriptCondition).
+// Sequence, Inverter, condition leaves, ScriptCondition; re-checked every tick: WhileDoElse,
+// ReactiveSequence).
 #include <algorithm>
 
 #include "compile/compile.hpp"
@@ -18,13 +19,14 @@ class Emitter {
  public:
   Emitter(const load::Mission& m, const std::string& adaptable,
           const std::vector<const fretish::SelectionRequirement*>& reqs,
-          const SelectionSpace& space, const Decision& decision, int bt_format)
+          const SelectionSpace& space, const Decision& decision, int bt_format, bool reactive)
       : m_(m),
         adaptable_(adaptable),
         reqs_(reqs),
         space_(space),
         decision_(decision),
-        bt_format_(bt_format) {}
+        bt_format_(bt_format),
+        reactive_(reactive) {}
 
   bt::Node root() {
     std::vector<std::size_t> cells(space_.cells());
@@ -162,11 +164,14 @@ class Emitter {
       std::swap(yes_cells, no_cells);
     }
     // A side where no requirement holds fails: Sequence[test, other side] (with the test
-    // inverted when the gap is on its true side).
-    if (is_gap(no)) return node("Sequence", {std::move(test), emit(yes, yes_cells)});
+    // inverted when the gap is on its true side). Reactive: the test runs again every tick and
+    // halts the side it no longer selects, as Fig. 4's ReactiveFallback does.
+    const char* guarded = reactive_ ? "ReactiveSequence" : "Sequence";
+    if (is_gap(no)) return node(guarded, {std::move(test), emit(yes, yes_cells)});
     if (is_gap(yes))
-      return node("Sequence", {node("Inverter", {std::move(test)}), emit(no, no_cells)});
-    return node("IfThenElse", {std::move(test), emit(yes, yes_cells), emit(no, no_cells)});
+      return node(guarded, {node("Inverter", {std::move(test)}), emit(no, no_cells)});
+    return node(reactive_ ? "WhileDoElse" : "IfThenElse",
+                {std::move(test), emit(yes, yes_cells), emit(no, no_cells)});
   }
 
   const load::Mission& m_;
@@ -175,6 +180,7 @@ class Emitter {
   const SelectionSpace& space_;
   const Decision& decision_;
   int bt_format_;
+  bool reactive_;
   mutable const fretish::SelectionRequirement* leaf_requirement_ = nullptr;
 };
 
@@ -187,8 +193,8 @@ int depth_of(const bt::Node& n) {
 }  // namespace
 
 std::optional<bt::Node> optimized_selector(const load::Mission& m, const std::string& adaptable,
-                                           int bt_format, std::vector<TraceEntry>& trace,
-                                           SelectionStats& stats) {
+                                           int bt_format, bool reactive,
+                                           std::vector<TraceEntry>& trace, SelectionStats& stats) {
   const auto reqs = m.selections_for(adaptable);
   stats.adaptable = adaptable;
   stats.requirements = reqs.size();
@@ -216,7 +222,7 @@ std::optional<bt::Node> optimized_selector(const load::Mission& m, const std::st
     stats.reason = "Fig. 4 ticks no more conditions";
     return std::nullopt;
   }
-  Emitter emitter(m, adaptable, reqs, *space, decision, bt_format);
+  Emitter emitter(m, adaptable, reqs, *space, decision, bt_format, reactive);
   bt::Node root = emitter.root();
   if (depth_of(root) > 200) {  // BT.CPP refuses nesting deeper than 256
     stats.reason = "the decision structure would nest too deep";

@@ -1,6 +1,7 @@
 #include "gate/properties.hpp"
 
 #include <map>
+#include <set>
 
 namespace uabt::gate {
 
@@ -8,20 +9,48 @@ namespace {
 
 using Type = monitor::Observables::Type;
 
-void visit(const bt::Node& root, std::map<std::string, int>& by_kind,
-           std::map<std::string, int>& by_name, std::map<std::string, bool>& leaves) {
+// Every label a node of `root` answers to (its name, its ID) and the IDs of its leaves.
+void visit(const bt::Node& root, std::set<std::string>& labels, std::set<std::string>& leaves) {
   std::vector<const bt::Node*> stack{&root};
   while (!stack.empty()) {
     const bt::Node* n = stack.back();
     stack.pop_back();
     if (n->tag != "Adaptable") {
       if (const std::string* name = n->attribute("name"); name != nullptr && !name->empty())
-        ++by_name[*name];
-      ++by_kind[n->kind()];
-      if (n->children.empty() && n->tag != "SubTree") leaves[n->kind()] = true;
+        labels.insert(*name);
+      labels.insert(n->kind());
+      if (n->children.empty() && n->tag != "SubTree") leaves.insert(n->kind());
     }
     for (const auto& c : n->children) stack.push_back(&c);
   }
+}
+
+// Whether the compiler copies `alt` into the tree (unknown while a requirement of its node
+// does not parse: counted as selected, so that mistake is not reported twice).
+bool selected(const load::Mission& m, const load::Alternative& alt) {
+  if (m.requirements_incomplete.count(alt.adaptable) != 0) return true;
+  for (const auto* r : m.selections_for(alt.adaptable))
+    if (r->alternative == alt.name) return true;
+  return false;
+}
+
+// Why a node label of an alternative no requirement selects observes nothing: that
+// alternative is not compiled into the tree, so no node of the run has the label.
+std::string why_gone(const load::Mission& m, const std::string& label,
+                     const load::Alternative& alt) {
+  const std::string where = "alternative '" + alt.name + "' of '" + alt.adaptable + "'";
+  if (m.uplinks.empty())
+    return "its only nodes '" + label + "' are in " + where +
+           ", which no requirement selects, so the compiled tree does not have them";
+  std::string uplinks;
+  for (const std::string& u : m.uplinks) uplinks += (uplinks.empty() ? "'" : ", '") + u + "'";
+  std::string removed;
+  for (const load::UplinkMerge& r : m.merges)
+    if (r.rule == "removed" && r.adaptable == alt.adaptable)
+      removed += (removed.empty() ? "" : ", ") + r.requirement;
+  return "the uplink " + uplinks + " removed the last node '" + label + "': it was only in " +
+         where + ", which no requirement selects any more" +
+         (removed.empty() ? "" : " (the uplink removed " + removed + ")");
 }
 
 }  // namespace
@@ -35,23 +64,36 @@ monitor::Observables mission_observables(const load::Mission& m) {
                                                                     : Type::number;
     for (const std::string& literal : v.enum_values) o.literals.insert(literal);
   }
-  std::map<std::string, int> by_kind, by_name;
-  std::map<std::string, bool> leaves;
-  for (const bt::TreeDef& t : m.tree.trees) visit(t.root, by_kind, by_name, leaves);
+  // Nodes of the run: the mission's trees and the alternatives a requirement selects (the
+  // compiler copies only those). A label several nodes share means any of them (DESIGN §12).
+  std::set<std::string> labels, leaves;
+  for (const bt::TreeDef& t : m.tree.trees) visit(t.root, labels, leaves);
+  std::map<std::string, const load::Alternative*> only_unselected, unselected_leaves;
   for (const load::Alternative& alt : m.alternatives) {
     o.literals.insert(alt.name);
-    for (const bt::TreeDef& t : alt.document.trees) visit(t.root, by_kind, by_name, leaves);
+    if (selected(m, alt)) {
+      for (const bt::TreeDef& t : alt.document.trees) visit(t.root, labels, leaves);
+      continue;
+    }
+    std::set<std::string> unused_labels, unused_leaves;
+    for (const bt::TreeDef& t : alt.document.trees) visit(t.root, unused_labels, unused_leaves);
+    for (const std::string& label : unused_labels) only_unselected.emplace(label, &alt);
+    for (const std::string& leaf : unused_leaves) unselected_leaves.emplace(leaf, &alt);
   }
   // A leaf's name is a condition (or an action's effect) on the world's blackboard.
-  for (const auto& [kind, _] : leaves)
+  for (const std::string& kind : leaves)
     if (o.variables.count(kind) == 0) o.variables[kind] = Type::boolean;
-  std::vector<std::string> labels;
-  for (const auto& [name, _] : by_name) labels.push_back(name);
-  for (const auto& [kind, count] : by_kind)
-    if (count == 1 && by_name.count(kind) == 0) labels.push_back(kind);
   for (const std::string& label : labels)
     for (const char* suffix : {".success", ".failure", ".running"})
       o.variables[label + suffix] = Type::boolean;
+  for (const auto& [leaf, alt] : unselected_leaves)
+    if (leaves.count(leaf) == 0 && o.variables.count(leaf) == 0)
+      o.not_observable[leaf] = why_gone(m, leaf, *alt);
+  for (const auto& [label, alt] : only_unselected) {
+    if (labels.count(label) != 0) continue;
+    for (const char* suffix : {".success", ".failure", ".running"})
+      o.not_observable[label + suffix] = why_gone(m, label, *alt);
+  }
   for (const load::AdaptableSite& site : m.adaptables) {
     o.variables[site.id] = Type::boolean;
     o.variables[site.id + ".selected"] = Type::name;

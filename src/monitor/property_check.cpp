@@ -74,6 +74,11 @@ class PartChecker {
       case ExprKind::identifier: {
         if (const auto it = o_.variables.find(e.text); it != o_.variables.end()) return it->second;
         if (o_.literals.count(e.text) != 0) return Type::name;
+        if (const auto gone = o_.not_observable.find(e.text); gone != o_.not_observable.end()) {
+          report("property-reference",
+                 "'" + e.text + "' is not an observable of the run: " + gone->second, e);
+          return std::nullopt;
+        }
         std::vector<std::pair<std::size_t, std::string>> close;
         for (const auto& [name, type] : o_.variables) {
           const std::size_t d = edit_distance(name, e.text);

@@ -15,6 +15,9 @@ struct Observables {
   enum class Type { boolean, number, name };
   std::map<std::string, Type> variables;
   std::set<std::string> literals;  // names that are values: alternatives, none, enum literals
+  // Names a property may not read although they look like observables, with the reason
+  // (e.g. the last node with that label was in an alternative an uplink retired).
+  std::map<std::string, std::string> not_observable;
 };
 
 // Static checks of mission properties before a run: every name is an observable or a value

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 
+#include "runtime/observed_nodes.hpp"
+#include "runtime/selection.hpp"
+
 namespace uabt::prove {
 
 using runtime::NodeId;
 using runtime::NodeStatus;
 
-std::vector<NodeId> status_nodes(const runtime::Engine& engine, const std::string& node) {
-  std::vector<NodeId> nodes = engine.find_by_name(node);
-  if (nodes.empty())
-    for (NodeId id = 0; id < engine.node_count(); ++id)
-      if (engine.info(id).alive && engine.info(id).kind == node) nodes.push_back(id);
-  return nodes;
+std::vector<NodeId> status_nodes(const runtime::Engine& engine, const load::Mission& mission,
+                                 const std::string& node) {
+  return runtime::observed_nodes(engine, mission, node);
 }
 
 std::map<NodeId, std::string> alternative_calls(const runtime::Engine& engine,
@@ -21,10 +21,9 @@ std::map<NodeId, std::string> alternative_calls(const runtime::Engine& engine,
   std::map<NodeId, std::string> out;
   for (NodeId id = 0; id < engine.node_count(); ++id) {
     const runtime::NodeInfo& info = engine.info(id);
-    if (!info.alive || info.tag != "SubTree" || info.tree_id != node) continue;
-    const runtime::NodeId branch = info.parent;
-    if (branch == runtime::kNoNode) continue;
-    const runtime::NodeId selector = engine.info(branch).parent;
+    if (!info.alive || info.tree_id != node) continue;
+    // The rule `uabt run` reports its selections by, whatever the selection's style.
+    const NodeId selector = runtime::SelectionObserver::selector_of(engine, id);
     if (selector == runtime::kNoNode || engine.info(selector).name != node) continue;
     const std::string* tree = info.element ? info.element->attribute("ID") : nullptr;
     if (tree == nullptr) continue;
@@ -79,7 +78,7 @@ monitor::Resolved Observables::resolve(const std::string& name) {
   if (dot != std::string::npos) {
     const std::string node = name.substr(0, dot), field = name.substr(dot + 1);
     if (field == "success" || field == "failure" || field == "running") {
-      std::vector<NodeId> nodes = status_nodes(engine_, node);
+      std::vector<NodeId> nodes = status_nodes(engine_, mission_, node);
       if (!nodes.empty()) {
         const int slot = variables_.id(name);
         const NodeStatus s = field == "success"   ? NodeStatus::success

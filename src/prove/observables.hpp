@@ -17,11 +17,12 @@ namespace uabt::prove {
 // ticked last in tick t, else `none`) and the mode `<adaptable>` (its SubTree was ticked).
 // Works on any engine built from the compiled tree, so prove and the replay of a
 // counterexample read the very same observables.
-// The nodes `<node>.success|failure|running` reads: the alive nodes named `node`, else the
-// alive nodes of that kind.
-std::vector<runtime::NodeId> status_nodes(const runtime::Engine& engine, const std::string& node);
-// The SubTree calls of the alternatives of `adaptable` in its selection tree (the last child of
-// each branch), with the alternative each one calls.
+// The nodes `<node>.success|failure|running` reads: runtime::observed_nodes, the rule `uabt run`
+// monitors by (named `node`, else of that ID, any of them; not the generated selection trees).
+std::vector<runtime::NodeId> status_nodes(const runtime::Engine& engine,
+                                          const load::Mission& mission, const std::string& node);
+// The SubTree calls of the alternatives of `adaptable` in its selection tree, in any selection
+// style (runtime::SelectionObserver::selector_of), with the alternative each one calls.
 std::map<runtime::NodeId, std::string> alternative_calls(const runtime::Engine& engine,
                                                          const load::Mission& mission,
                                                          const std::string& adaptable);

@@ -25,6 +25,7 @@ enum class NK {
   fallback,
   reactive_fallback,
   if_then_else,
+  while_do_else,
   inverter,
   force_success,
   force_failure,
@@ -46,6 +47,7 @@ const std::map<std::string, NK, std::less<>>& builtins() {
       {"Fallback", NK::fallback},
       {"ReactiveFallback", NK::reactive_fallback},
       {"IfThenElse", NK::if_then_else},
+      {"WhileDoElse", NK::while_do_else},
       {"Inverter", NK::inverter},
       {"ForceSuccess", NK::force_success},
       {"ForceFailure", NK::force_failure},
@@ -64,7 +66,7 @@ const std::map<std::string, NK, std::less<>>& builtins() {
 // Built-in nodes the runtime has and this encoding does not (yet) model.
 bool unmodelled_builtin(const std::string& kind) {
   static const std::set<std::string, std::less<>> kinds = {
-      "SequenceWithMemory",   "SequenceStar",        "Parallel", "ParallelAll", "WhileDoElse",
+      "SequenceWithMemory",   "SequenceStar",        "Parallel", "ParallelAll",
       "RetryUntilSuccessful", "RetryUntilSuccesful", "RunOnce"};
   return kinds.contains(kind);
 }
@@ -302,8 +304,9 @@ struct SymbolicTick::Impl {
         if (n == 0) throw SymbolicUnsupported(d.where + ": a control node without children");
         break;
       case NK::if_then_else:
+      case NK::while_do_else:
         if (n != 2 && n != 3)
-          throw SymbolicUnsupported(d.where + ": IfThenElse needs 2 or 3 children");
+          throw SymbolicUnsupported(d.where + ": IfThenElse and WhileDoElse need 2 or 3 children");
         break;
       case NK::inverter:
       case NK::force_success:
@@ -391,6 +394,7 @@ struct SymbolicTick::Impl {
       case NK::reactive_sequence: return reactive(x, id, g, kSuccess, kFailure);
       case NK::reactive_fallback: return reactive(x, id, g, kFailure, kSuccess);
       case NK::if_then_else: return if_then_else(x, id, g);
+      case NK::while_do_else: return while_do_else(x, id, g);
       case NK::repeat: return repeat(x, id, g);
       case NK::inverter:
       case NK::force_success:
@@ -522,6 +526,26 @@ struct SymbolicTick::Impl {
     return z3::ite(waiting, ctx.int_val(kRunning), z3::ite(refused, ctx.int_val(kFailure), s));
   }
 
+  // WhileDoElse (controls/while_do_else.cpp): the condition on every tick; the branch it picks
+  // runs and the other one is halted.
+  z3::expr while_do_else(Exec& x, NodeId id, const z3::expr& g) {
+    const NodeDef& d = nodes[id];
+    const bool has_else = d.children.size() == 3;
+    set(x.cur.status[id], g, ctx.int_val(kRunning));
+    const z3::expr c = exec(x, d.children[0], g);
+    const z3::expr yes = name(x, g && c == kSuccess), no = name(x, g && c == kFailure);
+    if (has_else) halt_child(x, id, 2, yes);
+    const z3::expr then_s = exec(x, d.children[1], yes);
+    z3::expr s = z3::ite(yes, then_s, ctx.int_val(kFailure));
+    if (has_else) {
+      halt_child(x, id, 1, no);
+      s = z3::ite(yes, then_s, exec(x, d.children[2], no));
+    }
+    s = name(x, s);
+    reset_children(x, id, (yes || no) && s != kRunning);
+    return z3::ite(yes || no, s, ctx.int_val(kRunning));
+  }
+
   // Repeat (decorators/repeat.cpp): at most two rounds of its child per tick; a child that
   // was IDLE and succeeded at once yields with the wake-up signal.
   z3::expr repeat(Exec& x, NodeId id, const z3::expr& g) {
@@ -624,7 +648,7 @@ struct SymbolicTick::Impl {
     if (dot != std::string::npos) {
       const std::string node = name.substr(0, dot), field = name.substr(dot + 1);
       if (field == "success" || field == "failure" || field == "running") {
-        const std::vector<NodeId> found = status_nodes(*m.engine, node);
+        const std::vector<NodeId> found = status_nodes(*m.engine, m.mission, node);
         if (!found.empty()) {
           const int s = field == "success" ? kSuccess : field == "failure" ? kFailure : kRunning;
           z3::expr any = ctx.bool_val(false);

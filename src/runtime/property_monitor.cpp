@@ -3,6 +3,7 @@
 #include <set>
 
 #include "runtime/blackboard.hpp"
+#include "runtime/observed_nodes.hpp"
 
 namespace uabt::runtime {
 
@@ -59,16 +60,10 @@ std::set<std::string> PropertyMonitor::bind(const load::Mission& mission) {
   for (const fretish::Variable& v : mission.domain.variables)
     for (const std::string& literal : v.enum_values) literals.insert(literal);
 
-  // Node labels: the name attribute, else the ID where no other node has it.
-  std::map<std::string, std::vector<NodeId>> by_name, by_kind;
   std::set<std::string> leaf_kinds;
-  for (NodeId id = 0; id < engine_.node_count(); ++id) {
-    const NodeInfo& info = engine_.info(id);
-    if (!info.alive) continue;
-    if (!info.name.empty()) by_name[info.name].push_back(id);
-    by_kind[info.kind].push_back(id);
-    if (engine_.children(id).empty()) leaf_kinds.insert(info.kind);
-  }
+  for (NodeId id = 0; id < engine_.node_count(); ++id)
+    if (engine_.info(id).alive && engine_.children(id).empty())
+      leaf_kinds.insert(engine_.info(id).kind);
   std::set<std::string> adaptable_ids;
   for (const load::AdaptableSite& site : mission.adaptables) adaptable_ids.insert(site.id);
 
@@ -84,9 +79,7 @@ std::set<std::string> PropertyMonitor::bind(const load::Mission& mission) {
     for (const char* suffix : {".success", ".failure", ".running"}) {
       if (!ends_with(name, suffix)) continue;
       const std::string label = name.substr(0, name.size() - std::string(suffix).size());
-      std::vector<NodeId> nodes = by_name.count(label) ? by_name[label] : std::vector<NodeId>{};
-      if (nodes.empty() && by_kind.count(label) && by_kind[label].size() == 1)
-        nodes = by_kind[label];
+      std::vector<NodeId> nodes = observed_nodes(engine_, mission, label);
       if (nodes.empty()) break;
       auto it = std::find_if(nodes_.begin(), nodes_.end(),
                              [&](const NodeObservable& o) { return o.nodes == nodes; });

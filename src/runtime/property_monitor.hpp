@@ -22,7 +22,8 @@ struct PropertyViolation {
 // Monitors a mission's properties (DESIGN §10) on every tick of a run. Observables at tick t:
 //  - domain variables and conditions: the root blackboard after the tick (unset: false);
 //  - `<node>.success` / `.failure` / `.running`: what the node returned in the tick, where
-//    `<node>` is its name attribute, else its ID when no other node has it;
+//    `<node>` is its name attribute, else its ID; nodes that share it: any of them
+//    (observed_nodes);
 //  - `<adaptable>`: the mode, true when the adaptable's selection tree was ticked;
 //  - `<adaptable>.selected`: the alternative the selection returned from, else `none`.
 // Status changes come through the engine's Observer interface, selections through select().

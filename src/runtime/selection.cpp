@@ -1,5 +1,7 @@
 #include "runtime/selection.hpp"
 
+#include <set>
+
 namespace uabt::runtime {
 
 namespace {
@@ -17,14 +19,24 @@ NodeId SelectionObserver::selector_of(const Engine& engine, NodeId call) {
   const NodeInfo& seq = engine.info(branch);
   if (seq.kind != "Sequence" && seq.kind != "ReactiveSequence") return kNoNode;
   if (sub.child_index + 1 != engine.children(branch).size()) return kNoNode;
-  if (seq.parent == kNoNode) return kNoNode;
-  const NodeInfo& fallback = engine.info(seq.parent);
-  if (fallback.kind != "Fallback" && fallback.kind != "ReactiveFallback") return kNoNode;
-  if (fallback.name.empty() || fallback.name != fallback.tree_id) return kNoNode;
-  // The selector is its tree's root (its parent is the SubTree calling that tree, if any).
-  if (fallback.parent != kNoNode && engine.info(fallback.parent).instance == fallback.instance)
-    return kNoNode;
-  return seq.parent;
+  if (seq.parent == kNoNode || engine.info(seq.parent).instance != seq.instance) return kNoNode;
+  // Fig. 4: the branch is a child of the selector, a (Reactive)Fallback. A decision structure
+  // (optimized): the branch is a named leaf [SubTree] anywhere below it. Either way the
+  // selector is its tree's root, named like the tree.
+  const bool leaf = engine.children(branch).size() == 1 && !seq.name.empty();
+  NodeId selector = seq.parent;
+  if (leaf)
+    while (engine.info(selector).parent != kNoNode &&
+           engine.info(engine.info(selector).parent).instance == seq.instance)
+      selector = engine.info(selector).parent;
+  const NodeInfo& root = engine.info(selector);
+  static const std::set<std::string, std::less<>> fallbacks = {"Fallback", "ReactiveFallback"};
+  static const std::set<std::string, std::less<>> decisions = {
+      "Fallback", "ReactiveFallback", "IfThenElse", "WhileDoElse", "Sequence", "ReactiveSequence"};
+  if (!(leaf ? decisions : fallbacks).contains(root.kind)) return kNoNode;
+  if (root.name.empty() || root.name != root.tree_id) return kNoNode;
+  if (root.parent != kNoNode && engine.info(root.parent).instance == root.instance) return kNoNode;
+  return selector;
 }
 
 void SelectionObserver::on_status_change(NodeId node, NodeStatus previous, NodeStatus next) {

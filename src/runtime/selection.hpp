@@ -19,10 +19,12 @@ struct Selection {
   NodeId call = kNoNode;      // the SubTree node
 };
 
-// Recognises the compiler's selection subtrees (DESIGN §4, Fig. 4) — a Fallback or
-// ReactiveFallback named like the tree it is the root of, whose children are (Reactive)
-// Sequences ending in a SubTree — and reports a Selection each time one of those SubTrees
-// goes from IDLE to RUNNING (every SubTree does when ticked, also if it completes at once).
+// Recognises the compiler's selection subtrees in every style — a root named like its tree
+// (DESIGN §4, Fig. 4: a (Reactive)Fallback whose children are (Reactive)Sequences ending in a
+// SubTree; optimized: a decision whose leaves are named Sequences holding only the SubTree) —
+// and reports a Selection each time one of those SubTrees goes from IDLE to RUNNING (every
+// SubTree does when ticked, also if it completes at once). The one rule of which call selects
+// which alternative: `run`'s select events, its `.selected` and prove's all come from here.
 class SelectionObserver : public Observer {
  public:
   SelectionObserver(const Engine& engine, std::function<void(const Selection&)> on_select);

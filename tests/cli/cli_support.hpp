@@ -24,4 +24,9 @@ inline CliRun run_shell(const std::string& command) {
   return run;
 }
 
+// Runs the real binary in `dir` with `args` (shell syntax), standard error included.
+inline CliRun run_uabt_in(const std::string& dir, const std::string& args) {
+  return run_shell("cd '" + dir + "' && '" + UABT_BINARY + "' " + args + " 2>&1");
+}
+
 }  // namespace uabt::testing

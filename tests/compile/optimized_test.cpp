@@ -7,6 +7,7 @@
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
 #include "compile/compile.hpp"
+#include "conform/conform.hpp"
 #include "load/mission.hpp"
 #include "selection_check.hpp"
 #include "selection_missions.hpp"
@@ -181,6 +182,34 @@ TEST(OptimizedSelection, SameBytesEveryTime) {
   const Result a = compile_with(m, SelectionStyle::optimized);
   const Result b = compile_with(m, SelectionStyle::optimized);
   EXPECT_EQ(bt::write_document(a.document, {}), bt::write_document(b.document, {}));
+}
+
+// Optimized chooses the layout, not the reactivity: a node that declares selection="reactive"
+// gets a decision that is re-checked every tick (WhileDoElse), which still selects the
+// required alternative in every cell and conforms by meaning.
+TEST(OptimizedSelection, KeepsADeclaredReactiveSelection) {
+  auto files = testing::mission_files("exploration");
+  const std::string declared = "<Adaptable ID=\"exploration\"/>";
+  auto& xml = files["mission.xml"];
+  ASSERT_NE(xml.find(declared), std::string::npos);
+  xml.replace(xml.find(declared), declared.size(),
+              "<Adaptable ID=\"exploration\" selection=\"reactive\"/>");
+  const TempMission t(files, "exploration");
+  const load::Mission m = load_clean(t.dir());
+  const Result r = compile_with(m, SelectionStyle::optimized);
+  ASSERT_TRUE(r.selection_stats.front().optimized_used);
+  const bt::Node& root = selection_root(r, "exploration");
+  EXPECT_EQ(root.tag, "WhileDoElse");
+  EXPECT_EQ(count_nodes(root, [](const bt::Node& n) { return n.tag == "IfThenElse"; }), 0);
+  EXPECT_GT(count_nodes(root, [](const bt::Node& n) { return n.tag == "WhileDoElse"; }), 1);
+  EXPECT_EQ(testing::engine_count(m, r.document, "exploration").mismatch, "");
+  const conform::Result c = conform::conform_tree(m, r.document, {});
+  EXPECT_FALSE(has_errors(c.findings)) << format_text(c.findings);
+
+  // Without the declaration the same command keeps the tick-once IfThenElse.
+  const load::Mission plain = load_clean(testing::mission_dir("exploration"));
+  EXPECT_EQ(selection_root(compile_with(plain, SelectionStyle::optimized), "exploration").tag,
+            "IfThenElse");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <iterator>
 
 #include "manager/manager.hpp"
+#include "style_missions.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
@@ -208,6 +209,24 @@ TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
               std::string::npos)
         << text;
   }
+}
+
+// Two nodes with one ID (sample_drilling's drills without their `name="Drill"`): `Drill.running`
+// means any of them, in the run as in the gate and in prove.
+TEST(MissionProperties, ALabelTwoNodesShareMeansAnyOfThem) {
+  auto files = uabt::testing::unnamed_drills();
+  // Soft rock, a hot bit: rotary drills it (CoolBit is violated at once); then hard rock.
+  files["scenarios/hot.json"] =
+      R"({"max_ticks": 40, "initial": {"HardRock": false, "IsBitCool": false},
+          "actions": {"Drill": {"ticks": 2, "effects": {"IsBitCool": false}},
+                      "CoolDown": {"ticks": 2, "effects": {"IsBitCool": true}}},
+          "events": [{"at": 3, "set": {"HardRock": true}}]})";
+  const uabt::testing::TempMission m(files, "sample_drilling");
+  const ManagerRun run = run_in(m.dir(), "hot.json", compile::SelectionStyle::sequence);
+  EXPECT_EQ(property(run, "CoolBit").verdict, monitor::Verdict::violated) << trace_summary(run);
+  EXPECT_EQ(property(run, "CoolBit").first_violation, 1u);
+  EXPECT_EQ(property(run, "OneTool").verdict, monitor::Verdict::held)
+      << property(run, "OneTool").reason;
 }
 
 }  // namespace

@@ -14,18 +14,12 @@
 #include "monitor/formula.hpp"
 #include "monitor/templates.hpp"
 #include "pt_oracle.hpp"
+#include "temp_mission.hpp"
 
 namespace uabt::testing {
 
 inline std::filesystem::path fret_reference(const std::string& file) {
   return std::filesystem::path(UABT_SHARED_DIR) / "reference" / "fret" / file;
-}
-
-inline std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Random boolean traces over the given names; each trace picks its own density per name, so

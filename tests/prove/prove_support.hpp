@@ -41,23 +41,6 @@ inline const prove::Answer& answer(const prove::Result& r, const std::string& id
   return none;
 }
 
-inline std::string read_all(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The files of a shipped mission, to vary one of them in a temporary copy.
-inline std::map<std::string, std::string> mission_files(const std::string& name) {
-  std::map<std::string, std::string> files;
-  const auto root = mission_dir(name);
-  for (const auto& e : std::filesystem::recursive_directory_iterator(root))
-    if (e.is_regular_file())
-      files[std::filesystem::relative(e.path(), root).generic_string()] = read_all(e.path());
-  return files;
-}
-
 // sample_drilling's rotary alternative repaired: it cools a hot bit before it drills.
 inline constexpr const char* kFixedRotary = R"(<root BTCPP_format="4" main_tree_to_execute="rotary">
   <BehaviorTree ID="rotary">

@@ -10,6 +10,7 @@
 #include "prove_support.hpp"
 #include "random_mission.hpp"
 #include "runtime/runner.hpp"
+#include "style_missions.hpp"
 
 namespace uabt::testing {
 namespace {
@@ -338,6 +339,41 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
         if (v.relevant && v.env) m.engine->blackboard().value(v.slot) = v.values.front();
     }
   }
+}
+
+// A decision structure (optimized), ticked once (IfThenElse) or re-checked every tick
+// (WhileDoElse, a node declared reactive): both engines read the same `.selected` and node
+// statuses, and the symbolic tick equals the engine's.
+TEST(SymbolicAgreement, OptimizedSelectionsInBothReactivities) {
+  for (const bool reactive : {false, true}) {
+    auto files = lunar_traverse();
+    files["mission.xml"] = with_reactivity(files["mission.xml"], reactive);
+    TempMission m(files);
+    const Gated g(m.dir(), compile::SelectionStyle::optimized);
+    ASSERT_TRUE(g.ok());
+    const std::string xml = g.outcome->compiled_xml;
+    EXPECT_NE(
+        xml.find(reactive ? "<WhileDoElse name=\"traverse\">" : "<IfThenElse name=\"traverse\">"),
+        std::string::npos)
+        << xml;
+    const prove::Result e = g.prove("explicit"), s = g.prove("symbolic");
+    EXPECT_EQ(s.engine, "symbolic");
+    expect_same_answers(e, s, reactive ? "reactive" : "plain");
+    EXPECT_EQ(answer(s, "CrawlSelected").verdict, Verdict::proved);
+    EXPECT_EQ(answer(s, "WaitInShadow").verdict, reactive ? Verdict::proved : Verdict::violated);
+    check_ticks(g, 5, 40, 12);
+  }
+}
+
+// Two nodes with one ID (sample_drilling's drills without their names): `Drill.running` is any
+// of them for both engines.
+TEST(SymbolicAgreement, ALabelTwoNodesShareMeansAnyOfThem) {
+  TempMission unnamed(unnamed_drills());
+  const Gated g(unnamed.dir()), shipped(mission_dir("sample_drilling"));
+  ASSERT_TRUE(g.ok() && shipped.ok());
+  const prove::Result e = g.prove("explicit");
+  expect_same_answers(e, g.prove("symbolic"), "unnamed drills");
+  expect_same_answers(e, shipped.prove("explicit"), "unnamed against named drills");
 }
 
 TEST(SymbolicTick, EqualsEngineTickOnCuriosity) {
