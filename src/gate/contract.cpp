@@ -79,10 +79,13 @@ std::string status_of(const std::map<std::string, prove::Answer>& answers, const
   return text;
 }
 
-// Where a removal was said: its uplink.json entry, else the package.
+// Where a removal was said: its uplink.json entry, or the requirement that now holds the id
+// (a selection requirement or an assumption), else the package.
 SourceLocation removal_location(const load::Mission& merged, const std::string& id) {
   for (const auto& record : merged.merges)
     if (record.requirement == id && record.rule == "removed") return record.location;
+  for (const auto& r : merged.requirements)
+    if (r.id == id) return r.location;
   return {merged.uplinks.empty() ? std::string() : merged.uplinks.back(), 0, 0};
 }
 
