@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace uabt {
@@ -69,6 +70,13 @@ std::string user_path(const std::string& file, const std::string& prefix) {
   std::string joined = fs::path(prefix + file).lexically_normal().generic_string();
   while (joined.size() > 1 && joined.back() == '/') joined.pop_back();
   return joined.empty() ? "." : joined;
+}
+
+std::string with_user_path(const std::string& message, const std::string& prefix) {
+  static const std::regex located(R"(^([^:\s]+)(:\d+:\d+: [\s\S]*)$)");
+  std::smatch m;
+  if (prefix.empty() || !std::regex_match(message, m, located)) return message;
+  return user_path(m[1], prefix) + m[2].str();
 }
 
 std::string path_prefix_for(const fs::path& mission_dir) {

@@ -36,4 +36,8 @@ std::string path_prefix_for(const std::filesystem::path& mission_dir);
 // lexically normalised ("missions/m/../out/c.xml" → "missions/out/c.xml").
 std::string user_path(const std::string& file, const std::string& prefix);
 
+// A message that starts with "file:line:col: " (a runtime error) with that file as user_path
+// names it; any other text as it is.
+std::string with_user_path(const std::string& message, const std::string& prefix);
+
 }  // namespace uabt

@@ -4,6 +4,7 @@
 #include <optional>
 #include <regex>
 
+#include "base/diagnostics.hpp"
 #include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
@@ -105,7 +106,8 @@ void register_run(CLI::App& app, int& exit_code) {
       runtime::BehaviorTreeManager manager(args->mission, std::move(scenario), options);
       for (const auto& [tick, package] : uplinks) manager.add_uplink(tick, package);
       runtime::ManagerRun run = manager.run();
-      std::cout << runtime::trace_summary(run) << runtime::property_summary(run);
+      std::cout << runtime::trace_summary(run, path_prefix_for(args->mission))
+                << runtime::property_summary(run);
       if (args->stats) {
         char per_tick[32];
         std::snprintf(
@@ -121,7 +123,7 @@ void register_run(CLI::App& app, int& exit_code) {
         // GCC style: "file:line:col: error: …", then where in the running tree it happened.
         static const std::regex located(R"(^([^:]+:\d+:\d+): (.*)$)");
         std::smatch m;
-        const std::string& text = run.error->message;
+        const std::string text = with_user_path(run.error->message, path_prefix_for(args->mission));
         if (std::regex_match(text, m, located))
           std::cerr << m[1] << ": error: " << m[2] << "\n";
         else
