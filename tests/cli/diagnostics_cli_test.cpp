@@ -372,6 +372,16 @@ TEST(Diagnostics, AnUplinkOutsideTheMissionIsNamedAsItOpens) {
       third, "gate ../lunar --uplink ../uplink_ridge2 --out out --format sarif", "2>/dev/null");
   expect_all_open_from(third, sarif_paths(nlohmann::json::parse(sarif.out)), "--format sarif");
 
+  // A package further up than the mission is named by its absolute path, not ../../…
+  const uabt::testing::TempMission elsewhere({});
+  fs::copy(package, elsewhere.dir() / "ridge", fs::copy_options::recursive);
+  const UabtRun far = uabt_in(
+      ws.root(), "gate lunar --uplink '" + (elsewhere.dir() / "ridge").string() + "' --out out");
+  EXPECT_NE(far.out.find("\n" + (elsewhere.dir() / "ridge/requirements.fret:6:").string()),
+            std::string::npos)
+      << far.out;
+  expect_all_open_from(ws.root(), printed_paths(far.out), "gate, package elsewhere");
+
   // `run`: the mission itself must pass its gate, so its own alternative is whole again.
   fs::remove(rocks);
   fs::copy_file(
