@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace uabt {
@@ -64,11 +65,41 @@ std::string source_excerpt(const std::string& text, int line, int column) {
 
 }  // namespace
 
+namespace {
+
+// How many ".." a relative path starts with.
+int climbs(const fs::path& path) {
+  int n = 0;
+  for (const auto& part : path) {
+    if (part != "..") break;
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
 std::string user_path(const std::string& file, const std::string& prefix) {
-  if (prefix.empty() || fs::path(file).is_absolute()) return file.empty() ? "." : file;
-  std::string joined = fs::path(prefix + file).lexically_normal().generic_string();
-  while (joined.size() > 1 && joined.back() == '/') joined.pop_back();
-  return joined.empty() ? "." : joined;
+  if (fs::path(file).is_absolute()) return file;
+  if (prefix.empty() && climbs(file) == 0) return file.empty() ? "." : file;
+  fs::path joined = fs::path(prefix + file).lexically_normal();
+  // A file further up than the mission itself (a package in /tmp for a mission below the
+  // current directory) reads better, and as surely, by its absolute path.
+  if (climbs(joined) > climbs(fs::path(prefix).lexically_normal())) {
+    std::error_code ec;
+    const fs::path here = fs::current_path(ec);
+    if (!ec) joined = (here / joined).lexically_normal();
+  }
+  std::string text = joined.generic_string();
+  while (text.size() > 1 && text.back() == '/') text.pop_back();
+  return text.empty() ? "." : text;
+}
+
+std::string with_user_path(const std::string& message, const std::string& prefix) {
+  static const std::regex located(R"(^([^:\s]+)(:\d+:\d+: [\s\S]*)$)");
+  std::smatch m;
+  if (prefix.empty() || !std::regex_match(message, m, located)) return message;
+  return user_path(m[1], prefix) + m[2].str();
 }
 
 std::string path_prefix_for(const fs::path& mission_dir) {

@@ -33,7 +33,12 @@ std::string format_state(const State& state);
 std::string path_prefix_for(const std::filesystem::path& mission_dir);
 
 // `file` (relative to the mission directory, or absolute) as the user opens it: prefix + file,
-// lexically normalised ("missions/m/../out/c.xml" → "missions/out/c.xml").
+// lexically normalised ("missions/m/../out/c.xml" → "missions/out/c.xml"); absolute when it
+// climbs higher than the mission's own path does ("/tmp/pkg/domain.fret", not "../../tmp/…").
 std::string user_path(const std::string& file, const std::string& prefix);
+
+// A message that starts with "file:line:col: " (a runtime error) with that file as user_path
+// names it; any other text as it is.
+std::string with_user_path(const std::string& message, const std::string& prefix);
 
 }  // namespace uabt

@@ -64,11 +64,17 @@ void write_file_atomically(const fs::path& path, const std::string& content) {
 
 std::string display_path(const fs::path& path, const fs::path& base) {
   std::error_code ec;
-  const fs::path abs_path = fs::weakly_canonical(path, ec);
-  const fs::path abs_base = fs::weakly_canonical(base, ec);
-  const fs::path rel = abs_path.lexically_relative(abs_base);
-  if (!rel.empty() && *rel.begin() != "..") return rel.generic_string();
-  return path.generic_string();
+  // The file as found in the directory first (a symlinked alternative is named by its link,
+  // not by where the link points), then as the file system resolves it (an included file,
+  // reached by its canonical path), else relative with "..": every name stays relative to
+  // `base`, so that one prefix opens it from where uabt runs.
+  const fs::path lexical = fs::absolute(path, ec).lexically_normal().lexically_relative(
+      fs::absolute(base, ec).lexically_normal());
+  if (!lexical.empty() && *lexical.begin() != "..") return lexical.generic_string();
+  const fs::path resolved =
+      fs::weakly_canonical(path, ec).lexically_relative(fs::weakly_canonical(base, ec));
+  if (!resolved.empty() && *resolved.begin() != "..") return resolved.generic_string();
+  return lexical.empty() ? path.generic_string() : lexical.generic_string();
 }
 
 std::string relative_path(const fs::path& path, const fs::path& base) {

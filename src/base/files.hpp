@@ -16,8 +16,9 @@ std::optional<std::string> read_text_file(const std::filesystem::path& path, std
 // never sees half a file. Creates missing parent directories. Throws std::runtime_error.
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
-// `path` relative to `base` when it lies inside it (generic form, '/' separators); otherwise
-// the path as given.
+// `path` relative to `base` (generic form, '/' separators): as found in `base` (a symlink by
+// its own name), else as resolved, else with ".." ("../pkg/requirements.fret") when it lies
+// outside.
 std::string display_path(const std::filesystem::path& path, const std::filesystem::path& base);
 
 // `path` relative to `base` wherever it lies ("../out/compiled.xml"; generic form), the form

@@ -4,6 +4,7 @@
 #include <optional>
 #include <regex>
 
+#include "base/diagnostics.hpp"
 #include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
@@ -103,7 +104,8 @@ void register_run(CLI::App& app, int& exit_code) {
       manager::BehaviorTreeManager bt_manager(args->mission, std::move(scenario), options);
       for (const auto& [tick, package] : uplinks) bt_manager.add_uplink(tick, package);
       manager::ManagerRun run = bt_manager.run();
-      std::cout << manager::trace_summary(run) << manager::property_summary(run);
+      std::cout << manager::trace_summary(run, path_prefix_for(args->mission))
+                << manager::property_summary(run);
       if (args->stats) {
         char per_tick[32];
         std::snprintf(
@@ -119,7 +121,7 @@ void register_run(CLI::App& app, int& exit_code) {
         // GCC style: "file:line:col: error: …", then where in the running tree it happened.
         static const std::regex located(R"(^([^:]+:\d+:\d+): (.*)$)");
         std::smatch m;
-        const std::string& text = run.error->message;
+        const std::string text = with_user_path(run.error->message, path_prefix_for(args->mission));
         if (std::regex_match(text, m, located))
           std::cerr << m[1] << ": error: " << m[2] << "\n";
         else

@@ -1,6 +1,7 @@
 #include "fretish/domain.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace uabt::fretish {
 
@@ -36,6 +37,48 @@ const Variable* Domain::enum_owning(const std::string& literal) const {
     owner = &v;
   }
   return owner;
+}
+
+std::string declaration_text(const Variable& v) {
+  switch (v.type) {
+    case VarType::boolean: return "boolean " + v.name;
+    case VarType::enumeration: {
+      std::string out = "enum " + v.name + " in {";
+      for (std::size_t i = 0; i < v.enum_values.size(); ++i)
+        out += (i == 0 ? "" : ", ") + v.enum_values[i];
+      return out + "}";
+    }
+    case VarType::integer:
+    case VarType::real: {
+      const bool integer = v.type == VarType::integer;
+      if (!v.lower.empty() && !v.upper.empty())
+        return (integer ? "integer " : "real ") + v.name + " in [" + v.lower + ", " + v.upper + "]";
+      // The grammar's one half-bounded type: an unsigned integer (from a FRET export).
+      if (integer && v.lower == "0" && v.upper.empty()) return "unsigned integer " + v.name;
+      return (integer ? "integer " : "real ") + v.name;
+    }
+  }
+  return "";
+}
+
+namespace {
+
+// Bounds as written may differ in form only ("15" and "15.0" of a real).
+bool same_bound(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return a == b;
+  return a == b || std::strtod(a.c_str(), nullptr) == std::strtod(b.c_str(), nullptr);
+}
+
+}  // namespace
+
+bool same_declaration(const Variable& a, const Variable& b) {
+  if (a.type != b.type || !same_bound(a.lower, b.lower) || !same_bound(a.upper, b.upper))
+    return false;
+  // An enum is its set of literals; the order they are written in means nothing.
+  std::vector<std::string> left = a.enum_values, right = b.enum_values;
+  std::sort(left.begin(), left.end());
+  std::sort(right.begin(), right.end());
+  return left == right;
 }
 
 }  // namespace uabt::fretish

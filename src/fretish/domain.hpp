@@ -27,6 +27,11 @@ struct Variable {
   std::string invalid;
 };
 
+// The declaration as domain.fret writes it: "integer wind in [0, 15]", "enum terrain in {…}".
+std::string declaration_text(const Variable& v);
+// Same name aside, the same type, bounds (by value) and set of enum literals.
+bool same_declaration(const Variable& a, const Variable& b);
+
 // An expression that always holds (domain.fret `assume`, or a FRET "assumption" requirement).
 struct Assumption {
   std::string name;

@@ -64,33 +64,11 @@ std::string requirements_text(const load::Mission& m) {
   return out;
 }
 
-std::string declaration(const fretish::Variable& v) {
-  switch (v.type) {
-    case fretish::VarType::boolean: return "boolean " + v.name;
-    case fretish::VarType::enumeration: {
-      std::string out = "enum " + v.name + " in {";
-      for (std::size_t i = 0; i < v.enum_values.size(); ++i)
-        out += (i == 0 ? "" : ", ") + v.enum_values[i];
-      return out + "}";
-    }
-    case fretish::VarType::integer:
-    case fretish::VarType::real: {
-      const bool integer = v.type == fretish::VarType::integer;
-      if (!v.lower.empty() && !v.upper.empty())
-        return (integer ? "integer " : "real ") + v.name + " in [" + v.lower + ", " + v.upper + "]";
-      // The grammar's one half-bounded type: an unsigned integer (from a FRET export).
-      if (integer && v.lower == "0" && v.upper.empty()) return "unsigned integer " + v.name;
-      return (integer ? "integer " : "real ") + v.name;
-    }
-  }
-  return "";
-}
-
 std::string domain_text(const load::Mission& m) {
   std::string out =
       "# The merged domain: declarations and assumptions of the mission and its uplinks\n";
   for (const auto& v : m.domain.variables)
-    if (v.declared) out += declaration(v) + "\n";
+    if (v.declared) out += fretish::declaration_text(v) + "\n";
   std::size_t unnamed = 0;
   for (const auto& a : m.domain.assumptions) {
     if (!a.expr) continue;

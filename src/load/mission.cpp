@@ -1,6 +1,9 @@
 #include "load/mission.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
 
 #include "base/files.hpp"
 #include "bt/structure.hpp"
@@ -160,7 +163,23 @@ std::optional<std::vector<fretish::Requirement>> parse_requirements(Mission& m,
   return std::move(parsed.requirements);
 }
 
-void load_domain(Mission& m, const fs::path& path) {
+// What an uplink package's domain.fret redeclares differently: the merge would keep the
+// mission's declaration and drop the package's in silence.
+void redeclared(Mission& m, const std::string& what, const SourceLocation& here,
+                const std::string& earlier_text, const SourceLocation& earlier) {
+  Finding f = make_finding("domain-invalid",
+                           what + ", but the mission has " + earlier_text +
+                               ": an uplink adds to the domain, it cannot change it",
+                           here);
+  f.related.push_back({earlier, "the mission's declaration: " + earlier_text});
+  f.notes.push_back("declare it as the mission does, or leave it out of the package");
+  m.findings.push_back(std::move(f));
+}
+
+// The mission's domain.fret, or (`package`) an uplink package's, merged onto the domain: a
+// package may repeat a declaration, an assumption or the tick period as the mission has them,
+// and may add new ones; a different one is an error naming both.
+void load_domain(Mission& m, const fs::path& path, bool package = false) {
   const std::string shown = display_path(path, m.dir);
   auto text = read_or_report(path, shown, m.findings);
   if (!text) return;
@@ -173,25 +192,52 @@ void load_domain(Mission& m, const fs::path& path) {
   m.has_domain_file |= !declared.variables.empty();
   // Declarations from a FRET export (already in m.domain) come first; domain.fret adds to them.
   for (auto& v : declared.variables) {
-    if (m.domain.find(v.name) == nullptr) m.domain.variables.push_back(std::move(v));
+    const fretish::Variable* earlier = m.domain.find(v.name);
+    if (earlier == nullptr) {
+      m.domain.variables.push_back(std::move(v));
+    } else if (package && v.invalid.empty() && earlier->invalid.empty() &&
+               !fretish::same_declaration(*earlier, v)) {
+      redeclared(m, "the package declares " + fretish::declaration_text(v), v.location,
+                 fretish::declaration_text(*earlier), earlier->location);
+    }
   }
-  for (auto& a : declared.assumptions) m.domain.assumptions.push_back(std::move(a));
+  for (auto& a : declared.assumptions) {
+    const auto same_name =
+        std::find_if(m.domain.assumptions.begin(), m.domain.assumptions.end(),
+                     [&](const fretish::Assumption& e) { return e.name == a.name; });
+    if (!package || a.name.empty() || same_name == m.domain.assumptions.end()) {
+      m.domain.assumptions.push_back(std::move(a));
+      continue;
+    }
+    const std::string here = a.expr ? fretish::to_fretish(*a.expr) : std::string();
+    const std::string there = same_name->expr ? fretish::to_fretish(*same_name->expr) : "";
+    if (here != there)
+      redeclared(m, "the package states assumption " + a.name + ": " + here, a.location,
+                 "assumption " + a.name + ": " + there, same_name->location);
+  }
   if (declared.tick_seconds && !m.domain.tick_seconds) {
     m.domain.tick_seconds = declared.tick_seconds;
     m.domain.tick_location = declared.tick_location;
+  } else if (package && declared.tick_seconds &&
+             // "100 ms" and "0.1 s" are one period, whatever the rounding of their product.
+             std::abs(*declared.tick_seconds - *m.domain.tick_seconds) >
+                 1e-9 * *m.domain.tick_seconds) {
+    auto seconds = [](double s) {
+      std::ostringstream out;
+      out << s << " s";
+      return out.str();
+    };
+    redeclared(m, "the package declares tick " + seconds(*declared.tick_seconds),
+               declared.tick_location, "tick " + seconds(*m.domain.tick_seconds),
+               m.domain.tick_location);
   }
 }
 
+// A --nodes file outside the mission is named relative to the mission directory too
+// (display_path), like every finding's file, so that the mission's path in front of it opens it.
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
-  const std::size_t first = m.findings.size();
   auto doc = bt::read_document(path, read_options, m.findings);
   if (doc) m.nodes = doc->node_models;
-  // A --nodes file outside the mission is named relative to the mission directory too, like
-  // every finding's file, so that the mission's path in front of it opens it.
-  const std::string shown = display_path(path, m.dir);
-  for (std::size_t k = first; k < m.findings.size(); ++k)
-    if (m.findings[k].location.file == shown)
-      m.findings[k].location.file = relative_path(path, m.dir);
 }
 
 void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
@@ -259,9 +305,92 @@ void check_all_structure(Mission& m) {
   }
 }
 
+// An alternative left directly in `root` (alternatives/) instead of alternatives/<adaptable>/.
+void report_stray_alternatives(Mission& m, const fs::path& root) {
+  std::error_code ec;
+  if (!fs::is_directory(root, ec)) return;
+  std::vector<fs::path> stray;
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && it->path().extension() == ".xml") stray.push_back(it->path());
+  std::sort(stray.begin(), stray.end());
+  for (const auto& file : stray) {
+    std::string example = "alternatives/<adaptable>/" + file.filename().string();
+    if (!m.adaptables.empty() && !m.adaptables.front().id.empty())
+      example = "alternatives/" + m.adaptables.front().id + "/" + file.filename().string();
+    Finding f = make_finding("load-ignored-file",
+                             "alternatives/" + file.filename().string() +
+                                 " lies directly in alternatives/ and is not read: an alternative "
+                                 "belongs to one adaptable node",
+                             {display_path(file, m.dir), 0, 0});
+    f.notes.push_back("move it to " + example);
+    m.findings.push_back(std::move(f));
+  }
+}
+
+// Files uabt would otherwise pass over in silence: a second requirements file, and an
+// alternative left directly in alternatives/ instead of alternatives/<adaptable>/.
+void report_layout_mistakes(Mission& m, const MissionLayout& layout) {
+  std::error_code ec;
+  if (layout.kind != "uabt") return;
+  if (fs::is_regular_file(m.dir / "requirements.fret", ec) &&
+      fs::is_regular_file(m.dir / "requirements.json", ec)) {
+    Finding f = make_finding("load-ignored-file",
+                             "both requirements.fret and requirements.json exist: uabt reads "
+                             "requirements.fret and ignores requirements.json",
+                             {"requirements.json", 0, 0});
+    f.notes.push_back("keep one of them, so that what is verified is what the team reads");
+    m.findings.push_back(std::move(f));
+  }
+  report_stray_alternatives(m, m.dir / "alternatives");
+}
+
+// What an uplink package carries besides requirements.fret, domain.fret, alternatives/ and
+// uplink.json: the merge reads nothing else, so a mission.xml (or a misspelt requirements
+// file) would be dropped without a word. Hidden files and notes for people are left alone.
+void report_package_strays(Mission& m, const fs::path& package) {
+  static const std::vector<std::string> read = {"requirements.fret", "domain.fret", "alternatives",
+                                                "uplink.json"};
+  static const std::map<std::string, std::string> why = {
+      {"mission.xml",
+       "the fixed part of the tree changes with a new mission version, not an uplink"},
+      {"requirements.json", "a package's requirements are read from requirements.fret only"},
+      {"nodes.xml", "the robot's registered nodes do not change with an uplink"},
+      {"world.json", "guarantees are proved in the mission's world model"},
+      {"scenarios", "scenarios belong to the mission (an `uplink` event names the package)"},
+      {"uplinks", "packages are not nested: gate each one against the mission"}};
+  std::error_code ec;
+  std::vector<fs::path> entries;
+  for (fs::directory_iterator it(package, ec), end; !ec && it != end; it.increment(ec))
+    entries.push_back(it->path());
+  std::sort(entries.begin(), entries.end());
+  for (const auto& entry : entries) {
+    const std::string name = entry.filename().string();
+    const std::string extension = entry.extension().string();
+    const bool note_for_people =
+        name.rfind("README", 0) == 0 || extension == ".md" || extension == ".txt";
+    if (name.empty() || name[0] == '.' || note_for_people ||
+        std::find(read.begin(), read.end(), name) != read.end())
+      continue;
+    const std::string shown = display_path(entry, m.dir);
+    const bool folder = fs::is_directory(entry, ec);
+    Finding f = make_finding("load-ignored-file",
+                             name + (folder ? "/" : "") +
+                                 " is not part of an uplink package and is not read: the merge "
+                                 "reads requirements.fret, domain.fret, alternatives/ and "
+                                 "uplink.json",
+                             {shown, 0, 0});
+    if (const auto reason = why.find(name); reason != why.end())
+      f.notes.push_back(reason->second);
+    else if (const auto close = closest_names(name, read); !close.empty())
+      f.notes.push_back("did you mean " + close.front() + "?");
+    m.findings.push_back(std::move(f));
+  }
+  report_stray_alternatives(m, package / "alternatives");
+}
+
 // An uplink package (DESIGN §2): requirements.fret, domain.fret and alternatives/, each
-// optional, merged onto the mission as it stands. Its files must lie inside the mission
-// directory (uplinks/<name>/), so that every path in a report stays mission-relative.
+// optional, merged onto the mission as it stands. Inside the mission (uplinks/<name>/) or
+// anywhere else: its files are named relative to the mission directory like every other.
 void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& read_options) {
   std::error_code ec;
   const std::string shown = display_path(uplink, m.dir);
@@ -271,6 +400,7 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
     return;
   }
   m.uplinks.push_back(shown);
+  report_package_strays(m, uplink);
   bool has_content = false;
   UplinkPlan plan;
   if (fs::exists(uplink / "uplink.json", ec)) {
@@ -290,7 +420,7 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
     m.consents.push_back(std::move(consent));
   }
   if (fs::is_regular_file(uplink / "domain.fret", ec)) {
-    load_domain(m, uplink / "domain.fret");
+    load_domain(m, uplink / "domain.fret", /*package=*/true);
     has_content = true;
   }
   if (auto alternatives = discover_alternatives(uplink / "alternatives"); !alternatives.empty()) {
@@ -302,40 +432,6 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
                                       shown + ": uplink package holds no requirements.fret, "
                                               "domain.fret, alternatives/ or uplink.json",
                                       {shown, 0, 0}));
-}
-
-// Files uabt would otherwise pass over in silence: a second requirements file, and an
-// alternative left directly in alternatives/ instead of alternatives/<adaptable>/.
-void report_layout_mistakes(Mission& m, const MissionLayout& layout) {
-  std::error_code ec;
-  if (layout.kind != "uabt") return;
-  if (fs::is_regular_file(m.dir / "requirements.fret", ec) &&
-      fs::is_regular_file(m.dir / "requirements.json", ec)) {
-    Finding f = make_finding("load-ignored-file",
-                             "both requirements.fret and requirements.json exist: uabt reads "
-                             "requirements.fret and ignores requirements.json",
-                             {"requirements.json", 0, 0});
-    f.notes.push_back("keep one of them, so that what is verified is what the team reads");
-    m.findings.push_back(std::move(f));
-  }
-  const fs::path root = m.dir / "alternatives";
-  if (!fs::is_directory(root, ec)) return;
-  std::vector<fs::path> stray;
-  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_regular_file(ec) && it->path().extension() == ".xml") stray.push_back(it->path());
-  std::sort(stray.begin(), stray.end());
-  for (const auto& file : stray) {
-    std::string example = "alternatives/<adaptable>/" + file.filename().string();
-    if (!m.adaptables.empty() && !m.adaptables.front().id.empty())
-      example = "alternatives/" + m.adaptables.front().id + "/" + file.filename().string();
-    Finding f = make_finding("load-ignored-file",
-                             display_path(file, m.dir) +
-                                 " lies directly in alternatives/ and is not read: an alternative "
-                                 "belongs to one adaptable node",
-                             {display_path(file, m.dir), 0, 0});
-    f.notes.push_back("move it to " + example);
-    m.findings.push_back(std::move(f));
-  }
 }
 
 }  // namespace

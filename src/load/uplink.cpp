@@ -1,6 +1,7 @@
 #include "load/uplink.hpp"
 
 #include <algorithm>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "base/files.hpp"
@@ -22,6 +23,17 @@ struct Locator {
     const std::size_t at = text.find("\"" + key + "\"", from);
     return at == std::string::npos ? from : at;
   }
+  // The same, as an object key (followed by ':'), not a string value that happens to match:
+  // in {"A": {"before": "B"}, "B": …} the key "B" is the second "B".
+  std::size_t key_offset(const std::string& key, std::size_t from) const {
+    const std::string quoted = "\"" + key + "\"";
+    for (std::size_t at = text.find(quoted, from); at != std::string::npos;
+         at = text.find(quoted, at + 1)) {
+      const std::size_t after = text.find_first_not_of(" \t\r\n", at + quoted.size());
+      if (after != std::string::npos && text[after] == ':') return at;
+    }
+    return from;
+  }
   SourceLocation at(std::size_t offset) const {
     const auto p = fretish::detail::position_of(text, offset);
     return {file, p.line, p.column};
@@ -40,7 +52,7 @@ void read_place(const Json& place, const Locator& where, std::size_t from, Uplin
     return;
   }
   for (const auto& [id, spec] : place.items()) {
-    const std::size_t key_at = where.offset_of(id, from);
+    const std::size_t key_at = where.key_offset(id, from);
     Placement p;
     p.requirement = id;
     p.location = where.at(key_at);
@@ -48,7 +60,7 @@ void read_place(const Json& place, const Locator& where, std::size_t from, Uplin
     bool reported = false;
     if (spec.is_object()) {
       for (const auto& [relation, anchor] : spec.items()) {
-        const std::size_t relation_at = where.offset_of(relation, key_at);
+        const std::size_t relation_at = where.key_offset(relation, key_at);
         if ((relation != "before" && relation != "after") || !anchor.is_string()) {
           invalid(findings,
                   "placement of '" + id +
@@ -160,6 +172,50 @@ std::string adaptable_of(const fretish::Requirement& r) {
   return r.scope ? r.scope->mode : std::string();
 }
 
+// Placements that anchor one another in a circle (A before B, B before A; or longer) cannot
+// all hold, or tie nothing to the rest of the order: one `uplink-invalid` error per circle, at
+// the entry that closes it (the last in the file), naming the circle. What is left, in file
+// order, can all be applied.
+std::vector<const Placement*> without_cycles(const std::vector<const Placement*>& placements,
+                                             std::vector<Finding>& findings) {
+  std::map<std::string, std::size_t> index_of;  // requirement → its placement
+  for (std::size_t k = 0; k < placements.size(); ++k)
+    index_of.emplace(placements[k]->requirement, k);
+  std::vector<bool> in_cycle(placements.size(), false);
+  for (std::size_t start = 0; start < placements.size(); ++start) {
+    if (in_cycle[start]) continue;
+    std::vector<std::size_t> walk{start};
+    for (auto next = index_of.find(placements[start]->anchor);
+         next != index_of.end() && walk.size() <= placements.size();
+         next = index_of.find(placements[walk.back()]->anchor)) {
+      if (next->second == start) break;
+      walk.push_back(next->second);
+    }
+    const auto closing = index_of.find(placements[walk.back()]->anchor);
+    if (closing == index_of.end() || closing->second != start) continue;
+    bool same_relation = true;
+    std::string circle;
+    for (std::size_t k : walk) {
+      in_cycle[k] = true;
+      const Placement& p = *placements[k];
+      same_relation &= p.relation == placements[start]->relation;
+      circle += (circle.empty() ? "" : ", ") + p.requirement + " " + p.relation + " " + p.anchor;
+    }
+    const Placement& last = *placements[*std::max_element(walk.begin(), walk.end())];
+    invalid(findings,
+            "uplink.json places '" + last.requirement + "' " + last.relation + " '" + last.anchor +
+                "', which closes a cycle of placements (" + circle + "): " +
+                (same_relation ? "no order satisfies them all"
+                               : "they place one another and nothing places them among the "
+                                 "other requirements"),
+            last.location);
+  }
+  std::vector<const Placement*> kept;
+  for (std::size_t k = 0; k < placements.size(); ++k)
+    if (!in_cycle[k]) kept.push_back(placements[k]);
+  return kept;
+}
+
 }  // namespace
 
 std::vector<std::string> closest_names(const std::string& name,
@@ -207,7 +263,7 @@ UplinkPlan read_uplink_plan(const std::filesystem::path& path, const std::string
     return plan;
   }
   for (const auto& [key, value] : root.items()) {
-    const std::size_t at = where.offset_of(key, 0);
+    const std::size_t at = where.key_offset(key, 0);
     if (key == "place")
       read_place(value, where, at, plan, findings);
     else if (key == "remove")
@@ -268,9 +324,10 @@ void merge_requirements(Mission& m, std::vector<fretish::Requirement> incoming,
     m.requirements.insert(fallback, std::move(r));
   }
 
+  // Placements that name ids the merged mission has.
+  std::vector<const Placement*> valid;
   for (const auto& p : plan.place) {
-    auto placed = find_id(m.requirements, p.requirement);
-    if (placed == m.requirements.end()) {
+    if (find_id(m.requirements, p.requirement) == m.requirements.end()) {
       unknown_id(m,
                  "uplink.json places '" + p.requirement +
                      "', which neither this package nor the mission has",
@@ -291,21 +348,44 @@ void merge_requirements(Mission& m, std::vector<fretish::Requirement> incoming,
           p.anchor, gone ? std::vector<std::string>{} : ids_of(m.requirements), p.anchor_location);
       continue;
     }
-    fretish::Requirement moving = std::move(*placed);
-    m.requirements.erase(placed);
-    auto anchor = find_id(m.requirements, p.anchor);
-    m.requirements.insert(p.relation == "before" ? anchor : anchor + 1, std::move(moving));
+    valid.push_back(&p);
+  }
+  const std::vector<const Placement*> applied = without_cycles(valid, m.findings);
 
-    auto record =
-        std::find_if(m.merges.begin() + static_cast<std::ptrdiff_t>(first_record), m.merges.end(),
-                     [&](const UplinkMerge& u) { return u.requirement == p.requirement; });
-    if (record == m.merges.end()) {  // a requirement of the mission, moved
-      m.merges.push_back(record_of(package, p.requirement, "placed", p.location));
-      record = m.merges.end() - 1;
+  // Every placed requirement is taken out, then put back beside its anchor, anchors first:
+  // later insertions never move earlier ones, so every placement holds in the end.
+  std::map<std::string, const Placement*> placement_of;
+  std::map<std::string, fretish::Requirement> taken;
+  for (const Placement* p : applied) {
+    placement_of[p->requirement] = p;
+    auto placed = find_id(m.requirements, p->requirement);
+    taken.emplace(p->requirement, std::move(*placed));
+    m.requirements.erase(placed);
+  }
+  for (const Placement* first : applied) {
+    std::vector<const Placement*> chain;  // `first`, its anchor's placement, and so on
+    for (const Placement* p = first; p != nullptr && taken.count(p->requirement);) {
+      chain.push_back(p);
+      const auto next = placement_of.find(p->anchor);
+      p = next == placement_of.end() ? nullptr : next->second;
     }
-    record->rule = "placed";
-    record->relation = p.relation;
-    record->anchor = p.anchor;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+      const Placement& p = **it;
+      auto anchor = find_id(m.requirements, p.anchor);
+      m.requirements.insert(p.relation == "before" ? anchor : anchor + 1,
+                            std::move(taken.at(p.requirement)));
+      taken.erase(p.requirement);
+      auto record =
+          std::find_if(m.merges.begin() + static_cast<std::ptrdiff_t>(first_record), m.merges.end(),
+                       [&](const UplinkMerge& u) { return u.requirement == p.requirement; });
+      if (record == m.merges.end()) {  // a requirement of the mission, moved
+        m.merges.push_back(record_of(package, p.requirement, "placed", p.location));
+        record = m.merges.end() - 1;
+      }
+      record->rule = "placed";
+      record->relation = p.relation;
+      record->anchor = p.anchor;
+    }
   }
 }
 

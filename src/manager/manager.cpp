@@ -270,8 +270,8 @@ ManagerRun BehaviorTreeManager::run() {
   return result;
 }
 
-std::string trace_summary(const ManagerRun& run) {
-  return trace_summary(run.trace);
+std::string trace_summary(const ManagerRun& run, const std::string& path_prefix) {
+  return trace_summary(run.trace, path_prefix);
 }
 
 std::string property_summary(const ManagerRun& run) {

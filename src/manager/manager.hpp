@@ -72,7 +72,7 @@ class BehaviorTreeManager {
 };
 
 // The trace as a short text summary for a terminal (trace.hpp has the JSON lines).
-std::string trace_summary(const ManagerRun& run);
+std::string trace_summary(const ManagerRun& run, const std::string& path_prefix = "");
 // One line per mission property: its verdict at the end of the run.
 std::string property_summary(const ManagerRun& run);
 

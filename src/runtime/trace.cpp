@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "base/diagnostics.hpp"
+
 namespace uabt::runtime {
 
 namespace {
@@ -119,7 +121,7 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
   return out;
 }
 
-std::string trace_summary(const std::vector<TraceEvent>& trace) {
+std::string trace_summary(const std::vector<TraceEvent>& trace, const std::string& path_prefix) {
   std::string out;
   for (const auto& e : trace) {
     // The outcome is the "done" line's; the status event that completes the run repeats it.
@@ -128,12 +130,20 @@ std::string trace_summary(const std::vector<TraceEvent>& trace) {
     if (e.event == "select") {
       out += e.adaptable + " selects " + e.alternative + " (" + e.requirement + ")";
     } else if (e.event == "uplink") {
-      out += "uplink " + e.uplink + " " + e.verdict;
+      out += "uplink " + user_path(e.uplink, path_prefix) + " " + e.verdict;
       if (e.verdict == "accepted") {
         out += ", swapped";
         for (const auto& id : e.swapped) out += " " + id;
       } else {
-        for (const auto& f : e.findings) out += "\n    " + f.message + " [" + f.check + "]";
+        // GCC style, indented under the event: each file as it opens from where uabt runs.
+        TextOptions options;
+        options.path_prefix = path_prefix;
+        const std::string why = format_text(e.findings, options);
+        for (std::size_t at = 0; at < why.size();) {
+          const std::size_t end = why.find('\n', at);
+          out += "\n    " + why.substr(at, end - at);
+          at = end == std::string::npos ? why.size() : end + 1;
+        }
       }
     } else if (e.event == "violation") {
       out += e.role + " " + e.requirement + " violated";
@@ -149,7 +159,7 @@ std::string trace_summary(const std::vector<TraceEvent>& trace) {
       out +=
           e.node + " read " + (e.reads.empty() ? "nothing" : reads_text(e.reads)) + ": " + e.status;
     } else if (e.event == "error") {
-      out += "error: " + e.message + "\n    node: " + e.node;
+      out += "error: " + with_user_path(e.message, path_prefix) + "\n    node: " + e.node;
       if (!e.script.empty()) out += "\n    script: " + e.script;
     } else if (e.event == "done") {
       out += "mission " + e.verdict;

@@ -58,7 +58,10 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace);
 // A state value as it appears in the trace: a JSON boolean, number or string; null when unset.
 nlohmann::ordered_json value_json(const ScriptValue& value);
 // One line per event; a completed root's status is left to the final "mission <verdict>"
-// line, so that the outcome is printed once.
-std::string trace_summary(const std::vector<TraceEvent>& trace);
+// line, so that the outcome is printed once. Uplink packages and the files of a rejected one's
+// findings are relative to the mission directory; `path_prefix` (path_prefix_for) makes them
+// open from where uabt runs.
+std::string trace_summary(const std::vector<TraceEvent>& trace,
+                          const std::string& path_prefix = "");
 
 }  // namespace uabt::runtime

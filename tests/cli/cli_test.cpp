@@ -113,7 +113,9 @@ TEST(Cli, RunTheCuriosityStory) {
       "run missions/msl_curiosity --selection reactive --scenario "
       "missions/msl_curiosity/scenarios/mud_uplink.json");
   EXPECT_EQ(run.exit_code, 0) << run.out;
-  EXPECT_NE(run.out.find("uplink uplinks/on_mud accepted"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("uplink missions/msl_curiosity/uplinks/on_mud accepted"),
+            std::string::npos)
+      << run.out;
   EXPECT_NE(run.out.find("navigation selects on_mud (Req3)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("mission success"), std::string::npos);
 }
@@ -213,7 +215,8 @@ TEST(CliUplink, RunRefusesAMissingUplinkBeforeTheRunStarts) {
       "run missions/msl_curiosity --scenario "
       "missions/msl_curiosity/scenarios/dusty_start.json --uplink "
       "3:missions/msl_curiosity/uplinks/on_mud");
-  EXPECT_NE(ok.out.find("uplink uplinks/on_mud accepted"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("uplink missions/msl_curiosity/uplinks/on_mud accepted"), std::string::npos)
+      << ok.out;
 }
 
 }  // namespace
@@ -230,6 +233,13 @@ TEST(Cli, RunStopsOnAScriptErrorAndOnMaxTicks) {
                       (dir.dir() / "no_battery.json").string() + "'");
   EXPECT_EQ(error.exit_code, 1) << error.out;
   EXPECT_NE(error.out.find("undefined blackboard key 'battery'"), std::string::npos);
+  // Where, as the file opens from the directory uabt ran in.
+  EXPECT_NE(error.out.find("\nmissions/exploration/mission.xml:8:9: error: ScriptCondition"),
+            std::string::npos)
+      << error.out;
+  EXPECT_NE(error.out.find("tick 1: error: missions/exploration/mission.xml:8:9:"),
+            std::string::npos)
+      << error.out;
   EXPECT_NE(error.out.find("mission error"), std::string::npos) << error.out;
   EXPECT_EQ(error.out.find("mission success"), std::string::npos) << error.out;
   CliRun timeout = uabt("run missions/msl_curiosity --max-ticks 50 --scenario '" +

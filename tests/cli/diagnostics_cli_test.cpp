@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -275,6 +276,123 @@ TEST(Diagnostics, ChecksListsTheCatalogue) {
   const UabtRun typo = uabt_in(uabt::testing::source_dir(), "explain guard-overlpa");
   EXPECT_EQ(typo.exit_code, 2);
   EXPECT_NE(typo.out.find("did you mean 'guard-overlap'?"), std::string::npos) << typo.out;
+}
+
+// --- an uplink package outside the mission (issue 23, point 6) ------------------------------
+
+// The file of each "file:line:col: severity:" line (indented ones too: `run` prints a rejected
+// package's findings under its event) and of each "uplink DIR verdict" line.
+std::vector<std::string> printed_paths(const std::string& out) {
+  static const std::regex located(R"(^\s*([^\s:][^:]*?)(?::\d+)*: (error|warning|note): )");
+  static const std::regex uplink(R"(^tick \d+: uplink (\S+) (accepted|rejected))");
+  std::vector<std::string> paths;
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, located) || std::regex_search(line, m, uplink))
+      paths.push_back(m[1]);
+  }
+  return paths;
+}
+
+// Files of a findings.json (relative to the mission) and of a SARIF log (relative to the
+// source root, the current directory here, or absolute file URIs).
+std::vector<std::string> json_paths(const nlohmann::json& findings) {
+  std::vector<std::string> paths;
+  for (const auto& f : findings["findings"]) paths.push_back(f["location"]["file"]);
+  return paths;
+}
+std::vector<std::string> sarif_paths(const nlohmann::json& sarif) {
+  std::vector<std::string> paths;
+  for (const auto& result : sarif["runs"][0]["results"]) {
+    std::vector<nlohmann::json> places = {result["locations"][0]};
+    if (result.contains("relatedLocations"))
+      for (const auto& r : result["relatedLocations"]) places.push_back(r);
+    for (const auto& place : places) {
+      std::string uri = place["physicalLocation"]["artifactLocation"]["uri"];
+      if (uri.rfind("file://", 0) == 0) uri = uri.substr(7);
+      paths.push_back(uri);
+    }
+  }
+  return paths;
+}
+
+void expect_all_open_from(const fs::path& base, const std::vector<std::string>& paths,
+                          const std::string& what) {
+  EXPECT_FALSE(paths.empty()) << what;
+  for (const auto& p : paths) {
+    EXPECT_TRUE(fs::exists(base / p)) << what << ": " << p << " does not open from " << base;
+    EXPECT_EQ(p.find("lunar/lunar"), std::string::npos) << what << ": " << p;
+  }
+}
+
+TEST(Diagnostics, AnUplinkOutsideTheMissionIsNamedAsItOpens) {
+  // ws/lunar (the mission), ws/uplink_ridge2 (the package, beside it: a requirement that does
+  // not parse, and a symlinked alternative that does not read), uabt runs in ws/third.
+  Workspace ws;
+  const fs::path mission = ws.copy("msl_curiosity", "lunar");
+  fs::copy(mission / "uplinks/on_mud", ws.root() / "uplink_ridge2", fs::copy_options::recursive);
+  const fs::path package = ws.root() / "uplink_ridge2";
+  write(package / "requirements.fret",
+        read(package / "requirements.fret") +
+            "Ridge: In navigation if OnMud Mission shal satisfy selected_alt = on_mud\n");
+  const fs::path alternative = package / "alternatives/navigation/on_mud.xml";
+  write(ws.root() / "shared/on_mud.xml",
+        "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"on_mud\">\n");
+  fs::remove(alternative);
+  fs::create_symlink("../../../shared/on_mud.xml", alternative);
+  // The mission's own alternative, symlinked from elsewhere, is named by its link.
+  const fs::path rocks = mission / "alternatives/navigation/on_rocks.xml";
+  write(ws.root() / "shared/on_rocks.xml", read(rocks) + "<oops");
+  fs::remove(rocks);
+  fs::create_symlink(ws.root() / "shared/on_rocks.xml", rocks);
+  const fs::path third = ws.root() / "third";
+  fs::create_directories(third);
+
+  const UabtRun gate = uabt_in(third, "gate ../lunar --uplink ../uplink_ridge2 --out out");
+  EXPECT_EQ(gate.exit_code, 1) << gate.out;
+  EXPECT_NE(gate.out.find("../uplink_ridge2/requirements.fret:"), std::string::npos) << gate.out;
+  EXPECT_NE(gate.out.find("../uplink_ridge2/alternatives/navigation/on_mud.xml:"),
+            std::string::npos)
+      << gate.out;
+  EXPECT_NE(gate.out.find("../lunar/alternatives/navigation/on_rocks.xml:"), std::string::npos)
+      << gate.out;
+  expect_all_open_from(third, printed_paths(gate.out), "gate text");
+  expect_all_open_from(third, printed_paths(read(third / "out/findings.txt")), "findings.txt");
+  expect_all_open_from(mission,
+                       json_paths(nlohmann::json::parse(read(third / "out/findings.json"))),
+                       "findings.json (relative to the mission)");
+  expect_all_open_from(third,
+                       sarif_paths(nlohmann::json::parse(read(third / "out/findings.sarif"))),
+                       "findings.sarif (relative to the source root)");
+  const UabtRun json = uabt_in(
+      third, "gate ../lunar --uplink ../uplink_ridge2 --out out --format json", "2>/dev/null");
+  expect_all_open_from(mission, json_paths(nlohmann::json::parse(json.out)), "--format json");
+  const UabtRun sarif = uabt_in(
+      third, "gate ../lunar --uplink ../uplink_ridge2 --out out --format sarif", "2>/dev/null");
+  expect_all_open_from(third, sarif_paths(nlohmann::json::parse(sarif.out)), "--format sarif");
+
+  // A package further up than the mission is named by its absolute path, not ../../…
+  const uabt::testing::TempMission elsewhere({});
+  fs::copy(package, elsewhere.dir() / "ridge", fs::copy_options::recursive);
+  const UabtRun far = uabt_in(
+      ws.root(), "gate lunar --uplink '" + (elsewhere.dir() / "ridge").string() + "' --out out");
+  EXPECT_NE(far.out.find("\n" + (elsewhere.dir() / "ridge/requirements.fret:6:").string()),
+            std::string::npos)
+      << far.out;
+  expect_all_open_from(ws.root(), printed_paths(far.out), "gate, package elsewhere");
+
+  // `run`: the mission itself must pass its gate, so its own alternative is whole again.
+  fs::remove(rocks);
+  fs::copy_file(
+      uabt::testing::mission_dir("msl_curiosity") / "alternatives/navigation/on_rocks.xml", rocks);
+  const UabtRun run = uabt_in(
+      third,
+      "run ../lunar --scenario ../lunar/scenarios/dusty_start.json --uplink 2:../uplink_ridge2");
+  EXPECT_NE(run.out.find("uplink ../uplink_ridge2 rejected"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("    ../uplink_ridge2/requirements.fret:6:"), std::string::npos)
+      << run.out;
+  expect_all_open_from(third, printed_paths(run.out), "run");
 }
 
 TEST(Diagnostics, NonAsciiCharacterNamesItselfAndItsAsciiForm) {

@@ -61,7 +61,7 @@ TEST_F(BarePackage, GateUplinkRejectsItWithTheProof) {
 
 TEST_F(BarePackage, AScenarioUplinkEventIsRejectedWithTheProof) {
   const CliRun r = uabt_in(root(), "run msl --scenario msl/scenarios/mud_bare.json");
-  EXPECT_NE(r.out.find("uplink uplinks/mud_bare rejected"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("uplink msl/uplinks/mud_bare rejected"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(kViolation), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("accepted"), std::string::npos) << r.out;
   EXPECT_NE(r.exit_code, 0) << "mud is unknown to the running version: it holds, then times out";
@@ -71,12 +71,12 @@ TEST_F(BarePackage, RunUplinkIsRejectedWithTheProof) {
   // dusty_start has no uplink event of its own.
   const CliRun r = uabt_in(
       root(), "run msl --scenario msl/scenarios/dusty_start.json --uplink 3:msl/uplinks/mud_bare");
-  EXPECT_NE(r.out.find("uplink uplinks/mud_bare rejected"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("uplink msl/uplinks/mud_bare rejected"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(kViolation), std::string::npos) << r.out;
   // The shipped package restates HoldOnUnknown for mud and is accepted the same way.
   const CliRun ok = uabt_in(
       root(), "run msl --scenario msl/scenarios/dusty_start.json --uplink 3:msl/uplinks/on_mud");
-  EXPECT_NE(ok.out.find("uplink uplinks/on_mud accepted"), std::string::npos) << ok.out;
+  EXPECT_NE(ok.out.find("uplink msl/uplinks/on_mud accepted"), std::string::npos) << ok.out;
   EXPECT_EQ(ok.exit_code, 0) << ok.out;
 }
 
@@ -103,7 +103,7 @@ TEST_F(BarePackage, AWeakenedGuaranteeWithoutConsentIsRejectedByTheRunToo) {
   EXPECT_EQ(gate.exit_code, 1) << gate.out;
   EXPECT_NE(gate.out.find("[uplink-guarantee-weakened]"), std::string::npos) << gate.out;
   const CliRun run = uabt_in(root(), "run msl --scenario msl/scenarios/mud_uplink.json");
-  EXPECT_NE(run.out.find("uplink uplinks/on_mud rejected"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("uplink msl/uplinks/on_mud rejected"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("guarantee 'HoldOnUnknown' is restated in a weaker form"),
             std::string::npos)
       << run.out;

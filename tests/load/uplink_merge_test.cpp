@@ -209,6 +209,164 @@ TEST(UplinkMerge, PlacementAcrossAdaptableNodesIsRefused) {
             std::string::npos);
 }
 
+// --- what a merge used to drop without a word (issue 23, point 4) -------------------------
+
+// The base mission with two new requirements, A and B on nav, placed by `uplink_json`.
+Mission merge_a_and_b(const std::string& uplink_json) {
+  TempMission t(base_mission());
+  t.write("uplinks/u/requirements.fret",
+          "A: In nav if W Mission shall satisfy selected_alt = a\n"
+          "B: In nav if W & X Mission shall satisfy selected_alt = b\n");
+  t.write("uplinks/u/uplink.json", uplink_json);
+  return merge(t);
+}
+
+// The one finding of `check`; null (and the test fails) when there is not exactly one.
+const Finding* only(const Mission& m, const std::string& check) {
+  const auto found = of_check(m, check);
+  EXPECT_EQ(found.size(), 1u) << format_text(m.findings);
+  return found.size() == 1 ? found[0] : nullptr;
+}
+
+TEST(UplinkMerge, PlacementCyclesAreErrorsAtTheEntryThatClosesThem) {
+  struct Case {
+    std::string uplink_json;
+    int line, column;         // the key of the entry that closes the cycle
+    std::string circle, why;  // in the message
+  };
+  const std::vector<Case> cases = {
+      // The key "B" on line 2, not the string "B" on line 1.
+      {"{\"place\": {\"A\": {\"before\": \"B\"},\n           \"B\": {\"before\": \"A\"}}}\n", 2, 12,
+       "(A before B, B before A)", "no order satisfies them all"},
+      {"{\"place\": {\"A\": {\"after\": \"B\"}, \"B\": {\"after\": \"Req3\"},\n"
+       "           \"Req3\": {\"after\": \"A\"}}}\n",
+       2, 12, "(A after B, B after Req3, Req3 after A)", "no order satisfies them all"},
+      // Before and after mixed: each holds with the other, but nothing ties them to the rest.
+      {"{\"place\": {\"A\": {\"before\": \"B\"}, \"B\": {\"after\": \"A\"}}}", 1, 34,
+       "(A before B, B after A)",
+       "they place one another and nothing places them among the other requirements"}};
+  for (const Case& c : cases) {
+    const Mission m = merge_a_and_b(c.uplink_json);
+    const Finding* error = only(m, "uplink-invalid");
+    ASSERT_NE(error, nullptr) << c.uplink_json;
+    EXPECT_EQ(error->location.file, "uplinks/u/uplink.json");
+    EXPECT_EQ(error->location.line, c.line) << c.uplink_json;
+    EXPECT_EQ(error->location.column, c.column) << c.uplink_json;
+    EXPECT_NE(error->message.find("cycle of placements " + c.circle + ": " + c.why),
+              std::string::npos)
+        << error->message;
+    // None is reported as placed.
+    EXPECT_EQ(record(m, "A")->rule, "appended");
+    EXPECT_EQ(record(m, "B")->rule, "appended");
+  }
+}
+
+TEST(UplinkMerge, EveryPlacementHoldsAfterTheMerge) {
+  // Applied one after the other in file order, "B before Req1" would move B in front of A,
+  // and the record would still say "A: placed before B".
+  const Mission m =
+      merge_a_and_b("{\"place\": {\"A\": {\"before\": \"B\"}, \"B\": {\"before\": \"Req1\"}}}");
+  EXPECT_FALSE(has_errors(m.findings)) << format_text(m.findings);
+  EXPECT_EQ(order(m), (std::vector<std::string>{"A", "B", "Req1", "Req2", "Req3", "Safe"}));
+  EXPECT_EQ(record(m, "A")->rule, "placed");
+  EXPECT_EQ(record(m, "A")->priority, 1);
+  EXPECT_EQ(record(m, "B")->priority, 2);
+}
+
+const Finding* at_line(const std::vector<const Finding*>& findings, const std::string& file,
+                       int line) {
+  for (const auto* f : findings)
+    if (f->location.file == file && f->location.line == line) return f;
+  return nullptr;
+}
+
+// The base mission with a wind speed, a sky, a tick period and an assumption declared, and
+// a package whose domain.fret is `package_domain`.
+Mission merge_domain(const std::string& package_domain) {
+  auto files = base_mission();
+  files["domain.fret"] =
+      "boolean X, Y, Z, W\ninteger wind in [0, 15]\nenum sky in {clear, dusty}\n"
+      "tick 100 ms\nassume calm: wind < 10\n";
+  files["requirements.fret"] +=
+      "Windy: In nav if wind > 12 Mission shall satisfy selected_alt = b\n";
+  TempMission t(files);
+  t.write("uplinks/u/domain.fret", package_domain);
+  return merge(t);
+}
+
+TEST(UplinkMerge, ADifferentRedeclarationIsAnErrorNamingBothDeclarations) {
+  const Mission m = merge_domain(
+      "integer wind in [0, 3]\nenum sky in {clear, dusty, red}\ntick 1 s\n"
+      "assume calm: wind < 2\n");
+  const auto errors = of_check(m, "domain-invalid");
+  ASSERT_EQ(errors.size(), 4u) << format_text(m.findings);
+  const Finding* wind = at_line(errors, "uplinks/u/domain.fret", 1);
+  ASSERT_NE(wind, nullptr) << format_text(m.findings);
+  EXPECT_EQ(wind->severity, Severity::error);
+  EXPECT_EQ(wind->location.column, 9);
+  EXPECT_NE(wind->message.find("declares integer wind in [0, 3], but the mission has integer "
+                               "wind in [0, 15]"),
+            std::string::npos)
+      << wind->message;
+  ASSERT_EQ(wind->related.size(), 1u);
+  EXPECT_EQ(wind->related[0].location.file, "domain.fret");
+  EXPECT_EQ(wind->related[0].location.line, 2);
+  EXPECT_EQ(wind->related[0].location.column, 9);
+  EXPECT_NE(at_line(errors, "uplinks/u/domain.fret", 2), nullptr) << "another enum set";
+  EXPECT_NE(at_line(errors, "uplinks/u/domain.fret", 3), nullptr) << "another tick period";
+  EXPECT_NE(at_line(errors, "uplinks/u/domain.fret", 4), nullptr) << "another assumption";
+  // The mission's declaration stands.
+  EXPECT_EQ(m.domain.find("wind")->upper, "15");
+}
+
+TEST(UplinkMerge, AnIdenticalRedeclarationIsFine) {
+  // The same declarations, written otherwise: literals in another order, spacing.
+  const Mission m = merge_domain(
+      "boolean W\ninteger wind in [0,15]\nenum sky in {dusty, clear}\ntick 0.1 s\n"
+      "assume calm: wind<10\n");
+  EXPECT_FALSE(has_errors(m.findings)) << format_text(m.findings);
+  EXPECT_EQ(m.domain.assumptions.size(), 1u) << "one assumption, stated twice";
+}
+
+TEST(UplinkMerge, FilesThePackageMayNotCarryAreWarnedAbout) {
+  TempMission t(base_mission());
+  t.write("uplinks/u/requirements.fret",
+          "Storm: In nav if W Mission shall satisfy selected_alt = b\n");
+  t.write("uplinks/u/mission.xml", uabt::testing::mission_with("<Adaptable ID=\"nav\"/>"));
+  t.write("uplinks/u/nodes.xml", "<root/>");
+  t.write("uplinks/u/requirement.fret", "");
+  t.write("uplinks/u/alternatives/stray.xml", uabt::testing::alternative_tree("stray"));
+  t.write("uplinks/u/README.md", "what this package is for\n");
+  t.write("uplinks/u/.hidden", "");
+  Mission m = merge(t);
+  EXPECT_FALSE(has_errors(m.findings)) << format_text(m.findings);
+  const auto ignored = of_check(m, "load-ignored-file");
+  std::vector<std::string> files;
+  for (const auto* f : ignored) {
+    EXPECT_EQ(f->severity, Severity::warning);
+    files.push_back(f->location.file);
+  }
+  EXPECT_EQ(files,
+            (std::vector<std::string>{"uplinks/u/alternatives/stray.xml", "uplinks/u/mission.xml",
+                                      "uplinks/u/nodes.xml", "uplinks/u/requirement.fret"}))
+      << format_text(m.findings);
+  const Finding* mission = at_line(ignored, "uplinks/u/mission.xml", 0);
+  ASSERT_NE(mission, nullptr);
+  EXPECT_NE(mission->message.find("mission.xml is not part of an uplink package"),
+            std::string::npos)
+      << mission->message;
+  const Finding* typo = at_line(ignored, "uplinks/u/requirement.fret", 0);
+  ASSERT_NE(typo, nullptr);
+  EXPECT_EQ(typo->notes, (std::vector<std::string>{"did you mean requirements.fret?"}));
+  // A package with only what the merge reads is not warned about.
+  TempMission clean(base_mission());
+  clean.write("uplinks/u/requirements.fret",
+              "Storm: In nav if W Mission shall satisfy selected_alt = b\n");
+  clean.write("uplinks/u/uplink.json", "{}");
+  clean.write("uplinks/u/alternatives/nav/a.xml", uabt::testing::alternative_tree("a"));
+  EXPECT_TRUE(of_check(merge(clean), "load-ignored-file").empty());
+}
+
 TEST(UplinkMerge, ClosestNamesAreNearAndOrdered) {
   EXPECT_EQ(closest_names("Req9", {"Req1", "Safe", "Req2"}),
             (std::vector<std::string>{"Req1", "Req2"}));
