@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "base/number_fit.hpp"
+
 namespace uabt::fretish::detail {
 
 namespace {
@@ -52,11 +54,8 @@ std::string unescape_quoted(std::string_view quoted) {
 ExprPtr ExpressionBuilder::build(const SyntaxNode& node) {
   try {
     return visit(node).expr;
-  } catch (const TooDeep& e) {
-    findings_.push_back(make_finding(
-        "fretish-syntax",
-        "expression nested deeper than " + std::to_string(kMaxExprDepth) + " operators",
-        map_.location(e.offset)));
+  } catch (const Refusal& e) {
+    findings_.push_back(make_finding("fretish-syntax", e.message, map_.location(e.offset)));
     return nullptr;
   }
 }
@@ -77,7 +76,9 @@ ExpressionBuilder::Built ExpressionBuilder::make(ExprKind kind, std::vector<Buil
     depth = std::max(depth, a.depth);
     operands.push_back(std::move(a.expr));
   }
-  if (depth + 1 > kMaxExprDepth) throw TooDeep{begin};
+  if (depth + 1 > kMaxExprDepth)
+    throw Refusal{begin,
+                  "expression nested deeper than " + std::to_string(kMaxExprDepth) + " operators"};
   return {make_expr(kind, std::move(operands), map_.range(begin, end)), depth + 1};
 }
 
@@ -101,7 +102,12 @@ ExpressionBuilder::Built ExpressionBuilder::visit(const SyntaxNode& n) {
     args.push_back(visit(*n.children[1]));
     return make(ExprKind::implies, std::move(args), n.begin, n.end);
   }
-  if (n.is<g::number>()) return {make_number(std::string(n.text(text_)), range)};
+  if (n.is<g::number>()) {
+    std::string literal(n.text(text_));
+    if (std::string why = number_misfit(literal, /*exact_integers=*/true); !why.empty())
+      throw Refusal{n.begin, why};
+    return {make_number(std::move(literal), range)};
+  }
   if (n.is<g::bool_true>()) return {make_bool(true, range)};
   if (n.is<g::bool_false>()) return {make_bool(false, range)};
   if (n.is<g::plain_identifier>() || n.is<g::quoted_identifier>())

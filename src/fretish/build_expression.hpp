@@ -33,8 +33,10 @@ class ExpressionBuilder {
     ExprPtr expr;
     int depth = 1;
   };
-  struct TooDeep {
+  // An expression uabt cannot represent: nested too deeply, or a number that fits no type.
+  struct Refusal {
     std::size_t offset;
+    std::string message;
   };
 
   Built visit(const SyntaxNode& node);

@@ -13,6 +13,11 @@ enum class VarType { boolean, integer, real, enumeration };
 
 const char* var_type_name(VarType t);
 
+// Most literals an enum may declare. The explicit-state prover branches over every value of
+// an environment enum, and the solvers give each literal a constructor: beyond this, memory
+// and time grow past what a gate can spend, so a larger enum is refused at its declaration.
+inline constexpr std::size_t kMaxEnumValues = 4096;
+
 // A state variable the guards range over (FRET glossary types).
 struct Variable {
   std::string name;

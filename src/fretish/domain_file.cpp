@@ -3,7 +3,9 @@
 #include <cstdlib>
 #include <exception>
 #include <map>
+#include <set>
 
+#include "base/number_fit.hpp"
 #include "fretish/build_expression.hpp"
 #include "fretish/lines.hpp"
 #include "fretish/parse.hpp"
@@ -134,11 +136,17 @@ class DomainBuilder {
         invalid("enum '" + first_name + "' has no literals", map.location(declared.front()->begin));
         prototype.invalid = findings_.back().message;
       }
+      if (literals.size() > kMaxEnumValues) {
+        invalid("enum '" + first_name + "' has " + std::to_string(literals.size()) +
+                    " literals; uabt handles at most " + std::to_string(kMaxEnumValues) +
+                    " (split it, or use an integer range)",
+                map.location(declared.front()->begin));
+        prototype.invalid = findings_.back().message;
+        literals.clear();  // reported; the variable keeps no values, its checks unmade
+      }
+      std::set<std::string_view> seen;  // a set: an enum may have very many literals
       for (std::size_t i = 0; i < literals.size(); ++i) {
-        bool repeated = false;
-        for (std::size_t j = 0; j < prototype.enum_values.size(); ++j)
-          repeated = repeated || prototype.enum_values[j] == literals[i];
-        if (repeated) {
+        if (!seen.insert(literals[i]).second) {
           invalid("enum literal '" + literals[i] + "' appears twice in '" + first_name + "'",
                   literal_at[i]);
           continue;
@@ -169,12 +177,14 @@ class DomainBuilder {
                     const std::string& lower, const std::string& upper,
                     const SourceLocation& lower_at, const SourceLocation& upper_at) {
     if (lower.empty()) return true;
-    if (type == VarType::integer) {
-      for (const auto& [bound, where] : {std::pair{lower, lower_at}, std::pair{upper, upper_at}}) {
-        if (!is_whole_number(bound)) {
-          invalid("bound " + bound + " of integer '" + name + "' is not a whole number", where);
-          return false;
-        }
+    for (const auto& [bound, where] : {std::pair{lower, lower_at}, std::pair{upper, upper_at}}) {
+      if (type == VarType::integer && !is_whole_number(bound)) {
+        invalid("bound " + bound + " of integer '" + name + "' is not a whole number", where);
+        return false;
+      }
+      if (std::string why = number_misfit(bound); !why.empty()) {
+        invalid("bound of '" + name + "': " + why, where);
+        return false;
       }
     }
     if (is_unsigned && numeric_value(lower) < 0) {
@@ -195,8 +205,14 @@ class DomainBuilder {
     double value = 0;
     std::optional<double> per_unit;
     for (const auto& child : d.children) {
-      if (child->is<g::tick_period>())
-        value = std::strtod(std::string(child->text(text)).c_str(), nullptr);
+      if (child->is<g::tick_period>()) {
+        const std::string period(child->text(text));
+        if (std::string why = number_misfit(period); !why.empty()) {
+          invalid("tick period: " + why, map.location(child->begin));
+          return;
+        }
+        value = std::strtod(period.c_str(), nullptr);
+      }
       if (child->is<g::tick_unit>()) per_unit = unit_seconds(child->text(text));
     }
     const SourceLocation where = map.location(d.begin);

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/json_input.hpp"
 #include "fretish/json_positions.hpp"
 #include "fretish/parse.hpp"
 
@@ -122,17 +123,15 @@ void parse_export(const std::string& content, const std::string& file, Domain& d
                   ParseResult& result) {
   const std::size_t bom = content.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   const std::string_view text = std::string_view(content).substr(bom);
-  json document;
-  try {
-    document = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
-    const detail::JsonPosition p =
-        detail::position_of(text, e.byte > 0 ? static_cast<std::size_t>(e.byte - 1) : 0);
+  JsonInputError error;
+  std::optional<json> parsed = parse_json_input(text, error);
+  if (!parsed) {
     result.findings.push_back(make_finding("fretish-syntax",
-                                           std::string("not a valid FRET export: ") + e.what(),
-                                           {file, p.line, p.column}));
+                                           "not a valid FRET export: " + error.message,
+                                           {file, error.line, error.column}));
     return;
   }
+  json document = std::move(*parsed);
   const detail::JsonLayout layout = detail::scan_fret_export(text);
   const json* requirements = nullptr;
   if (document.is_array()) {

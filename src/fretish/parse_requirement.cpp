@@ -3,6 +3,7 @@
 #include <exception>
 #include <sstream>
 
+#include "base/number_fit.hpp"
 #include "fretish/build_expression.hpp"
 #include "fretish/parse.hpp"
 #include "fretish/source_text.hpp"
@@ -43,7 +44,7 @@ bool is_expression_node(const SyntaxNode& n) {
 class RequirementBuilder {
  public:
   RequirementBuilder(std::string_view text, const TextMap& map, std::vector<Finding>& findings)
-      : text_(text), map_(map), expressions_(text, map, findings) {}
+      : text_(text), map_(map), findings_(findings), expressions_(text, map, findings) {}
 
   // False when an expression was too deep (a finding has been added).
   bool build(const SyntaxNode& nasa, Requirement& r) {
@@ -156,8 +157,14 @@ class RequirementBuilder {
       t.keyword = form.is<g::timing_within>() ? "within"
                   : form.is<g::timing_for>()  ? "for"
                                               : "after";
-      if (const SyntaxNode* d = form.child<g::duration_value>())
+      if (const SyntaxNode* d = form.child<g::duration_value>()) {
         t.duration = std::string(d->text(text_));
+        if (std::string why = number_misfit(t.duration); !why.empty()) {
+          findings_.push_back(
+              make_finding("fretish-syntax", "duration: " + why, map_.location(d->begin)));
+          return false;
+        }
+      }
       if (const SyntaxNode* u = form.child<g::time_unit>()) t.unit = words(*u);
     } else if (form.is<g::timing_until>() || form.is<g::timing_before>()) {
       t.keyword = form.is<g::timing_until>() ? "until" : "before";
@@ -169,6 +176,7 @@ class RequirementBuilder {
 
   std::string_view text_;
   const TextMap& map_;
+  std::vector<Finding>& findings_;
   ExpressionBuilder expressions_;
 };
 

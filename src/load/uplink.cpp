@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/files.hpp"
+#include "base/json_input.hpp"
 #include "base/suggest.hpp"
 #include "fretish/json_positions.hpp"
 
@@ -244,17 +245,13 @@ UplinkPlan read_uplink_plan(const std::filesystem::path& path, const std::string
     return plan;
   }
   const Locator where{*text, shown};
-  Json root;
-  try {
-    root = Json::parse(*text);
-  } catch (const Json::parse_error& e) {
-    const std::size_t at = e.byte == 0 ? 0 : e.byte - 1;
-    std::string what = e.what();
-    if (const auto colon = what.rfind(": "); colon != std::string::npos)
-      what = what.substr(colon + 2);
-    invalid(findings, "uplink.json is not valid JSON: " + what, where.at(at));
+  JsonInputError json_error;
+  std::optional<Json> parsed = parse_json_input<Json>(*text, json_error);
+  if (!parsed) {
+    invalid(findings, "uplink.json: " + json_error.message, where.at(json_error.offset));
     return plan;
   }
+  const Json root = std::move(*parsed);
   if (!root.is_object()) {
     invalid(findings,
             "uplink.json must be an object: {\"place\": {\"Storm\": {\"before\": \"Req2\"}}, "

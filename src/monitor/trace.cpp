@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/json_input.hpp"
+
 namespace uabt::monitor {
 
 namespace {
@@ -42,14 +44,13 @@ std::optional<Trace> read_trace(const std::string& content, const std::string& f
     begin = end + 1;
     ++line;
     if (blank(text)) continue;
-    json j;
-    try {
-      j = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
-      reader.error(line, static_cast<int>(e.byte > 0 ? e.byte : 1),
-                   std::string("not a JSON object: ") + e.what());
+    JsonInputError error;
+    std::optional<json> parsed = parse_json_input(text, error);
+    if (!parsed) {
+      reader.error(line, error.column, "not a trace line: " + error.message);
       return std::nullopt;
     }
+    json j = std::move(*parsed);
     if (!j.is_object() || !j.contains("tick") || !j["tick"].is_number_unsigned() ||
         !j.contains("state") || !j["state"].is_object()) {
       reader.error(line, 1,

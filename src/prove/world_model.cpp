@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/files.hpp"
+#include "base/json_input.hpp"
 #include "fretish/parse.hpp"
 #include "runtime/script/program.hpp"
 
@@ -113,13 +114,10 @@ const ActionContract* WorldModel::find(std::string_view qualified, std::string_v
 }
 
 WorldModel parse_world(std::string_view text, const std::string& file) {
-  Json root;
-  try {
-    root = Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& e) {
-    const auto [line, column] = position(text, e.byte == 0 ? 0 : e.byte - 1);
-    throw WorldError({file, line, column}, "invalid JSON");
-  }
+  JsonInputError error;
+  std::optional<Json> parsed = parse_json_input<Json>(text, error);
+  if (!parsed) throw WorldError({file, error.line, error.column}, error.message);
+  const Json root = std::move(*parsed);
   const Locator loc(text, file);
   WorldModel w;
   w.file = file;

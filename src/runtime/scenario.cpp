@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/files.hpp"
+#include "base/json_input.hpp"
 
 namespace uabt::runtime {
 
@@ -83,31 +84,6 @@ class PositionScanner {
                               const std::string& message) {
   throw ScenarioError(s.where(where, true) + ": error: " + (where.empty() ? "" : where + ": ") +
                       message);
-}
-
-// nlohmann reports the byte offset after the offending character; line and column are
-// counted from the text so that the message has the usual file:line:col form.
-std::pair<int, int> line_column(std::string_view text, std::size_t byte) {
-  const std::size_t offset = std::min(byte == 0 ? 0 : byte - 1, text.size());
-  int line = 1;
-  std::size_t line_start = 0;
-  for (std::size_t i = 0; i < offset; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      line_start = i + 1;
-    }
-  }
-  return {line, static_cast<int>(offset - line_start) + 1};
-}
-
-// nlohmann's what(): "[json.exception.parse_error.101] parse error at line 3, column 14:
-// syntax error while parsing ..." — keep the part after the position.
-std::string syntax_message(const std::string& what) {
-  const auto column = what.find("column ");
-  const auto colon = what.find(": ", column == std::string::npos ? 0 : column);
-  std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
-  if (message.rfind("syntax error ", 0) == 0) message = message.substr(13);
-  return "invalid JSON: " + message;
 }
 
 ScriptValue state_value(const Json& j, const Scenario& file, const std::string& where) {
@@ -223,14 +199,12 @@ bool Scenario::mentions_state(std::string_view key) const {
 }
 
 Scenario parse_scenario(std::string_view text, const std::string& file) {
-  Json root;
-  try {
-    root = Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& e) {
-    const auto [line, column] = line_column(text, e.byte);
-    throw ScenarioError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                        ": error: " + syntax_message(e.what()));
-  }
+  JsonInputError error;
+  std::optional<Json> parsed = parse_json_input<Json>(text, error);
+  if (!parsed)
+    throw ScenarioError(file + ":" + std::to_string(error.line) + ":" +
+                        std::to_string(error.column) + ": error: " + error.message);
+  Json root = std::move(*parsed);
   Scenario s;
   s.file = file;
   PositionScanner(text, s).scan();

@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 
+#include "base/number_fit.hpp"
 #include "smt/encoder.hpp"
 #include "smt/evaluate.hpp"
 #include "smt/solver.hpp"
@@ -90,11 +91,13 @@ void count_changes(const std::vector<Choice>& old_choices, const std::vector<Cho
           impact.not_counted_reason = "the bounds of '" + v.name + "' are not integers";
           return;
         }
-        if (hi < lo || static_cast<std::uint64_t>(hi - lo) + 1 > kMaxCountedStates) {
+        const std::optional<std::uint64_t> size = integer_range_size(lo, hi);
+        if (!size || *size > kMaxCountedStates) {
           impact.not_counted_reason = "'" + v.name + "' has too many values to count";
           return;
         }
-        for (long long i = lo; i <= hi; ++i) axis.values.push_back(Value::of_int(i));
+        for (std::uint64_t i = 0; i < *size; ++i)
+          axis.values.push_back(Value::of_int(lo + static_cast<long long>(i)));
         break;
       }
       case fretish::VarType::real:

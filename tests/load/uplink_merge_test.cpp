@@ -172,7 +172,7 @@ TEST(UplinkMerge, MalformedUplinkJsonIsAnErrorWithItsPosition) {
   Mission m = merge(t);
   auto errors = of_check(m, "uplink-invalid");
   ASSERT_EQ(errors.size(), 1u) << format_text(m.findings);
-  EXPECT_NE(errors[0]->message.find("not valid JSON"), std::string::npos);
+  EXPECT_NE(errors[0]->message.find("uplink.json: invalid JSON"), std::string::npos);
   EXPECT_EQ(errors[0]->location.line, 2);
 }
 

@@ -96,7 +96,8 @@ TEST(MonitorCli, BadTracesAreErrorsWithFileAndLine) {
             "order [trace-invalid]\n");
   const CliRun junk = uabt_in(files.dir(), "monitor r.fret junk.jsonl");
   EXPECT_EQ(junk.exit_code, 1);
-  EXPECT_NE(junk.out.find("junk.jsonl:2:2: error: not a JSON object"), std::string::npos)
+  EXPECT_NE(junk.out.find("junk.jsonl:2:2: error: not a trace line: invalid JSON"),
+            std::string::npos)
       << junk.out;
   const CliRun typed = uabt_in(files.dir(), "monitor r.fret typed.jsonl --domain domain.fret");
   EXPECT_EQ(typed.exit_code, 1);

@@ -1,0 +1,54 @@
+#pragma once
+// Every JSON file uabt reads (scenarios, world.json, uplink.json, FRET exports, monitor traces)
+// goes through parse_json_input, so that hostile input gives one kind of error everywhere: a
+// place in the file and uabt's own words, never a library exception, a stack overflow or a
+// number silently rounded to infinity.
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace uabt {
+
+// Deepest nesting of arrays and objects a JSON input may have. uabt's formats need at most
+// six levels; the margin leaves room for descriptions, yet a hostile file cannot make a
+// recursive reader overflow the stack.
+inline constexpr int kMaxJsonDepth = 64;
+
+struct JsonInputError {
+  std::size_t offset = 0;  // byte of `text` where the problem starts
+  int line = 1;            // 1-based, of `offset`
+  int column = 1;
+  std::string message;  // e.g. "invalid JSON in array: unexpected end of input; expected ']'"
+};
+
+namespace detail {
+// The first place where nesting passes kMaxJsonDepth or a number fits no type, if any.
+std::optional<JsonInputError> refuse_before_parsing(std::string_view text);
+JsonInputError syntax_error(std::string_view text, const nlohmann::json::parse_error& e);
+JsonInputError unrepresentable(std::string_view text);
+}  // namespace detail
+
+// Parses one JSON document (as nlohmann::json, or nlohmann::ordered_json where the order of
+// keys matters). Nesting beyond kMaxJsonDepth and numbers that fit no 64-bit type (an integer
+// beyond 64 bits, a real beyond a double's range such as 1e400) are refused by a scan over the
+// bytes before the recursive parse; syntax errors are reported in uabt's words.
+template <class Json = nlohmann::json>
+std::optional<Json> parse_json_input(std::string_view text, JsonInputError& error) {
+  if (auto refused = detail::refuse_before_parsing(text)) {
+    error = std::move(*refused);
+    return std::nullopt;
+  }
+  try {
+    return Json::parse(text.begin(), text.end());
+  } catch (const nlohmann::json::parse_error& e) {
+    error = detail::syntax_error(text, e);
+  } catch (const nlohmann::json::exception&) {
+    // The scan refuses every number the parser cannot hold; this is the fail-closed remainder.
+    error = detail::unrepresentable(text);
+  }
+  return std::nullopt;
+}
+
+}  // namespace uabt

@@ -1,0 +1,41 @@
+#include "base/number_fit.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+
+namespace uabt {
+
+std::string number_misfit(std::string_view literal, bool exact_integers) {
+  std::string_view digits = literal;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  if (digits.find_first_of(".eE") == std::string_view::npos) {
+    if (exact_integers) return "";
+    std::int64_t value = 0;
+    if (std::from_chars(digits.data(), digits.data() + digits.size(), value).ec !=
+        std::errc::result_out_of_range)
+      return "";
+    return "the integer " + std::string(literal) +
+           " does not fit in 64 bits (-9223372036854775808 to 9223372036854775807)";
+  }
+  // strtod tells an overflow (infinity) from an underflow (zero); from_chars reports both alike.
+  const std::string text(digits);
+  errno = 0;
+  const double value = std::strtod(text.c_str(), nullptr);
+  if (errno == ERANGE && std::isinf(value))
+    return "the number " + std::string(literal) +
+           " does not fit in a 64-bit real (largest about 1.8e308)";
+  return "";
+}
+
+std::optional<std::uint64_t> integer_range_size(std::int64_t lo, std::int64_t hi) {
+  if (hi < lo) return 0;
+  // Unsigned subtraction is exact for hi >= lo: the distance is at most 2^64 - 1.
+  const std::uint64_t distance = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+  if (distance == UINT64_MAX) return std::nullopt;
+  return distance + 1;
+}
+
+}  // namespace uabt
