@@ -176,6 +176,10 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
                            old_on_merged + "): " + g.text,
                        at);
       f.severity = agreed ? Severity::warning : Severity::error;
+      // Said so that a guarantee broken before the uplink is not read as broken by it.
+      if (!change.before.empty() && change.before != "proved")
+        f.notes.push_back("the version on board does not satisfy it either (" + change.before +
+                          ")");
       if (agreed)
         f.notes.push_back("uplink.json may " + agreed->kind + " it: " + agreed->reason);
       else

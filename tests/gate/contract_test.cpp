@@ -2,6 +2,7 @@
 // statement of every guarantee a package restates or removes is proved on the merged mission.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -224,6 +225,21 @@ TEST(UplinkContract, RemovalThatStillHoldsAndConsentForNothing) {
   ASSERT_FALSE(invalid->notes.empty());
   EXPECT_EQ(invalid->notes[0], "did you mean 'Arrive'?");
   EXPECT_FALSE(o.passed());
+}
+
+// sample_drilling's CoolBit is already violated on board: the finding says so, so that the
+// uplink is not read as what broke it.
+TEST(UplinkContract, AGuaranteeBrokenOnBoardIsSaidToBe) {
+  TempMission m(uabt::testing::mission_files("sample_drilling"));
+  m.write("uplinks/p/requirements.fret",
+          "CoolBit: Mission shall always satisfy Drill.running -> IsBitCool | HardRock\n");
+  const Outcome o = gate_uplink(m.dir(), "uplinks/p");
+  const Finding* weakened = only(o, "uplink-guarantee-weakened");
+  ASSERT_NE(weakened, nullptr) << format_text(o.report.findings);
+  EXPECT_EQ(change(o, "CoolBit")->before, "violated at tick 1");
+  EXPECT_NE(std::find(weakened->notes.begin(), weakened->notes.end(),
+                      "the version on board does not satisfy it either (violated at tick 1)"),
+            weakened->notes.end());
 }
 
 }  // namespace
