@@ -91,7 +91,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       none.complete = true;
       emit(args->output,
            args->format == "json"
-               ? prove::result_json(none, outcome.mission->name, tool_version())
+               ? prove::result_json(none, prove::report_proofs(none), outcome.mission->name,
+                                    tool_version())
                : "prove: " + outcome.mission->name +
                      " states no guarantees (requirements that choose no alternative and are "
                      "not about the Environment): nothing to prove\n");
@@ -135,8 +136,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     proofs.mission_path = args->mission;
     if (!args->selection.empty()) proofs.run_options = "--selection " + args->selection;
     if (args->format == "json") {
-      emit(args->output,
-           prove::result_json(result, outcome.mission->name, tool_version(), written, proofs));
+      emit(args->output, prove::result_json(result, proofs, outcome.mission->name, tool_version()));
       return;
     }
     if (args->format == "html") {

@@ -109,18 +109,13 @@ std::vector<Finding> findings_of(const Result& result,
   return out;
 }
 
-std::string result_json(const Result& result, const std::string& mission,
-                        const std::string& version,
-                        const std::map<std::string, std::string>& written,
-                        const report::Proofs& replay) {
+std::string result_json(const Result& result, const report::Proofs& proofs,
+                        const std::string& mission, const std::string& version) {
   Json j = Json::object();
   j["tool"] = "uabt";
   j["version"] = version;
   j["mission"] = mission;
   j["verdict"] = result.passed() ? "pass" : "fail";
-  report::Proofs proofs = report_proofs(result, written);
-  proofs.mission_path = replay.mission_path;
-  proofs.run_options = replay.run_options;
   Json body = report::proofs_json(proofs);
   for (auto& [key, value] : body.items()) j[key] = std::move(value);
   return j.dump(2) + "\n";

@@ -26,13 +26,11 @@ std::vector<Finding> findings_of(const Result& result,
 // The tick-by-tick table of a counterexample, as text lines.
 std::vector<std::string> table_lines(const Counterexample& cex);
 
-// `uabt prove --format json`: the tool, mission and verdict around report::proofs_json, the
-// same shape as the proofs in the gate's findings.json. `written` and `replay` as for
-// findings_of.
-std::string result_json(const Result& result, const std::string& mission,
-                        const std::string& version,
-                        const std::map<std::string, std::string>& written = {},
-                        const report::Proofs& replay = {});
+// `uabt prove --format json`: the tool, mission and verdict around report::proofs_json of
+// `proofs` (report_proofs of `result`), the same shape as the proofs in the gate's
+// findings.json.
+std::string result_json(const Result& result, const report::Proofs& proofs,
+                        const std::string& mission, const std::string& version);
 
 // What the report shows of a result: `written` maps a requirement id to the path its
 // counterexample's scenario is (or will be) written to.

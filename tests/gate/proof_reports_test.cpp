@@ -69,7 +69,8 @@ TEST(GateProofReports, ProveJsonAndFindingsJsonHaveOneShape) {
     options.engine = engine;
     const prove::Result result =
         prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), options);
-    auto prove_json = nlohmann::json::parse(prove::result_json(result, "sample_drilling", "test"));
+    auto prove_json = nlohmann::json::parse(
+        prove::result_json(result, prove::report_proofs(result), "sample_drilling", "test"));
     EXPECT_EQ(prove_json["verdict"], "fail");
     for (const char* key : {"tool", "version", "mission", "verdict"}) prove_json.erase(key);
     EXPECT_EQ(prove_json, gate_json) << engine;
