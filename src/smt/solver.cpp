@@ -30,7 +30,7 @@ void Solver::watch(std::stop_token stop) {
       const auto deadline = started_ + timeout_;
       if (std::chrono::steady_clock::now() >= deadline) {
         fired_ = true;
-        context_.interrupt();
+        interrupt();
         continue;
       }
       wake_.wait_until(lock, stop, deadline, [] { return false; });
@@ -38,6 +38,13 @@ void Solver::watch(std::stop_token stop) {
       wake_.wait_for(lock, stop, period, [] { return false; });
     }
   }
+}
+
+void Solver::interrupt() {
+  // The solver's own interrupt reaches only a check in progress. The context's would also
+  // cancel the context when the check has just returned (the watchdog fires as it ends), and
+  // Z3 keeps that flag until the next check: the next push would throw "push canceled".
+  Z3_solver_interrupt(context_, solver_);
 }
 
 void Solver::begin() {

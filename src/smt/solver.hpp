@@ -16,7 +16,7 @@ namespace uabt::smt {
 // up on the first check, which costs 5 to 17 ms for a handful of boolean guards; the core
 // answers the same questions in well under a millisecond, incrementally, with unsat cores.
 //
-// The time limit is kept by one watchdog thread per solver that interrupts the context when a
+// The time limit is kept by one watchdog thread per solver that interrupts the solver when a
 // check has run too long. Z3's own `timeout` parameter hands every check to a timer thread and
 // back, which on a busy machine costs more than the small checks the gate makes (measured:
 // 30% of the time of 100 nodes x 32 alternatives). A check is interrupted after between
@@ -36,6 +36,8 @@ class Solver {
   z3::check_result check(const z3::expr_vector& assumptions);
   z3::model model() const { return solver_.get_model(); }
   z3::expr_vector unsat_core() const { return solver_.unsat_core(); }
+  // Stops the check in progress, if any; a no-op between checks. Any thread may call it.
+  void interrupt();
   // Why the last check answered unknown: "timeout" when the watchdog stopped it, otherwise
   // Z3's reason without its parentheses ("incomplete (theory arithmetic)", …).
   const std::string& reason_unknown() const { return reason_; }

@@ -28,6 +28,21 @@ TEST(Solver, TheWatchdogStopsACheckThatRunsTooLong) {
   EXPECT_EQ(solver.reason_unknown(), "");
 }
 
+TEST(Solver, AnInterruptBetweenChecksDoesNotCancelTheNextQuestion) {
+  // The watchdog may fire just as a check returns. Interrupting the whole context then left
+  // it cancelled, and the next push threw "push canceled" (seen in CI as a verify run that
+  // crashed instead of answering).
+  z3::context c;
+  Solver solver(c, 10000);
+  solver.add(c.int_const("x") > 3);
+  ASSERT_EQ(solver.check(), z3::sat);
+  solver.interrupt();
+  EXPECT_NO_THROW(solver.push());
+  solver.add(c.int_const("x") < 10);
+  EXPECT_EQ(solver.check(), z3::sat);
+  EXPECT_NO_THROW(solver.pop());
+}
+
 TEST(Solver, AnswersWithAssumptionsAndCores) {
   z3::context c;
   Solver solver(c, 10000);
