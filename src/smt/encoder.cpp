@@ -9,7 +9,7 @@ namespace uabt::smt {
 using fretish::Expr;
 using fretish::ExprKind;
 using fretish::VarType;
-using Overrides = std::unordered_map<const Expr*, bool>;
+using Overrides = std::unordered_map<const Expr*, z3::expr>;
 
 namespace {
 
@@ -76,7 +76,7 @@ z3::expr Encoder::as_real(const Term& t) {
 Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
   if (!overrides.empty()) {
     const auto it = overrides.find(&e);
-    if (it != overrides.end()) return {context_.bool_val(it->second), Sort::boolean};
+    if (it != overrides.end()) return {it->second, Sort::boolean};
   }
   const TypeInfo& info = typing_.at(e);
   const Sort sort = info.sort;

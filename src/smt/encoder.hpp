@@ -49,10 +49,10 @@ class Encoder {
                                           const SourceLocation& where,
                                           std::vector<Finding>& findings);
 
-  // Lowers a condition that lower_condition accepted, with the listed sub-conditions replaced
-  // by constants (vacuity checks replace one atom occurrence at a time).
+  // Lowers a condition that lower_condition accepted, with the listed boolean sub-conditions
+  // replaced by the given formulas (vacuity checks flip atom occurrences).
   z3::expr lower(const fretish::Expr& condition,
-                 const std::unordered_map<const fretish::Expr*, bool>& overrides = {});
+                 const std::unordered_map<const fretish::Expr*, z3::expr>& overrides = {});
 
   // D: variable ranges, enumeration membership and the domain's assumptions. Ill-typed
   // assumptions and unreadable bounds are reported and left out.
@@ -80,7 +80,7 @@ class Encoder {
     Sort sort;
   };
   Term lower_term(const fretish::Expr& e,
-                  const std::unordered_map<const fretish::Expr*, bool>& overrides);
+                  const std::unordered_map<const fretish::Expr*, z3::expr>& overrides);
   z3::expr as_real(const Term& t);
   z3::expr implicit_boolean(const std::string& name);
   std::optional<z3::expr> bound(const Slot& slot, const std::string& text, bool is_lower,

@@ -1,6 +1,9 @@
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "smt/atoms.hpp"
 #include "verify/node.hpp"
@@ -48,6 +51,19 @@ void top_level_literals(const fretish::Expr& e, bool positive,
   out.emplace_back(&e, positive);
 }
 
+// The guard for a note: whole up to a few lines, elided in the middle beyond (a guard of
+// thousands of atoms, repeated in every finding about it, made megabytes of output).
+std::string guard_note(const fretish::Expr& guard) {
+  constexpr std::size_t kKeep = 160;  // characters kept at each end
+  std::string text = fretish::to_fretish(guard);
+  if (text.size() <= 3 * kKeep) return "guard: " + text;
+  // Cut at spaces, which never split a quoted name's UTF-8 sequence.
+  const std::size_t head = text.rfind(' ', kKeep);
+  const std::size_t tail = text.find(' ', text.size() - kKeep);
+  return "guard: " + text.substr(0, head) + " ... " + text.substr(tail + 1) + " (" +
+         std::to_string(text.size()) + " characters)";
+}
+
 SourceLocation atom_location(const fretish::Expr& atom, const SourceLocation& guard_location) {
   SourceLocation loc = guard_location;
   if (atom.range.begin_line > 0) {
@@ -56,6 +72,193 @@ SourceLocation atom_location(const fretish::Expr& atom, const SourceLocation& gu
   }
   return loc;
 }
+
+// Which atom occurrences decide the guard at one state: flipping a sensitive occurrence alone
+// flips the guard. Values come from the model; the skeleton is walked once down from the root
+// (a child of an `and` is sensitive when the `and` is and every sibling is true, and so on).
+class Sensitivity {
+ public:
+  Sensitivity(const smt::Typing& typing,
+              const std::unordered_map<const fretish::Expr*, bool>& atoms)
+      : typing_(typing), atoms_(atoms) {}
+
+  // Fills `sensitive` with the atom occurrences whose flip alone flips `guard`.
+  void run(const fretish::Expr& guard, std::unordered_set<const fretish::Expr*>& sensitive) {
+    value(guard);
+    mark(guard, sensitive);
+  }
+
+ private:
+  const smt::Typing& typing_;
+  const std::unordered_map<const fretish::Expr*, bool>& atoms_;
+  std::unordered_map<const fretish::Expr*, bool> values_;
+
+  static bool combine(fretish::ExprKind kind, const std::vector<bool>& v) {
+    using fretish::ExprKind;
+    switch (kind) {
+      case ExprKind::logical_not: return !v[0];
+      case ExprKind::logical_and: return std::all_of(v.begin(), v.end(), [](bool b) { return b; });
+      case ExprKind::logical_or: return std::any_of(v.begin(), v.end(), [](bool b) { return b; });
+      case ExprKind::logical_xor:
+      case ExprKind::iff: {
+        bool acc = v[0];
+        for (std::size_t i = 1; i < v.size(); ++i)
+          acc = kind == ExprKind::logical_xor ? acc != v[i] : acc == v[i];
+        return acc;
+      }
+      case ExprKind::implies: {  // right-associative, as the encoder reads it
+        bool acc = v.back();
+        for (std::size_t i = v.size() - 1; i-- > 0;) acc = !v[i] || acc;
+        return acc;
+      }
+      case ExprKind::eq: return v[0] == v[1];
+      case ExprKind::ne: return v[0] != v[1];
+      default: return false;
+    }
+  }
+
+  bool value(const fretish::Expr& e) {
+    bool v = false;
+    if (e.kind == fretish::ExprKind::bool_literal) {
+      v = e.bool_value;
+    } else if (smt::is_boolean_structure(e, typing_)) {
+      std::vector<bool> args;
+      for (const auto& a : e.args) args.push_back(value(*a));
+      v = combine(e.kind, args);
+    } else {
+      v = atoms_.at(&e);
+    }
+    values_[&e] = v;
+    return v;
+  }
+
+  void mark(const fretish::Expr& e, std::unordered_set<const fretish::Expr*>& sensitive) {
+    if (e.kind == fretish::ExprKind::bool_literal) return;
+    if (!smt::is_boolean_structure(e, typing_)) {
+      sensitive.insert(&e);
+      return;
+    }
+    std::vector<bool> args;
+    for (const auto& a : e.args) args.push_back(values_.at(a.get()));
+    const bool here = values_.at(&e);
+    std::size_t falses = std::count(args.begin(), args.end(), false);
+    for (std::size_t i = 0; i < e.args.size(); ++i) {
+      bool flips = false;
+      if (e.kind == fretish::ExprKind::logical_and) {
+        flips = falses - (args[i] ? 0 : 1) == 0;
+      } else if (e.kind == fretish::ExprKind::logical_or) {
+        flips = (args.size() - falses) - (args[i] ? 1 : 0) == 0;
+      } else {
+        args[i] = !args[i];
+        flips = combine(e.kind, args) != here;
+        args[i] = !args[i];
+      }
+      if (flips) mark(*e.args[i], sensitive);
+    }
+  }
+};
+
+// The questions "can this occurrence alone decide the guard in a state where it is v?" for
+// every occurrence of one guard. Each occurrence gets a literal for the condition under which
+// flipping it flips the guard (the guard's Boolean difference: every sibling of an `and` on
+// its path true, every sibling of an `or` false, …), all defined once over the guard's own
+// subterms, so a question is two assumptions. (A copy of the guard per occurrence made a
+// guard of n atoms cost n^2 to encode and to solve.) An occurrence object that the tree
+// shares stands in every place at once, as a substitution would, and is asked as one.
+class VacuityQuestions {
+ public:
+  VacuityQuestions(const fretish::Expr& guard, const z3::expr& formula, Session& session)
+      : session_(session), scope_(session), true_(session.context().bool_val(true)) {
+    walk(guard, true_);
+    smt::Encoder& encoder = session.encoder();
+    for (auto& [atom, question] : questions_) {
+      if (question.places > 1) {
+        const z3::expr flipped = encoder.lower(guard, {{atom, !question.value}});
+        question.decides.emplace(session.define(formula != flipped, "vacuity"));
+      } else {
+        question.decides.emplace(*question.path);  // already a literal
+      }
+      question.literal.emplace(session.define(question.value, "vacuity_atom"));
+    }
+  }
+
+  Answer ask(const fretish::Expr* atom, bool atom_value) {
+    const Question& q = questions_.at(atom);
+    return session_.check({*q.decides, atom_value ? *q.literal : !*q.literal});
+  }
+
+  const z3::expr& atom_formula(const fretish::Expr* atom) const {
+    return questions_.at(atom).value;
+  }
+  // The occurrence stands in one place only: flipping it is flipping one leaf.
+  bool is_single(const fretish::Expr* atom) const { return questions_.at(atom).places == 1; }
+
+ private:
+  struct Question {
+    z3::expr value;                // the atom itself
+    std::optional<z3::expr> path;  // when flipping it flips the guard (single place)
+    std::optional<z3::expr> decides, literal;
+    int places = 0;
+  };
+
+  Session& session_;
+  Session::Scope scope_;  // every definition is retracted with it
+  z3::expr true_;
+  std::unordered_map<const fretish::Expr*, Question> questions_;
+  std::unordered_map<const fretish::Expr*, z3::expr> terms_;
+
+  z3::expr link(const z3::expr& formula) { return session_.define(formula, "vacuity_link"); }
+
+  const z3::expr& term(const fretish::Expr& e) {
+    if (const auto it = terms_.find(&e); it != terms_.end()) return it->second;
+    return terms_.emplace(&e, session_.encoder().lower(e)).first->second;
+  }
+
+  void walk(const fretish::Expr& e, const z3::expr& path) {
+    using fretish::ExprKind;
+    if (e.kind == ExprKind::bool_literal) return;
+    if (!smt::is_boolean_structure(e, session_.encoder().typing())) {
+      auto [it, fresh] = questions_.try_emplace(&e, Question{term(e), path, {}, {}, 0});
+      ++it->second.places;
+      return;
+    }
+    const std::size_t n = e.args.size();
+    std::vector<z3::expr> terms;
+    for (const auto& a : e.args) terms.push_back(term(*a));
+    switch (e.kind) {
+      case ExprKind::logical_and:
+      case ExprKind::logical_or: {
+        // The others must all be true (and) or all false (or): prefix and suffix chains
+        // keep the conditions of all n children linear in n. Each link is a literal of its
+        // own: Z3 flattens nested conjunctions, which would copy every chain into every path.
+        const bool is_and = e.kind == ExprKind::logical_and;
+        auto neutral = [&](const z3::expr& t) { return is_and ? t : !t; };
+        std::vector<z3::expr> suffix(n + 1, true_);
+        for (std::size_t i = n; i-- > 0;) suffix[i] = link(neutral(terms[i]) && suffix[i + 1]);
+        z3::expr prefix = true_;
+        for (std::size_t i = 0; i < n; ++i) {
+          walk(*e.args[i], link(path && prefix && suffix[i + 1]));
+          prefix = link(prefix && neutral(terms[i]));
+        }
+        return;
+      }
+      case ExprKind::implies: {
+        // a0 -> (a1 -> … -> a(n-1)): ak decides when a0 … a(k-1) hold and the rest is false.
+        std::vector<z3::expr> tail(n, terms[n - 1]);
+        for (std::size_t i = n - 1; i-- > 0;) tail[i] = link(z3::implies(terms[i], tail[i + 1]));
+        z3::expr prefix = true_;
+        for (std::size_t i = 0; i < n; ++i) {
+          walk(*e.args[i], link(i + 1 < n ? path && prefix && !tail[i + 1] : path && prefix));
+          prefix = link(prefix && terms[i]);
+        }
+        return;
+      }
+      default:  // not, xor, iff, = and != over booleans: every flip of one operand flips it
+        for (const auto& a : e.args) walk(*a, path);
+        return;
+    }
+  }
+};
 
 }  // namespace
 
@@ -74,29 +277,57 @@ void check_vacuous_atoms(Node& node, Session& session,
       session.statistics().prefiltered += atoms.size();
       continue;
     }
-    const z3::expr original = g.formula;
     std::vector<std::pair<const fretish::Expr*, bool>> conjuncts;
     top_level_literals(guard, true, conjuncts);
+    VacuityQuestions questions(guard, g.formula, session);
+    // An occurrence matters when states where it alone decides the guard exist with the
+    // atom true and with it false. Every model found shows, for all occurrences at once,
+    // which ones decide the guard there: most need no question of their own.
+    // Reading a model costs about as much as a question, so models stop being read while
+    // they teach little (each skip twice as long), and are read again once one teaches.
+    std::unordered_map<const fretish::Expr*, std::array<bool, 2>> decides_when;
+    std::size_t skip = 0, skipped = 0;
+    auto learn = [&]() {
+      if (skipped < skip) {
+        ++skipped;
+        return;
+      }
+      skipped = 0;
+      const z3::model model = session.model();
+      std::unordered_map<const fretish::Expr*, bool> values;
+      for (const fretish::Expr* atom : atoms) {
+        const z3::expr v = model.eval(questions.atom_formula(atom), true);
+        if (!v.is_true() && !v.is_false()) return;  // not evaluated to a constant: learn nothing
+        values[atom] = v.is_true();
+      }
+      std::unordered_set<const fretish::Expr*> sensitive;
+      Sensitivity(encoder.typing(), values).run(guard, sensitive);
+      std::size_t learnt = 0;
+      for (const fretish::Expr* atom : sensitive) {
+        if (!questions.is_single(atom)) continue;
+        bool& known = decides_when[atom][values.at(atom) ? 1 : 0];
+        learnt += known ? 0 : 1;
+        known = true;
+      }
+      skip = learnt > 2 ? 0 : std::min<std::size_t>(std::max<std::size_t>(2 * skip, 1), 64);
+    };
+    std::string note;  // made once, for the first finding that needs it
     for (const fretish::Expr* atom : atoms) {
       const std::string atom_text = fretish::to_fretish(*atom);
       const SourceLocation where = atom_location(*atom, g.requirement->guard_location);
-      // The occurrence is vacuous when a constant can stand for it: g ≡ g[atom := c] under D.
+      // The occurrence is vacuous when a constant c can stand for it: g ≡ g[atom := c] under
+      // D, that is, no state where the atom is !c decides the guard through it alone.
       std::optional<bool> replaceable_by;
       bool undecided = false;
       for (const bool constant : {true, false}) {
-        if (std::any_of(conjuncts.begin(), conjuncts.end(),
+        if (decides_when[atom][constant ? 0 : 1] ||
+            std::any_of(conjuncts.begin(), conjuncts.end(),
                         [&](const auto& c) { return c.first == atom && c.second != constant; })) {
           ++session.statistics().prefiltered;
           continue;
         }
-        const z3::expr replaced = encoder.lower(guard, {{atom, constant}});
-        Answer differs = Answer::unsat;
-        if (z3::eq(replaced, original)) {
-          ++session.statistics().prefiltered;
-        } else {
-          Session::Scope scope(session);
-          differs = session.check({session.guard(replaced != original, "vacuity")});
-        }
+        const Answer differs = questions.ask(atom, !constant);
+        if (differs == Answer::sat) learn();
         if (differs == Answer::unsat) {
           replaceable_by = constant;
           break;
@@ -122,7 +353,8 @@ void check_vacuous_atoms(Node& node, Session& session,
                                where);
       f.requirements = {g.requirement->id};
       f.alternatives = {g.requirement->alternative};
-      f.notes.push_back("guard: " + fretish::to_fretish(guard));
+      if (note.empty()) note = guard_note(guard);
+      f.notes.push_back(note);
       // The guard is satisfiable (checked above), so a constant for its only atom makes it
       // always true: it is a default in disguise.
       if (atoms.size() == 1)
