@@ -78,11 +78,23 @@ Product initial_product(const Model& m) {
 }
 
 // The state after a tick as bytes: the engine's, the actions' progress, the monitors' words.
+// The actions' progress as bytes: only the actions that run (index and ticks), as most do not
+// between two ticks.
+void append_elapsed(std::string& key, const std::vector<std::int64_t>& elapsed) {
+  for (std::uint32_t i = 0; i < elapsed.size(); ++i) {
+    if (elapsed[i] == 0) continue;
+    key.append(reinterpret_cast<const char*>(&i), sizeof i);
+    key.append(reinterpret_cast<const char*>(&elapsed[i]), sizeof elapsed[i]);
+  }
+  const std::uint32_t end = UINT32_MAX;
+  key.append(reinterpret_cast<const char*>(&end), sizeof end);
+}
+
 void key_of(const runtime::Engine& engine, const std::vector<std::int64_t>& elapsed,
             const std::vector<std::uint64_t>& monitors, bool completed, std::string& key) {
   key.clear();
   EngineState::append_key(engine, key);
-  key.append(reinterpret_cast<const char*>(elapsed.data()), elapsed.size() * sizeof(std::int64_t));
+  append_elapsed(key, elapsed);
   key.append(reinterpret_cast<const char*>(monitors.data()),
              monitors.size() * sizeof(std::uint64_t));
   key += static_cast<char>(completed);
@@ -213,9 +225,7 @@ class Search {
     }
     EngineState::append_key(*m_.engine, key);
     for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
-    const std::vector<std::int64_t>& elapsed = m_.choice->elapsed();
-    key.append(reinterpret_cast<const char*>(elapsed.data()),
-               elapsed.size() * sizeof(std::int64_t));
+    append_elapsed(key, m_.choice->elapsed());
     m_.observables->append_tick_key(key);
     key.append(reinterpret_cast<const char*>(mid_monitors_->data()),
                mid_monitors_->size() * sizeof(std::uint64_t));
