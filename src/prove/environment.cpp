@@ -38,7 +38,11 @@ Environment::Environment(Model& m) : m_(m) {
     std::vector<monitor::Val> vals;
     for (const auto& value : v.values) vals.push_back(Observables::value_of(value, m.symbols));
     choices_.push_back(std::move(vals));
-    if (v.relevant && v.env) env_.push_back(i);
+    if (v.relevant && v.env) {
+      env_.push_back(i);
+    } else if (v.frame >= 0) {
+      mission_vars_.push_back(i);
+    }
   }
   auto vars_of = [&](const monitor::CompiledExpression& e) {
     std::vector<std::size_t> out;
@@ -75,11 +79,10 @@ void Environment::start_tick(bool first) {
   first_ = first;
   chosen_.clear();
   runtime::Blackboard& bb = m_.engine->blackboard();
-  for (std::size_t i = 0; i < m_.vars.size(); ++i) {
+  // The environment's own entries get their values as they are chosen.
+  for (std::size_t i : mission_vars_) {
     const StateVar& v = m_.vars[i];
-    if (v.frame >= 0)
-      frame_[static_cast<std::size_t>(v.frame)] =
-          Observables::value_of(bb.value(v.slot), m_.symbols);
+    frame_[static_cast<std::size_t>(v.frame)] = Observables::value_of(bb.value(v.slot), m_.symbols);
   }
   for (std::size_t i : env_) {
     assigned_[i] = 0;
@@ -178,14 +181,15 @@ void Environment::resolve(runtime::SlotId slot) {
   const StateVar& v = m_.vars[i];
   const std::size_t frame = static_cast<std::size_t>(v.frame);
   // The values that keep the assumptions satisfiable by what is still unchosen.
-  std::vector<std::uint32_t> options;
+  std::vector<std::uint32_t>& options = options_;
+  options.clear();
   assigned_[i] = 1;
+  seeds_.clear();
+  for (std::size_t c : constraints_of_[i])
+    if (active(constraints_[c])) seeds_.push_back(c);
   for (std::uint32_t k = 0; k < choices_[i].size(); ++k) {
     frame_[frame] = choices_[i][k];
-    std::vector<std::size_t> seeds;
-    for (std::size_t c : constraints_of_[i])
-      if (active(constraints_[c])) seeds.push_back(c);
-    if (seeds.empty() || component_satisfiable(seeds)) options.push_back(k);
+    if (seeds_.empty() || component_satisfiable(seeds_)) options.push_back(k);
   }
   if (options.empty())
     throw ProveError("internal error: no value of '" + v.name +

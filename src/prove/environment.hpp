@@ -61,6 +61,9 @@ class Environment : public runtime::PendingResolver {
   std::vector<std::vector<std::size_t>> constraints_of_;  // per variable
   std::vector<std::vector<monitor::Val>> choices_;        // per variable: its values as read
   std::vector<std::size_t> env_;                          // relevant environment variables
+  std::vector<std::size_t> mission_vars_;                 // every other variable in the frame
+  std::vector<std::uint32_t> options_;                    // resolve()'s scratch
+  std::vector<std::size_t> seeds_;
   std::vector<std::size_t> var_of_slot_;
   std::vector<std::size_t> monitor_reads_;
   std::vector<char> assigned_;

@@ -78,32 +78,56 @@ Product initial_product(const Model& m) {
 }
 
 // The state after a tick as bytes: the engine's, the actions' progress, the monitors' words.
-std::string key_of(const runtime::Engine& engine, const std::vector<std::int64_t>& elapsed,
-                   const std::vector<std::uint64_t>& monitors, bool completed) {
-  std::string key;
-  EngineState::append_key(engine, key);
-  for (std::int64_t e : elapsed) key.append(reinterpret_cast<const char*>(&e), sizeof e);
-  for (std::uint64_t w : monitors) key.append(reinterpret_cast<const char*>(&w), sizeof w);
-  key += static_cast<char>(completed);
-  return key;
+// The actions' progress as bytes: only the actions that run (index and ticks), as most do not
+// between two ticks.
+void append_elapsed(std::string& key, const std::vector<std::int64_t>& elapsed) {
+  for (std::uint32_t i = 0; i < elapsed.size(); ++i) {
+    if (elapsed[i] == 0) continue;
+    key.append(reinterpret_cast<const char*>(&i), sizeof i);
+    key.append(reinterpret_cast<const char*>(&elapsed[i]), sizeof elapsed[i]);
+  }
+  const std::uint32_t end = UINT32_MAX;
+  key.append(reinterpret_cast<const char*>(&end), sizeof end);
 }
 
-// A 64-bit hash of its own (word by word, FNV-style with a final avalanche), to pair with
-// std::hash so that two different mid-tick states practically never share both.
-std::uint64_t mix64(const std::string& bytes) {
-  std::uint64_t h = 0x9e3779b97f4a7c15ull ^ bytes.size();
+void key_of(const runtime::Engine& engine, const std::vector<std::int64_t>& elapsed,
+            const std::vector<std::uint64_t>& monitors, bool completed, std::string& key) {
+  key.clear();
+  EngineState::append_key(engine, key);
+  append_elapsed(key, elapsed);
+  key.append(reinterpret_cast<const char*>(monitors.data()),
+             monitors.size() * sizeof(std::uint64_t));
+  key += static_cast<char>(completed);
+}
+
+// Two independent 64-bit hashes of the same bytes, in one pass (word by word: a
+// multiply-rotate lane and an FNV-style lane, each with a final avalanche), so that two
+// different mid-tick states practically never share both.
+std::pair<std::uint64_t, std::uint64_t> hash128(const std::string& bytes) {
+  std::uint64_t h1 = 0x9e3779b97f4a7c15ull ^ bytes.size();
+  std::uint64_t h2 = 0xcbf29ce484222325ull + bytes.size();
   std::size_t i = 0;
   for (; i + 8 <= bytes.size(); i += 8) {
     std::uint64_t w;
     std::memcpy(&w, bytes.data() + i, 8);
-    h = (h ^ w) * 0x100000001b3ull;
-    h ^= h >> 29;
+    h1 = (h1 ^ (w * 0x87c37b91114253d5ull)) * 0x4cf5ad432745937full;
+    h1 = (h1 << 31) | (h1 >> 33);
+    h2 = (h2 ^ w) * 0x100000001b3ull;
+    h2 ^= h2 >> 29;
   }
-  for (; i < bytes.size(); ++i) h = (h ^ static_cast<unsigned char>(bytes[i])) * 0x100000001b3ull;
-  h ^= h >> 33;
-  h *= 0xff51afd7ed558ccdull;
-  h ^= h >> 33;
-  return h;
+  std::uint64_t tail = 0;
+  if (i < bytes.size()) std::memcpy(&tail, bytes.data() + i, bytes.size() - i);
+  h1 = (h1 ^ (tail * 0x87c37b91114253d5ull)) * 0x4cf5ad432745937full;
+  h2 = (h2 ^ tail) * 0x100000001b3ull;
+  auto avalanche = [](std::uint64_t h) {
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    h ^= h >> 33;
+    return h;
+  };
+  return {avalanche(h1), avalanche(h2)};
 }
 
 bool completed(NodeStatus s) {
@@ -122,6 +146,8 @@ class Search {
         const auto init = p.layout->initial();
         std::copy(init.begin(), init.end(), base_.monitors.begin() + p.offset);
       }
+    for (std::size_t i = 0; i < m.vars.size(); ++i)
+      if (m.vars[i].env && m.vars[i].relevant) env_vars_.push_back(i);
     result_.violations.resize(m.properties.size());
     result_.first_trigger.assign(m.properties.size(), 0);
   }
@@ -148,6 +174,9 @@ class Search {
       next.swap(frontier_);
       for (std::uint32_t i : next) {
         expand(nodes_[i], i, false);
+        // Only its place in the paths is needed once a state is expanded.
+        release(nodes_[i]);
+        if (!memo_on_) m_.choice->chooser.seen = nullptr;  // not even asked from now on
         if (nodes_.size() >= o_.max_states || result_.vacuous) break;
       }
       ++depth;
@@ -183,25 +212,26 @@ class Search {
     // A value chosen and read where nothing can read it again no longer matters: it is left
     // out (put back to its placeholder while the key is taken).
     hidden_.clear();
-    for (std::size_t i = 0; i < m_.vars.size(); ++i) {
+    key.resize(env_vars_.size());
+    for (std::size_t k = 0; k < env_vars_.size(); ++k) {
+      const std::size_t i = env_vars_[k];
       const StateVar& v = m_.vars[i];
-      if (!v.env || !v.relevant) continue;
-      key += static_cast<char>(bb.pending(v.slot));
-      if (!m_.environment->live(i) && !bb.pending(v.slot)) {
-        hidden_.emplace_back(v.slot, bb.value(v.slot));
-        bb.value(v.slot) = v.values.front();
+      const bool pending = bb.pending(v.slot);
+      key[k] = static_cast<char>(pending);
+      if (!pending && !m_.environment->live(i)) {
+        hidden_.emplace_back(v.slot, v.values.front());
+        std::swap(bb.value(v.slot), hidden_.back().second);
       }
     }
     EngineState::append_key(*m_.engine, key);
-    for (auto& [slot, value] : hidden_) bb.value(slot) = std::move(value);
-    for (std::int64_t e : m_.choice->elapsed())
-      key.append(reinterpret_cast<const char*>(&e), sizeof e);
+    for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
+    append_elapsed(key, m_.choice->elapsed());
     m_.observables->append_tick_key(key);
-    for (std::uint64_t w : *mid_monitors_) key.append(reinterpret_cast<const char*>(&w), sizeof w);
+    key.append(reinterpret_cast<const char*>(mid_monitors_->data()),
+               mid_monitors_->size() * sizeof(std::uint64_t));
     key.append(reinterpret_cast<const char*>(&site), sizeof site);
     // Two independent 64-bit hashes: a collision would wrongly skip choices.
-    const std::pair<std::uint64_t, std::uint64_t> h{std::hash<std::string>{}(key), mix64(key)};
-    const bool seen = !mid_tick_.insert(h).second;
+    const bool seen = !mid_tick_.insert(hash128(key)).second;
     memo_hits_ += seen;
     return seen;
   }
@@ -214,6 +244,12 @@ class Search {
       return static_cast<std::size_t>(p.first ^ (p.second * 0x9e3779b97f4a7c15ull));
     }
   };
+
+  static void release(Node& n) {
+    n.engine = EngineState{};
+    n.elapsed = {};
+    n.monitors = {};
+  }
 
   void restore(const Node& from) {
     from.engine.restore(*m_.engine);
@@ -301,7 +337,10 @@ class Search {
     const bool done = completed(root);
     m_.observables->fill(frame_);
     m_.fill_state(frame_);
-    std::vector<std::size_t> violated, triggered;
+    std::vector<std::size_t>& violated = violated_;
+    std::vector<std::size_t>& triggered = triggered_;
+    violated.clear();
+    triggered.clear();
     for (std::size_t i = 0; i < m_.properties.size(); ++i) {
       const Property& p = m_.properties[i];
       if (!p.layout) continue;
@@ -315,8 +354,9 @@ class Search {
                            error);
       }
       if ((!p.parts[0] || inputs[0]) && (!p.parts[1] || inputs[1])) triggered.push_back(i);
-      std::vector<std::uint64_t> words(next.monitors.begin() + p.offset,
-                                       next.monitors.begin() + p.offset + p.layout->words());
+      std::vector<std::uint64_t>& words = words_;
+      words.assign(next.monitors.begin() + p.offset,
+                   next.monitors.begin() + p.offset + p.layout->words());
       const bool now = p.layout->step(inputs, words, scratch_);
       std::copy(words.begin(), words.end(), next.monitors.begin() + p.offset);
       const bool fails = !now && (monitor::verdict_is_final_once_violated(p.shape) || done);
@@ -342,8 +382,8 @@ class Search {
     // The environment's values are chosen afresh in every tick: once the monitors have read
     // them they do not matter, and states that differ only in them are one state.
     m_.environment->end_tick();
-    std::string key = key_of(*m_.engine, m_.choice->elapsed(), next.monitors, done);
-    if (!seen_.insert(std::move(key)).second) return;
+    key_of(*m_.engine, m_.choice->elapsed(), next.monitors, done, key_);
+    if (!seen_.insert(key_).second) return;
     next.engine = EngineState::save(*m_.engine);
     next.elapsed = m_.choice->elapsed();
     next.parent = from_index;
@@ -369,6 +409,10 @@ class Search {
   const std::vector<std::uint64_t>* mid_monitors_ = nullptr;
   std::string mid_key_;
   std::vector<std::pair<runtime::SlotId, runtime::ScriptValue>> hidden_;
+  std::vector<std::size_t> env_vars_;  // the relevant environment variables (Model::vars)
+  std::vector<std::size_t> violated_, triggered_;
+  std::vector<std::uint64_t> words_;
+  std::string key_;
   std::vector<std::uint32_t> frontier_;
   std::vector<monitor::Val> frame_;
   std::vector<char> scratch_;

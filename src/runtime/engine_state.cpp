@@ -1,5 +1,6 @@
 #include "runtime/engine_state.hpp"
 
+#include <array>
 #include <cstring>
 
 #include "runtime/core.hpp"
@@ -45,72 +46,104 @@ void EngineState::restore(Engine& engine) const {
 
 namespace {
 
-template <typename T>
-void put(std::string& out, const T& v) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &v, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
+// Gathers a key in a local buffer and appends it to the string in large pieces (a model
+// checker takes one key per state, and per choice point within a tick, so appending it byte by
+// byte would dominate).
+class KeyWriter {
+ public:
+  explicit KeyWriter(std::string& out) : out_(out) {}
+  ~KeyWriter() { flush(); }
+  template <typename T>
+  void put(const T& v) {
+    if (n_ + sizeof(T) > sizeof buffer_) flush();
+    std::memcpy(buffer_ + n_, &v, sizeof(T));
+    n_ += sizeof(T);
+  }
+  void bytes(const char* data, std::size_t n) {
+    flush();
+    out_.append(data, n);
+  }
 
-}  // namespace
+ private:
+  void flush() {
+    out_.append(buffer_, n_);
+    n_ = 0;
+  }
+  std::string& out_;
+  char buffer_[4096];
+  std::size_t n_ = 0;
+};
 
-namespace {
-
-void append_value(std::string& out, const ScriptValue& v) {
-  out += static_cast<char>(v.kind);
+void append_value(KeyWriter& out, const ScriptValue& v) {
+  out.put(static_cast<char>(v.kind));
   switch (v.kind) {
     case ScriptValue::Kind::empty: break;
-    case ScriptValue::Kind::boolean: out += static_cast<char>(v.boolean); break;
-    case ScriptValue::Kind::integer: put(out, v.integer); break;
-    case ScriptValue::Kind::real: put(out, v.real); break;
+    case ScriptValue::Kind::boolean: out.put(static_cast<char>(v.boolean)); break;
+    case ScriptValue::Kind::integer: out.put(v.integer); break;
+    case ScriptValue::Kind::real: out.put(v.real); break;
     case ScriptValue::Kind::string:
-      put(out, static_cast<std::uint32_t>(v.text.size()));
-      out += v.text;
+      out.put(static_cast<std::uint32_t>(v.text.size()));
+      out.bytes(v.text.data(), v.text.size());
       break;
   }
 }
 
-void append_node(std::string& out, std::uint32_t i, NodeStatus status, std::int32_t a,
-                 std::int32_t b, std::int32_t c) {
+inline void append_node(KeyWriter& out, std::uint32_t i, NodeStatus status, std::int32_t a,
+                        std::int32_t b, std::int32_t c) {
   // Sparse: between two ticks almost every node is IDLE with zero counters, and a model
   // checker hashes and stores one key per state.
-  if (status == NodeStatus::idle && a == 0 && b == 0 && c == 0) return;
-  put(out, i);
-  out += static_cast<char>(status);
-  put(out, a);
-  put(out, b);
-  put(out, c);
+  if (status == NodeStatus::idle && (a | b | c) == 0) return;
+  out.put(i);
+  out.put(static_cast<char>(status));
+  out.put(a);
+  out.put(b);
+  out.put(c);
+}
+
+// The key of a state whose node `i` has status(i) and counters counter(i, 0..2).
+template <typename Status, typename Counters, typename Value>
+void write_key(std::string& out, std::uint32_t nodes, Status status, Counters counters,
+               const std::vector<std::uint8_t>& child_done, std::size_t slots, Value value,
+               bool wake_up, NodeStatus last_result) {
+  KeyWriter w(out);
+  for (std::uint32_t i = 0; i < nodes; ++i) {
+    const auto [a, b, c] = counters(i);
+    append_node(w, i, status(i), a, b, c);
+  }
+  w.put(UINT32_MAX);
+  for (std::uint32_t i = 0; i < child_done.size(); ++i)
+    if (child_done[i] != 0) w.put(i);
+  w.put(UINT32_MAX);
+  for (std::size_t slot = 0; slot < slots; ++slot) append_value(w, value(slot));
+  w.put(static_cast<char>(wake_up));
+  w.put(static_cast<char>(last_result));
 }
 
 }  // namespace
 
 void EngineState::append_key(std::string& out) const {
-  for (std::uint32_t i = 0; i < status.size(); ++i) {
-    const std::int32_t* c = &counters[3 * static_cast<std::size_t>(i)];
-    append_node(out, i, status[i], c[0], c[1], c[2]);
-  }
-  put(out, UINT32_MAX);
-  for (std::uint32_t i = 0; i < child_done.size(); ++i)
-    if (child_done[i] != 0) put(out, i);
-  put(out, UINT32_MAX);
-  for (const ScriptValue& v : values) append_value(out, v);
-  out += static_cast<char>(wake_up);
-  out += static_cast<char>(last_result);
+  write_key(
+      out, static_cast<std::uint32_t>(status.size()), [&](std::uint32_t i) { return status[i]; },
+      [&](std::uint32_t i) {
+        const std::int32_t* c = &counters[3 * static_cast<std::size_t>(i)];
+        return std::array<std::int32_t, 3>{c[0], c[1], c[2]};
+      },
+      child_done, values.size(),
+      [&](std::size_t slot) -> const ScriptValue& { return values[slot]; }, wake_up, last_result);
 }
 
 void EngineState::append_key(const Engine& engine, std::string& out) {
   const detail::Core& c = *engine.core_;
-  for (std::uint32_t i = 0; i < c.nodes.size(); ++i) {
-    const detail::RtNode& n = c.nodes[i];
-    append_node(out, i, n.status, n.a, n.b, n.c);
-  }
-  put(out, UINT32_MAX);
-  for (std::uint32_t i = 0; i < c.child_done.size(); ++i)
-    if (c.child_done[i] != 0) put(out, i);
-  put(out, UINT32_MAX);
-  for (SlotId slot = 0; slot < c.bb.slot_count(); ++slot) append_value(out, c.bb.value(slot));
-  out += static_cast<char>(c.wake_up);
-  out += static_cast<char>(c.last_result);
+  write_key(
+      out, static_cast<std::uint32_t>(c.nodes.size()),
+      [&](std::uint32_t i) { return c.nodes[i].status; },
+      [&](std::uint32_t i) {
+        const detail::RtNode& n = c.nodes[i];
+        return std::array<std::int32_t, 3>{n.a, n.b, n.c};
+      },
+      c.child_done, c.bb.slot_count(),
+      [&](std::size_t slot) -> const ScriptValue& { return c.bb.value(slot); }, c.wake_up,
+      c.last_result);
 }
 
 }  // namespace uabt::runtime

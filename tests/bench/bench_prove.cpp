@@ -37,8 +37,10 @@ const Gated& gated(const std::string& name, int size, int counters) {
   slot = std::make_unique<Gated>();
   Gated& g = *slot;
   const auto dir = workspace() / ("prove-" + key);
-  g.family =
-      name == "binary" ? generate_binary_tree(dir, size, counters) : generate_checklist(dir, size);
+  g.family = name == "binary"      ? generate_binary_tree(dir, size, counters)
+             : name == "preflight" ? generate_preflight(dir, size)
+             : name == "lunar"     ? generate_lunar(dir)
+                                   : generate_checklist(dir, size);
   std::string error;
   auto mission = load::load_mission(dir, {}, error);
   if (!mission) {
@@ -119,6 +121,17 @@ void BM_ProveChecklist(benchmark::State& state) {
             kEngines[state.range(1)]);
 }
 
+// range(0): sensor flags N, range(1): engine.
+void BM_ProvePreflight(benchmark::State& state) {
+  run_prove(state, gated("preflight", static_cast<int>(state.range(0)), 0),
+            kEngines[state.range(1)]);
+}
+
+// range(0): engine.
+void BM_ProveLunar(benchmark::State& state) {
+  run_prove(state, gated("lunar", 1, 0), kEngines[state.range(0)]);
+}
+
 }  // namespace
 
 BENCHMARK(BM_ProveBinaryTree)
@@ -127,3 +140,12 @@ BENCHMARK(BM_ProveBinaryTree)
 BENCHMARK(BM_ProveChecklist)
     ->ArgsProduct({{5, 10, 20, 50, 65}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
+// The largest tree: 4 counters, the explicit engine only.
+BENCHMARK(BM_ProveBinaryTree)->Args({2055, 4, 0})->Unit(benchmark::kMillisecond);
+// The symbolic engine takes minutes beyond N = 10 and on the lunar sortie: explicit only there
+// (prove_families.sh measures them as whole processes, with a time limit).
+BENCHMARK(BM_ProvePreflight)
+    ->ArgsProduct({{10, 20, 50, 100}, {0}})
+    ->Args({10, 1})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ProveLunar)->Arg(0)->Unit(benchmark::kMillisecond);

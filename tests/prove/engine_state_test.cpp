@@ -48,6 +48,38 @@ TEST(EngineState, RestoreThenTickRepeatsTheSameTick) {
   EXPECT_NE(k1.size(), 0u);
 }
 
+// The key of the live engine and that of its saved state are the same bytes, also when a
+// value is longer than the buffer the key is gathered in, and they tell apart texts that differ
+// only past it.
+TEST(EngineState, KeyOfTheEngineIsTheKeyOfItsSavedState) {
+  auto key_after = [](char last) {
+    const std::string text = std::string(6000, 'r') + last;
+    const std::string tree = R"(<root BTCPP_format="4" main_tree_to_execute="T">
+  <BehaviorTree ID="T">
+    <Sequence>
+      <Script code="log := ')" +
+                             text + R"('"/>
+      <Drill/>
+    </Sequence>
+  </BehaviorTree>
+</root>
+)";
+    std::vector<Finding> findings;
+    auto doc = bt::parse_document(tree, "t.xml", findings);
+    runtime::Runner runner(*doc, scenario(R"({"actions": {"Drill": {"ticks": 2}}})"));
+    runner.step();
+    std::string live, saved;
+    runtime::EngineState::append_key(runner.engine(), live);
+    runtime::EngineState::save(runner.engine()).append_key(saved);
+    EXPECT_EQ(live, saved);
+    EXPECT_NE(live.find(text), std::string::npos);
+    return live;
+  };
+  const std::string a = key_after('a'), b = key_after('b');
+  EXPECT_EQ(a.size(), b.size());
+  EXPECT_NE(a, b);
+}
+
 TEST(ScenarioRuns, EachStartFollowsItsRun) {
   std::vector<Finding> findings;
   auto doc = bt::parse_document(kTree, "t.xml", findings);
