@@ -98,8 +98,10 @@ class Parser {
     const Token& op_token = advance();
     if (p_.nodes_[lhs].op != Op::name)
       fail("the left side of " + describe(op_token.kind) + " must be a blackboard key", first);
-    const std::uint32_t rhs = conditional();
-    if (is_assign(peek())) fail("assignments cannot be chained; use ';' between them", token());
+    // The right side may assign again: `a := b := 3` is `a := (b := 3)`, as in BT.CPP.
+    if (++nesting_ > kMaxScriptDepth) fail("expression nested too deeply", op_token);
+    const std::uint32_t rhs = assignment();
+    --nesting_;
     Op op = Op::assign;
     switch (op_token.kind) {
       case Tok::assign_create: op = Op::assign_create; break;
@@ -286,6 +288,13 @@ Program Program::parse(std::string_view code) {
   program.code_ = std::string(code);
   Parser(code, program).parse_statements();
   program.registers_.resize(program.nodes_.size());
+  // The literals true and false evaluate to the doubles 1.0 and 0.0 (BT.CPP's parsePrefix);
+  // the tree keeps them boolean for the readers that interpret it.
+  for (std::size_t i = 0; i < program.nodes_.size(); ++i) {
+    const Expr& e = program.nodes_[i];
+    if (e.op == Op::literal && e.literal.kind == ScriptValue::Kind::boolean)
+      program.registers_[i] = ScriptValue::of_real(e.literal.boolean ? 1.0 : 0.0);
+  }
   return program;
 }
 

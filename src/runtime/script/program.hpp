@@ -61,8 +61,8 @@ struct Expr {
 // once every register has seen its largest string.
 //
 // Grammar and meaning follow BT.CPP's scripting (scripting/operators.hpp), loosest first:
-// assignment (:= = += -= *= /=, not chainable) < `?:` (not chainable) < `||` `&&` (one
-// level, left to right, both sides evaluated) < comparison chains (== != < > <= >=) <
+// assignment (:= = += -= *= /=, right to left: `a := b := 3`) < `?:` (not chainable) < `||` `&&`
+// (one level, left to right, both sides evaluated) < comparison chains (== != < > <= >=) <
 // operands: arithmetic (+ - then * / then unary -, with `..` string concatenation) or
 // bitwise (| ^ then & then ~ and !); mixing the two kinds needs parentheses, and `!`/`~`/`-`
 // apply to one operand ("!a == b" is "(!a) == b").
