@@ -112,6 +112,19 @@ Recorded compile_and_run(const fs::path& dir) {
   return run_document(compiled.document, dir);
 }
 
+// The run stops at tick 1 in `path`'s script `script`, with a message that says `message`.
+void expect_tick_error(const std::string& name, const std::string& path, const std::string& script,
+                       const std::string& message) {
+  const fs::path dir = reproducer(name);
+  if (!fs::exists(dir)) return;
+  const Recorded got = run_reproducer(dir);
+  ASSERT_TRUE(got.error.has_value());
+  EXPECT_EQ(got.error->tick, 1u);
+  EXPECT_EQ(got.error->path, path);
+  EXPECT_EQ(got.error->script, script);
+  EXPECT_NE(got.error->message.find(message), std::string::npos) << got.error->message;
+}
+
 TEST(BtcppDiff, SequenceWithMemoryUnderParallelAllFailsAtTickOne) {
   // The wake-up re-tick lets A1 finish within tick 1, so the Inverter sees C1 true.
   expect_btcpp_record("wakeup-seqmem-verdict-flip");
@@ -128,15 +141,8 @@ TEST(BtcppDiff, ReservedAttributesAreNotPartOfTheLeafKey) {
 
 TEST(BtcppDiff, ScriptConditionOnAnUnsetKeyStopsTheRun) {
   expect_btcpp_record("tick-error-random-minimal");
-  const fs::path dir = reproducer("tick-error-random-minimal");
-  if (!fs::exists(dir)) return;
-  const Recorded got = run_reproducer(dir);
-  ASSERT_TRUE(got.error.has_value());
-  EXPECT_EQ(got.error->tick, 1u);
-  EXPECT_EQ(got.error->path, "MainTree/Sequence/ScriptCondition[1]");
-  EXPECT_EQ(got.error->script, "x >= 1 && C1 == false");
-  EXPECT_NE(got.error->message.find("undefined blackboard key 'x'"), std::string::npos)
-      << got.error->message;
+  expect_tick_error("tick-error-random-minimal", "MainTree/Sequence/ScriptCondition[1]",
+                    "x >= 1 && C1 == false", "undefined blackboard key 'x'");
 }
 
 TEST(BtcppDiff, SkippedWhileDoElseConditionStopsTheRun) {
@@ -164,15 +170,8 @@ TEST(BtcppDiff, UnboundedRetryLoopIsAnErrorInsteadOfAHang) {
 
 TEST(BtcppDiff, LogicOperatorOnAnIntegerOtherThanZeroOrOneStopsTheRun) {
   expect_btcpp_record("script-logic-on-integers");
-  const fs::path dir = reproducer("script-logic-on-integers");
-  if (!fs::exists(dir)) return;
-  const Recorded got = run_reproducer(dir);
-  ASSERT_TRUE(got.error.has_value());
-  EXPECT_EQ(got.error->tick, 1u);
-  EXPECT_EQ(got.error->script, "x && b0");
-  EXPECT_NE(got.error->message.find("operator [&&] takes an integer only when it is 0 or 1, not 2"),
-            std::string::npos)
-      << got.error->message;
+  expect_tick_error("script-logic-on-integers", "MainTree/Sequence/ScriptCondition[1]", "x && b0",
+                    "operator [&&] takes an integer only when it is 0 or 1, not 2");
 }
 
 TEST(BtcppDiff, ScriptResultsAreDoublesSoAnEntryTakesALaterReal) {

@@ -187,12 +187,12 @@ double arithmetic(Op op, double a, double b) {
 
 const ScriptValue& Program::run(Blackboard& blackboard) {
   const ScriptValue* last = &empty_;
-  for (const std::uint32_t statement : statements_) last = &eval(statement, blackboard);
+  for (const std::uint32_t statement : script_.statements()) last = &eval(statement, blackboard);
   return *last;
 }
 
 const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
-  const Expr& e = nodes_[index];
+  const Expr& e = script_.nodes()[index];
   ScriptValue& out = registers_[index];
   switch (e.op) {
     case Op::literal:
@@ -205,7 +205,7 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
         fail("undefined blackboard key '" + e.name + "' (assign it first, e.g. " + e.name +
                  " := 0, or give it a value in the scenario)",
              e.column);
-      if (!copy_reads_) return v;
+      if (!script_.nested_assignment()) return v;
       out = v;
       return out;
     }
@@ -322,12 +322,12 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
 }
 
 const ScriptValue& Program::eval_compare(const Expr& e, Blackboard& bb) {
-  ScriptValue& out = registers_[static_cast<std::size_t>(&e - nodes_.data())];
-  const ScriptValue* lhs = &eval(operands_[e.list_begin], bb);
+  ScriptValue& out = registers_[static_cast<std::size_t>(&e - script_.nodes().data())];
+  const ScriptValue* lhs = &eval(script_.compare_operands()[e.list_begin], bb);
   for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
     // Operands are evaluated left to right and only as far as needed, as in BT.CPP.
-    const ScriptValue& rhs = eval(operands_[e.list_begin + i + 1], bb);
-    const CompareOp op = compare_ops_[e.ops_begin + i];
+    const ScriptValue& rhs = eval(script_.compare_operands()[e.list_begin + i + 1], bb);
+    const CompareOp op = script_.compare_ops()[e.ops_begin + i];
     int order = 0;  // <0, 0, >0
     bool equal = false;
     if (lhs->is_string() && rhs.is_string()) {
@@ -364,8 +364,8 @@ const ScriptValue& Program::eval_compare(const Expr& e, Blackboard& bb) {
 }
 
 const ScriptValue& Program::eval_assign(std::uint32_t index, Blackboard& bb) {
-  const Expr& e = nodes_[index];
-  const Expr& target = nodes_[e.a];
+  const Expr& e = script_.nodes()[index];
+  const Expr& target = script_.nodes()[e.a];
   // Read, not only written: `x = x + 1` reads x, and a pending entry must be resolved first.
   ScriptValue& dst = bb.read_for_update(target.slot);
   const std::string& key = target.name;

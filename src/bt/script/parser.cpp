@@ -1,13 +1,13 @@
-// Recursive-descent parser for BT.CPP 4.x scripts (precedence: see program.hpp).
+// Recursive-descent parser for BT.CPP 4.x scripts (precedence: see ast.hpp).
 #include <algorithm>
 
-#include "runtime/script/program.hpp"
+#include "bt/script/ast.hpp"
 
-namespace uabt::runtime::script {
+namespace uabt::bt::script {
 
 class Parser {
  public:
-  Parser(std::string_view code, Program& program) : tokens_(tokenize(code)), p_(program) {}
+  Parser(std::string_view code, Script& program) : tokens_(tokenize(code)), p_(program) {}
 
   void parse_statements() {
     while (true) {
@@ -111,7 +111,7 @@ class Parser {
       case Tok::div_assign: op = Op::div_assign; break;
       default: break;
     }
-    if (nesting_ > 1) p_.copy_reads_ = true;
+    if (nesting_ > 1) p_.nested_assignment_ = true;
     return binary(op, lhs, rhs, op_token);
   }
 
@@ -262,8 +262,14 @@ class Parser {
       }
       case Tok::kw_true:
       case Tok::kw_false: e.literal = ScriptValue::of_bool(t.kind == Tok::kw_true); break;
-      case Tok::integer: e.literal = ScriptValue::of_int(t.integer); break;
-      case Tok::real: e.literal = ScriptValue::of_real(t.real); break;
+      case Tok::integer:
+        e.literal = ScriptValue::of_int(t.integer);
+        e.spelling = t.text;
+        break;
+      case Tok::real:
+        e.literal = ScriptValue::of_real(t.real);
+        e.spelling = t.text;
+        break;
       case Tok::string: e.literal = ScriptValue::of_string(t.text); break;
       case Tok::name:
         e.op = Op::name;
@@ -277,28 +283,20 @@ class Parser {
 
   std::vector<Token> tokens_;
   std::size_t pos_ = 0;
-  Program& p_;
+  Script& p_;
   std::vector<std::uint32_t> depths_;
   int nesting_ = 0;
   unsigned groups_ = 0;
 };
 
-Program Program::parse(std::string_view code) {
-  Program program;
-  program.code_ = std::string(code);
-  Parser(code, program).parse_statements();
-  program.registers_.resize(program.nodes_.size());
-  // The literals true and false evaluate to the doubles 1.0 and 0.0 (BT.CPP's parsePrefix);
-  // the tree keeps them boolean for the readers that interpret it.
-  for (std::size_t i = 0; i < program.nodes_.size(); ++i) {
-    const Expr& e = program.nodes_[i];
-    if (e.op == Op::literal && e.literal.kind == ScriptValue::Kind::boolean)
-      program.registers_[i] = ScriptValue::of_real(e.literal.boolean ? 1.0 : 0.0);
-  }
-  return program;
+Script Script::parse(std::string_view code) {
+  Script script;
+  script.code_ = std::string(code);
+  Parser(code, script).parse_statements();
+  return script;
 }
 
-std::vector<std::string> Program::names() const {
+std::vector<std::string> Script::names() const {
   std::vector<std::string> out;
   for (const Expr& e : nodes_)
     if (e.op == Op::name && std::find(out.begin(), out.end(), e.name) == out.end())
@@ -306,14 +304,9 @@ std::vector<std::string> Program::names() const {
   return out;
 }
 
-bool Program::writes() const {
+bool Script::writes() const {
   return std::any_of(nodes_.begin(), nodes_.end(),
                      [](const Expr& e) { return e.op >= Op::assign_create; });
 }
 
-void Program::bind(Blackboard& blackboard, ScopeId scope) {
-  for (Expr& e : nodes_)
-    if (e.op == Op::name) e.slot = blackboard.resolve(scope, e.name);
-}
-
-}  // namespace uabt::runtime::script
+}  // namespace uabt::bt::script
