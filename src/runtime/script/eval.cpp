@@ -63,11 +63,10 @@ bool whole(const ScriptValue& v, std::int64_t& out) {
     out = as_int(v);
     return true;
   }
-  if (v.kind != Kind::real || std::nearbyint(v.real) != v.real || v.real >= 0x1p63 ||
-      v.real < -0x1p63)
-    return false;
+  // In range first (this also refuses NaN), then whole: the cast back must give it again.
+  if (v.kind != Kind::real || !(v.real < 0x1p63 && v.real >= -0x1p63)) return false;
   out = static_cast<std::int64_t>(v.real);
-  return true;
+  return static_cast<double>(out) == v.real;
 }
 
 const char* op_text(Op op) {
