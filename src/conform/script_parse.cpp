@@ -1,219 +1,42 @@
 // BehaviorTree.CPP script conditions back into FRETISH (the inverse of compile's
-// atom_to_script), following BT.CPP 4.x's grammar (scripting/operators.hpp).
+// atom_to_script): the script is parsed by the one BT.CPP script parser (bt/script), and its
+// tree is translated here.
 #include "conform/script_parse.hpp"
 
-#include <cctype>
 #include <stdexcept>
+
+#include "bt/script/ast.hpp"
 
 namespace uabt::conform {
 
+using bt::script::CompareOp;
+using bt::script::Expr;
+using bt::script::Op;
 using fretish::ExprKind;
 using fretish::ExprPtr;
 
 namespace {
 
-enum class TokenKind { number, name, root_name, string, op, end };
-
-struct Token {
-  TokenKind kind = TokenKind::end;
-  std::string text;
-  std::size_t offset = 0;
+struct ReadError : std::runtime_error {
+  ReadError(const std::string& message, std::size_t column)
+      : std::runtime_error(message + " (column " + std::to_string(column) + ")") {}
 };
 
-struct ScriptError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-bool is_name_start(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-}
-bool is_name_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-bool is_digit(char c) {
-  return std::isdigit(static_cast<unsigned char>(c)) != 0;
-}
-
-std::vector<Token> tokenize(const std::string& code) {
-  std::vector<Token> tokens;
-  std::size_t i = 0;
-  const std::size_t n = code.size();
-  auto at = [&](std::size_t k) { return k < n ? code[k] : '\0'; };
-  while (i < n) {
-    const char c = code[i];
-    if (std::isspace(static_cast<unsigned char>(c))) {
-      ++i;
-      continue;
-    }
-    Token t;
-    t.offset = i;
-    if (is_digit(c) || (c == '.' && is_digit(at(i + 1)))) {
-      std::size_t j = i;
-      while (is_digit(at(j))) ++j;
-      if (at(j) == '.') {
-        ++j;
-        while (is_digit(at(j))) ++j;
-      }
-      if (at(j) == 'e' || at(j) == 'E') {
-        std::size_t k = j + 1;
-        if (at(k) == '+' || at(k) == '-') ++k;
-        if (is_digit(at(k))) {
-          while (is_digit(at(k))) ++k;
-          j = k;
-        }
-      }
-      if (is_name_char(at(j)))
-        throw ScriptError("malformed number '" + code.substr(i, j + 1 - i) + "'");
-      t.kind = TokenKind::number;
-      t.text = code.substr(i, j - i);
-      if (t.text.front() == '.') t.text = "0" + t.text;
-      if (t.text.back() == '.') t.text += "0";
-      i = j;
-    } else if (is_name_start(c) || (c == '@' && is_name_start(at(i + 1)))) {
-      const bool root = c == '@';
-      std::size_t j = root ? i + 1 : i;
-      const std::size_t start = j;
-      while (is_name_char(at(j))) ++j;
-      t.kind = root ? TokenKind::root_name : TokenKind::name;
-      t.text = code.substr(start, j - start);
-      i = j;
-    } else if (c == '\'') {
-      const std::size_t close = code.find('\'', i + 1);
-      if (close == std::string::npos) throw ScriptError("unterminated string");
-      t.kind = TokenKind::string;
-      t.text = code.substr(i + 1, close - i - 1);
-      i = close + 1;
-    } else {
-      static const char* const two_char[] = {"==", "!=", "<=", ">=", "&&", "||",
-                                             ":=", "+=", "-=", "*=", "/="};
-      std::string op(1, c);
-      for (const char* candidate : two_char) {
-        if (c == candidate[0] && at(i + 1) == candidate[1]) op = candidate;
-      }
-      static const std::string singles = "()!<>+-*/=;?:&|^~";
-      if (op.size() == 1 && singles.find(c) == std::string::npos)
-        throw ScriptError(std::string("unexpected character '") + c + "'");
-      t.kind = TokenKind::op;
-      t.text = op;
-      i += op.size();
-    }
-    tokens.push_back(std::move(t));
-  }
-  Token end;
-  end.offset = n;
-  tokens.push_back(end);
-  return tokens;
-}
-
-class Parser {
+class Translator {
  public:
-  Parser(std::vector<Token> tokens, const fretish::Domain& domain, ScriptReading& out)
-      : tokens_(std::move(tokens)), domain_(domain), out_(out) {}
+  Translator(const bt::script::Script& script, const fretish::Domain& domain, ScriptReading& out)
+      : script_(script), domain_(domain), out_(out) {}
 
-  ExprPtr parse() {
-    ExprPtr e = logical();
-    if (peek().kind != TokenKind::end) unexpected();
-    return e;
+  ExprPtr statement() {
+    const auto& statements = script_.statements();
+    if (statements.empty()) throw ReadError("the code is empty", 1);
+    if (statements.size() > 1)
+      throw ReadError("';' chains statements: a condition is one expression",
+                      script_.nodes()[statements[1]].column);
+    return translate(statements.front());
   }
 
  private:
-  const Token& peek() const { return tokens_[pos_]; }
-  bool at_op(const char* op) const { return peek().kind == TokenKind::op && peek().text == op; }
-  const Token& next() { return tokens_[pos_++]; }
-
-  [[noreturn]] void unexpected() const {
-    const Token& t = peek();
-    if (t.kind == TokenKind::end) throw ScriptError("the code ends too early");
-    if (t.kind == TokenKind::op) {
-      const std::string& op = t.text;
-      if (op == ":=" || op == "=" || op == "+=" || op == "-=" || op == "*=" || op == "/=")
-        throw ScriptError("'" + op + "' assigns to the blackboard: a condition must not");
-      if (op == ";") throw ScriptError("';' chains statements: a condition is one expression");
-      if (op == "?" || op == ":")
-        throw ScriptError("the conditional operator '?:' is not supported");
-      if (op == "&" || op == "|" || op == "^" || op == "~")
-        throw ScriptError("the bitwise operator '" + op + "' is not a condition operator");
-    }
-    throw ScriptError("unexpected '" + t.text + "' at offset " + std::to_string(t.offset));
-  }
-
-  // && and || share one level and associate to the left (BT.CPP's `logical`).
-  ExprPtr logical() {
-    ExprPtr lhs = comparison();
-    while (at_op("&&") || at_op("||")) {
-      const ExprKind kind = next().text == "&&" ? ExprKind::logical_and : ExprKind::logical_or;
-      lhs = fretish::make_expr(kind, {lhs, comparison()});
-    }
-    return lhs;
-  }
-
-  static bool comparison_kind(const Token& t, ExprKind& kind) {
-    if (t.kind != TokenKind::op) return false;
-    if (t.text == "==")
-      kind = ExprKind::eq;
-    else if (t.text == "!=")
-      kind = ExprKind::ne;
-    else if (t.text == "<")
-      kind = ExprKind::lt;
-    else if (t.text == "<=")
-      kind = ExprKind::le;
-    else if (t.text == ">")
-      kind = ExprKind::gt;
-    else if (t.text == ">=")
-      kind = ExprKind::ge;
-    else
-      return false;
-    return true;
-  }
-
-  // A chain a < b <= c holds when every adjacent pair does.
-  ExprPtr comparison() {
-    ExprPtr first = sum();
-    std::vector<ExprPtr> links;
-    ExprPtr lhs = first;
-    ExprKind kind{};
-    while (comparison_kind(peek(), kind)) {
-      next();
-      ExprPtr rhs = sum();
-      links.push_back(fretish::make_expr(kind, {lhs, rhs}));
-      lhs = rhs;
-    }
-    if (links.empty()) return first;
-    if (links.size() == 1) return links.front();
-    return fretish::make_expr(ExprKind::logical_and, std::move(links));
-  }
-
-  ExprPtr sum() {
-    ExprPtr lhs = product();
-    while (at_op("+") || at_op("-")) {
-      const ExprKind kind = next().text == "+" ? ExprKind::add : ExprKind::sub;
-      lhs = fretish::make_expr(kind, {lhs, product()});
-    }
-    return lhs;
-  }
-
-  ExprPtr product() {
-    ExprPtr lhs = prefix();
-    while (at_op("*") || at_op("/")) {
-      const ExprKind kind = next().text == "*" ? ExprKind::mul : ExprKind::div;
-      lhs = fretish::make_expr(kind, {lhs, prefix()});
-    }
-    return lhs;
-  }
-
-  // BT.CPP applies one prefix operator to an atom.
-  ExprPtr prefix() {
-    if (at_op("-")) {
-      next();
-      return fretish::make_expr(ExprKind::negate, {atom()});
-    }
-    if (at_op("!")) {
-      next();
-      return fretish::make_expr(ExprKind::logical_not, {atom()});
-    }
-    return atom();
-  }
-
   bool is_enum_literal(const std::string& text) const {
     for (const auto& v : domain_.variables)
       for (const auto& literal : v.enum_values)
@@ -221,47 +44,109 @@ class Parser {
     return false;
   }
 
-  ExprPtr atom() {
-    const Token& t = peek();
-    switch (t.kind) {
-      case TokenKind::number: next(); return fretish::make_number(t.text);
-      case TokenKind::string: {
-        next();
-        if (!is_enum_literal(t.text))
-          throw ScriptError("the string '" + t.text + "' is not a value of any enum of the domain");
-        if (domain_.find(t.text) != nullptr)
-          throw ScriptError("the string '" + t.text +
-                            "' is both an enum value and a variable of the domain");
-        return fretish::make_identifier(t.text);
-      }
-      case TokenKind::name:
-      case TokenKind::root_name: {
-        next();
-        if (t.kind == TokenKind::name && (t.text == "true" || t.text == "false"))
-          return fretish::make_bool(t.text == "true");
-        if (domain_.find(t.text) == nullptr && is_enum_literal(t.text))
-          throw ScriptError("'" + t.text +
-                            "' is read as a blackboard entry, not as the enum value; write '" +
-                            t.text + "' in quotes");
-        if (t.kind == TokenKind::name) out_.local_reads.push_back(t.text);
-        return fretish::make_identifier(t.text);
-      }
-      case TokenKind::op:
-        if (t.text == "(") {
-          next();
-          ExprPtr inner = logical();
-          if (!at_op(")")) unexpected();
-          next();
-          return inner;
-        }
-        unexpected();
-      case TokenKind::end: unexpected();
+  static ExprKind compare_kind(CompareOp op) {
+    switch (op) {
+      case CompareOp::eq: return ExprKind::eq;
+      case CompareOp::ne: return ExprKind::ne;
+      case CompareOp::lt: return ExprKind::lt;
+      case CompareOp::le: return ExprKind::le;
+      case CompareOp::gt: return ExprKind::gt;
+      case CompareOp::ge: return ExprKind::ge;
     }
-    unexpected();
+    return ExprKind::eq;
   }
 
-  std::vector<Token> tokens_;
-  std::size_t pos_ = 0;
+  ExprPtr binary(ExprKind kind, const Expr& e) {
+    return fretish::make_expr(kind, {translate(e.a), translate(e.b)});
+  }
+
+  ExprPtr literal(const Expr& e) {
+    const bt::script::ScriptValue& v = e.literal;
+    switch (v.kind) {
+      case bt::script::ScriptValue::Kind::boolean: return fretish::make_bool(v.boolean);
+      case bt::script::ScriptValue::Kind::integer:
+        return fretish::make_number(std::to_string(v.integer));  // 0x10 reads as 16
+      case bt::script::ScriptValue::Kind::real: return fretish::make_number(e.spelling);
+      case bt::script::ScriptValue::Kind::string:
+        if (!is_enum_literal(v.text))
+          throw ReadError("the string '" + v.text + "' is not a value of any enum of the domain",
+                          e.column);
+        if (domain_.find(v.text) != nullptr)
+          throw ReadError(
+              "the string '" + v.text + "' is both an enum value and a variable of the domain",
+              e.column);
+        return fretish::make_identifier(v.text);
+      case bt::script::ScriptValue::Kind::empty: break;
+    }
+    throw ReadError("an empty literal", e.column);
+  }
+
+  ExprPtr name(const Expr& e) {
+    const bool root = e.name.starts_with('@');
+    const std::string key = root ? e.name.substr(1) : e.name;
+    if (domain_.find(key) == nullptr && is_enum_literal(key))
+      throw ReadError("'" + key +
+                          "' is read as a blackboard entry, not as the enum value; write '" + key +
+                          "' in quotes",
+                      e.column);
+    if (!root) out_.local_reads.push_back(key);
+    return fretish::make_identifier(key);
+  }
+
+  // A chain a < b <= c holds when every adjacent pair does.
+  ExprPtr chain(const Expr& e) {
+    const auto& operands = script_.compare_operands();
+    const auto& ops = script_.compare_ops();
+    std::vector<ExprPtr> links;
+    ExprPtr lhs = translate(operands[e.list_begin]);
+    for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
+      ExprPtr rhs = translate(operands[e.list_begin + i + 1]);
+      links.push_back(fretish::make_expr(compare_kind(ops[e.ops_begin + i]), {lhs, rhs}));
+      lhs = rhs;
+    }
+    if (links.size() == 1) return links.front();
+    return fretish::make_expr(ExprKind::logical_and, std::move(links));
+  }
+
+  [[noreturn]] static void assignment(const char* op, const Expr& e) {
+    throw ReadError(std::string("'") + op + "' assigns to the blackboard: a condition must not",
+                    e.column);
+  }
+
+  ExprPtr translate(std::uint32_t index) {
+    const Expr& e = script_.nodes()[index];
+    switch (e.op) {
+      case Op::literal: return literal(e);
+      case Op::name: return name(e);
+      case Op::negate: return fretish::make_expr(ExprKind::negate, {translate(e.a)});
+      case Op::logical_not: return fretish::make_expr(ExprKind::logical_not, {translate(e.a)});
+      case Op::add: return binary(ExprKind::add, e);
+      case Op::sub: return binary(ExprKind::sub, e);
+      case Op::mul: return binary(ExprKind::mul, e);
+      case Op::div: return binary(ExprKind::div, e);
+      case Op::logic_and: return binary(ExprKind::logical_and, e);
+      case Op::logic_or: return binary(ExprKind::logical_or, e);
+      case Op::compare: return chain(e);
+      case Op::conditional:
+        throw ReadError("the conditional operator '?:' is not supported", e.column);
+      case Op::concat:
+        throw ReadError("the string operator '..' is not a condition operator", e.column);
+      case Op::complement:
+      case Op::bit_and:
+      case Op::bit_or:
+      case Op::bit_xor:
+        throw ReadError("the bitwise operators & | ^ ~ are not condition operators", e.column);
+      case Op::assign_create: assignment(":=", e);
+      case Op::assign: assignment("=", e);
+      case Op::add_assign: assignment("+=", e);
+      case Op::sub_assign: assignment("-=", e);
+      case Op::mul_assign: assignment("*=", e);
+      case Op::div_assign: assignment("/=", e);
+    }
+    throw ReadError("an unknown operator", e.column);
+  }
+
+  const bt::script::Script& script_;
   const fretish::Domain& domain_;
   ScriptReading& out_;
 };
@@ -271,13 +156,14 @@ class Parser {
 ScriptReading parse_script_condition(const std::string& code, const fretish::Domain& domain) {
   ScriptReading reading;
   try {
-    Parser parser(tokenize(code), domain, reading);
-    reading.expr = parser.parse();
-  } catch (const ScriptError& e) {
-    reading.expr = nullptr;
-    reading.local_reads.clear();
+    const bt::script::Script script = bt::script::Script::parse(code);
+    reading.expr = Translator(script, domain, reading).statement();
+  } catch (const bt::script::ScriptError& e) {
+    reading.error = std::string(e.what()) + " (column " + std::to_string(e.column()) + ")";
+  } catch (const ReadError& e) {
     reading.error = e.what();
   }
+  if (!reading.expr) reading.local_reads.clear();
   return reading;
 }
 

@@ -202,6 +202,9 @@ class ScriptEncoder {
       case Op::logic_or: {
         const SymValue l = eval(e.a), r = eval(e.b);
         if (!numeric(l.type) || !numeric(r.type)) refuse("'&&'/'||' on names");
+        // The engine (as BT.CPP) throws on an integer other than 0 or 1 there.
+        if (l.type == SymType::integer || r.type == SymType::integer)
+          refuse("'&&'/'||' on an integer, which stops the tick unless it is 0 or 1");
         return {SymType::boolean,
                 e.op == Op::logic_and ? truth(l) && truth(r) : truth(l) || truth(r),
                 {}};
@@ -273,6 +276,8 @@ std::optional<SymValue> run_script(z3::context& ctx, const runtime::script::Prog
 
 z3::expr script_truth(const SymValue& v, const std::string& where) {
   if (!numeric(v.type)) throw SymbolicUnsupported(where + ": a script whose result is a name");
+  if (v.type == SymType::integer)  // the engine (as BT.CPP) takes only 0 and 1 as a truth
+    throw SymbolicUnsupported(where + ": a script whose result is an integer");
   return truth(v);
 }
 

@@ -97,6 +97,39 @@ bool is_port_name(const std::string& attr) {
   return !attr.empty() && std::isalpha(static_cast<unsigned char>(attr.front()));
 }
 
+// BT.CPP 4's IsAllowedPortName: a SubTree attribute is a port when it starts with a letter,
+// has none of the characters that break XML or paths, and is not reserved (ID, name,
+// _autoremap, the pre/post-condition attributes, which all start with '_' anyway).
+bool is_subtree_port(const std::string& attr) {
+  if (!is_port_name(attr) || attr == "ID" || attr == "name") return false;
+  for (const char c : attr) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x80) continue;
+    if (u < 32 || u == 127 ||
+        std::string_view(" \t\n\r<>&\"'/\\:*?|.").find(c) != std::string_view::npos)
+      return false;
+  }
+  return true;
+}
+
+// A SubTree's literal port value as BT.CPP 4.10 stores it (recursivelyCreateSubtree): an
+// integer when the whole text is one (no '.', 'e' or 'E'), else a double when the whole text
+// is one, else the string.
+ScriptValue subtree_literal(const std::string& text) {
+  if (text.empty()) return ScriptValue::of_string(text);
+  const char* first = text.data();
+  const char* last = first + text.size();
+  if (text.find_first_of(".eE") == std::string::npos) {
+    std::int64_t i = 0;
+    const auto [end, ec] = std::from_chars(first, last, i);
+    if (ec == std::errc() && end == last) return ScriptValue::of_int(i);
+  }
+  double d = 0.0;
+  const auto [end, ec] = std::from_chars(first, last, d);
+  if (ec == std::errc() && end == last) return ScriptValue::of_real(d);
+  return ScriptValue::of_string(text);
+}
+
 std::optional<bool> parse_bool(const std::string& text) {
   if (text == "true" || text == "True" || text == "TRUE" || text == "1") return true;
   if (text == "false" || text == "False" || text == "FALSE" || text == "0") return false;
@@ -306,18 +339,23 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
         if (!b) throw refuse(std::string(attr) + "=\"" + *text + "\" is not a boolean");
         return *b;
       };
-      const bool shared = flag("__shared_blackboard");  // v3: the caller's blackboard itself
-      const bool autoremap = flag("_autoremap") || flag("__autoremap");
+      // v3 spellings: `__shared_blackboard` (the caller's blackboard itself) and
+      // `__autoremap`. A v4 file is read as BT.CPP 4 reads it: they are not port names
+      // (they do not start with a letter), so it ignores them.
+      const bool v3 = core.format == 3;
+      const bool shared = v3 && flag("__shared_blackboard");
+      const bool autoremap = flag("_autoremap") || (v3 && flag("__autoremap"));
       const ScopeId sub_scope = shared ? scope : bb.add_scope(scope, autoremap);
       if (!shared) {
         for (const auto& [attr, value] : xml.attributes) {
-          if (attr == "ID" || attr == "name" || attr == "_autoremap" || attr == "__autoremap" ||
-              attr == "__shared_blackboard")
+          if (v3 ? (attr == "ID" || attr == "name" || attr == "_autoremap" ||
+                    attr == "__autoremap" || attr == "__shared_blackboard")
+                 : !is_subtree_port(attr))
             continue;
           if (auto key = blackboard_key(attr, value)) {
             bb.add_remap(sub_scope, attr, *key);
           } else {
-            bb.set_local(sub_scope, attr, ScriptValue::of_string(value));
+            bb.set_local(sub_scope, attr, subtree_literal(value));
           }
         }
       }
@@ -386,6 +424,7 @@ Engine Engine::build(const bt::Document& doc, const std::string& main_tree, Worl
   core->options = options;
   if (options.smart_selection) core->smart = std::make_shared<detail::SmartSelection>();
   core->file = doc.file;
+  core->format = doc.format;
   for (const bt::TreeDef& tree : doc.trees) {
     auto [it, inserted] = core->defs.emplace(tree.id, std::make_shared<bt::TreeDef>(tree));
     if (!inserted)

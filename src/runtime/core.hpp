@@ -114,6 +114,7 @@ struct Core {
   std::map<std::string, std::shared_ptr<const bt::TreeDef>, std::less<>> defs;
   std::vector<std::shared_ptr<const bt::TreeDef>> retired;  // replaced, still referenced
   std::string file;  // the document's displayed path, for trees without their own
+  int format = 4;    // the document's BTCPP_format (3: v3 SubTree attributes apply)
   NodeId root = kNoNode;
 
   std::string tree_path(NodeId node) const;

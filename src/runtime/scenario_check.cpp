@@ -6,7 +6,7 @@
 
 #include "base/suggest.hpp"
 #include "bt/node_kinds.hpp"
-#include "runtime/script/program.hpp"
+#include "bt/script/ast.hpp"
 
 namespace uabt::runtime {
 
@@ -34,9 +34,9 @@ std::string did_you_mean(const std::string& name, const std::set<std::string>& k
 
 void add_script(const std::string& code, std::set<std::string>& state) {
   try {
-    for (const std::string& name : script::Program::parse(code).names())
+    for (const std::string& name : bt::script::Script::parse(code).names())
       state.insert(name.starts_with('@') ? name.substr(1) : name);
-  } catch (const script::ScriptError&) {
+  } catch (const bt::script::ScriptError&) {
     // The gate reports scripts that do not parse.
   }
 }

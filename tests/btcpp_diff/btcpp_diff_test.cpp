@@ -5,10 +5,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "bt/xml_io.hpp"
+#include "compile/compile.hpp"
+#include "load/mission.hpp"
 #include "runtime/runner.hpp"
 #include "runtime/trace.hpp"
 #include "test_support.hpp"
@@ -47,11 +50,8 @@ struct Recorded {
 
 // Runs the reproducer's compiled.xml in its scenario.json, one Runner step a tick, recording
 // what BT.CPP's probe records.
-Recorded run_reproducer(const fs::path& dir) {
-  std::vector<Finding> findings;
-  auto doc = bt::read_document(dir / "compiled.xml", bt::ReadOptions{dir, dir}, findings);
-  if (!doc) throw std::runtime_error("compiled.xml does not read");
-  Runner runner(*doc, load_scenario(dir / "scenario.json"));
+Recorded run_document(const bt::Document& doc, const fs::path& dir) {
+  Runner runner(doc, load_scenario(dir / "scenario.json"));
   Recorded out;
   while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
     const NodeStatus s = runner.step();
@@ -74,20 +74,55 @@ Recorded run_reproducer(const fs::path& dir) {
   return out;
 }
 
+Recorded run_reproducer(const fs::path& dir) {
+  std::vector<Finding> findings;
+  auto doc = bt::read_document(dir / "compiled.xml", bt::ReadOptions{dir, dir}, findings);
+  if (!doc) throw std::runtime_error("compiled.xml does not read");
+  return run_document(*doc, dir);
+}
+
 // uabt's record equals BT.CPP's, tick by tick; BT.CPP's exception text is not compared (uabt
 // names the node and the script its own way), its presence is.
-void expect_btcpp_record(const std::string& name) {
+void expect_record(const std::string& name, const std::function<Recorded(const fs::path&)>& run) {
   const fs::path dir = reproducer(name);
   if (!fs::exists(dir / "outputs.json")) GTEST_SKIP() << "no btcpp-diff reference data";
   Json expected = read_json(dir / "outputs.json")["btcpp_probe"];
   ASSERT_FALSE(expected.empty());
   const bool expects_error = expected.back().value("verdict", "") == "error";
   expected.back().erase("error");
-  const Recorded got = run_reproducer(dir);
+  const Recorded got = run(dir);
   ASSERT_EQ(got.record.size(), expected.size()) << got.record.dump(1);
   for (std::size_t i = 0; i < expected.size(); ++i)
     EXPECT_EQ(got.record[i], expected[i]) << "record " << i;
   EXPECT_EQ(got.error.has_value(), expects_error);
+}
+
+void expect_btcpp_record(const std::string& name) {
+  expect_record(name, run_reproducer);
+}
+
+// What `uabt compile` writes from the reproducer's mission today, played the same way: what
+// compile accepts, the engine runs as BT.CPP does.
+Recorded compile_and_run(const fs::path& dir) {
+  std::string error;
+  auto mission = load::load_mission(dir, {}, error);
+  if (!mission) throw std::runtime_error("the mission does not load: " + error);
+  const compile::Result compiled = compile::compile_mission(*mission, {});
+  if (!compiled.ok) throw std::runtime_error("the mission does not compile");
+  return run_document(compiled.document, dir);
+}
+
+// The run stops at tick 1 in `path`'s script `script`, with a message that says `message`.
+void expect_tick_error(const std::string& name, const std::string& path, const std::string& script,
+                       const std::string& message) {
+  const fs::path dir = reproducer(name);
+  if (!fs::exists(dir)) return;
+  const Recorded got = run_reproducer(dir);
+  ASSERT_TRUE(got.error.has_value());
+  EXPECT_EQ(got.error->tick, 1u);
+  EXPECT_EQ(got.error->path, path);
+  EXPECT_EQ(got.error->script, script);
+  EXPECT_NE(got.error->message.find(message), std::string::npos) << got.error->message;
 }
 
 TEST(BtcppDiff, SequenceWithMemoryUnderParallelAllFailsAtTickOne) {
@@ -106,15 +141,8 @@ TEST(BtcppDiff, ReservedAttributesAreNotPartOfTheLeafKey) {
 
 TEST(BtcppDiff, ScriptConditionOnAnUnsetKeyStopsTheRun) {
   expect_btcpp_record("tick-error-random-minimal");
-  const fs::path dir = reproducer("tick-error-random-minimal");
-  if (!fs::exists(dir)) return;
-  const Recorded got = run_reproducer(dir);
-  ASSERT_TRUE(got.error.has_value());
-  EXPECT_EQ(got.error->tick, 1u);
-  EXPECT_EQ(got.error->path, "MainTree/Sequence/ScriptCondition[1]");
-  EXPECT_EQ(got.error->script, "x >= 1 && C1 == false");
-  EXPECT_NE(got.error->message.find("undefined blackboard key 'x'"), std::string::npos)
-      << got.error->message;
+  expect_tick_error("tick-error-random-minimal", "MainTree/Sequence/ScriptCondition[1]",
+                    "x >= 1 && C1 == false", "undefined blackboard key 'x'");
 }
 
 TEST(BtcppDiff, SkippedWhileDoElseConditionStopsTheRun) {
@@ -138,6 +166,39 @@ TEST(BtcppDiff, UnboundedRetryLoopIsAnErrorInsteadOfAHang) {
   EXPECT_EQ(got.error->path, "MainTree/Sequence/RetryUntilSuccessful[1]");
   EXPECT_NE(got.error->message.find("tickOnce() would never return"), std::string::npos);
   EXPECT_EQ(got.record.back()["verdict"], "error");
+}
+
+TEST(BtcppDiff, LogicOperatorOnAnIntegerOtherThanZeroOrOneStopsTheRun) {
+  expect_btcpp_record("script-logic-on-integers");
+  expect_tick_error("script-logic-on-integers", "MainTree/Sequence/ScriptCondition[1]", "x && b0",
+                    "operator [&&] takes an integer only when it is 0 or 1, not 2");
+}
+
+TEST(BtcppDiff, ScriptResultsAreDoublesSoAnEntryTakesALaterReal) {
+  expect_btcpp_record("script-result-types");
+}
+
+TEST(BtcppDiff, AnIntegerAssignedToABooleanEntryIsStored) {
+  expect_btcpp_record("script-int-into-bool-entry");
+}
+
+TEST(BtcppDiff, ChainedAssignmentAssignsBothEntries) {
+  expect_btcpp_record("script-chained-assignment");
+}
+
+TEST(BtcppDiff, SubTreeLiteralPortKeepsItsNumericType) {
+  expect_btcpp_record("subtree-literal-port-typed");
+}
+
+TEST(BtcppDiff, WhatCompileAcceptsTheEngineRunsAsBtcpp) {
+  // Each script reproducer's mission, compiled now: the engine neither refuses a tree compile
+  // wrote (the chained assignment was refused at build) nor runs it differently from BT.CPP.
+  for (const char* name :
+       {"script-logic-on-integers", "script-result-types", "script-int-into-bool-entry",
+        "script-chained-assignment", "subtree-literal-port-typed"}) {
+    SCOPED_TRACE(name);
+    expect_record(name, compile_and_run);
+  }
 }
 
 }  // namespace

@@ -392,7 +392,7 @@ TEST_F(Rules, NodesThatAreNoConditions) {
       {"<Script code=\"x := 1\"/>", "not a condition"},
       {"<ScriptCondition code=\"x := 1\"/>", "assigns"},
       {"<ScriptCondition code=\"OnDust &amp; OnRocks\"/>", "bitwise"},
-      {"<ScriptCondition code=\"OnDust ==\"/>", "ends too early"}};
+      {"<ScriptCondition code=\"OnDust ==\"/>", "found end of script"}};
   for (const auto& [guard, expected] : cases) {
     const std::string xml =
         replace(msl_document(msl_default_selector(), msl_main_tree(), msl_alternative_trees(),

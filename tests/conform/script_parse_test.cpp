@@ -60,6 +60,18 @@ TEST(ScriptParse, SideEffectsAndUnsupportedOperatorsAreRefused) {
   }
 }
 
+TEST(ScriptParse, TheEnginesParserReadsTheCondition) {
+  // One parser for the engine and for conform: what the engine reads, conform reads alike.
+  EXPECT_EQ(read("battery < 0x10"), "battery < 16");
+  EXPECT_EQ(read("!!(battery < 20)"), "!!(battery < 20)");
+  // Its errors carry the column.
+  EXPECT_EQ(read("battery <"), "error: expected an operand, found end of script (column 10)");
+  EXPECT_EQ(read("battery < 2; slope > 1"),
+            "error: ';' chains statements: a condition is one expression (column 14)");
+  EXPECT_EQ(read("battery := 3"),
+            "error: ':=' assigns to the blackboard: a condition must not (column 9)");
+}
+
 TEST(ScriptParse, EnumLiteralsAreQuotedStrings) {
   EXPECT_NE(read("terrain == rocks").find("in quotes"), std::string::npos);
   EXPECT_NE(read("terrain == 'gravel'").find("not a value"), std::string::npos);

@@ -160,13 +160,56 @@ TEST_F(SubTree, PortRemappingAndLiteralPorts) {
 }
 
 TEST_F(SubTree, V3SharedBlackboard) {
-  Engine e = build(
+  bt::Document doc = main_tree(
       "<Sequence><Script code=\"x := 1\"/>"
       "<SubTree ID=\"Sub\" __shared_blackboard=\"true\"/></Sequence>",
       "<BehaviorTree ID=\"Sub\"><Script code=\"x = 2; _y := 3\"/></BehaviorTree>");
+  doc.format = 3;
+  Engine e = Engine::build(doc, world);
   EXPECT_EQ(e.tick(), S);
   EXPECT_EQ(*e.blackboard().get("x"), ScriptValue::of_int(2));
   EXPECT_NE(e.blackboard().get("_y"), nullptr);  // one blackboard: nothing is private
+}
+
+TEST_F(SubTree, V3AttributesInAV4FileAreIgnoredAsBtcppDoes) {
+  // BT.CPP 4 takes only attributes that start with a letter as ports: `__shared_blackboard`
+  // and `__autoremap` do nothing in a v4 file, so Sub sees no `x` of its caller.
+  for (const char* attr : {"__shared_blackboard", "__autoremap"}) {
+    Engine e = build(std::string("<Sequence><Script code=\"x := 1\"/><SubTree ID=\"Sub\" ") + attr +
+                         "=\"true\"/></Sequence>",
+                     "<BehaviorTree ID=\"Sub\"><Script code=\"x = 2\"/></BehaviorTree>");
+    try {
+      e.tick();
+      ADD_FAILURE() << attr << ": the tick did not stop";
+    } catch (const TickException& x) {
+      EXPECT_NE(x.error.message.find("the blackboard entry 'x' does not exist yet"),
+                std::string::npos)
+          << x.error.message;
+      EXPECT_EQ(x.error.script, "x = 2");
+    }
+    EXPECT_EQ(*e.blackboard().get("x"), ScriptValue::of_int(1));
+  }
+}
+
+TEST_F(SubTree, LiteralPortsKeepTheirNumericType) {
+  // BT.CPP 4.10 recursivelyCreateSubtree: an integer, else a double, else the string.
+  Engine e = build(
+      "<SubTree ID=\"Sub\" n=\"5\" big=\"9000000000\" r=\"2.5\" e=\"1e3\" s=\"1;2\" "
+      "t=\"true\" w=\"\"/>",
+      "<BehaviorTree ID=\"Sub\"><Script code=\"sum := n + r + e\"/></BehaviorTree>");
+  EXPECT_EQ(e.tick(), S);
+  const NodeId call = e.subtree_calls("Sub").at(0);
+  std::map<std::string, ScriptValue> got;
+  for (const auto& [key, value] : e.blackboard().entries(e.scope(e.children(call)[0])))
+    got[key] = value;
+  EXPECT_EQ(got["n"], ScriptValue::of_int(5));
+  EXPECT_EQ(got["big"], ScriptValue::of_int(9000000000));
+  EXPECT_EQ(got["r"], ScriptValue::of_real(2.5));
+  EXPECT_EQ(got["e"], ScriptValue::of_real(1000.0));
+  EXPECT_EQ(got["s"], ScriptValue::of_string("1;2"));
+  EXPECT_EQ(got["t"], ScriptValue::of_string("true"));
+  EXPECT_EQ(got["w"], ScriptValue::of_string(""));
+  EXPECT_EQ(got["sum"], ScriptValue::of_real(1007.5));
 }
 
 TEST_F(SubTree, RunningSubtreeResumesAndIsHaltedAsOneNode) {

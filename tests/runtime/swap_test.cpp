@@ -130,10 +130,11 @@ TEST_F(Swap, InvalidDefinitionIsRejectedAndNothingChanges) {
 }
 
 TEST_F(Swap, NewTreesAreDefinedFirstAndBlackboardEntriesSurvive) {
-  Engine e = Engine::build(
+  bt::Document doc =
       main_tree("<Sequence><Script code=\"_count := 0\"/><SubTree ID=\"nav\"/></Sequence>",
-                "<BehaviorTree ID=\"nav\"><Script code=\"_n := 1\"/></BehaviorTree>"),
-      world);
+                "<BehaviorTree ID=\"nav\"><Script code=\"_n := 1\"/></BehaviorTree>");
+  doc.format = 3;  // the shared blackboard is v3's
+  Engine e = Engine::build(doc, world);
   EXPECT_EQ(e.tick(), S);
   EXPECT_FALSE(e.has_tree("on_mud"));
   e.define_tree(tree_def("on_mud", "<Script code=\"_n += 10\"/>"));

@@ -25,8 +25,11 @@ NodeStatus tick_script(Core& core, NodeId id) {
 bool script_truth(const ScriptValue& value, bool& truth) {
   switch (value.kind) {
     case ScriptValue::Kind::boolean: truth = value.boolean; return true;
-    case ScriptValue::Kind::integer:
-    case ScriptValue::Kind::real: truth = value.as_double() != 0.0; return true;
+    case ScriptValue::Kind::integer:  // BT.CPP's cast<bool>: only 0 and 1
+      if (value.integer != 0 && value.integer != 1) return false;
+      truth = value.integer == 1;
+      return true;
+    case ScriptValue::Kind::real: truth = value.real != 0.0; return true;
     case ScriptValue::Kind::string:
       if (value.text == "true" || value.text == "1" || value.text == "false" || value.text == "0") {
         truth = value.text == "true" || value.text == "1";

@@ -1,8 +1,12 @@
-// Evaluation of a compiled script, with BT.CPP 4.x's type rules (scripting/operators.hpp):
-// booleans are numbers, `+` also joins two strings, `..` joins strings and numbers, a string
-// compared with a number is read as a number ('true'/'false' as 1/0), `&&`/`||` evaluate both
-// sides. uabt keeps integers exact where BT.CPP uses doubles (+ - * on integers stay
-// integers, `/` gives a real); comparisons of reals use BT.CPP's float epsilon for == / !=.
+// Evaluation of a compiled script, with BT.CPP 4.10's type rules (scripting/operators.hpp,
+// utils/convert_impl.hpp): booleans are numbers, every operator computes on doubles and gives
+// a double (the literals true/false are 1.0/0.0 too; only integer literals and entries keep
+// their integer type), an integer beyond 2^53 that an operator would round is an error, `&&`
+// and `||` accept an integer only when it is 0 or 1, `+` also joins two strings, `..` joins
+// strings and numbers, a string compared with a number is read as a number ('true'/'false'
+// as 1/0), `&&`/`||` evaluate both sides, == and != use BT.CPP's float epsilon. A value
+// written into an existing entry takes the entry's type (Any::copyInto): no lossy
+// conversions, and an integer written into a boolean entry is kept as that integer.
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -14,6 +18,9 @@ namespace uabt::runtime::script {
 namespace {
 
 using Kind = ScriptValue::Kind;
+
+// The largest integer a double holds exactly: BT.CPP refuses to round one beyond it.
+constexpr std::int64_t kMaxExactInteger = (std::int64_t{1} << 53) - 1;
 
 [[noreturn]] void fail(const std::string& message, std::size_t column) {
   throw ScriptError(message, column);
@@ -38,6 +45,28 @@ bool is_integral(const ScriptValue& v) {
 }
 std::int64_t as_int(const ScriptValue& v) {
   return v.kind == Kind::boolean ? (v.boolean ? 1 : 0) : v.integer;
+}
+
+// A number as the double BT.CPP computes with (Any::cast<double>).
+double number(const ScriptValue& v, std::size_t column) {
+  if (v.kind == Kind::integer && (v.integer > kMaxExactInteger || v.integer < -kMaxExactInteger))
+    fail("the integer " + std::to_string(v.integer) +
+             " has no exact double value (beyond 2^53), so no operator can use it",
+         column);
+  return v.as_double();
+}
+
+// A number as the 64-bit integer BT.CPP casts to (Any::cast<int64_t>): a real must be whole
+// and in range. False when it is not.
+bool whole(const ScriptValue& v, std::int64_t& out) {
+  if (is_integral(v)) {
+    out = as_int(v);
+    return true;
+  }
+  // In range first (this also refuses NaN), then whole: the cast back must give it again.
+  if (v.kind != Kind::real || !(v.real < 0x1p63 && v.real >= -0x1p63)) return false;
+  out = static_cast<std::int64_t>(v.real);
+  return static_cast<double>(out) == v.real;
 }
 
 const char* op_text(Op op) {
@@ -94,6 +123,17 @@ double string_to_double(const ScriptValue& v, std::size_t column) {
   return d;
 }
 
+// An operand of && or || as BT.CPP's Any::cast<bool>: a real is true when not zero, an
+// integer must be 0 or 1.
+bool truth_of(const ScriptValue& v, Op op, std::size_t column) {
+  if (v.kind == Kind::integer && v.integer != 0 && v.integer != 1)
+    fail(std::string("operator [") + op_text(op) +
+             "] takes an integer only when it is 0 or 1, not " + std::to_string(v.integer) +
+             " (compare it, e.g. x != 0)",
+         column);
+  return v.as_double() != 0.0;
+}
+
 void append_text(std::string& out, const ScriptValue& v) {
   if (v.kind == Kind::string) {
     out += v.text;
@@ -102,42 +142,61 @@ void append_text(std::string& out, const ScriptValue& v) {
   }
 }
 
-// `value`'s number written into an entry of `dst`'s type (BT.CPP's Any::copyInto: no lossy
-// conversions).
-void store_number(ScriptValue& dst, const ScriptValue& value, const std::string& key,
-                  std::size_t column) {
-  switch (dst.kind) {
-    case Kind::real: return set_real(dst, value.as_double());
-    case Kind::integer:
-      if (is_integral(value)) return set_int(dst, as_int(value));
-      if (std::trunc(value.real) == value.real && std::abs(value.real) < 9.2e18)
-        return set_int(dst, static_cast<std::int64_t>(value.real));
-      break;
-    case Kind::boolean: {
-      const double d = value.as_double();
-      if (d == 0.0 || d == 1.0) return set_bool(dst, d == 1.0);
-      break;
-    }
-    default: break;
-  }
+[[noreturn]] void fail_store(const ScriptValue& dst, const ScriptValue& value,
+                             const std::string& key, std::size_t column) {
   fail("cannot assign " + value.to_string() + " (" + kind_name(value.kind) + ") to '" + key +
            "', which holds a " + kind_name(dst.kind),
        column);
+}
+
+// `value`'s number written into an entry of `dst`'s type (BT.CPP's Any::copyInto: no lossy
+// conversions; a boolean entry stores an integer as it is, as BT.CPP's Any keeps both as
+// int64: the entry then holds that integer, which a later boolean read refuses).
+void store_number(ScriptValue& dst, const ScriptValue& value, const std::string& key,
+                  std::size_t column) {
+  std::int64_t i = 0;
+  switch (dst.kind) {
+    case Kind::real: return set_real(dst, number(value, column));
+    case Kind::integer:
+      if (whole(value, i)) return set_int(dst, i);
+      break;
+    case Kind::boolean:
+      if (value.kind == Kind::boolean) return set_bool(dst, value.boolean);
+      if (!whole(value, i)) break;
+      if (i == 0 || i == 1) return set_bool(dst, i == 1);
+      return set_int(dst, i);
+    default: break;
+  }
+  fail_store(dst, value, key, column);
+}
+
+double arithmetic(Op op, double a, double b) {
+  switch (op) {
+    case Op::add:
+    case Op::add_assign: return a + b;
+    case Op::sub:
+    case Op::sub_assign: return a - b;
+    case Op::mul:
+    case Op::mul_assign: return a * b;
+    default: return a / b;
+  }
 }
 
 }  // namespace
 
 const ScriptValue& Program::run(Blackboard& blackboard) {
   const ScriptValue* last = &empty_;
-  for (const std::uint32_t statement : statements_) last = &eval(statement, blackboard);
+  for (const std::uint32_t statement : script_.statements()) last = &eval(statement, blackboard);
   return *last;
 }
 
 const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
-  const Expr& e = nodes_[index];
+  const Expr& e = script_.nodes()[index];
   ScriptValue& out = registers_[index];
   switch (e.op) {
-    case Op::literal: return e.literal;
+    case Op::literal:
+      // true/false are the doubles 1.0/0.0 (set once by parse()).
+      return e.literal.kind == Kind::boolean ? out : e.literal;
 
     case Op::name: {
       const ScriptValue& v = bb.read(e.slot);
@@ -145,7 +204,7 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
         fail("undefined blackboard key '" + e.name + "' (assign it first, e.g. " + e.name +
                  " := 0, or give it a value in the scenario)",
              e.column);
-      if (!copy_reads_) return v;
+      if (!script_.nested_assignment()) return v;
       out = v;
       return out;
     }
@@ -158,20 +217,15 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
         fail(std::string("operator [") + op_text(e.op) + "] needs a number, not a " +
                  kind_name(v.kind),
              e.column);
+      const double d = number(v, e.column);
       if (e.op == Op::logical_not) {
-        set_bool(out, v.as_double() == 0.0);
+        set_real(out, d == 0.0 ? 1.0 : 0.0);
       } else if (e.op == Op::negate) {
-        if (v.kind == Kind::real) {
-          set_real(out, -v.real);
-        } else if (as_int(v) == std::numeric_limits<std::int64_t>::min()) {
-          set_real(out, -static_cast<double>(as_int(v)));
-        } else {
-          set_int(out, -as_int(v));
-        }
+        set_real(out, -d);
       } else {
-        if (!is_integral(v) && std::trunc(v.real) != v.real)
-          fail("operator [~] needs an integer", e.column);
-        set_int(out, ~(is_integral(v) ? as_int(v) : static_cast<std::int64_t>(v.real)));
+        if (!(d < 0x1p63 && d >= -0x1p63))
+          fail("operator [~] needs a number within the 64-bit integers", e.column);
+        set_real(out, static_cast<double>(~static_cast<std::int64_t>(d)));
       }
       return out;
     }
@@ -183,24 +237,8 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
       const ScriptValue& l = eval(e.a, bb);
       const ScriptValue& r = eval(e.b, bb);
       if (l.is_number() && r.is_number()) {
-        if (e.op != Op::div && is_integral(l) && is_integral(r)) {
-          std::int64_t result = 0;
-          const std::int64_t a = as_int(l), b = as_int(r);
-          const bool overflow = e.op == Op::add   ? __builtin_add_overflow(a, b, &result)
-                                : e.op == Op::sub ? __builtin_sub_overflow(a, b, &result)
-                                                  : __builtin_mul_overflow(a, b, &result);
-          if (!overflow) {
-            set_int(out, result);
-            return out;
-          }
-        }
-        const double a = l.as_double(), b = r.as_double();
-        switch (e.op) {
-          case Op::add: set_real(out, a + b); break;
-          case Op::sub: set_real(out, a - b); break;
-          case Op::mul: set_real(out, a * b); break;
-          default: set_real(out, a / b); break;
-        }
+        const double a = number(l, e.column);
+        set_real(out, arithmetic(e.op, a, number(r, e.column)));
         return out;
       }
       if (e.op == Op::add && l.is_string() && r.is_string()) {
@@ -231,31 +269,29 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
     case Op::bit_xor: {
       const ScriptValue& l = eval(e.a, bb);
       const ScriptValue& r = eval(e.b, bb);
-      auto integer = [&](const ScriptValue& v) -> std::int64_t {
-        if (is_integral(v)) return as_int(v);
-        if (v.kind == Kind::real && std::trunc(v.real) == v.real && std::abs(v.real) < 9.2e18)
-          return static_cast<std::int64_t>(v.real);
+      std::int64_t a = 0, b = 0;
+      if (!l.is_number() || !r.is_number() || !whole(l, a) || !whole(r, b))
         fail(std::string("operator [") + op_text(e.op) + "] needs integers, not " +
                  operand_types(l, r),
              e.column);
-      };
-      const std::int64_t a = integer(l), b = integer(r);
-      set_int(out, e.op == Op::bit_and ? (a & b) : e.op == Op::bit_or ? (a | b) : (a ^ b));
+      set_real(out, static_cast<double>(e.op == Op::bit_and  ? (a & b)
+                                        : e.op == Op::bit_or ? (a | b)
+                                                             : (a ^ b)));
       return out;
     }
 
     case Op::logic_and:
     case Op::logic_or: {
       const ScriptValue& l = eval(e.a, bb);
-      const bool lb = l.is_number() && l.as_double() != 0.0;
       const bool l_ok = l.is_number();
+      const bool lb = l_ok && truth_of(l, e.op, e.column);
       const ScriptValue& r = eval(e.b, bb);
       if (!l_ok || !r.is_number())
         fail(std::string("operator [") + op_text(e.op) + "] needs booleans or numbers, not " +
                  operand_types(l, r),
              e.column);
-      const bool rb = r.as_double() != 0.0;
-      set_bool(out, e.op == Op::logic_and ? (lb && rb) : (lb || rb));
+      const bool rb = truth_of(r, e.op, e.column);
+      set_real(out, (e.op == Op::logic_and ? (lb && rb) : (lb || rb)) ? 1.0 : 0.0);
       return out;
     }
 
@@ -267,7 +303,7 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
       if (c.is_string()) {
         truth = !c.text.empty();
       } else if (c.is_number()) {
-        truth = c.as_double() != 0.0;
+        truth = number(c, e.column) != 0.0;
       } else {
         fail("the condition of '?:' has no value", e.column);
       }
@@ -285,31 +321,23 @@ const ScriptValue& Program::eval(std::uint32_t index, Blackboard& bb) {
 }
 
 const ScriptValue& Program::eval_compare(const Expr& e, Blackboard& bb) {
-  ScriptValue& out = registers_[static_cast<std::size_t>(&e - nodes_.data())];
-  const ScriptValue* lhs = &eval(operands_[e.list_begin], bb);
+  ScriptValue& out = registers_[static_cast<std::size_t>(&e - script_.nodes().data())];
+  const ScriptValue* lhs = &eval(script_.compare_operands()[e.list_begin], bb);
   for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
     // Operands are evaluated left to right and only as far as needed, as in BT.CPP.
-    const ScriptValue& rhs = eval(operands_[e.list_begin + i + 1], bb);
-    const CompareOp op = compare_ops_[e.ops_begin + i];
+    const ScriptValue& rhs = eval(script_.compare_operands()[e.list_begin + i + 1], bb);
+    const CompareOp op = script_.compare_ops()[e.ops_begin + i];
     int order = 0;  // <0, 0, >0
     bool equal = false;
     if (lhs->is_string() && rhs.is_string()) {
       const int c = lhs->text.compare(rhs.text);
       order = c < 0 ? -1 : c > 0 ? 1 : 0;
       equal = order == 0;
-    } else if (lhs->is_number() || rhs.is_number()) {
-      if (is_integral(*lhs) && is_integral(rhs)) {
-        const std::int64_t a = as_int(*lhs), b = as_int(rhs);
-        order = a < b ? -1 : a > b ? 1 : 0;
-        equal = order == 0;
-      } else {
-        if (lhs->empty() || rhs.empty())
-          fail(std::string("cannot compare ") + operand_types(*lhs, rhs), e.column);
-        const double a = lhs->is_string() ? string_to_double(*lhs, e.column) : lhs->as_double();
-        const double b = rhs.is_string() ? string_to_double(rhs, e.column) : rhs.as_double();
-        order = a < b ? -1 : a > b ? 1 : 0;
-        equal = std::abs(a - b) <= static_cast<double>(std::numeric_limits<float>::epsilon());
-      }
+    } else if ((lhs->is_number() || lhs->is_string()) && (rhs.is_number() || rhs.is_string())) {
+      const double a = lhs->is_string() ? string_to_double(*lhs, e.column) : number(*lhs, e.column);
+      const double b = rhs.is_string() ? string_to_double(rhs, e.column) : number(rhs, e.column);
+      order = a < b ? -1 : a > b ? 1 : 0;
+      equal = std::abs(a - b) <= static_cast<double>(std::numeric_limits<float>::epsilon());
     } else {
       fail(std::string("operator [") + compare_text(op) + "] cannot compare " +
                operand_types(*lhs, rhs),
@@ -325,18 +353,18 @@ const ScriptValue& Program::eval_compare(const Expr& e, Blackboard& bb) {
       case CompareOp::ge: holds = order >= 0; break;
     }
     if (!holds) {
-      set_bool(out, false);
+      set_real(out, 0.0);
       return out;
     }
     lhs = &rhs;
   }
-  set_bool(out, true);
+  set_real(out, 1.0);
   return out;
 }
 
 const ScriptValue& Program::eval_assign(std::uint32_t index, Blackboard& bb) {
-  const Expr& e = nodes_[index];
-  const Expr& target = nodes_[e.a];
+  const Expr& e = script_.nodes()[index];
+  const Expr& target = script_.nodes()[e.a];
   // Read, not only written: `x = x + 1` reads x, and a pending entry must be resolved first.
   ScriptValue& dst = bb.read_for_update(target.slot);
   const std::string& key = target.name;
@@ -358,13 +386,11 @@ const ScriptValue& Program::eval_assign(std::uint32_t index, Blackboard& bb) {
       if (!dst.is_number())
         fail("cannot assign a string to '" + key + "', which holds a " + kind_name(dst.kind),
              e.column);
-      ScriptValue number;
-      set_real(number, string_to_double(value, e.column));
-      store_number(dst, number, key, e.column);
+      ScriptValue parsed;
+      set_real(parsed, string_to_double(value, e.column));
+      store_number(dst, parsed, key, e.column);
     } else if (dst.is_string()) {
-      fail("cannot assign " + value.to_string() + " (" + kind_name(value.kind) + ") to '" + key +
-               "', which holds a string",
-           e.column);
+      fail_store(dst, value, key, e.column);
     } else {
       store_number(dst, value, key, e.column);
     }
@@ -385,26 +411,8 @@ const ScriptValue& Program::eval_assign(std::uint32_t index, Blackboard& bb) {
         std::string("operator [") + op_text(e.op) + "] cannot combine " + operand_types(dst, value),
         e.column);
   ScriptValue& result = registers_[index];
-  std::int64_t exact = 0;
-  const bool integral = is_integral(dst) && is_integral(value) && e.op != Op::div_assign;
-  bool overflow = true;
-  if (integral) {
-    const std::int64_t a = as_int(dst), b = as_int(value);
-    overflow = e.op == Op::add_assign   ? __builtin_add_overflow(a, b, &exact)
-               : e.op == Op::sub_assign ? __builtin_sub_overflow(a, b, &exact)
-                                        : __builtin_mul_overflow(a, b, &exact);
-  }
-  if (integral && !overflow) {
-    set_int(result, exact);
-  } else {
-    const double a = dst.as_double(), b = value.as_double();
-    switch (e.op) {
-      case Op::add_assign: set_real(result, a + b); break;
-      case Op::sub_assign: set_real(result, a - b); break;
-      case Op::mul_assign: set_real(result, a * b); break;
-      default: set_real(result, a / b); break;
-    }
-  }
+  const double a = number(dst, e.column);
+  set_real(result, arithmetic(e.op, a, number(value, e.column)));
   store_number(dst, result, key, e.column);
   return dst;
 }

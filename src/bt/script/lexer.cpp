@@ -1,9 +1,9 @@
-#include "runtime/script/lexer.hpp"
+#include "bt/script/lexer.hpp"
 
 #include <cctype>
 #include <charconv>
 
-namespace uabt::runtime::script {
+namespace uabt::bt::script {
 
 std::string describe(Tok kind) {
   switch (kind) {
@@ -110,6 +110,7 @@ class Lexer {
                           t.column);
       t.kind = Tok::integer;
       t.integer = static_cast<std::int64_t>(value);
+      t.text = std::string(code_.substr(start, pos_ - start));
       return;
     }
     while (is_digit(peek())) ++pos_;
@@ -135,6 +136,7 @@ class Lexer {
           t.column);
     const char* first = code_.data() + start;
     const char* last = code_.data() + pos_;
+    t.text.assign(first, last);
     if (real) {
       t.kind = Tok::real;
       const auto [end, ec] = std::from_chars(first, last, t.real);
@@ -220,4 +222,4 @@ std::vector<Token> tokenize(std::string_view code) {
   return Lexer(code).run();
 }
 
-}  // namespace uabt::runtime::script
+}  // namespace uabt::bt::script

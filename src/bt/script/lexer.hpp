@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-namespace uabt::runtime::script {
+namespace uabt::bt::script {
 
 // A script that does not parse or fails while running. `column` is 1-based within the
 // script text (0 when the failure is not tied to a place, e.g. an undefined key at tick).
@@ -63,7 +63,7 @@ struct Token {
   std::size_t column = 0;  // 1-based
   std::int64_t integer = 0;
   double real = 0.0;
-  std::string text;  // name or string contents
+  std::string text;  // name or string contents; a number as written
 };
 
 // Spelling of a token kind for messages: "':='", "a number", "end of script".
@@ -73,4 +73,4 @@ std::string describe(Tok kind);
 // single-quoted strings, names [A-Za-z_@][A-Za-z0-9_]*, true/false, operators.
 std::vector<Token> tokenize(std::string_view code);
 
-}  // namespace uabt::runtime::script
+}  // namespace uabt::bt::script

@@ -1,8 +1,8 @@
-#include "runtime/script/value.hpp"
+#include "bt/script/value.hpp"
 
 #include <charconv>
 
-namespace uabt::runtime {
+namespace uabt::bt::script {
 
 ScriptValue ScriptValue::of_bool(bool b) {
   ScriptValue v;
@@ -102,4 +102,4 @@ Value to_value(const ScriptValue& value) {
   return Value::of_enum("");
 }
 
-}  // namespace uabt::runtime
+}  // namespace uabt::bt::script

@@ -1,13 +1,13 @@
-// Recursive-descent parser for BT.CPP 4.x scripts (precedence: see program.hpp).
+// Recursive-descent parser for BT.CPP 4.x scripts (precedence: see ast.hpp).
 #include <algorithm>
 
-#include "runtime/script/program.hpp"
+#include "bt/script/ast.hpp"
 
-namespace uabt::runtime::script {
+namespace uabt::bt::script {
 
 class Parser {
  public:
-  Parser(std::string_view code, Program& program) : tokens_(tokenize(code)), p_(program) {}
+  Parser(std::string_view code, Script& program) : tokens_(tokenize(code)), p_(program) {}
 
   void parse_statements() {
     while (true) {
@@ -98,8 +98,10 @@ class Parser {
     const Token& op_token = advance();
     if (p_.nodes_[lhs].op != Op::name)
       fail("the left side of " + describe(op_token.kind) + " must be a blackboard key", first);
-    const std::uint32_t rhs = conditional();
-    if (is_assign(peek())) fail("assignments cannot be chained; use ';' between them", token());
+    // The right side may assign again: `a := b := 3` is `a := (b := 3)`, as in BT.CPP.
+    if (++nesting_ > kMaxScriptDepth) fail("expression nested too deeply", op_token);
+    const std::uint32_t rhs = assignment();
+    --nesting_;
     Op op = Op::assign;
     switch (op_token.kind) {
       case Tok::assign_create: op = Op::assign_create; break;
@@ -109,7 +111,7 @@ class Parser {
       case Tok::div_assign: op = Op::div_assign; break;
       default: break;
     }
-    if (nesting_ > 1) p_.copy_reads_ = true;
+    if (nesting_ > 1) p_.nested_assignment_ = true;
     return binary(op, lhs, rhs, op_token);
   }
 
@@ -260,8 +262,14 @@ class Parser {
       }
       case Tok::kw_true:
       case Tok::kw_false: e.literal = ScriptValue::of_bool(t.kind == Tok::kw_true); break;
-      case Tok::integer: e.literal = ScriptValue::of_int(t.integer); break;
-      case Tok::real: e.literal = ScriptValue::of_real(t.real); break;
+      case Tok::integer:
+        e.literal = ScriptValue::of_int(t.integer);
+        e.spelling = t.text;
+        break;
+      case Tok::real:
+        e.literal = ScriptValue::of_real(t.real);
+        e.spelling = t.text;
+        break;
       case Tok::string: e.literal = ScriptValue::of_string(t.text); break;
       case Tok::name:
         e.op = Op::name;
@@ -275,21 +283,20 @@ class Parser {
 
   std::vector<Token> tokens_;
   std::size_t pos_ = 0;
-  Program& p_;
+  Script& p_;
   std::vector<std::uint32_t> depths_;
   int nesting_ = 0;
   unsigned groups_ = 0;
 };
 
-Program Program::parse(std::string_view code) {
-  Program program;
-  program.code_ = std::string(code);
-  Parser(code, program).parse_statements();
-  program.registers_.resize(program.nodes_.size());
-  return program;
+Script Script::parse(std::string_view code) {
+  Script script;
+  script.code_ = std::string(code);
+  Parser(code, script).parse_statements();
+  return script;
 }
 
-std::vector<std::string> Program::names() const {
+std::vector<std::string> Script::names() const {
   std::vector<std::string> out;
   for (const Expr& e : nodes_)
     if (e.op == Op::name && std::find(out.begin(), out.end(), e.name) == out.end())
@@ -297,14 +304,9 @@ std::vector<std::string> Program::names() const {
   return out;
 }
 
-bool Program::writes() const {
+bool Script::writes() const {
   return std::any_of(nodes_.begin(), nodes_.end(),
                      [](const Expr& e) { return e.op >= Op::assign_create; });
 }
 
-void Program::bind(Blackboard& blackboard, ScopeId scope) {
-  for (Expr& e : nodes_)
-    if (e.op == Op::name) e.slot = blackboard.resolve(scope, e.name);
-}
-
-}  // namespace uabt::runtime::script
+}  // namespace uabt::bt::script
