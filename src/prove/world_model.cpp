@@ -184,9 +184,6 @@ ActionContract contract(const std::string& name, const Json& j, const Locator& l
                         const Vocabulary* vocabulary) {
   const SourceLocation where = loc.at({"actions", name});
   if (!j.is_object()) loc.fail(where, "action '" + name + "' must be an object");
-  if (vocabulary != nullptr && !vocabulary->scenario.is_leaf(name))
-    loc.fail(where, "action '" + name + "' is not a leaf of the mission" +
-                        runtime::did_you_mean_hint(name, vocabulary->scenario.leaves));
   ActionContract c;
   c.name = name;
   c.location = where;

@@ -161,8 +161,6 @@ TEST(ProveCli, WorldFileIsCheckedAgainstTheMission) {
        "on_success of 'Drill': wind = 1000 is out of its range [0, 15] (declared integer at "
        "domain.fret:",
        "load-file"},
-      {R"({"actions": {"Dril": {"ticks": 2}}})", "\"Dril\"",
-       "action 'Dril' is not a leaf of the mission (did you mean 'Drill'?)", "load-file"},
       {R"({"actions": {"Drill": {"ticks": 2, "on_success": "IsBitCol = true"}}})", "IsBitCol =",
        "on_success of 'Drill' writes 'IsBitCol', which is neither a variable of the domain nor a "
        "condition of the mission (did you mean 'IsBitCool'?)",
