@@ -2,11 +2,14 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <cctype>
 #include <exception>
+#include <map>
 #include <set>
 #include <string_view>
 
 #include "base/files.hpp"
+#include "base/suggest.hpp"
 #include "bt/element_positions.hpp"
 #include "bt/structure.hpp"
 #include "bt/xml_io.hpp"
@@ -150,6 +153,7 @@ class TextParser {
       }
     }
     doc.main_tree = attribute_or_empty(root, "main_tree_to_execute");
+    check_root_attributes(root, doc);
     bool seen_models = false;
     for (const XMLElement* child = root->FirstChildElement(); child != nullptr;
          child = child->NextSiblingElement()) {
@@ -180,6 +184,52 @@ class TextParser {
         findings_.push_back(std::move(f));
       }
     }
+  }
+
+  // BT.CPP 4.10 reads BTCPP_format and main_tree_to_execute from <root> and ignores any other
+  // attribute, so a misspelt one silently runs another tree (or none): an error at it.
+  void check_root_attributes(const XMLElement* root, Document& doc) {
+    static const std::vector<std::string> kKnown = {"BTCPP_format", "main_tree_to_execute"};
+    for (const tinyxml2::XMLAttribute* a = root->FirstAttribute(); a != nullptr; a = a->Next()) {
+      const std::string name = a->Name();
+      const std::vector<std::string> close = closest_names(name, kKnown);
+      if (close.empty() || root->Attribute(close.front().c_str()) != nullptr) continue;
+      const SourceLocation at = attribute_location(root, name);
+      findings_.push_back(structure_finding("unknown attribute '" + name +
+                                                "' on <root>: BehaviorTree.CPP ignores it; " +
+                                                did_you_mean(name, kKnown),
+                                            file_, at.line, at.column));
+      // Read as meant, so that the misspelling is the one finding it causes.
+      if (close.front() == "main_tree_to_execute") doc.main_tree = a->Value();
+    }
+  }
+
+  // Where `name="…"` stands in the start tag of `e` (the tag's own position if not found).
+  SourceLocation attribute_location(const XMLElement* e, const std::string& name) const {
+    const SourceLocation tag = where(e);
+    std::size_t offset = 0;
+    for (int line = 1; line < tag.line && offset < text_.size(); ++offset)
+      if (text_[offset] == '\n') ++line;
+    offset += static_cast<std::size_t>(std::max(tag.column, 1) - 1);
+    for (std::size_t at = text_.find(name, offset); at != std::string::npos;
+         at = text_.find(name, at + 1)) {
+      const char before = at == 0 ? ' ' : text_[at - 1];
+      std::size_t after = at + name.size();
+      while (after < text_.size() && std::isspace(static_cast<unsigned char>(text_[after])))
+        ++after;
+      if (!std::isspace(static_cast<unsigned char>(before)) || after >= text_.size() ||
+          text_[after] != '=')
+        continue;
+      int line = 1;
+      std::size_t start = 0;
+      for (std::size_t i = 0; i < at; ++i)
+        if (text_[i] == '\n') {
+          ++line;
+          start = i + 1;
+        }
+      return {file_, line, static_cast<int>(at - start) + 1};
+    }
+    return tag;
   }
 
   TreeDef read_tree(const XMLElement* element) {
@@ -226,6 +276,7 @@ class TextParser {
                                                          "Decorator", "SubTree"};
     static const std::set<std::string_view> kPortKinds = {"input_port", "output_port",
                                                           "inout_port"};
+    std::map<std::string, std::pair<SourceLocation, std::string>> registered;
     for (const XMLElement* entry = element->FirstChildElement(); entry != nullptr;
          entry = entry->NextSiblingElement()) {
       const SourceLocation at = where(entry);
@@ -257,6 +308,19 @@ class TextParser {
         p.default_value = attribute_or_empty(port, "default");
         if (const char* text = port->GetText()) p.description = text;
         model.ports.push_back(std::move(p));
+      }
+      // BT.CPP refuses to register one ID twice: the second entry is the mistake.
+      const auto [first, inserted] = registered.emplace(model.id, std::make_pair(at, model.family));
+      if (!inserted) {
+        const SourceLocation& earlier = first->second.first;
+        Finding f = make_finding("ref-duplicate-id",
+                                 "node ID '" + model.id + "' is registered twice in " + file_, at);
+        f.notes.push_back("first registered at " + earlier.file + ":" +
+                          std::to_string(earlier.line) + ":" + std::to_string(earlier.column) +
+                          " (as " + first->second.second +
+                          "): BehaviorTree.CPP refuses to register an ID twice");
+        findings_.push_back(std::move(f));
+        continue;
       }
       models.push_back(std::move(model));
     }

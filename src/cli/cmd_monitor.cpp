@@ -27,7 +27,7 @@ std::optional<std::string> read_or_finding(const fs::path& path, std::vector<Fin
 
 // Checks a recorded trace against FRET requirements (DESIGN §10). Exit 0 when every guarantee
 // held and everything was monitored; 1 when one was violated or could not be monitored, or an
-// input has errors; 2 for a bad command line.
+// input has errors; 2 for a bad command line or a requirements file with nothing to monitor.
 void register_monitor(CLI::App& app, int& exit_code) {
   struct Args {
     std::string requirements, trace, domain, format = "text", output;
@@ -75,6 +75,13 @@ void register_monitor(CLI::App& app, int& exit_code) {
     if (has_errors(findings) || !trace) {
       std::cerr << format_text(findings);
       exit_code = kExitFail;
+      return;
+    }
+    // A verdict over no requirement would read as a pass that checked nothing.
+    if (requirements.empty()) {
+      std::cerr << requirements_file
+                << ": error: nothing to monitor: the file states no requirement\n";
+      exit_code = kExitUsage;
       return;
     }
     const monitor::TraceReport report =

@@ -109,7 +109,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       result = prove::prove(*outcome.mission, *doc, world, options);
     } catch (const prove::WorldError& e) {
       // world.json named as opened from the current directory, like every other finding.
-      std::cerr << path_prefix_for(outcome.mission->dir) << e.what() << "\n";
+      std::cerr << path_prefix_for(outcome.mission->dir) << e.what()
+                << (e.check == "load-file" ? "" : " [" + e.check + "]") << "\n";
       exit_code = kExitUsage;
       return;
     } catch (const std::exception& e) {

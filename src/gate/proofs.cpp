@@ -48,7 +48,7 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
     outcome.report.proofs->mission_path = replay.mission_path;
     outcome.report.proofs->run_options = replay.run_options;
   } catch (const prove::WorldError& e) {
-    found = {make_finding("load-file", e.text, e.location)};
+    found = {make_finding(e.check, e.text, e.location)};
     add_proofs_not_run(outcome, "world.json cannot be read");
   } catch (const std::exception& e) {
     found = {make_finding("prove-bounded", std::string("the mission cannot be proved: ") + e.what(),

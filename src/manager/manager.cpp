@@ -229,6 +229,18 @@ ManagerRun BehaviorTreeManager::run() {
   for (const PropertyViolation& v : properties.at_end(runner.ticks()))
     result.trace.push_back(violation_event(v));
   result.properties = properties.results();
+  // Held only because the run ended before a deadline (FRET's finite-trace meaning): said.
+  for (const monitor::PropertyResult& p : result.properties) {
+    if (!p.pending_since) continue;
+    TraceEvent e;
+    e.tick = runner.ticks();
+    e.event = "pending";
+    e.requirement = p.id;
+    e.role = p.assumption ? "assumption" : "guarantee";
+    e.message = p.pending;
+    e.since = p.pending_since;
+    result.trace.push_back(std::move(e));
+  }
   result.guarantees_failed = properties.guarantees_failed();
   runner.engine().remove_observer(&properties);
   runner.engine().remove_observer(&selections);
@@ -278,7 +290,8 @@ std::string property_summary(const ManagerRun& run) {
   std::string out;
   for (const monitor::PropertyResult& p : run.properties) {
     out += std::string(p.assumption ? "assumption " : "property ") + p.id + ": " +
-           monitor::verdict_name(p.verdict);
+           (p.verdict == monitor::Verdict::held ? monitor::held_text(p)
+                                                : monitor::verdict_name(p.verdict));
     if (p.first_violation) out += " from tick " + std::to_string(*p.first_violation);
     if (p.monitored_from)
       out += " (added by an uplink: monitored from tick " + std::to_string(*p.monitored_from);

@@ -88,6 +88,9 @@ std::string trace_report_json(const TraceReport& report) {
                                              : nlohmann::ordered_json(nullptr);
     r["reason"] =
         p.reason.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(p.reason);
+    r["pending"] = p.pending_since ? nlohmann::ordered_json{{"obligation", p.pending},
+                                                            {"since", *p.pending_since}}
+                                   : nlohmann::ordered_json(nullptr);
     if (!p.values.empty()) {
       nlohmann::ordered_json values = nlohmann::ordered_json::object();
       for (const auto& [name, value] : p.values) values[name] = value;
@@ -110,7 +113,7 @@ std::string trace_report_text(const TraceReport& report) {
     switch (p.verdict) {
       case Verdict::held:
         ++held;
-        out += where + p.id + role + ": held\n";
+        out += where + p.id + role + ": " + held_text(p) + "\n";
         break;
       case Verdict::violated: {
         ++violated;

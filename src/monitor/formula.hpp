@@ -68,6 +68,8 @@ class FormulaMonitor {
   explicit FormulaMonitor(const Formula& formula, int root);
   bool step(const bool* inputs);
   std::uint64_t ticks() const { return tick_; }
+  // The value node `node` of the formula took at the last step.
+  bool value(int node) const { return value_[static_cast<std::size_t>(node)] != 0; }
 
  private:
   struct State {

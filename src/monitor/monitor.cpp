@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "fretish/expr.hpp"
+
 namespace uabt::monitor {
 
 namespace {
@@ -167,6 +169,19 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
     m->parts_.push_back(std::move(compiled));
   }
   const int root = build_requirement_formula(m->formula_, m->shape_, Slots{});
+  m->pending_node_ = r.response ? build_pending_formula(m->formula_, m->shape_, Slots{}) : -1;
+  if (m->pending_node_ >= 0) {
+    const std::string& unit = m->shape_.duration == 1 ? "tick" : "ticks";
+    const std::string n = std::to_string(m->shape_.duration) + " " + unit;
+    const std::string response = fretish::to_fretish(*r.response);
+    switch (m->shape_.timing) {
+      case TimingKind::next: m->obligation_ = response + " at the next tick"; break;
+      case TimingKind::within: m->obligation_ = response + " within " + n; break;
+      case TimingKind::for_ticks: m->obligation_ = response + " for " + n; break;
+      case TimingKind::after: m->obligation_ = response + " after " + n; break;
+      default: m->pending_node_ = -1; break;
+    }
+  }
   m->run_.emplace(m->formula_, root);
   return m;
 }
@@ -185,6 +200,9 @@ bool RequirementMonitor::step(const std::vector<Val>& frame) {
     }
   }
   const bool now = run_->step(inputs);
+  const bool pending = pending_node_ >= 0 && run_->value(pending_node_);
+  if (pending && !pending_) pending_since_ = tick_;
+  pending_ = pending;
   if (!now && (holds_ || tick_ == 0)) {
     violated_since_ = tick_;
     violation_values_.clear();

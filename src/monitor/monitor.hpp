@@ -49,6 +49,13 @@ class RequirementMonitor {
   // Slots of the variables the requirement reads, in first-use order, and their values at
   // violated_since().
   const std::vector<int>& variables() const { return variables_; }
+  // While the verdict holds only because the trace ends before a deadline (FRET's
+  // finite-trace meaning): the tick the open obligation was triggered, else nullopt.
+  std::optional<std::uint64_t> pending_since() const {
+    return holds_ && pending_ ? std::optional<std::uint64_t>(pending_since_) : std::nullopt;
+  }
+  // What stays due while pending: "stopped within 2 ticks".
+  const std::string& obligation() const { return obligation_; }
   const std::vector<Val>& violation_values() const { return violation_values_; }
 
  private:
@@ -60,6 +67,10 @@ class RequirementMonitor {
   std::vector<int> variables_;
   std::vector<Val> violation_values_;
   std::string error_;
+  int pending_node_ = -1;
+  bool pending_ = false;
+  std::uint64_t pending_since_ = 0;
+  std::string obligation_;
   bool holds_ = true;
   std::uint64_t tick_ = 0;
   std::uint64_t violated_since_ = 0;

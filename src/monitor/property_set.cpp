@@ -21,6 +21,12 @@ bool is_assumption(const fretish::Requirement& r) {
   return c == "environment";
 }
 
+std::string held_text(const PropertyResult& r) {
+  if (!r.pending_since) return "held";
+  return "held (pending at end: " + r.pending + ", triggered at tick " +
+         std::to_string(*r.pending_since) + ")";
+}
+
 PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
                          const std::vector<fretish::Assumption>& assumptions,
                          const Vocabulary& vocabulary, std::optional<double> tick_seconds)
@@ -140,7 +146,13 @@ PropertyResult PropertySet::result(std::size_t index) const {
     r.reason = started_ ? "no tick after the uplink that added it" : "the trace is empty";
     return r;
   }
-  if (e.monitor->holds()) return r;
+  if (e.monitor->holds()) {
+    if (const auto since = e.monitor->pending_since()) {
+      r.pending = e.monitor->obligation();
+      r.pending_since = e.first_tick + *since;
+    }
+    return r;
+  }
   r.verdict = Verdict::violated;
   r.first_violation = e.first_tick + e.monitor->violated_since();
   const auto& slots = e.monitor->variables();

@@ -29,10 +29,17 @@ struct PropertyResult {
   std::optional<std::uint64_t> first_violation;             // tick (as numbered by the caller)
   std::vector<std::pair<std::string, std::string>> values;  // read at first_violation
   std::string reason;                                       // not-monitored: why
+  // Held only because the trace ended before a deadline: what is still due ("stopped within
+  // 2 ticks") and the tick that triggered it.
+  std::string pending;
+  std::optional<std::uint64_t> pending_since;
   // A property an uplink added or restated mid-run is monitored from the tick after the swap;
   // one it removed or restated stops at the swap (both unset: the whole trace).
   std::optional<std::uint64_t> monitored_from, monitored_until;
 };
+
+// "held", or "held (pending at end: stopped within 2 ticks, triggered at tick 7)".
+std::string held_text(const PropertyResult& r);
 
 // What the properties may read: the trace's (or the run's) variables and the names that are
 // values rather than variables (enum literals, alternatives, string values of the trace).

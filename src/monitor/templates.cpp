@@ -250,6 +250,65 @@ int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots
   return f.constant(true);
 }
 
+namespace {
+
+// An open obligation of the null-scope formula (not dual) in context `c`, or -1.
+int pending_base(const Context& c, const Shape& shape, const Inputs& in) {
+  Formula& f = c.f;
+  const int nP = c.NOT(in.P);
+  const std::uint64_t d = shape.duration;
+  const int ftp = c.first();
+  if (shape.condition == ConditionKind::null) {
+    switch (shape.timing) {
+      case TimingKind::next: return ftp;
+      case TimingKind::within:
+      case TimingKind::after: return c.H(nP);
+      case TimingKind::for_ticks: return f.once_below(ftp, d);
+      default: return -1;
+    }
+  }
+  const bool regular = shape.condition == ConditionKind::regular;
+  const int T = regular ? c.AND(in.C, c.Z(c.NOT(in.C))) : in.C;
+  const int undischarged = f.since(nP, c.AND(T, nP));  // a trigger, no response since
+  switch (shape.timing) {
+    case TimingKind::next: return T;
+    case TimingKind::within: return undischarged;
+    case TimingKind::for_ticks: return f.once_below(T, d);
+    case TimingKind::after: return c.OR(undischarged, f.once_within(T, d));
+    default: return -1;
+  }
+}
+
+}  // namespace
+
+int build_pending_formula(Formula& f, const Shape& shape, const Slots& slots) {
+  if (is_dual(shape.scope)) return -1;
+  const Inputs in{f.input(slots.condition), f.input(slots.response), f.input(slots.stop)};
+  const int M = f.input(slots.mode);
+  const auto first_of = [&](int m) { return f.conjunction(m, f.weak_yesterday(f.negation(m))); };
+  const auto and_if = [&](int open, int now) { return open < 0 ? -1 : f.conjunction(open, now); };
+  switch (shape.scope) {
+    case ScopeKind::null: return pending_base(Context{f}, shape, in);
+    case ScopeKind::in:
+    case ScopeKind::notin: {
+      // Open only while the interval is: one that closed was checked when it closed.
+      const int m = shape.scope == ScopeKind::in ? M : f.negation(M);
+      return and_if(pending_base(Context{f, first_of(m)}, shape, in), m);
+    }
+    case ScopeKind::after: {
+      const int past_end = f.conjunction(f.negation(M), f.yesterday(M));
+      const int start = f.conjunction(past_end, f.yesterday(f.historically(f.negation(past_end))));
+      return and_if(pending_base(Context{f, start}, shape, in), f.once(start));
+    }
+    case ScopeKind::before: {
+      const int first_mode =
+          f.conjunction(first_of(M), f.weak_yesterday(f.historically(f.negation(M))));
+      return and_if(pending_base(Context{f}, shape, in), f.historically(f.negation(first_mode)));
+    }
+    default: return -1;
+  }
+}
+
 bool verdict_is_final_once_violated(const Shape& shape) {
   const TimingKind t = shape.timing;
   if (is_dual(shape.scope))

@@ -46,6 +46,13 @@ struct Slots {
 // formalization. Returns the root node.
 int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots);
 
+// An obligation still open at tick t: true at t when the trace so far holds the requirement
+// only because it ends before a deadline (a `within`, `for`, `after` or `next` whose trigger
+// was recent). FRET's finite-trace meaning counts such a trace as held; reports say it is
+// pending. Returns the node, or -1 for a shape with no such obligation (the "only" scopes,
+// untimed requirements).
+int build_pending_formula(Formula& f, const Shape& shape, const Slots& slots);
+
 // True when the verdict can only go from held to violated, never back (a safety property):
 // then a violation is final at the tick it appears. Otherwise (eventually, finally, …) the
 // verdict of a finite trace is its value at the last tick.

@@ -12,8 +12,8 @@ using Json = nlohmann::ordered_json;
 WorldModel mission_world(const load::Mission& mission) {
   const auto path = mission.dir / "world.json";
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return {};
-  return load_world(path, "world.json");
+  if (!std::filesystem::exists(path, ec)) return {};
+  return load_world(path, "world.json", &mission);
 }
 
 std::vector<std::string> table_lines(const Counterexample& cex) {

@@ -2,12 +2,18 @@
 #include "prove/world_model.hpp"
 
 #include <cctype>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
 
 #include "base/files.hpp"
 #include "base/json_input.hpp"
 #include "fretish/parse.hpp"
+#include "load/mission.hpp"
+#include "runtime/scenario_check.hpp"
 #include "runtime/script/program.hpp"
+#include "verify/division.hpp"
 
 namespace uabt::prove {
 
@@ -32,17 +38,35 @@ class Locator {
  public:
   Locator(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
   SourceLocation at(std::initializer_list<std::string_view> keys) const {
+    return at_offset(offset_of(keys));
+  }
+  std::size_t offset_of(std::initializer_list<std::string_view> keys) const {
     std::size_t from = 0;
     for (std::string_view k : keys) {
       const std::size_t found = text_.find("\"" + std::string(k) + "\"", from);
       if (found == std::string_view::npos) break;
       from = found;
     }
-    const auto [line, column] = position(text_, from);
+    return from;
+  }
+  SourceLocation at_offset(std::size_t offset) const {
+    const auto [line, column] = position(text_, offset);
     return {file_, line, column};
   }
-  [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const {
-    throw WorldError(where, message);
+  // Where character `column` (1-based) of the string value of the member at `key_offset`
+  // stands in the file, escapes counted as written.
+  SourceLocation in_value(std::size_t key_offset, std::size_t column) const {
+    const std::size_t colon = text_.find(':', key_offset);
+    std::size_t i = colon == std::string_view::npos ? key_offset : text_.find('"', colon);
+    if (i == std::string_view::npos) return at_offset(key_offset);
+    ++i;
+    for (std::size_t c = 1; c < column && i < text_.size() && text_[i] != '"'; ++c)
+      i += text_[i] != '\\' ? 1 : (i + 1 < text_.size() && text_[i + 1] == 'u' ? 6 : 2);
+    return at_offset(i);
+  }
+  [[noreturn]] void fail(const SourceLocation& where, const std::string& message,
+                         const std::string& check = "load-file") const {
+    throw WorldError(where, message, check);
   }
 
  private:
@@ -56,7 +80,108 @@ std::int64_t tick_count(const Json& j, const Locator& loc, const SourceLocation&
   return j.get<std::int64_t>();
 }
 
-ActionContract contract(const std::string& name, const Json& j, const Locator& loc) {
+// The names a world.json may use for one mission.
+struct Vocabulary {
+  runtime::ScenarioVocabulary scenario;
+  const fretish::Domain* domain = nullptr;
+  std::set<std::string> writable;  // domain variables and the mission's conditions
+};
+
+// A script's arithmetic as FRETISH (names, numbers, + - * / and negation), nullptr for
+// anything else.
+fretish::ExprPtr as_fretish(const runtime::script::Program& program, std::uint32_t index) {
+  using runtime::script::Op;
+  const auto& e = program.nodes()[index];
+  switch (e.op) {
+    case Op::literal:
+      if (e.literal.kind == runtime::ScriptValue::Kind::integer ||
+          e.literal.kind == runtime::ScriptValue::Kind::real)
+        return fretish::make_number(e.literal.to_string());
+      return nullptr;
+    case Op::name:
+      return fretish::make_identifier(e.name.starts_with('@') ? e.name.substr(1) : e.name);
+    case Op::negate: {
+      auto a = as_fretish(program, e.a);
+      return a ? fretish::make_expr(fretish::ExprKind::negate, {a}) : nullptr;
+    }
+    case Op::add:
+    case Op::sub:
+    case Op::mul:
+    case Op::div: {
+      auto a = as_fretish(program, e.a);
+      auto b = as_fretish(program, e.b);
+      if (!a || !b) return nullptr;
+      const auto kind = e.op == Op::add   ? fretish::ExprKind::add
+                        : e.op == Op::sub ? fretish::ExprKind::sub
+                        : e.op == Op::mul ? fretish::ExprKind::mul
+                                          : fretish::ExprKind::div;
+      return fretish::make_expr(kind, {a, b});
+    }
+    default: return nullptr;
+  }
+}
+
+// Every division of an effect whose divisor can be zero in the domain: an error with the state.
+void check_divisions(const runtime::script::Program& program, const std::string& action,
+                     const std::string& key, std::size_t key_offset, const Vocabulary& v,
+                     const Locator& loc) {
+  using runtime::script::Op;
+  for (const auto& e : program.nodes()) {
+    if (e.op != Op::div && e.op != Op::div_assign) continue;
+    const auto divisor = as_fretish(program, e.b);
+    if (!divisor) continue;
+    const auto state = verify::zero_divisor_state(*v.domain, divisor, {});
+    if (!state) continue;
+    const std::string shown = fretish::to_fretish(*divisor);
+    loc.fail(loc.in_value(key_offset, e.column),
+             key + " of '" + action + "' divides by " + shown +
+                 (divisor->kind == fretish::ExprKind::number
+                      ? ""
+                      : ", which is zero in a state the domain allows (" +
+                            verify::state_text(*state) + ")") +
+                 ": BT.CPP's script then fails or gives infinity",
+             "guard-division-by-zero");
+  }
+}
+
+// An effect's assignments against the mission: the name is writable, a constant value fits.
+void check_effect(const runtime::script::Program& program, const std::string& action,
+                  const std::string& key, std::size_t key_offset, const Vocabulary& v,
+                  const Locator& loc) {
+  using runtime::script::Op;
+  const auto& nodes = program.nodes();
+  for (const std::uint32_t s : program.statements()) {
+    const auto& e = nodes[s];
+    if (e.op < Op::assign_create) continue;
+    const auto& target = nodes[e.a];
+    if (target.op != Op::name) continue;
+    const std::string name = target.name.starts_with('@') ? target.name.substr(1) : target.name;
+    if (!v.writable.contains(name))
+      loc.fail(loc.in_value(key_offset, target.column),
+               key + " of '" + action + "' writes '" + name +
+                   "', which is neither a variable of the domain nor a condition of the mission" +
+                   runtime::did_you_mean_hint(name, v.writable));
+    if (e.op != Op::assign && e.op != Op::assign_create) continue;
+    const auto& value = nodes[e.b];
+    std::optional<runtime::ScriptValue> constant;
+    if (value.op == Op::literal) constant = value.literal;
+    if (value.op == Op::negate && nodes[value.a].op == Op::literal) {
+      const auto& l = nodes[value.a].literal;
+      if (l.kind == runtime::ScriptValue::Kind::integer && l.integer != INT64_MIN)
+        constant = runtime::ScriptValue::of_int(-l.integer);
+      if (l.kind == runtime::ScriptValue::Kind::real)
+        constant = runtime::ScriptValue::of_real(-l.real);
+    }
+    const fretish::Variable* var = v.domain->find(name);
+    if (!constant || var == nullptr || !var->declared) continue;
+    const std::string why = runtime::misfit_message(name, *constant, *var);
+    if (!why.empty())
+      loc.fail(loc.in_value(key_offset, value.column), key + " of '" + action + "': " + why);
+  }
+}
+
+ActionContract contract(const std::string& name, const Json& j, const Locator& loc,
+                        const Vocabulary* vocabulary) {
   const SourceLocation where = loc.at({"actions", name});
   if (!j.is_object()) loc.fail(where, "action '" + name + "' must be an object");
   ActionContract c;
@@ -92,10 +217,16 @@ ActionContract contract(const std::string& name, const Json& j, const Locator& l
     } else if (key == "on_success" || key == "on_failure") {
       if (!value.is_string()) loc.fail(at, key + " must be a BT.CPP script (a string)");
       const std::string code = value.get<std::string>();
+      std::optional<runtime::script::Program> program;
       try {
-        runtime::script::Program::parse(code);
+        program = runtime::script::Program::parse(code);
       } catch (const std::exception& e) {
         loc.fail(at, key + " of '" + name + "': " + e.what() + " in `" + code + "`");
+      }
+      if (vocabulary != nullptr) {
+        const std::size_t offset = loc.offset_of({"actions", name, key});
+        check_effect(*program, name, key, offset, *vocabulary, loc);
+        check_divisions(*program, name, key, offset, *vocabulary, loc);
       }
       (key == "on_success" ? c.on_success : c.on_failure) = code;
     } else {
@@ -113,7 +244,18 @@ const ActionContract* WorldModel::find(std::string_view qualified, std::string_v
   return it == actions.end() ? nullptr : &it->second;
 }
 
-WorldModel parse_world(std::string_view text, const std::string& file) {
+WorldModel parse_world(std::string_view text, const std::string& file,
+                       const load::Mission* mission) {
+  std::optional<Vocabulary> vocabulary;
+  if (mission != nullptr) {
+    vocabulary.emplace();
+    vocabulary->scenario.add(*mission);
+    vocabulary->domain = &mission->domain;
+    for (const fretish::Variable& var : mission->domain.variables)
+      vocabulary->writable.insert(var.name);
+    for (const std::string& leaf : vocabulary->scenario.leaves)
+      if (mission->domain.find(leaf) == nullptr) vocabulary->writable.insert(leaf);
+  }
   JsonInputError error;
   std::optional<Json> parsed = parse_json_input<Json>(text, error);
   if (!parsed) throw WorldError({file, error.line, error.column}, error.message);
@@ -137,7 +279,7 @@ WorldModel parse_world(std::string_view text, const std::string& file) {
     } else if (key == "actions") {
       if (!value.is_object()) loc.fail(at, "actions must be an object");
       for (const auto& [name, spec] : value.items())
-        w.actions.emplace(name, contract(name, spec, loc));
+        w.actions.emplace(name, contract(name, spec, loc, vocabulary ? &*vocabulary : nullptr));
     } else if (key != "description") {
       loc.fail(at, "unknown key '" + key + "' (expected: initial, actions, description)");
     }
@@ -145,11 +287,15 @@ WorldModel parse_world(std::string_view text, const std::string& file) {
   return w;
 }
 
-WorldModel load_world(const std::filesystem::path& path, const std::string& display) {
+WorldModel load_world(const std::filesystem::path& path, const std::string& display,
+                      const load::Mission* mission) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw WorldError({display, 0, 0}, "is a directory, not a file: the world model is a JSON file");
   std::string error;
   const auto text = read_text_file(path, error);
   if (!text) throw WorldError({display, 0, 0}, error);
-  return parse_world(*text, display);
+  return parse_world(*text, display, mission);
 }
 
 std::vector<std::string> assigned_names(std::string_view script) {

@@ -11,6 +11,10 @@
 #include "fretish/expr.hpp"
 #include "runtime/status.hpp"
 
+namespace uabt::load {
+struct Mission;
+}
+
 namespace uabt::prove {
 
 // What an action may do (world.json, DESIGN §10): run for `min_ticks`..`max_ticks` ticks
@@ -38,17 +42,29 @@ struct WorldModel {
 // expression do not parse. The message starts with "file:line:col: error: ".
 class WorldError : public std::runtime_error {
  public:
-  WorldError(SourceLocation where, const std::string& message)
-      : std::runtime_error(where.file + ":" + std::to_string(where.line) + ":" +
-                           std::to_string(where.column) + ": error: " + message),
+  WorldError(SourceLocation where, const std::string& message, std::string check_id = "load-file")
+      : std::runtime_error(
+            where.file +
+            (where.line > 0 ? ":" + std::to_string(where.line) + ":" + std::to_string(where.column)
+                            : "") +
+            ": error: " + message),
         location(std::move(where)),
-        text(message) {}
+        text(message),
+        check(std::move(check_id)) {}
   SourceLocation location;
   std::string text;
+  std::string check;  // the finding it makes in the gate's report
 };
 
-WorldModel parse_world(std::string_view text, const std::string& file);
-WorldModel load_world(const std::filesystem::path& path, const std::string& display);
+// With `mission`, world.json is also checked against it as scenarios are (DESIGN §8): every
+// action is a leaf of the mission, every name an effect writes is a domain variable or a
+// condition, and every value an effect writes fits its declaration ("did you mean" for a
+// likely typo); the error is at the name or the value.
+WorldModel parse_world(std::string_view text, const std::string& file,
+                       const load::Mission* mission = nullptr);
+// A path that is not a regular file (a directory) is an error too.
+WorldModel load_world(const std::filesystem::path& path, const std::string& display,
+                      const load::Mission* mission = nullptr);
 
 // The names a script assigns (`x = …`, `x := …`, `x += …`), in order: the state an effect
 // writes.

@@ -12,8 +12,13 @@ namespace uabt::runtime {
 
 namespace {
 
-// " (did you mean 'x'?)" for the closest names within two edits (a third of the name at most).
-std::string did_you_mean(const std::string& name, const std::set<std::string>& known) {
+std::string base_name(const std::string& key) {
+  return key.substr(0, key.find('('));
+}
+
+}  // namespace
+
+std::string did_you_mean_hint(const std::string& name, const std::set<std::string>& known) {
   const std::size_t limit = std::min<std::size_t>(2, std::max<std::size_t>(1, name.size() / 3));
   std::size_t best = limit + 1;
   std::vector<std::string> closest;
@@ -31,6 +36,8 @@ std::string did_you_mean(const std::string& name, const std::set<std::string>& k
   for (std::size_t i = 1; i < closest.size() && i < 3; ++i) out += " or '" + closest[i] + "'";
   return out + "?)";
 }
+
+namespace {
 
 void add_script(const std::string& code, std::set<std::string>& state) {
   try {
@@ -62,7 +69,8 @@ void add_document(const bt::Document& doc, ScenarioVocabulary& v) {
   for (const bt::NodeModel& model : doc.node_models) v.leaves.insert(model.id);
 }
 
-// What is wrong with `value` for `var`, "" when it fits.
+}  // namespace
+
 std::string misfit(const ScriptValue& value, const fretish::Variable& var) {
   using fretish::VarType;
   switch (var.type) {
@@ -96,11 +104,18 @@ std::string misfit(const ScriptValue& value, const fretish::Variable& var) {
   return "";
 }
 
-std::string base_name(const std::string& key) {
-  return key.substr(0, key.find('('));
+std::string misfit_message(const std::string& name, const ScriptValue& value,
+                           const fretish::Variable& var) {
+  const std::string why = misfit(value, var);
+  if (why.empty()) return "";
+  return name + " = " + (value.is_string() ? "\"" + value.to_string() + "\"" : value.to_string()) +
+         " " + why + " (declared " + fretish::var_type_name(var.type) + " at " + var.location.file +
+         ":" + std::to_string(var.location.line) + ":" + std::to_string(var.location.column) + ")";
 }
 
-}  // namespace
+bool ScenarioVocabulary::is_leaf(const std::string& key) const {
+  return leaves.contains(base_name(key));
+}
 
 void ScenarioVocabulary::add(const load::Mission& mission) {
   for (const fretish::Variable& var : mission.domain.variables) {
@@ -124,19 +139,12 @@ std::vector<std::string> check_scenario(const Scenario& scenario,
       const std::string pointer = where + "/" + key;
       const auto var = vocabulary.variables.find(key);
       if (var != vocabulary.variables.end()) {
-        const std::string why = misfit(value, var->second);
-        const fretish::Variable& v = var->second;
-        if (!why.empty())
-          errors.push_back(
-              scenario.where(pointer, true) + ": error: " + key + " = " +
-              (value.is_string() ? "\"" + value.to_string() + "\"" : value.to_string()) + " " +
-              why + " (declared " + fretish::var_type_name(v.type) + " at " + v.location.file +
-              ":" + std::to_string(v.location.line) + ":" + std::to_string(v.location.column) +
-              ")");
-      } else if (!vocabulary.state.contains(key) && !vocabulary.leaves.contains(base_name(key))) {
+        const std::string why = misfit_message(key, value, var->second);
+        if (!why.empty()) errors.push_back(scenario.where(pointer, true) + ": error: " + why);
+      } else if (!vocabulary.state.contains(key) && !vocabulary.is_leaf(key)) {
         errors.push_back(scenario.where(pointer) + ": error: '" + key +
                          "' is not a state variable, condition or blackboard key of the mission" +
-                         did_you_mean(key, names));
+                         did_you_mean_hint(key, names));
       }
     }
   };
@@ -144,9 +152,10 @@ std::vector<std::string> check_scenario(const Scenario& scenario,
   for (const ScenarioEvent& e : scenario.events)
     check_state(e.set, "/events/" + std::to_string(e.index) + "/set");
   for (const auto& [name, spec] : scenario.actions) {
-    if (!vocabulary.leaves.contains(base_name(name)))
+    if (!vocabulary.is_leaf(name))
       errors.push_back(scenario.where("/actions/" + name) + ": error: action '" + name +
-                       "' is not a leaf of the mission" + did_you_mean(name, vocabulary.leaves));
+                       "' is not a leaf of the mission" +
+                       did_you_mean_hint(name, vocabulary.leaves));
     check_state(spec.effects, "/actions/" + name + "/effects");
     for (std::size_t i = 0; i < spec.runs.size(); ++i)
       check_state(spec.runs[i].effects,

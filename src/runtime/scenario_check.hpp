@@ -21,7 +21,20 @@ struct ScenarioVocabulary {
 
   // Adds a loaded mission: its domain, mission.xml, alternatives and nodes.xml.
   void add(const load::Mission& mission);
+  // True when `key` (Drill, or Drill(mode=rotary) as scenarios key one instance) is a leaf.
+  bool is_leaf(const std::string& key) const;
 };
+
+// " (did you mean 'x'?)" for the closest of `known` within two edits (a third of the name at
+// most), "" when none is close.
+std::string did_you_mean_hint(const std::string& name, const std::set<std::string>& known);
+
+// What is wrong with `value` for `var` ("is out of its range [0, 15]"), "" when it fits.
+std::string misfit(const ScriptValue& value, const fretish::Variable& var);
+// "wind = 1000 is out of its range [0, 15] (declared integer at domain.fret:1:1)", "" when
+// the value fits.
+std::string misfit_message(const std::string& name, const ScriptValue& value,
+                           const fretish::Variable& var);
 
 // "file:line:col: error: …" lines, empty when the scenario fits.
 std::vector<std::string> check_scenario(const Scenario& scenario,

@@ -94,13 +94,18 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
       for (const auto& [key, value] : e.reads) reads[key] = value_json(value);
       j["reads"] = std::move(reads);
     }
+    if (e.event == "pending") {
+      j["role"] = e.role;
+      j["obligation"] = e.message;
+      j["since"] = e.since.value_or(0);
+    }
     if (e.event == "violation") {
       j["role"] = e.role;
       Json values = Json::object();
       for (const auto& [name, value] : e.values) values[name] = value;
       j["values"] = std::move(values);
     }
-    if (!e.message.empty()) j["message"] = e.message;
+    if (!e.message.empty() && e.event != "pending") j["message"] = e.message;
     if (!e.script.empty()) j["script"] = e.script;
     if (e.event == "uplink") {
       if (e.verdict == "accepted") {
@@ -126,6 +131,8 @@ std::string trace_summary(const std::vector<TraceEvent>& trace, const std::strin
   for (const auto& e : trace) {
     // The outcome is the "done" line's; the status event that completes the run repeats it.
     if (e.event == "status" && e.status != "running") continue;
+    // The property summary says it: "held (pending at end: …)".
+    if (e.event == "pending") continue;
     out += "tick " + std::to_string(e.tick) + ": ";
     if (e.event == "select") {
       out += e.adaptable + " selects " + e.alternative + " (" + e.requirement + ")";

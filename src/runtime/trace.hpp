@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,7 +18,8 @@ namespace uabt::runtime {
 // One line of the trace, with tick, event and what it concerns.
 struct TraceEvent {
   std::uint64_t tick = 0;
-  std::string event;  // select | uplink | status | node | condition | error | violation | done
+  // select | uplink | status | node | condition | error | violation | pending | done
+  std::string event;
   std::string adaptable, alternative, requirement;
   std::string verdict;  // uplink: accepted | rejected; done: success | failure | timeout | error
   std::string uplink;   // the package, for uplink events
@@ -33,6 +35,9 @@ struct TraceEvent {
   // violation: the property (requirement), its role and the values it read at `tick`
   std::string role;
   std::vector<std::pair<std::string, std::string>> values;
+  // pending (at the end of a run): the property held only because the run ended before its
+  // deadline; `message` says what is still due, `since` the tick that triggered it.
+  std::optional<std::uint64_t> since;
 };
 
 // Records, into a trace, every status change of every node ("node" events, BT.CPP's

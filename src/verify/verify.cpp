@@ -8,6 +8,7 @@
 
 #include "smt/encoder.hpp"
 #include "verify/coverage.hpp"
+#include "verify/division.hpp"
 #include "verify/domain_check.hpp"
 #include "verify/node.hpp"
 
@@ -234,6 +235,7 @@ Result verify_mission(const load::Mission& mission, const Options& options) {
     result.statistics.prefiltered += o.node.statistics.prefiltered;
   }
   for (auto& f : skipped.findings) result.findings.push_back(std::move(f));
+  for (auto& f : check_divisions(mission, options)) result.findings.push_back(std::move(f));
   for (const auto& id : order) {
     for (auto* list : {&analysed, &skipped.coverage})
       for (auto& c : *list)

@@ -102,6 +102,34 @@ TEST(Reader, MainTreeToExecuteWins) {
   EXPECT_EQ(doc.main()->id, "B");
 }
 
+// BT.CPP ignores a <root> attribute it does not know: a misspelt main_tree_to_execute would
+// silently run another tree, so it is an error at the attribute, read as meant.
+TEST(Reader, MisspeltMainTreeToExecuteIsAnErrorAtTheAttribute) {
+  for (const std::string trees : {"<BehaviorTree ID=\"A\"><Stop/></BehaviorTree>",
+                                  "<BehaviorTree ID=\"A\"><Stop/></BehaviorTree><BehaviorTree "
+                                  "ID=\"B\"><Stop/></BehaviorTree>"}) {
+    std::vector<Finding> findings;
+    const auto doc = parse_document(
+        "<root BTCPP_format=\"4\"\n      main_tree_to_exectue=\"A\">" + trees + "</root>", "f.xml",
+        findings);
+    ASSERT_TRUE(doc.has_value());
+    ASSERT_EQ(findings.size(), 1u) << describe(findings);
+    EXPECT_EQ(findings[0].check, "bt-structure");
+    EXPECT_EQ(findings[0].severity, Severity::error);
+    EXPECT_EQ(findings[0].message,
+              "unknown attribute 'main_tree_to_exectue' on <root>: BehaviorTree.CPP ignores it; "
+              "did you mean 'main_tree_to_execute'?");
+    EXPECT_EQ(findings[0].location.line, 2);
+    EXPECT_EQ(findings[0].location.column, 7);
+    ASSERT_NE(doc->main(), nullptr);
+    EXPECT_EQ(doc->main()->id, "A");
+  }
+  // An attribute that is no near miss is left alone, as BT.CPP does.
+  parse_clean(
+      "<root BTCPP_format=\"4\" author=\"me\"><BehaviorTree "
+      "ID=\"A\"><Stop/></BehaviorTree></root>");
+}
+
 TEST(Reader, PositionsOnCrlfAndMultiNodeLines) {
   // A tab counts as one column; CR does not start a line.
   const Document doc = parse_clean(

@@ -91,6 +91,30 @@ TEST(RegisteredNodes, MissingRequiredInputPort) {
             "the node fails when it reads it");
 }
 
+// BT.CPP refuses to register one ID twice: the second entry is the error, naming the first.
+TEST(RegisteredNodes, DuplicateIdIsAnErrorAtTheSecond) {
+  auto files = files_with("<Stop/>");
+  files["nodes.xml"] =
+      "<root BTCPP_format=\"4\">\n<TreeNodesModel>\n"
+      "  <Condition ID=\"OnDust\"/>\n"
+      "  <Condition ID=\"OnRocks\"/>\n"
+      "  <Action ID=\"Stop\"/>\n"
+      "    <Action ID=\"OnDust\"/>\n"
+      "</TreeNodesModel>\n</root>\n";
+  TempMission dir(files);
+  Mission m = load_dir(dir.dir());
+  const auto duplicate = with_check(m, "ref-duplicate-id");
+  ASSERT_EQ(duplicate.size(), 1u) << format_text(m.findings);
+  EXPECT_EQ(duplicate[0]->severity, Severity::error);
+  EXPECT_EQ(duplicate[0]->message, "node ID 'OnDust' is registered twice in nodes.xml");
+  EXPECT_EQ(duplicate[0]->location.file, "nodes.xml");
+  EXPECT_EQ(duplicate[0]->location.line, 6);
+  EXPECT_EQ(duplicate[0]->location.column, 5);
+  EXPECT_EQ(duplicate[0]->notes,
+            std::vector<std::string>{"first registered at nodes.xml:3:3 (as Condition): "
+                                     "BehaviorTree.CPP refuses to register an ID twice"});
+}
+
 TEST(RegisteredNodes, WithoutNodesXmlNothingIsChecked) {
   auto files = navigation_files(kTwoTerrains);
   files["alternatives/navigation/on_dust.xml"] =

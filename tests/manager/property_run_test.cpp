@@ -55,6 +55,37 @@ TEST(MissionProperties, CuriosityHoldsItsPropertiesInItsScenarios) {
   }
 }
 
+// An obligation still open when the run ends (the arm closes in the last tick, so the stop
+// it asks for within 3 ticks never comes) holds, as FRET's finite-trace meaning says; the
+// summary and the trace say it is pending, what is due and since which tick.
+TEST(MissionProperties, AnObligationOpenAtTheEndIsHeldButPending) {
+  auto files = uabt::testing::mission_files("msl_curiosity");
+  files["requirements.fret"] +=
+      "Park: upon CloseToolArm.success the rover shall within 3 ticks satisfy Stop.running\n";
+  uabt::testing::TempMission dir(files);
+  const ManagerRun run = run_in(dir.dir(), "dusty_start.json", compile::SelectionStyle::reactive);
+  ASSERT_EQ(run.verdict, "success");
+  const auto& park = property(run, "Park");
+  EXPECT_EQ(park.verdict, monitor::Verdict::held);
+  EXPECT_EQ(park.pending, "Stop.running within 3 ticks");
+  EXPECT_EQ(park.pending_since, run.ticks) << "the arm closes in the last tick";
+  EXPECT_FALSE(property(run, "NoDrillAway").pending_since);
+  EXPECT_FALSE(run.guarantees_failed);
+  const std::string last = std::to_string(run.ticks);
+  EXPECT_NE(property_summary(run).find("property Park: held (pending at end: Stop.running within "
+                                       "3 ticks, triggered at tick " +
+                                       last + ")\n"),
+            std::string::npos)
+      << property_summary(run);
+  EXPECT_NE(trace_json_lines(run.trace).find(
+                "{\"tick\":" + last +
+                ",\"event\":\"pending\",\"requirement\":\"Park\",\"role\":\"guarantee\","
+                "\"obligation\":\"Stop.running within 3 ticks\",\"since\":" +
+                last + "}"),
+            std::string::npos)
+      << trace_json_lines(run.trace);
+}
+
 TEST(MissionProperties, ShortDriveDrillsAwayFromTheTarget) {
   const ManagerRun run = run_in(curiosity(), "short_drive.json", compile::SelectionStyle::sequence);
   EXPECT_EQ(run.status, NodeStatus::success) << "the tree itself completes";

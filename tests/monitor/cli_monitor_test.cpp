@@ -108,6 +108,78 @@ TEST(MonitorCli, BadTracesAreErrorsWithFileAndLine) {
   EXPECT_EQ(uabt_in(files.dir(), "monitor r.fret no_such.jsonl").exit_code, 2);
 }
 
+// A requirements file with no requirement (only comments, or nothing) checks nothing: that is
+// no pass but an input error naming the file.
+TEST(MonitorCli, NothingToMonitorIsAnInputError) {
+  TempMission files(Files{{"empty.fret", "# nothing stated yet\n"},
+                          {"run.jsonl", "{\"tick\": 0, \"state\": {\"arm_open\": false}}\n"}});
+  for (const std::string format : {"text", "json"}) {
+    const CliRun run = uabt_in(files.dir(), "monitor empty.fret run.jsonl --format " + format);
+    EXPECT_EQ(run.exit_code, 2) << run.out;
+    EXPECT_EQ(run.out, "empty.fret: error: nothing to monitor: the file states no requirement\n");
+  }
+}
+
+// An obligation still open when the trace ends holds (FRET's finite-trace meaning), and the
+// report says it is pending: what is due and the tick that triggered it.
+TEST(MonitorCli, AnObligationOpenAtTheEndIsHeldButPending) {
+  TempMission files(Files{
+      {"r.fret",
+       "Stop: upon OnMud the rover shall within 5 ticks satisfy stopped\n"
+       "Arm: the rover shall never satisfy arm_open\n"},
+      {"run.jsonl",
+       "{\"tick\": 0, \"state\": {\"OnMud\": false, \"stopped\": false, \"arm_open\": false}}\n"
+       "{\"tick\": 1, \"state\": {\"OnMud\": true}}\n"
+       "{\"tick\": 2, \"state\": {\"stopped\": true, \"OnMud\": false}}\n"
+       "{\"tick\": 3, \"state\": {\"stopped\": false, \"OnMud\": true}}\n"}});
+  const CliRun text = uabt_in(files.dir(), "monitor r.fret run.jsonl");
+  EXPECT_EQ(text.exit_code, 0) << text.out;
+  EXPECT_EQ(text.out,
+            "r.fret:1:7: Stop: held (pending at end: stopped within 5 ticks, triggered at tick 3)\n"
+            "r.fret:2:6: Arm: held\n"
+            "verdict: pass (4 ticks; 2 held, 0 violated, 0 not monitored)\n");
+  const CliRun json = uabt_in(files.dir(), "monitor r.fret run.jsonl --format json");
+  EXPECT_EQ(json.exit_code, 0) << json.out;
+  const auto doc = nlohmann::json::parse(json.out);
+  EXPECT_EQ(doc["requirements"][0]["verdict"], "held");
+  EXPECT_EQ(doc["requirements"][0]["pending"]["obligation"], "stopped within 5 ticks");
+  EXPECT_EQ(doc["requirements"][0]["pending"]["since"], 3);
+  EXPECT_TRUE(doc["requirements"][1]["pending"].is_null());
+  // Discharged before the end: nothing pending.
+  files.write(
+      "done.jsonl",
+      "{\"tick\": 0, \"state\": {\"OnMud\": true, \"stopped\": false, \"arm_open\": false}}\n"
+      "{\"tick\": 1, \"state\": {\"stopped\": true}}\n");
+  EXPECT_EQ(uabt_in(files.dir(), "monitor r.fret done.jsonl").out,
+            "r.fret:1:7: Stop: held\nr.fret:2:6: Arm: held\n"
+            "verdict: pass (2 ticks; 2 held, 0 violated, 0 not monitored)\n");
+  // Every timing with a deadline, in a mode scope and without a condition; a mode that ended
+  // closes its obligations.
+  files.write("timed.fret",
+              "Nx: upon OnMud the rover shall at the next timepoint satisfy stopped\n"
+              "Af: upon OnMud the rover shall after 2 ticks satisfy stopped\n"
+              "InM: In driving upon OnMud the rover shall within 4 ticks satisfy stopped\n"
+              "NoC: the rover shall within 9 ticks satisfy stopped\n");
+  const std::string start =
+      "{\"tick\": 0, \"state\": {\"OnMud\": false, \"stopped\": false, \"driving\": true}}\n";
+  files.write("late.jsonl", start + "{\"tick\": 1, \"state\": {}}\n" +
+                                "{\"tick\": 2, \"state\": {\"OnMud\": true}}\n");
+  EXPECT_EQ(
+      uabt_in(files.dir(), "monitor timed.fret late.jsonl").out,
+      "timed.fret:1:5: Nx: held (pending at end: stopped at the next tick, triggered at tick "
+      "2)\n"
+      "timed.fret:2:5: Af: held (pending at end: stopped after 2 ticks, triggered at tick 2)\n"
+      "timed.fret:3:6: InM: held (pending at end: stopped within 4 ticks, triggered at tick "
+      "2)\n"
+      "timed.fret:4:6: NoC: held (pending at end: stopped within 9 ticks, triggered at tick "
+      "0)\n"
+      "verdict: pass (3 ticks; 4 held, 0 violated, 0 not monitored)\n");
+  files.write("parked.jsonl", start + "{\"tick\": 1, \"state\": {\"OnMud\": true}}\n" +
+                                  "{\"tick\": 2, \"state\": {\"driving\": false}}\n");
+  EXPECT_NE(uabt_in(files.dir(), "monitor timed.fret parked.jsonl").out.find("InM: held\n"),
+            std::string::npos);
+}
+
 TEST(MonitorCli, TickPeriodTurnsTimeUnitsIntoTicks) {
   TempMission files(
       Files{{"r.fret", "Stop: upon OnMud the rover shall within 200 millisecs satisfy stopped\n"},

@@ -1,6 +1,7 @@
 // `uabt prove` and `uabt gate` from the command line: exit codes, formats, counterexample files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -146,6 +147,83 @@ TEST(ProveCli, BadWorldFileIsAUsageError) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("world.json:1:24: error: ticks [3, 1]: min is above max"), std::string::npos)
       << r.out;
+}
+
+// world.json follows the rules scenarios follow (DESIGN §8): every input error is exit 2 from
+// `prove` and a finding at its place in the gate, with "did you mean" for a likely typo.
+TEST(ProveCli, WorldFileIsCheckedAgainstTheMission) {
+  struct Case {
+    std::string world, at, message, check;
+  };
+  const std::vector<Case> cases = {
+      {R"({"actions": {"Drill": {"ticks": 2, "on_success": "IsBitCool = false; wind = 1000"}}})",
+       "1000",
+       "on_success of 'Drill': wind = 1000 is out of its range [0, 15] (declared integer at "
+       "domain.fret:",
+       "load-file"},
+      {R"({"actions": {"Drill": {"ticks": 2, "on_success": "IsBitCol = true"}}})", "IsBitCol =",
+       "on_success of 'Drill' writes 'IsBitCol', which is neither a variable of the domain nor a "
+       "condition of the mission (did you mean 'IsBitCool'?)",
+       "load-file"},
+      {R"({"actions": {"Drill": {"ticks": 2, "on_failure": "wind = 30 / wind"}}})", "/ wind",
+       "on_failure of 'Drill' divides by wind, which is zero in a state the domain allows (",
+       "guard-division-by-zero"},
+  };
+  for (const Case& c : cases) {
+    auto files = mission_files("sample_drilling");
+    files["domain.fret"] += "integer wind in [0, 15]\n";
+    files["world.json"] = c.world;
+    TempMission m(files);
+    const std::string column = std::to_string(c.world.find(c.at) + 1);
+    const CliRun prove = run("prove " + m.dir().string());
+    EXPECT_EQ(prove.exit_code, 2) << c.world << "\n" << prove.out;
+    EXPECT_NE(prove.out.find("world.json:1:" + column + ": error: " + c.message), std::string::npos)
+        << c.world << "\n"
+        << prove.out;
+    const CliRun gate = run("gate " + m.dir().string() + " --format json");
+    EXPECT_EQ(gate.exit_code, 1) << gate.out;
+    const auto j = nlohmann::json::parse(gate.out.substr(gate.out.find('{')));
+    bool found = false;
+    for (const auto& f : j["findings"])
+      found = found || (f["check"] == c.check && f["location"]["file"] == "world.json" &&
+                        f["location"]["column"] == std::stoi(column));
+    EXPECT_TRUE(found) << gate.out;
+  }
+  // A directory where the file should be is an input error too, not an absent world model.
+  auto files = mission_files("sample_drilling");
+  files.erase("world.json");
+  files["world.json/keep"] = "";
+  TempMission m(files);
+  const CliRun prove = run("prove " + m.dir().string());
+  EXPECT_EQ(prove.exit_code, 2) << prove.out;
+  EXPECT_NE(prove.out.find("world.json: error: is a directory, not a file"), std::string::npos)
+      << prove.out;
+}
+
+// BT.CPP ignores a misspelt main_tree_to_execute: with one tree that passed unnoticed, with
+// two it surfaced as prove-bounded. Either way it is one error at the attribute.
+TEST(ProveCli, MisspeltMainTreeIsOneErrorAtTheAttribute) {
+  for (const bool two_trees : {false, true}) {
+    auto files = mission_files("sample_drilling");
+    std::string& xml = files["mission.xml"];
+    xml.replace(xml.find("main_tree_to_execute"), 20, "main_tree_to_exectue");
+    if (two_trees)
+      xml.replace(
+          xml.find("</root>"), 7,
+          "  <BehaviorTree ID=\"Spare\">\n    <AlwaysSuccess/>\n  </BehaviorTree>\n</root>");
+    TempMission m(files);
+    const CliRun gate = run("gate " + m.dir().string() + " --out " + m.dir().string() + "/out");
+    EXPECT_EQ(gate.exit_code, 1) << gate.out;
+    EXPECT_NE(gate.out.find("mission.xml:5:24: error: unknown attribute 'main_tree_to_exectue' on "
+                            "<root>: BehaviorTree.CPP ignores it; did you mean "
+                            "'main_tree_to_execute'? [bt-structure]\n"),
+              std::string::npos)
+        << gate.out;
+    EXPECT_EQ(gate.out.find("prove-bounded"), std::string::npos) << gate.out;
+    EXPECT_EQ(std::count(gate.out.begin(), gate.out.end(), '\n'), 2)
+        << "one finding and the verdict\n"
+        << gate.out;
+  }
 }
 
 // A mission that states no guarantee: nothing to prove, said in one line, exit 0.

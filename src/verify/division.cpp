@@ -1,0 +1,162 @@
+#include "verify/division.hpp"
+
+#include <cctype>
+#include <optional>
+
+#include "smt/encoder.hpp"
+#include "verify/domain_check.hpp"
+#include "verify/session.hpp"
+
+namespace uabt::verify {
+
+namespace {
+
+using fretish::Expr;
+using fretish::ExprKind;
+using fretish::ExprPtr;
+
+struct Source {
+  ExprPtr expr;
+  SourceLocation where;  // the file, and a place when the expression has none
+  std::string what;      // "the guard of Req1"
+};
+
+// One division and the conditions under which it is evaluated at all.
+struct Division {
+  const Expr* division;
+  std::vector<ExprPtr> context;
+};
+
+// Every division whose divisor is not a number, with the conjuncts that hold wherever its
+// value matters: the other operands of each `&` on the way down, the premise of `=>`, the
+// condition (or its negation) of an ite branch.
+void collect(const ExprPtr& e, std::vector<ExprPtr>& context, std::vector<Division>& out) {
+  if (!e) return;
+  const auto& args = e->args;
+  if ((e->kind == ExprKind::div || e->kind == ExprKind::mod) && args.size() == 2 && args[1] &&
+      args[1]->kind != ExprKind::number)
+    out.push_back({e.get(), context});
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::size_t added = 0;
+    if (e->kind == ExprKind::logical_and) {
+      for (std::size_t j = 0; j < args.size(); ++j)
+        if (j != i) context.push_back(args[j]), ++added;
+    } else if (e->kind == ExprKind::implies && i == 1) {
+      context.push_back(args[0]), ++added;
+    } else if (e->kind == ExprKind::call && e->text == "ite" && args.size() == 3 && i > 0) {
+      context.push_back(i == 1 ? args[0] : fretish::make_expr(ExprKind::logical_not, {args[0]}));
+      ++added;
+    }
+    collect(args[i], context, out);
+    context.resize(context.size() - added);
+  }
+}
+
+// A domain with its parts asserted, ready for questions; nullopt when it is empty or undecided.
+struct DomainSession {
+  explicit DomainSession(const fretish::Domain& domain, const Options& options)
+      : encoder(domain), session(encoder, options, statistics) {
+    std::vector<Finding> ignored;  // the domain's own findings are verify's
+    ready = detail::check_domain(session, encoder.domain_parts(ignored), ignored) ==
+            detail::Answer::sat;
+  }
+  // A state where `question` holds.
+  std::optional<State> witness(const Expr& question, const SourceLocation& where) {
+    std::vector<Finding> typing;
+    const auto lowered = encoder.lower_condition(question, where, typing);
+    if (!lowered) return std::nullopt;
+    detail::Session::Scope scope(session);
+    session.add(*lowered);
+    if (session.check() != detail::Answer::sat) return std::nullopt;
+    return encoder.state_of(session.model());
+  }
+  smt::Encoder encoder;
+  Statistics statistics;
+  detail::Session session;
+  bool ready = false;
+};
+
+ExprPtr is_zero(const ExprPtr& divisor) {
+  return fretish::make_expr(ExprKind::eq, {divisor, fretish::make_number("0")});
+}
+
+}  // namespace
+
+std::string state_text(const State& state) {
+  std::string out;
+  for (const auto& [name, value] : state)
+    out += (out.empty() ? "" : ", ") + name + "=" + value.to_string();
+  return out;
+}
+
+std::optional<State> zero_divisor_state(const fretish::Domain& domain,
+                                        const fretish::ExprPtr& divisor, const Options& options) {
+  DomainSession d(domain, options);
+  if (!d.ready) return std::nullopt;
+  return d.witness(*is_zero(divisor), {});
+}
+
+std::vector<Finding> check_divisions(const load::Mission& mission, const Options& options) {
+  std::vector<Source> sources;
+  for (const auto& s : mission.selections)
+    if (s.guard) sources.push_back({s.guard, s.guard_location, "the guard of " + s.id});
+  for (const auto& r : mission.properties) {
+    std::string component = r.component;
+    for (char& c : component) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string what = (component == "environment" ? "assumption " : "guarantee ") + r.id;
+    if (r.scope && r.scope->condition) sources.push_back({r.scope->condition, r.location, what});
+    for (const auto& c : r.conditions)
+      if (c.expr) sources.push_back({c.expr, r.location, what});
+    if (r.response) sources.push_back({r.response, r.location, what});
+    if (r.timing.stop_condition) sources.push_back({r.timing.stop_condition, r.location, what});
+  }
+  for (const auto& a : mission.domain.assumptions)
+    if (a.expr) sources.push_back({a.expr, a.location, "assumption " + a.name});
+
+  std::vector<std::pair<const Source*, Division>> divisions;
+  for (const Source& s : sources) {
+    std::vector<Division> found;
+    std::vector<ExprPtr> context;
+    collect(s.expr, context, found);
+    for (auto& d : found) divisions.emplace_back(&s, std::move(d));
+  }
+  std::vector<Finding> out;
+  if (divisions.empty()) return out;
+
+  DomainSession domain(mission.domain, options);
+  if (!domain.ready) return out;
+  for (const auto& [source, d] : divisions) {
+    const ExprPtr divisor = d.division->args[1];
+    const ExprPtr zero = is_zero(divisor);
+    // With its context when that can be lowered (a property may read observables the domain
+    // does not type), else over the domain alone.
+    std::vector<ExprPtr> with_context = d.context;
+    with_context.push_back(zero);
+    const ExprPtr question =
+        with_context.size() > 1 ? fretish::make_expr(ExprKind::logical_and, with_context) : zero;
+    std::vector<Finding> typing;
+    const bool typed = domain.encoder.lower_condition(*question, source->where, typing).has_value();
+    const std::optional<State> found = domain.witness(typed ? *question : *zero, source->where);
+    if (!found) continue;
+    const State& witness = *found;
+    SourceLocation at = source->where;
+    if (d.division->range.begin_line > 0) {
+      at.line = d.division->range.begin_line;
+      at.column = d.division->range.begin_column;
+    }
+    Finding f = make_finding("guard-division-by-zero",
+                             "'" + fretish::to_fretish(*d.division) + "' in " + source->what +
+                                 " divides by zero when " + fretish::to_fretish(*divisor) +
+                                 " = 0, which the domain allows (" + state_text(witness) +
+                                 "): the solver then gives it any value",
+                             at);
+    f.witness = witness;
+    f.notes.push_back(
+        "make the divisor non-zero where it is used (e.g. `d != 0 & x / d > 2`), or multiply "
+        "out the comparison");
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+}  // namespace uabt::verify
