@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.hpp"
+
 namespace uabt::monitor {
 
 namespace {
@@ -90,7 +92,7 @@ std::string trace_report_json(const TraceReport& report) {
         p.reason.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(p.reason);
     if (!p.values.empty()) {
       nlohmann::ordered_json values = nlohmann::ordered_json::object();
-      for (const auto& [name, value] : p.values) values[name] = value;
+      for (const auto& [name, value] : p.values) values[name] = value_json(value);
       r["values"] = values;
     }
     out["requirements"].push_back(r);
@@ -117,7 +119,7 @@ std::string trace_report_text(const TraceReport& report) {
         out += where + p.id + role + ": violated from tick " + std::to_string(*p.first_violation);
         std::string values;
         for (const auto& [name, value] : p.values)
-          values += (values.empty() ? "" : ", ") + name + "=" + value;
+          values += (values.empty() ? "" : ", ") + name + "=" + value.to_string();
         out += values.empty() ? "\n" : " (" + values + ")\n";
         break;
       }

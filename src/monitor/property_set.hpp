@@ -26,9 +26,9 @@ struct PropertyResult {
   bool assumption = false;
   SourceLocation location;
   Verdict verdict = Verdict::held;
-  std::optional<std::uint64_t> first_violation;             // tick (as numbered by the caller)
-  std::vector<std::pair<std::string, std::string>> values;  // read at first_violation
-  std::string reason;                                       // not-monitored: why
+  std::optional<std::uint64_t> first_violation;       // tick (as numbered by the caller)
+  std::vector<std::pair<std::string, Value>> values;  // read at first_violation
+  std::string reason;                                 // not-monitored: why
   // A property an uplink added or restated mid-run is monitored from the tick after the swap;
   // one it removed or restated stops at the swap (both unset: the whole trace).
   std::optional<std::uint64_t> monitored_from, monitored_until;

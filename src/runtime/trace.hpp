@@ -32,7 +32,7 @@ struct TraceEvent {
   std::string message, script;                             // error: what BT.CPP would throw
   // violation: the property (requirement), its role and the values it read at `tick`
   std::string role;
-  std::vector<std::pair<std::string, std::string>> values;
+  std::vector<std::pair<std::string, Value>> values;
 };
 
 // Records, into a trace, every status change of every node ("node" events, BT.CPP's
