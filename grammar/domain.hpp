@@ -57,9 +57,7 @@ struct assumption_declaration
 // The period of one tick, for durations written in time units (DESIGN §10).
 struct kw_tick : keyword<TAO_PEGTL_ISTRING("tick")> {};
 struct tick_period : number {};
-struct tick_unit : sor<kw_unit, keyword<TAO_PEGTL_ISTRING("ms")>, keyword<TAO_PEGTL_ISTRING("us")>,
-                       keyword<TAO_PEGTL_ISTRING("s")>, keyword<TAO_PEGTL_ISTRING("min")>,
-                       keyword<TAO_PEGTL_ISTRING("h")>> {};
+struct tick_unit : sor<kw_unit, unit_abbreviation> {};
 struct tick_declaration : seq<kw_tick, ws, tick_period, ws, tick_unit> {};
 
 struct declaration : sor<boolean_declaration, integer_declaration, real_declaration,

@@ -60,7 +60,7 @@ struct probability
 
 // ---- timing ----------------------------------------------------------------------------
 struct duration_value : number {};
-struct time_unit : kw_unit {};
+struct time_unit : sor<kw_unit, unit_abbreviation> {};
 struct duration : seq<duration_value, ws, time_unit> {};
 struct timing_within : seq<kw_within, ws, duration> {};
 struct timing_for : seq<kw_for, ws, duration> {};

@@ -76,6 +76,11 @@ struct unit_word : sor<seq<TAO_PEGTL_ISTRING("tick"), optional_s>,
                        seq<TAO_PEGTL_ISTRING("minute"), optional_s>,
                        seq<TAO_PEGTL_ISTRING("hour"), optional_s>> {};
 struct kw_unit : seq<unit_word, not_at<id_char>> {};
+// uabt's abbreviations, as `tick 100 ms` in domain.fret writes them (not FRET's, and not reserved:
+// `s` and `h` stay names everywhere but after a duration).
+struct unit_abbreviation : sor<keyword<TAO_PEGTL_ISTRING("ms")>, keyword<TAO_PEGTL_ISTRING("us")>,
+                               keyword<TAO_PEGTL_ISTRING("s")>, keyword<TAO_PEGTL_ISTRING("min")>,
+                               keyword<TAO_PEGTL_ISTRING("h")>> {};
 
 struct reserved_word
     : sor<kw_after, kw_always, kw_and, kw_at, kw_before, kw_during, kw_eventually, kw_except,

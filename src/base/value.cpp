@@ -1,5 +1,7 @@
 #include "base/value.hpp"
 
+#include "base/number_text.hpp"
+
 namespace uabt {
 
 Value Value::of_bool(bool b) {
@@ -35,7 +37,7 @@ Value Value::of_enum(std::string literal) {
 std::string Value::to_string() const {
   switch (kind) {
     case Kind::boolean: return boolean ? "true" : "false";
-    case Kind::integer: return std::to_string(integer);
+    case Kind::integer: return number_text(integer);
     case Kind::real: return text;
     case Kind::enumeration: return text;
   }

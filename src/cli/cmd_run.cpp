@@ -51,7 +51,7 @@ std::optional<std::pair<std::int64_t, std::string>> parse_uplink_argument(
 // start (the mission does not pass the gate, the scenario does not fit the mission).
 void register_run(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, scenario, trace, selection, trace_level = "events";
+    std::string mission, scenario, trace, monitor_trace, selection, trace_level = "events";
     std::vector<std::string> uplinks;
     std::int64_t max_ticks = 0;
     bool smart_selection = false, stats = false;
@@ -62,14 +62,20 @@ void register_run(CLI::App& app, int& exit_code) {
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("--scenario", args->scenario, "scenario JSON (DESIGN §8)")
+  cmd->add_option("--scenario", args->scenario,
+                  "scenario JSON (missions/README.md, section \"scenarios/*.json\")")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option(
       "--uplink", args->uplinks,
       "TICK:DIR — an uplink package (a path from the current directory) arriving before tick "
       "TICK");
-  cmd->add_option("--trace", args->trace, "write the trace as JSON lines to FILE");
+  cmd->add_option("--trace", args->trace,
+                  "write the run's events (selections, uplinks, violations, …) as JSON lines to "
+                  "FILE");
+  cmd->add_option("--monitor-trace", args->monitor_trace,
+                  "write what the mission properties read, one {\"tick\": t, \"state\": {…}} "
+                  "line per tick, to FILE: the trace `uabt monitor` checks");
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--max-ticks", args->max_ticks,
@@ -100,6 +106,7 @@ void register_run(CLI::App& app, int& exit_code) {
       options.max_ticks = args->max_ticks;
       options.trace_nodes = args->trace_level == "nodes";
       options.smart_selection = args->smart_selection;
+      options.monitor_trace = !args->monitor_trace.empty();
       apply_selection(args->selection, options.gate.compile);
       manager::BehaviorTreeManager bt_manager(args->mission, std::move(scenario), options);
       for (const auto& [tick, package] : uplinks) bt_manager.add_uplink(tick, package);
@@ -117,6 +124,8 @@ void register_run(CLI::App& app, int& exit_code) {
       }
       if (!args->trace.empty())
         write_file_atomically(args->trace, runtime::trace_json_lines(run.trace));
+      if (!args->monitor_trace.empty())
+        write_file_atomically(args->monitor_trace, run.monitor_trace);
       if (run.error) {
         // GCC style: "file:line:col: error: …", then where in the running tree it happened.
         static const std::regex located(R"(^([^:]+:\d+:\d+): (.*)$)");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "base/number_text.hpp"
 #include "compile/guard_rewrite.hpp"
 #include "fretish/relation.hpp"
 
@@ -303,7 +304,7 @@ std::optional<State> cell_state(const SelectionSpace& space, std::size_t cell) {
           state.emplace_back(dim.name, Value::of_int(static_cast<std::int64_t>(v)));
         } else {
           const double v = representative(p);
-          state.emplace_back(dim.name, Value::of_real(v, p.point ? p.text : std::to_string(v)));
+          state.emplace_back(dim.name, Value::of_real(v, p.point ? p.text : number_text(v)));
         }
         break;
       }

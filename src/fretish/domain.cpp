@@ -1,9 +1,21 @@
 #include "fretish/domain.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 
 namespace uabt::fretish {
+
+std::optional<double> seconds_per_unit(std::string_view unit) {
+  std::string u(unit);
+  for (char& c : u) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (u.empty() || u.rfind("tick", 0) == 0) return std::nullopt;
+  if (u == "ms" || u.rfind("milli", 0) == 0) return 1e-3;
+  if (u == "us" || u.rfind("micro", 0) == 0) return 1e-6;
+  if (u == "min" || u.rfind("minute", 0) == 0) return 60;
+  if (u == "h" || u.rfind("hour", 0) == 0) return 3600;
+  return 1;  // s, sec, second(s)
+}
 
 const char* var_type_name(VarType t) {
   switch (t) {

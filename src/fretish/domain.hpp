@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/location.hpp"
@@ -43,6 +44,11 @@ struct Assumption {
   ExprPtr expr;
   SourceLocation location;
 };
+
+// Seconds per time unit as a duration or the tick period writes it: FRETISH's words
+// (millisecond, secs, minutes, hour, …) and uabt's abbreviations (ms, us, s, min, h), in any
+// case; nullopt for ticks.
+std::optional<double> seconds_per_unit(std::string_view unit);
 
 struct Domain {
   std::vector<Variable> variables;

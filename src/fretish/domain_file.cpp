@@ -213,7 +213,7 @@ class DomainBuilder {
         }
         value = std::strtod(period.c_str(), nullptr);
       }
-      if (child->is<g::tick_unit>()) per_unit = unit_seconds(child->text(text));
+      if (child->is<g::tick_unit>()) per_unit = seconds_per_unit(child->text(text));
     }
     const SourceLocation where = map.location(d.begin);
     if (!per_unit) {
@@ -234,18 +234,6 @@ class DomainBuilder {
     }
     domain_.tick_seconds = value * *per_unit;
     domain_.tick_location = where;
-  }
-
-  // ms, us, s, min, h, or FRETISH's words (millisecond, secs, minutes, …).
-  static std::optional<double> unit_seconds(std::string_view unit) {
-    std::string u(unit);
-    for (char& c : u) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (u == "ms" || u.rfind("milli", 0) == 0) return 1e-3;
-    if (u == "us" || u.rfind("micro", 0) == 0) return 1e-6;
-    if (u == "min" || u.rfind("minute", 0) == 0) return 60;
-    if (u == "h" || u.rfind("hour", 0) == 0) return 3600;
-    if (u.rfind("tick", 0) == 0) return std::nullopt;
-    return 1;  // s, sec, second(s)
   }
 
   void assumption(const SyntaxNode& d, std::string_view text, const TextMap& map,

@@ -224,6 +224,8 @@ ManagerRun BehaviorTreeManager::run() {
     }
     for (const PropertyViolation& v : properties.after_tick(runner.ticks()))
       result.trace.push_back(violation_event(v));
+    if (options_.monitor_trace)
+      result.monitor_trace += properties.monitor_trace_line(runner.ticks());
   }
   runner.engine().remove_observer(&tracer);
   for (const PropertyViolation& v : properties.at_end(runner.ticks()))

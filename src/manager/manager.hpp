@@ -26,6 +26,8 @@ struct ManagerOptions {
   bool trace_nodes = false;    // --trace-level nodes: every node status change, condition read
   // --smart-selection: EngineOptions::smart_selection (not BT.CPP's tick; same selections).
   bool smart_selection = false;
+  // --monitor-trace: record what the properties read, tick by tick (ManagerRun::monitor_trace).
+  bool monitor_trace = false;
 };
 
 struct ManagerRun {
@@ -40,6 +42,9 @@ struct ManagerRun {
   std::vector<monitor::PropertyResult> properties;  // the mission properties' verdicts
   bool guarantees_failed = false;                   // a guarantee violated or not monitored
   std::uint64_t condition_ticks = 0;                // ConditionCounter over the whole run
+  // With ManagerOptions::monitor_trace: a `uabt monitor` trace (JSON lines {"tick": t,
+  // "state": {…}}) of every name the mission properties read, one line per tick.
+  std::string monitor_trace;
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.hpp"
+
 namespace uabt::monitor {
 
 namespace {
@@ -93,7 +95,7 @@ std::string trace_report_json(const TraceReport& report) {
                                    : nlohmann::ordered_json(nullptr);
     if (!p.values.empty()) {
       nlohmann::ordered_json values = nlohmann::ordered_json::object();
-      for (const auto& [name, value] : p.values) values[name] = value;
+      for (const auto& [name, value] : p.values) values[name] = value_json(value);
       r["values"] = values;
     }
     out["requirements"].push_back(r);
@@ -120,7 +122,7 @@ std::string trace_report_text(const TraceReport& report) {
         out += where + p.id + role + ": violated from tick " + std::to_string(*p.first_violation);
         std::string values;
         for (const auto& [name, value] : p.values)
-          values += (values.empty() ? "" : ", ") + name + "=" + value;
+          values += (values.empty() ? "" : ", ") + name + "=" + value.to_string();
         out += values.empty() ? "\n" : " (" + values + ")\n";
         break;
       }

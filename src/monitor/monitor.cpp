@@ -1,6 +1,7 @@
 #include "monitor/monitor.hpp"
 
-#include <charconv>
+#include "base/number_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,23 +24,12 @@ std::optional<ScopeKind> scope_kind(const fretish::Scope& s) {
   return only ? ScopeKind::only_in : ScopeKind::in;
 }
 
-// Seconds per unit as FRETISH writes them; nullopt for ticks.
-std::optional<double> unit_seconds(const std::string& unit) {
-  if (unit.empty() || unit.rfind("tick", 0) == 0) return std::nullopt;
-  if (unit.rfind("micro", 0) == 0) return 1e-6;
-  if (unit.rfind("milli", 0) == 0) return 1e-3;
-  if (unit.rfind("sec", 0) == 0) return 1.0;
-  if (unit.rfind("minute", 0) == 0) return 60.0;
-  if (unit.rfind("hour", 0) == 0) return 3600.0;
-  return std::nullopt;
-}
-
 std::optional<std::uint64_t> duration_ticks(const fretish::Timing& t,
                                             std::optional<double> tick_seconds,
                                             std::string& reason) {
   const double value = std::strtod(t.duration.c_str(), nullptr);
   const std::string written = t.keyword + " " + t.duration + (t.unit.empty() ? "" : " " + t.unit);
-  const std::optional<double> per_unit = unit_seconds(t.unit);
+  const std::optional<double> per_unit = fretish::seconds_per_unit(t.unit);
   double ticks = value;
   if (per_unit) {
     if (!tick_seconds || *tick_seconds <= 0) {
@@ -213,20 +203,18 @@ bool RequirementMonitor::step(const std::vector<Val>& frame) {
   return now;
 }
 
-std::string value_text(const Val& v, const Symbols& symbols) {
+Value value_of(const Val& v, const Symbols& symbols) {
   switch (v.kind) {
-    case Val::Kind::missing: return "?";
-    case Val::Kind::boolean: return v.number != 0 ? "true" : "false";
-    case Val::Kind::symbol: return symbols.name(v.symbol);
-    case Val::Kind::number: {
-      // The shortest text that reads back the same number, as people write it: 50, 9.5, 0.1
-      // (printf's %g would give 5e+01).
-      char buffer[64];
-      const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v.number);
-      return ec == std::errc() ? std::string(buffer, end) : std::string("?");
-    }
+    case Val::Kind::missing: return Value::of_enum("?");
+    case Val::Kind::boolean: return Value::of_bool(v.number != 0);
+    case Val::Kind::symbol: return Value::of_enum(symbols.name(v.symbol));
+    case Val::Kind::number: return number_value(v.number);
   }
-  return "?";
+  return Value::of_enum("?");
+}
+
+std::string value_text(const Val& v, const Symbols& symbols) {
+  return value_of(v, symbols).to_string();
 }
 
 }  // namespace uabt::monitor

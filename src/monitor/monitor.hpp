@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/value.hpp"
 #include "fretish/domain.hpp"
 #include "fretish/requirement.hpp"
 #include "monitor/expression.hpp"
@@ -76,7 +77,10 @@ class RequirementMonitor {
   std::uint64_t violated_since_ = 0;
 };
 
-// The text of a value for reports: true/false, a number as written, a symbol's name.
+// A value for reports, typed: true/false, a number (number_text, number_json), a symbol's name;
+// a value the trace did not give is the name "?".
+Value value_of(const Val& v, const Symbols& symbols);
+// Its text: value_of(v, symbols).to_string().
 std::string value_text(const Val& v, const Symbols& symbols);
 
 }  // namespace uabt::monitor

@@ -159,7 +159,7 @@ PropertyResult PropertySet::result(std::size_t index) const {
   const auto& values = e.monitor->violation_values();
   for (std::size_t k = 0; k < slots.size() && k < values.size(); ++k)
     r.values.emplace_back(vocabulary_.variables->name(slots[k]),
-                          value_text(values[k], *vocabulary_.symbols));
+                          value_of(values[k], *vocabulary_.symbols));
   return r;
 }
 

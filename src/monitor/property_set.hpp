@@ -26,9 +26,9 @@ struct PropertyResult {
   bool assumption = false;
   SourceLocation location;
   Verdict verdict = Verdict::held;
-  std::optional<std::uint64_t> first_violation;             // tick (as numbered by the caller)
-  std::vector<std::pair<std::string, std::string>> values;  // read at first_violation
-  std::string reason;                                       // not-monitored: why
+  std::optional<std::uint64_t> first_violation;       // tick (as numbered by the caller)
+  std::vector<std::pair<std::string, Value>> values;  // read at first_violation
+  std::string reason;                                 // not-monitored: why
   // Held only because the trace ended before a deadline: what is still due ("stopped within
   // 2 ticks") and the tick that triggered it.
   std::string pending;

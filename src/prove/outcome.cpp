@@ -24,7 +24,7 @@ std::vector<std::string> table_lines(const Counterexample& cex) {
   std::vector<std::vector<std::string>> cells = {header};
   for (const TickRow& r : cex.rows) {
     std::vector<std::string> row = {std::to_string(r.tick), r.root};
-    for (const auto& [name, value] : r.values) row.push_back(value);
+    for (const auto& [name, value] : r.values) row.push_back(value.to_string());
     std::string actions;
     for (const auto& a : r.actions) actions += (actions.empty() ? "" : ", ") + a;
     row.push_back(actions);

@@ -172,7 +172,7 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
     row.tick = t;
     row.root = runtime::status_name(root);
     for (int slot : monitor->variables())
-      row.values.emplace_back(variables.name(slot), monitor::value_text(frame[slot], symbols));
+      row.values.emplace_back(variables.name(slot), monitor::value_of(frame[slot], symbols));
     const auto& log = runner.world().log();
     for (std::size_t i = log_before; i < log.size(); ++i) {
       if (log[i].event == runtime::LeafEvent::condition) continue;

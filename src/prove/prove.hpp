@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "base/location.hpp"
+#include "base/value.hpp"
 #include "bt/tree.hpp"
 #include "load/mission.hpp"
 #include "prove/world_model.hpp"
@@ -24,7 +25,7 @@ const char* verdict_name(Verdict v);
 struct TickRow {
   std::uint64_t tick = 0;
   std::string root;
-  std::vector<std::pair<std::string, std::string>> values;
+  std::vector<std::pair<std::string, Value>> values;
   std::vector<std::string> actions;  // "Drill started", "Drill failure"
 };
 

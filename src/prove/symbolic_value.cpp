@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "base/number_text.hpp"
+
 namespace uabt::prove {
 
 using runtime::ScriptValue;
@@ -21,7 +23,7 @@ z3::expr real_literal(z3::context& ctx, double value) {
   const auto [end, ec] =
       std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
   if (ec != std::errc() || !std::isfinite(value))
-    throw SymbolicUnsupported("the real " + std::to_string(value) + " has no exact value");
+    throw SymbolicUnsupported("the real " + number_text(value) + " has no exact value");
   return ctx.real_val(std::string(buffer, end).c_str());
 }
 

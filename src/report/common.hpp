@@ -15,9 +15,7 @@
 
 namespace uabt::report::detail {
 
-// A witness value as JSON: booleans and integers natively, reals as numbers when their exact
-// value is a decimal that a double prints back unchanged, else the exact text ("1/3").
-nlohmann::ordered_json value_json(const Value& value);
+// A witness as a JSON object of its values (uabt::value_json).
 nlohmann::ordered_json witness_json(const State& state);
 
 // "25.0%" — one decimal, "0.0%" when `whole` is 0.

@@ -58,10 +58,10 @@ std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex) {
   for (std::size_t t = 0; t < cex.ticks.size(); ++t) {
     for (const auto& [name, value] : cex.ticks[t].values) {
       TimelineCell& cell = rows[value_row[name]].cells[t];
-      cell.text = value;
-      cell.kind = value == "true"    ? CellKind::on
-                  : value == "false" ? CellKind::off
-                                     : CellKind::text;
+      cell.text = value.to_string();
+      cell.kind = value.kind != Value::Kind::boolean ? CellKind::text
+                  : value.boolean                    ? CellKind::on
+                                                     : CellKind::off;
     }
     for (auto& [action, is_running] : running)
       if (is_running) rows[action_row[action]].cells[t].kind = CellKind::running;

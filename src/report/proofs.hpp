@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/location.hpp"
+#include "base/value.hpp"
 
 namespace uabt::report {
 
@@ -18,7 +19,7 @@ namespace uabt::report {
 struct ProofTick {
   std::uint64_t tick = 0;
   std::string root;  // the root's status: RUNNING, SUCCESS, FAILURE
-  std::vector<std::pair<std::string, std::string>> values;   // what the property reads
+  std::vector<std::pair<std::string, Value>> values;         // what the property reads
   std::vector<std::pair<std::string, std::string>> actions;  // (action, "started"|"success"|…)
 };
 

@@ -1,6 +1,7 @@
 // The Proofs section of summary.md and the proofs in findings.json.
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.hpp"
 #include "report/common.hpp"
 #include "report/proof_timeline.hpp"
 #include "report/proofs.hpp"
@@ -123,7 +124,7 @@ nlohmann::ordered_json proofs_json(const Proofs& proofs) {
       Json trace = Json::array();
       for (const ProofTick& t : cex.ticks) {
         Json values = Json::object();
-        for (const auto& [name, value] : t.values) values[name] = value;
+        for (const auto& [name, value] : t.values) values[name] = value_json(value);
         Json actions = Json::array();
         for (const auto& [action, event] : t.actions)
           actions.push_back(event.empty() ? action : action + " " + event);

@@ -2,6 +2,10 @@
 
 #include <set>
 
+#include <nlohmann/json.hpp>
+
+#include "base/number_text.hpp"
+
 #include "runtime/blackboard.hpp"
 #include "runtime/observed_nodes.hpp"
 
@@ -189,6 +193,17 @@ std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
   for (std::size_t i : properties_->step(frame_, tick))
     out.push_back({tick, properties_->result(i)});
   return out;
+}
+
+std::string PropertyMonitor::monitor_trace_line(std::uint64_t tick) const {
+  nlohmann::ordered_json state = nlohmann::ordered_json::object();
+  for (std::size_t slot = 0; slot < frame_.size(); ++slot) {
+    if (frame_[slot].kind == monitor::Val::Kind::missing) continue;
+    state[variables_.name(static_cast<int>(slot))] =
+        value_json(monitor::value_of(frame_[slot], symbols_));
+  }
+  nlohmann::ordered_json line = {{"tick", tick}, {"state", std::move(state)}};
+  return line.dump() + "\n";
 }
 
 std::vector<PropertyViolation> PropertyMonitor::at_end(std::uint64_t last_tick) const {

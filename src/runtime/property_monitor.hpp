@@ -48,6 +48,11 @@ class PropertyMonitor : public Observer {
   // Returns the stopped properties violated at their last tick, not reported yet.
   std::vector<PropertyViolation> adopt(const load::Mission& mission, std::uint64_t last_tick);
 
+  // The tick's observables as one line of a `uabt monitor` trace, after after_tick(tick):
+  // {"tick": t, "state": {name: value, …}} with every name the properties read and the value
+  // it had (booleans, numbers and names as JSON booleans, numbers and strings), then "\n".
+  std::string monitor_trace_line(std::uint64_t tick) const;
+
   std::vector<monitor::PropertyResult> results() const { return properties_->results(); }
   bool empty() const { return properties_->size() == 0; }
   // A guarantee violated or not monitored: the run fails.

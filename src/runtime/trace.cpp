@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "base/diagnostics.hpp"
+#include "base/number_text.hpp"
 
 namespace uabt::runtime {
 
@@ -102,7 +103,7 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
     if (e.event == "violation") {
       j["role"] = e.role;
       Json values = Json::object();
-      for (const auto& [name, value] : e.values) values[name] = value;
+      for (const auto& [name, value] : e.values) values[name] = uabt::value_json(value);
       j["values"] = std::move(values);
     }
     if (!e.message.empty() && e.event != "pending") j["message"] = e.message;
@@ -156,7 +157,7 @@ std::string trace_summary(const std::vector<TraceEvent>& trace, const std::strin
       out += e.role + " " + e.requirement + " violated";
       std::string values;
       for (const auto& [name, value] : e.values)
-        values += (values.empty() ? "" : ", ") + name + "=" + value;
+        values += (values.empty() ? "" : ", ") + name + "=" + value.to_string();
       if (!values.empty()) out += " (" + values + ")";
     } else if (e.event == "status") {
       out += "mission " + e.status;

@@ -34,7 +34,7 @@ struct TraceEvent {
   std::string message, script;                             // error: what BT.CPP would throw
   // violation: the property (requirement), its role and the values it read at `tick`
   std::string role;
-  std::vector<std::pair<std::string, std::string>> values;
+  std::vector<std::pair<std::string, Value>> values;
   // pending (at the end of a run): the property held only because the run ended before its
   // deadline; `message` says what is still due, `since` the tick that triggered it.
   std::optional<std::uint64_t> since;

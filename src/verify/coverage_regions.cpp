@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "base/number_text.hpp"
 #include "verify/coverage_parts.hpp"
 
 namespace uabt::verify::detail {
@@ -260,8 +261,8 @@ RegionConstraint describe_range(const Space& space, std::size_t dim, std::uint64
   if (d.sort == smt::Sort::integer) {
     c.kind = RegionConstraint::Kind::interval;
     if (lo == 0 && hi + 1 == d.radix) return c;
-    c.lower = std::to_string(d.number(lo));
-    c.upper = std::to_string(d.number(hi));
+    c.lower = number_text(d.number(lo));
+    c.upper = number_text(d.number(hi));
     c.lower_value = static_cast<double>(d.number(lo));
     c.upper_value = static_cast<double>(d.number(hi));
     c.text =

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 
+#include "base/number_text.hpp"
 #include "smt/rational.hpp"
 #include "verify/prefilter.hpp"
 
@@ -35,11 +36,6 @@ struct End {
   bool strict = false;
   std::string text;
 };
-
-std::string number_text(double v) {
-  if (std::floor(v) == v && std::fabs(v) < 1e15) return std::to_string(static_cast<long long>(v));
-  return std::to_string(v);
-}
 
 struct Interval {
   End lower{-kInf, false, ""};

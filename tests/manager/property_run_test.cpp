@@ -95,14 +95,14 @@ TEST(MissionProperties, ShortDriveDrillsAwayFromTheTarget) {
   EXPECT_EQ(found[0]->requirement, "NoDrillAway");
   EXPECT_EQ(found[0]->role, "guarantee");
   EXPECT_EQ(found[0]->tick, 22u) << "MoveForward ends at tick 21; Drill starts at 22";
-  const std::vector<std::pair<std::string, std::string>> values = {{"Drill.running", "true"},
-                                                                   {"IsInLocation", "false"}};
+  const std::vector<std::pair<std::string, Value>> values = {
+      {"Drill.running", Value::of_bool(true)}, {"IsInLocation", Value::of_bool(false)}};
   EXPECT_EQ(found[0]->values, values);
   EXPECT_EQ(property(run, "NoDrillAway").first_violation, 22u);
   const std::string json = trace_json_lines(run.trace);
   EXPECT_NE(json.find("{\"tick\":22,\"event\":\"violation\",\"requirement\":\"NoDrillAway\","
-                      "\"role\":\"guarantee\",\"values\":{\"Drill.running\":\"true\","
-                      "\"IsInLocation\":\"false\"}}"),
+                      "\"role\":\"guarantee\",\"values\":{\"Drill.running\":true,"
+                      "\"IsInLocation\":false}}"),
             std::string::npos)
       << json;
 }
@@ -115,11 +115,11 @@ TEST(MissionProperties, UnknownTerrainNeedsTheReactiveSelection) {
   ASSERT_EQ(found.size(), 1u) << trace_summary(run);
   EXPECT_EQ(found[0]->requirement, "HoldOnUnknown");
   EXPECT_EQ(found[0]->tick, 11u) << "mud from tick 10; within 1 tick ends at 11";
-  const std::vector<std::pair<std::string, std::string>> values = {
-      {"navigation", "true"},
-      {"OnDust", "false"},
-      {"OnRocks", "false"},
-      {"navigation.selected", "on_rocks"}};
+  const std::vector<std::pair<std::string, Value>> values = {
+      {"navigation", Value::of_bool(true)},
+      {"OnDust", Value::of_bool(false)},
+      {"OnRocks", Value::of_bool(false)},
+      {"navigation.selected", Value::of_enum("on_rocks")}};
   EXPECT_EQ(found[0]->values, values);
 }
 

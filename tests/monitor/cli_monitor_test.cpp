@@ -49,7 +49,7 @@ TEST(MonitorCli, ReportsTheFirstViolationWithTheValuesRead) {
   EXPECT_EQ(doc["requirements"][0]["verdict"], "violated");
   EXPECT_EQ(doc["requirements"][0]["first_violation"], 3);
   EXPECT_TRUE(doc["requirements"][0]["reason"].is_null());
-  EXPECT_EQ(doc["requirements"][0]["values"]["stopped"], "false");
+  EXPECT_EQ(doc["requirements"][0]["values"]["stopped"], false);
   EXPECT_EQ(doc["requirements"][1]["verdict"], "held");
   EXPECT_TRUE(doc["requirements"][1]["first_violation"].is_null());
   EXPECT_EQ(doc["requirements"][3]["role"], "assumption");

@@ -9,6 +9,14 @@ namespace {
 
 using prove::Verdict;
 
+// What a counterexample row shows of each value: its text.
+std::vector<std::pair<std::string, std::string>> texts(
+    const std::vector<std::pair<std::string, Value>>& values) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [name, value] : values) out.emplace_back(name, value.to_string());
+  return out;
+}
+
 TEST(Prove, BrokenAlternativeIsViolatedAtTheFirstTick) {
   const prove::Result r = prove_dir(mission_dir("sample_drilling"));
   EXPECT_TRUE(r.complete);
@@ -21,8 +29,8 @@ TEST(Prove, BrokenAlternativeIsViolatedAtTheFirstTick) {
   ASSERT_EQ(cool.counterexample->rows.size(), 1u);
   const auto& row = cool.counterexample->rows[0];
   EXPECT_EQ(row.root, "RUNNING");
-  EXPECT_EQ(row.values, (std::vector<std::pair<std::string, std::string>>{{"Drill.running", "true"},
-                                                                          {"IsBitCool", "false"}}));
+  EXPECT_EQ(texts(row.values), (std::vector<std::pair<std::string, std::string>>{
+                                   {"Drill.running", "true"}, {"IsBitCool", "false"}}));
   EXPECT_EQ(row.actions, std::vector<std::string>{"Drill started"});
   const auto scenario = nlohmann::json::parse(cool.counterexample->scenario);
   EXPECT_EQ(scenario["max_ticks"], 1);
@@ -214,7 +222,7 @@ TEST(ProveMsl, TerrainChangeNeedsTheReactiveStyle) {
   const prove::Answer& a = answer(sequence, "RocksDrive");
   ASSERT_EQ(a.verdict, Verdict::violated);
   ASSERT_EQ(a.counterexample->tick, 2u);
-  const auto& last = a.counterexample->rows.back().values;
+  const auto last = texts(a.counterexample->rows.back().values);
   EXPECT_EQ(
       last,
       (std::vector<std::pair<std::string, std::string>>{

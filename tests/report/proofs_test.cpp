@@ -18,11 +18,17 @@ report::Proofs three_ticks() {
   cex.scenario = "{\"description\": \"<script>alert(1)</script>\"}\n";
   cex.scenario_file = "out dir/counterexamples/R<1>.json";
   cex.ticks = {
-      {1, "RUNNING", {{"Drill.running", "true"}, {"mode", "a<b"}}, {{"Drill", "started"}}},
-      {2, "RUNNING", {{"Drill.running", "true"}, {"mode", "a<b"}}, {}},
+      {1,
+       "RUNNING",
+       {{"Drill.running", Value::of_bool(true)}, {"mode", Value::of_enum("a<b")}},
+       {{"Drill", "started"}}},
+      {2,
+       "RUNNING",
+       {{"Drill.running", Value::of_bool(true)}, {"mode", Value::of_enum("a<b")}},
+       {}},
       {3,
        "SUCCESS",
-       {{"Drill.running", "false"}, {"mode", "x|y"}},
+       {{"Drill.running", Value::of_bool(false)}, {"mode", Value::of_enum("x|y")}},
        {{"Drill", "success"}, {"Cool Down", "started"}, {"Cool Down", "success"}}},
   };
   report::Proofs p;

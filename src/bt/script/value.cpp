@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "base/number_text.hpp"
+
 namespace uabt::bt::script {
 
 ScriptValue ScriptValue::of_bool(bool b) {
@@ -45,11 +47,10 @@ std::string ScriptValue::to_string() const {
   switch (kind) {
     case Kind::empty: return "";
     case Kind::boolean: return boolean ? "true" : "false";
-    case Kind::integer: return std::to_string(integer);
+    case Kind::integer: return number_text(integer);
     case Kind::real: {
-      char buffer[64];
-      const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, real);
-      std::string s(buffer, ec == std::errc() ? end : buffer);
+      // A real keeps a point so that it reads back as a real: 50.0, 9.5.
+      std::string s = number_text(real);
       if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // n: nan, inf
       return s;
     }
