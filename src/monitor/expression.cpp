@@ -73,6 +73,10 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
     }
     case ExprKind::identifier: {
       const Resolved r = resolve(e.text);
+      if (r.kind == Resolved::Kind::unknown && e.text == "FTP") {
+        n.kind = K::first_tick;  // FRET's first time point: (Z FALSE)
+        break;
+      }
       if (r.kind == Resolved::Kind::unknown) {
         error = "the trace has no variable '" + e.text + "'";
         return -1;
@@ -158,6 +162,7 @@ Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& err
     std::string ignored;
     now.push_back(eval(nodes_[static_cast<std::size_t>(p)].args[1], frame, ignored));
   }
+  first_tick_ = false;
   for (std::size_t i = 0; i < previous_nodes_.size(); ++i) {
     Previous& state = previous_[static_cast<std::size_t>(
         nodes_[static_cast<std::size_t>(previous_nodes_[i])].state)];
@@ -309,6 +314,7 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
       const Previous& p = previous_[static_cast<std::size_t>(n.state)];
       return p.seen ? p.value : arg(0);
     }
+    case K::first_tick: return Val::of_bool(first_tick_);
   }
   return {};
 }

@@ -54,8 +54,9 @@ using Resolver = std::function<Resolved(const std::string&)>;
 bool is_monitored_function(const std::string& name);
 
 // A FRETISH expression compiled for evaluation once per tick: FRET's operators, arithmetic,
-// absReal/absInt, minReal/maxReal/minInt/maxInt, ite, and preBool/preInt/preReal (the value at
-// the previous tick, or the first argument at the first tick).
+// absReal/absInt, minReal/maxReal/minInt/maxInt, ite, preBool/preInt/preReal (the value at
+// the previous tick, or the first argument at the first tick), and FRET's predefined FTP (true
+// at the first tick only) when no variable has that name.
 class CompiledExpression {
  public:
   // Fails (returns nullopt, with `error` set) for an unknown identifier or function.
@@ -96,7 +97,8 @@ class CompiledExpression {
     min,
     max,
     ite,
-    previous
+    previous,
+    first_tick
   };
   struct N {
     K kind = K::constant;
@@ -118,6 +120,7 @@ class CompiledExpression {
   };
   std::vector<Previous> previous_;
   std::vector<int> previous_nodes_;  // pre* nodes, outermost last
+  bool first_tick_ = true;           // FTP: no tick evaluated yet
 };
 
 }  // namespace uabt::monitor

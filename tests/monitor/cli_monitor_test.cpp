@@ -200,6 +200,17 @@ TEST(MonitorCli, ExpressionsMeanWhatFretFormalizes) {
        "integer n\n",
        {{{"n", "-7"}}},
        "held"},
+      // FRET's predefined FTP, as in its Lift+Cruise case study: FTP is (Z FALSE).
+      {"the sw shall always satisfy FTP | absReal(preReal(0.0, kias) - kias) <= 10.0",
+       "(H ((Z FALSE) | (absReal(preReal(0.0, kias) - kias) <= 10.0)))",
+       "",
+       {{{"kias", "50"}}, {{"kias", "55"}}, {{"kias", "70"}}},
+       "violated from tick 2 (kias=70)"},
+      {"the sw shall always satisfy FTP | absReal(preReal(0.0, kias) - kias) <= 10.0",
+       "(H ((Z FALSE) | (absReal(preReal(0.0, kias) - kias) <= 10.0)))",
+       "",
+       {{{"kias", "50"}}, {{"kias", "55"}}, {{"kias", "60"}}},
+       "held"},
       // Reals stay real.
       {"the sw shall always satisfy y / 2 > x",
        "(H (y / 2 > x))",
