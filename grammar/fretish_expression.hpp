@@ -27,7 +27,8 @@ struct op_mul : one<'*'> {};
 struct op_div : one<'/'> {};
 struct op_mod : kw_mod {};
 struct op_pow : one<'^'> {};
-struct op_negate : seq<one<'-'>, not_at<one<'>'>>> {};
+// A '-' written against a digit is the sign of a number (FRET's NUMBER token), not a negation.
+struct op_negate : seq<one<'-'>, not_at<one<'>'>>, not_at<digit>> {};
 
 // Primary expressions.
 struct close_paren : one<')'> {};
@@ -45,14 +46,15 @@ struct function_name : identifier {};
 struct argument_separator : one<','> {};
 struct call_arguments : seq<expression, star<ws, argument_separator, ws, expression>> {};
 struct call : seq<function_name, ws, one<'('>, ws, opt<call_arguments, ws>, close_paren> {};
+// -1 ^ 2 is (-1) ^ 2 = 1, as in FRET; - 1 ^ 2 (a space after '-') is -(1 ^ 2).
+struct negative_number : seq<one<'-'>, number> {};
 struct bool_true : kw_true {};
 struct bool_false : kw_false {};
-struct primary
-    : sor<paren_expression, if_then, occurrence, number, bool_true, bool_false, call, identifier> {
-};
+struct primary : sor<paren_expression, if_then, occurrence, number, negative_number, bool_true,
+                     bool_false, call, identifier> {};
 
 // Binary levels; each is a flat list folded by the AST builder (left or right).
-// -x ^ 2 is -(x ^ 2); x ^ -y is allowed; ^ is right-associative.
+// -x ^ 2 is -(x ^ 2), -2 ^ 2 is (-2) ^ 2; x ^ -y is allowed; ^ is right-associative.
 struct power_chain
     : seq<star<op_negate, ws>, primary, star<ws, op_pow, ws, star<op_negate, ws>, primary>> {};
 struct multiplicative : seq<power_chain, star<ws, sor<op_mul, op_div, op_mod>, ws, power_chain>> {};
@@ -76,5 +78,7 @@ struct expression_continuation : sor<one<'&', '|', '<', '>', '=', '+', '-', '*',
 // A standalone expression (domain assumptions, tests).
 struct end_of_expression : eof {};
 struct expression_text : seq<ws, expression, ws, end_of_expression> {};
+// An expression after `if … then …` is rewritten as FRET does (`A => B`), re-read alone.
+struct expression_span : seq<ws, expression, ws, eof> {};
 
 }  // namespace uabt::grammar

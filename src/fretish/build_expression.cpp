@@ -49,10 +49,41 @@ std::string unescape_quoted(std::string_view quoted) {
   return out;
 }
 
+// Marks every `if … then …` under `n`: FRET rewrites the text `if A then B` to `A => B` before
+// formalizing it, so `then` is an implication at the level of `->`, looser than `&` and `|`.
+// `if` becomes spaces and `then` becomes `=>` padded to its length, keeping every offset.
+void blank_if_then(const SyntaxNode& n, std::string& text) {
+  if (n.is<g::if_then>() && n.children.size() == 2) {
+    text.replace(n.begin, 2, "  ");
+    std::size_t then = n.children[0]->end;
+    while (then < text.size() && std::isspace(static_cast<unsigned char>(text[then]))) ++then;
+    if (then + 4 <= text.size()) text.replace(then, 4, "=>  ");
+  }
+  for (const auto& child : n.children) blank_if_then(*child, text);
+}
+
+bool has_if_then(const SyntaxNode& n) {
+  if (n.is<g::if_then>()) return true;
+  for (const auto& child : n.children)
+    if (has_if_then(*child)) return true;
+  return false;
+}
+
 }  // namespace
 
 ExprPtr ExpressionBuilder::build(const SyntaxNode& node) {
   try {
+    if (has_if_then(node)) {
+      std::string spelled(text_.substr(0, node.end));
+      blank_if_then(node, spelled);
+      // Parse the rewritten span alone: what stands before it becomes spaces.
+      std::fill(spelled.begin(), spelled.begin() + static_cast<std::ptrdiff_t>(node.begin), ' ');
+      ParseOutcome outcome = run_parse<g::expression_span>(spelled);
+      if (outcome.ok && outcome.root && outcome.root->children.size() == 1) {
+        ExpressionBuilder rewritten(spelled, map_, findings_);
+        return rewritten.visit(*outcome.root->children.front()).expr;
+      }
+    }
     return visit(node).expr;
   } catch (const Refusal& e) {
     findings_.push_back(make_finding("fretish-syntax", e.message, map_.location(e.offset)));
@@ -108,13 +139,41 @@ ExpressionBuilder::Built ExpressionBuilder::visit(const SyntaxNode& n) {
       throw Refusal{n.begin, why};
     return {make_number(std::move(literal), range)};
   }
-  if (n.is<g::bool_true>()) return {make_bool(true, range)};
-  if (n.is<g::bool_false>()) return {make_bool(false, range)};
+  if (n.is<g::negative_number>() && n.children.size() == 1) {
+    // FRET's NUMBER carries its sign: -1 ^ 2 is (-1) ^ 2.
+    std::vector<Built> args;
+    args.push_back(visit(*n.children[0]));
+    return make(ExprKind::negate, std::move(args), n.begin, n.end);
+  }
+  if (n.is<g::bool_true>() || n.is<g::bool_false>()) {
+    const bool value = n.is<g::bool_true>();
+    const std::string spelled(n.text(text_));
+    if (spelled != lower(spelled))
+      warn_not_fret(n.begin, "FRET reads only lower-case '" + lower(spelled) +
+                                 "' inside an expression: write '" + lower(spelled) + "'");
+    return {make_bool(value, range)};
+  }
   if (n.is<g::plain_identifier>() || n.is<g::quoted_identifier>())
     return {make_identifier(name_of(n), range)};
   // A wrapper the grammar adds around one expression node.
   if (n.children.size() == 1) return visit(*n.children.front());
   return {make_identifier(std::string(n.text(text_)), range)};
+}
+
+void ExpressionBuilder::warn_not_fret(std::size_t offset, const std::string& message) {
+  findings_.push_back(make_finding("fretish-not-fret", message, map_.location(offset)));
+}
+
+void ExpressionBuilder::check_operator(const SyntaxNode& op) {
+  const std::string_view spelled = op.text(text_);
+  if (op.is<g::op_relation>() && spelled == "==")
+    warn_not_fret(op.begin, "FRET has no '==': write '=' so that FRET can load the requirement");
+  // FRET's NUMBER takes a leading '-', so it reads `x-1` as `x` followed by `-1` and fails.
+  if (op.is<g::op_sub>() && op.end < text_.size() &&
+      std::isdigit(static_cast<unsigned char>(text_[op.end])))
+    warn_not_fret(op.begin,
+                  "FRET reads a '-' written against a number as its sign and cannot parse this "
+                  "subtraction: write a space after '-'");
 }
 
 void ExpressionBuilder::warn_mixed(const SyntaxNode& op, const char* inner_spelled_as) {
@@ -152,6 +211,7 @@ ExpressionBuilder::Built ExpressionBuilder::left_fold(const SyntaxNode& n) {
     std::vector<Built> args;
     args.push_back(std::move(acc));
     args.push_back(visit(*c[i + 1]));
+    check_operator(*c[i]);
     acc = make(operator_kind(*c[i], text_), std::move(args), c[0]->begin, c[i + 1]->end);
   }
   return acc;
@@ -195,6 +255,7 @@ ExpressionBuilder::Built ExpressionBuilder::relation(const SyntaxNode& n) {
   std::vector<Built> args;
   args.push_back(visit(*c[0]));
   args.push_back(visit(*c[2]));
+  check_operator(*c[1]);
   return make(relation_kind(c[1]->text(text_)), std::move(args), n.begin, n.end);
 }
 

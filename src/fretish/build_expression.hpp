@@ -50,6 +50,9 @@ class ExpressionBuilder {
   Built parenthesized(const SyntaxNode& node);
   Built call(const SyntaxNode& node);
   Built occurrence(const SyntaxNode& node);
+  // fretish-not-fret: accepted here, refused by FRET's own parser.
+  void warn_not_fret(std::size_t offset, const std::string& message);
+  void check_operator(const SyntaxNode& op);
   // fretish-precedence at `op`, the outer operator of a `xor`/`|` or `<->`/`->` mix.
   void warn_mixed(const SyntaxNode& op, const char* inner);
 

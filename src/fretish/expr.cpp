@@ -1,5 +1,6 @@
 #include "fretish/expr.hpp"
 
+#include <cctype>
 #include <string_view>
 #include <unordered_set>
 
@@ -211,10 +212,19 @@ void print(const Expr& e, std::string& out) {
         print_operand(*e.args[0], kNot, out);
       }
       return;
-    case ExprKind::negate:
+    case ExprKind::negate: {
       out += '-';
-      if (!e.args.empty()) print_operand(*e.args[0], kNegate, out);
+      if (e.args.empty()) return;
+      // "-1 ^ 2" would read as (-1) ^ 2 (a signed number): keep a space before a digit
+      // unless the operand is that number alone.
+      std::string operand;
+      print_operand(*e.args[0], kNegate, operand);
+      if (e.args[0]->kind != ExprKind::number && !operand.empty() &&
+          std::isdigit(static_cast<unsigned char>(operand[0])))
+        out += ' ';
+      out += operand;
       return;
+    }
     case ExprKind::logical_and:
     case ExprKind::logical_or:
       // n-ary: a nested node of the same kind keeps its parentheses so that the tree

@@ -105,6 +105,10 @@ class RequirementBuilder {
     for (std::string w; ws >> w;)
       if (w == "not" || w == "unless" || w == "except") ++negations;
     s.negated = negations % 2 == 1;
+    if (s.keyword == "not in")
+      findings_.push_back(make_finding(
+          "fretish-not-fret", "FRET spells this scope 'when not in' or 'if not in', not 'not in'",
+          map_.location(n.begin)));
     r.scope = std::move(s);
     return true;
   }
@@ -120,6 +124,15 @@ class RequirementBuilder {
         c.qualifier = words(part);
       } else if (part.is<g::truth_value>()) {
         const bool is_true = words(part) == "true";
+        // FRET's lexer takes a lower-case `true`/`false` for the expression literal, so its
+        // `IS (TRUE | FALSE)` fails on it; any other case is its keyword.
+        const std::string_view spelled = part.text(text_);
+        if (spelled == "true" || spelled == "false")
+          findings_.push_back(make_finding("fretish-not-fret",
+                                           std::string("FRET cannot parse a lower-case 'is ") +
+                                               std::string(spelled) + "': write 'is " +
+                                               (is_true ? "TRUE" : "FALSE") + "'",
+                                           map_.location(part.begin)));
         c.is_true_suffix = is_true;
         c.is_false_suffix = !is_true;
       } else if (is_expression_node(part)) {

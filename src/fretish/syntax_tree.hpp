@@ -58,8 +58,8 @@ using NodeRules = RuleSet<
     g::relation, g::additive, g::multiplicative, g::power_chain, g::op_iff, g::op_implies,
     g::op_xor, g::op_or, g::op_and, g::op_not, g::op_relation, g::op_add, g::op_sub, g::op_mul,
     g::op_div, g::op_mod, g::op_negate, g::paren_expression, g::if_then, g::occurrence,
-    g::occurrence_direction, g::call, g::function_name, g::number, g::bool_true, g::bool_false,
-    g::plain_identifier, g::quoted_identifier,
+    g::occurrence_direction, g::call, g::function_name, g::number, g::negative_number, g::bool_true,
+    g::bool_false, g::plain_identifier, g::quoted_identifier,
     // sentences
     g::nasa, g::freeform, g::scope_body, g::mode_scope_words, g::condition_scope_words,
     g::mode_or_condition_scope_words, g::mode_name, g::first_condition, g::next_condition,

@@ -17,7 +17,12 @@ std::optional<Val> to_val(const TraceValue& v, const fretish::Variable* declared
   Val out;
   switch (v.kind) {
     case TraceValue::Kind::boolean: out = Val::of_bool(v.boolean); break;
-    case TraceValue::Kind::number: out = Val::of_number(v.number); break;
+    case TraceValue::Kind::number:
+      // A declared type decides; an undeclared number is an integer as JSON wrote it.
+      out = (declared != nullptr ? declared->type == fretish::VarType::integer : v.integer)
+                ? Val::of_integer(v.number)
+                : Val::of_number(v.number);
+      break;
     case TraceValue::Kind::text: out = Val::of_symbol(symbols.id(v.text)); break;
   }
   if (declared == nullptr) return out;

@@ -65,9 +65,18 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
   N n;
   switch (e.kind) {
     case ExprKind::bool_literal: n.constant = Val::of_bool(e.bool_value); break;
-    case ExprKind::number: n.constant = Val::of_number(std::strtod(e.text.c_str(), nullptr)); break;
+    case ExprKind::number: {
+      const double x = std::strtod(e.text.c_str(), nullptr);
+      const bool integer = e.text.find_first_of(".eE") == std::string::npos;
+      n.constant = integer ? Val::of_integer(x) : Val::of_number(x);
+      break;
+    }
     case ExprKind::identifier: {
       const Resolved r = resolve(e.text);
+      if (r.kind == Resolved::Kind::unknown && e.text == "FTP") {
+        n.kind = K::first_tick;  // FRET's first time point: (Z FALSE)
+        break;
+      }
       if (r.kind == Resolved::Kind::unknown) {
         error = "the trace has no variable '" + e.text + "'";
         return -1;
@@ -153,6 +162,7 @@ Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& err
     std::string ignored;
     now.push_back(eval(nodes_[static_cast<std::size_t>(p)].args[1], frame, ignored));
   }
+  first_tick_ = false;
   for (std::size_t i = 0; i < previous_nodes_.size(); ++i) {
     Previous& state = previous_[static_cast<std::size_t>(
         nodes_[static_cast<std::size_t>(previous_nodes_[i])].state)];
@@ -184,6 +194,7 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
     }
     return v.number != 0;
   };
+  bool integers = true;  // every number operand read so far is an integer
   const auto number = [&](std::size_t i) -> std::optional<double> {
     const Val v = arg(i);
     if (!error.empty()) return std::nullopt;
@@ -191,8 +202,10 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
       error = std::string("a number is needed, got ") + kind_name(v.kind);
       return std::nullopt;
     }
+    integers = integers && v.integer;
     return v.number;
   };
+  const auto result = [&](double x) { return integers ? Val::of_integer(x) : Val::of_number(x); };
   switch (n.kind) {
     case K::constant: return n.constant;
     case K::variable: {
@@ -258,7 +271,7 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
     case K::abs: {
       const auto a = number(0);
       if (!a) return {};
-      return Val::of_number(n.kind == K::negate ? -*a : std::fabs(*a));
+      return result(n.kind == K::negate ? -*a : std::fabs(*a));
     }
     case K::add:
     case K::sub:
@@ -272,19 +285,25 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
       const auto b = a ? number(1) : std::nullopt;
       if (!b) return {};
       switch (n.kind) {
-        case K::add: return Val::of_number(*a + *b);
-        case K::sub: return Val::of_number(*a - *b);
-        case K::mul: return Val::of_number(*a * *b);
-        case K::pow: return Val::of_number(std::pow(*a, *b));
-        case K::min: return Val::of_number(std::fmin(*a, *b));
-        case K::max: return Val::of_number(std::fmax(*a, *b));
+        case K::add: return result(*a + *b);
+        case K::sub: return result(*a - *b);
+        case K::mul: return result(*a * *b);
+        case K::min: return result(std::fmin(*a, *b));
+        case K::max: return result(std::fmax(*a, *b));
+        case K::pow: {
+          // A negative integer exponent has a fraction for a result.
+          if (*b < 0) integers = false;
+          return result(std::pow(*a, *b));
+        }
         default: break;
       }
       if (*b == 0) {
         error = "division by zero";
         return {};
       }
-      return Val::of_number(n.kind == K::div ? *a / *b : std::fmod(*a, *b));
+      // Integers: quotient truncated toward zero, remainder with the sign of the dividend.
+      if (n.kind == K::div) return result(integers ? std::trunc(*a / *b) : *a / *b);
+      return result(std::fmod(*a, *b));
     }
     case K::ite: {
       const auto c = boolean(0);
@@ -295,6 +314,7 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
       const Previous& p = previous_[static_cast<std::size_t>(n.state)];
       return p.seen ? p.value : arg(0);
     }
+    case K::first_tick: return Val::of_bool(first_tick_);
   }
   return {};
 }

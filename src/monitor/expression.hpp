@@ -11,15 +11,20 @@
 namespace uabt::monitor {
 
 // The value of one variable at one tick. Enum literals and other names are interned symbols.
+// A number is an integer when its variable is declared integer, its literal or JSON value is
+// written without a fraction or exponent, or it is computed from integers: then `/` and `mod`
+// truncate toward zero, as FRET's targets (C, Lustre, SMV) compute them.
 struct Val {
   enum class Kind : std::uint8_t { missing, boolean, number, symbol };
   Kind kind = Kind::missing;
   double number = 0;  // booleans as 0/1
   int symbol = -1;
+  bool integer = false;  // a number of integer type
 
-  static Val of_bool(bool b) { return {Kind::boolean, b ? 1.0 : 0.0, -1}; }
-  static Val of_number(double x) { return {Kind::number, x, -1}; }
-  static Val of_symbol(int s) { return {Kind::symbol, 0, s}; }
+  static Val of_bool(bool b) { return {Kind::boolean, b ? 1.0 : 0.0, -1, false}; }
+  static Val of_number(double x) { return {Kind::number, x, -1, false}; }
+  static Val of_integer(double x) { return {Kind::number, x, -1, true}; }
+  static Val of_symbol(int s) { return {Kind::symbol, 0, s, false}; }
 };
 
 // Names numbered in order of first use: the variables of a trace (one slot a name, shared by
@@ -49,8 +54,9 @@ using Resolver = std::function<Resolved(const std::string&)>;
 bool is_monitored_function(const std::string& name);
 
 // A FRETISH expression compiled for evaluation once per tick: FRET's operators, arithmetic,
-// absReal/absInt, minReal/maxReal/minInt/maxInt, ite, and preBool/preInt/preReal (the value at
-// the previous tick, or the first argument at the first tick).
+// absReal/absInt, minReal/maxReal/minInt/maxInt, ite, preBool/preInt/preReal (the value at
+// the previous tick, or the first argument at the first tick), and FRET's predefined FTP (true
+// at the first tick only) when no variable has that name.
 class CompiledExpression {
  public:
   // Fails (returns nullopt, with `error` set) for an unknown identifier or function.
@@ -91,7 +97,8 @@ class CompiledExpression {
     min,
     max,
     ite,
-    previous
+    previous,
+    first_tick
   };
   struct N {
     K kind = K::constant;
@@ -113,6 +120,7 @@ class CompiledExpression {
   };
   std::vector<Previous> previous_;
   std::vector<int> previous_nodes_;  // pre* nodes, outermost last
+  bool first_tick_ = true;           // FTP: no tick evaluated yet
 };
 
 }  // namespace uabt::monitor

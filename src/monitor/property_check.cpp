@@ -74,6 +74,7 @@ class PartChecker {
       case ExprKind::identifier: {
         if (const auto it = o_.variables.find(e.text); it != o_.variables.end()) return it->second;
         if (o_.literals.count(e.text) != 0) return Type::name;
+        if (e.text == "FTP") return Type::boolean;  // FRET's first time point
         if (const auto gone = o_.not_observable.find(e.text); gone != o_.not_observable.end()) {
           report("property-reference",
                  "'" + e.text + "' is not an observable of the run: " + gone->second, e);

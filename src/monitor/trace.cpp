@@ -75,6 +75,7 @@ std::optional<Trace> read_trace(const std::string& content, const std::string& f
       } else if (v.is_number()) {
         value.kind = TraceValue::Kind::number;
         value.number = v.get<double>();
+        value.integer = v.is_number_integer();
         if (!std::isfinite(value.number)) {
           reader.error(line, 1, "'" + name + "' is not a finite number");
           continue;

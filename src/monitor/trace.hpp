@@ -15,6 +15,7 @@ struct TraceValue {
   enum class Kind { boolean, number, text } kind = Kind::boolean;
   bool boolean = false;
   double number = 0;
+  bool integer = false;  // the JSON number has no fraction or exponent
   std::string text;
 };
 

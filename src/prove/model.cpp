@@ -54,6 +54,7 @@ constexpr long long kMaxValues = 4096;
 
 bool uses_previous(const fretish::Expr& e) {
   if (e.kind == fretish::ExprKind::call && e.text.rfind("pre", 0) == 0) return true;
+  if (e.kind == fretish::ExprKind::identifier && e.text == "FTP") return true;
   for (const auto& a : e.args)
     if (a && uses_previous(*a)) return true;
   return false;
@@ -217,7 +218,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
         continue;
       }
       if (uses_previous(*part)) {
-        p.unsupported = "preBool/preInt/preReal are not supported by prove";
+        p.unsupported = "preBool/preInt/preReal and FTP are not supported by prove";
         break;
       }
       std::string error;

@@ -182,7 +182,8 @@ std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
     } else if (v->kind == ScriptValue::Kind::boolean) {
       value = monitor::Val::of_bool(v->boolean);
     } else if (v->is_number()) {
-      value = monitor::Val::of_number(v->as_double());
+      value = v->kind == ScriptValue::Kind::integer ? monitor::Val::of_integer(v->as_double())
+                                                    : monitor::Val::of_number(v->as_double());
     } else {
       value = monitor::Val::of_symbol(symbols_.id(v->text));
     }

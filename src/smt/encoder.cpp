@@ -27,6 +27,12 @@ Sort sort_of(VarType t) {
 // than its power operator.
 constexpr unsigned long kMaxExpandedExponent = 64;
 
+// a / b on integers truncated toward zero. SMT-LIB's div is Euclidean, which agrees with
+// truncation for a non-negative dividend.
+z3::expr truncated_quotient(const z3::expr& a, const z3::expr& b) {
+  return z3::ite(a >= 0, a / b, -((-a) / b));
+}
+
 }  // namespace
 
 Encoder::Encoder(const fretish::Domain& domain) : domain_(domain) {
@@ -168,12 +174,17 @@ Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
       return {acc, sort};
     }
     case ExprKind::div: {
-      // Int / Int is Z3's (SMT-LIB) integer division; anything else is real division.
+      // Int / Int truncates toward zero as FRET's targets do; anything else is real division.
       const Sort target = common_sort(*e.args[0], *e.args[1]);
-      return {operand(*e.args[0], target) / operand(*e.args[1], target), sort};
+      const z3::expr a = operand(*e.args[0], target), b = operand(*e.args[1], target);
+      if (!a.is_int() || !b.is_int()) return {a / b, sort};
+      return {truncated_quotient(a, b), sort};
     }
-    case ExprKind::mod:
-      return {z3::mod(operand(*e.args[0], sort), operand(*e.args[1], sort)), sort};
+    case ExprKind::mod: {
+      // The remainder of the truncated quotient: it has the sign of the dividend.
+      const z3::expr a = operand(*e.args[0], sort), b = operand(*e.args[1], sort);
+      return {a - b * truncated_quotient(a, b), sort};
+    }
     case ExprKind::pow: {
       const Expr& exponent = *e.args[1];
       if (exponent.kind == ExprKind::number && is_integer_literal(exponent.text) &&

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 
 #include "smt/rational.hpp"
 
@@ -60,11 +61,10 @@ bool has_literal(const Variable& v, const std::string& name) {
   return false;
 }
 
-// SMT-LIB: a = b*q + r with 0 <= r < |b|.
-std::int64_t euclid_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b, r = a % b;
-  if (r < 0) q += b > 0 ? -1 : 1;
-  return q;
+// FRET's targets (C, Lustre, SMV): the quotient is truncated toward zero.
+std::int64_t truncated_div(std::int64_t a, std::int64_t b) {
+  if (a == std::numeric_limits<std::int64_t>::min() && b == -1) throw EvaluationError("overflow");
+  return a / b;
 }
 
 class Evaluator {
@@ -238,10 +238,10 @@ class Evaluator {
           return integer(out);
         case ExprKind::div:
           if (b.i == 0) throw EvaluationError("division by zero");
-          return integer(euclid_div(a.i, b.i));
+          return integer(truncated_div(a.i, b.i));
         case ExprKind::mod:
           if (b.i == 0) throw EvaluationError("division by zero");
-          return integer(a.i - b.i * euclid_div(a.i, b.i));
+          return integer(a.i - b.i * truncated_div(a.i, b.i));
         case ExprKind::pow: {
           if (b.i < 0) return real(std::pow(static_cast<double>(a.i), static_cast<double>(b.i)));
           std::int64_t acc = 1;

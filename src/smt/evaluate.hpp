@@ -17,7 +17,8 @@ struct EvaluationError : std::runtime_error {
 
 // The truth value of a condition in a state, computed directly from the expression (no
 // solver), so that it can check what the solver claims. Exact for booleans, enums and
-// integers (SMT-LIB integer division and mod); reals use the state's double approximation.
+// integers (division and mod truncated toward zero, as FRET's targets); reals use the state's
+// double approximation.
 bool evaluate(const fretish::Expr& condition, const fretish::Domain& domain, const State& state);
 
 // Like evaluate, but nullopt instead of an EvaluationError.

@@ -67,13 +67,6 @@ Op relation(ExprKind k, bool real) {
   return static_cast<Op>(base + static_cast<int>(k) - static_cast<int>(ExprKind::eq));
 }
 
-// SMT-LIB: a = b*q + r with 0 <= r < |b|. b != 0.
-std::int64_t euclid_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b, r = a % b;
-  if (r < 0) q += b > 0 ? -1 : 1;
-  return q;
-}
-
 }  // namespace
 
 CompiledCondition::CompiledCondition(const Expr& condition, const smt::Typing& typing,
@@ -292,7 +285,8 @@ std::optional<bool> CompiledCondition::value(const std::int64_t* assignment) con
           none = true;
           break;
         }
-        const std::int64_t q = euclid_div(x, y);
+        // Truncated toward zero, as FRET's targets (and smt::evaluate) divide integers.
+        const std::int64_t q = x / y;
         out.i = in.op == Op::div_i ? q : x - y * q;
         break;
       }

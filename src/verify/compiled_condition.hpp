@@ -12,8 +12,8 @@ namespace uabt::verify::detail {
 
 // A type-checked condition over discrete variables, compiled to a postfix program for fast
 // repeated evaluation during coverage counting (millions of assignments). Same semantics as
-// smt::evaluate (SMT-LIB integer division and mod; real sub-terms in double), except that a
-// division by zero or an overflow is "no value" that only matters where it reaches the
+// smt::evaluate (integer division and mod truncated toward zero; real sub-terms in double), except
+// that a division by zero or an overflow is "no value" that only matters where it reaches the
 // result: `x = 0 | 10 / x > 1` has a value in every state. holds() throws
 // smt::EvaluationError when the result itself has no value.
 class CompiledCondition {

@@ -35,8 +35,33 @@ TEST(FretishExpression, BooleanPrecedenceFollowsFretFormalization) {
 TEST(FretishExpression, IfThenIsImplication) {
   EXPECT_EQ(grouped("if a then b"), "(a -> b)");
   EXPECT_EQ(grouped("if a then b | c"), "(a -> (b | c))");
-  EXPECT_EQ(grouped("x & if a then b"), "(x & (a -> b))");
   EXPECT_EQ(grouped("IF ! liquid_level_1 THEN valve_0"), "((!liquid_level_1) -> valve_0)");
+}
+
+// FRET rewrites `if A then B` to `A => B` before formalizing (SemanticsAnalyzer's
+// enterPre_condition / enterPost_condition), so `then` binds like `->`, looser than `&`, `|`
+// and `xor`, and tighter than `<->`.
+TEST(FretishExpression, IfThenInsideAnExpressionReadsAsFretRewritesIt) {
+  EXPECT_EQ(grouped("q & if p then r"), "((q & p) -> r)");
+  EXPECT_EQ(grouped("a | if p then r | b"), "((a | p) -> (r | b))");
+  EXPECT_EQ(grouped("a xor if p then r"), "((a xor p) -> r)");
+  EXPECT_EQ(grouped("if a then b <-> c"), "((a -> b) <-> c)");
+  EXPECT_EQ(grouped("if a then if b then c"), "(a -> (b -> c))");
+  EXPECT_EQ(grouped("(q & if p then r) | s"), "(((q & p) -> r) | s)");
+  EXPECT_EQ(grouped("f(q & if p then r) & s"), "(f(((q & p) -> r)) & s)");
+}
+
+// FRET's NUMBER token carries its sign: `-1 ^ 2` is (-1) ^ 2; with a space it is a negation.
+TEST(FretishExpression, SignedNumberUnderPower) {
+  EXPECT_EQ(grouped("x > -1 ^ 2"), "(x > ((-1) ^ 2))");
+  EXPECT_EQ(grouped("-2 ^ 2"), "((-2) ^ 2)");
+  EXPECT_EQ(grouped("- 1 ^ 2"), "(-(1 ^ 2))");
+  EXPECT_EQ(grouped("-x ^ 2"), "(-(x ^ 2))");
+  EXPECT_EQ(grouped("2 ^ -1 ^ 2"), "(2 ^ ((-1) ^ 2))");
+  // Between operands '-' is a subtraction: x-1 is x minus 1.
+  EXPECT_EQ(grouped("x-1 ^ 2"), "(x - (1 ^ 2))");
+  EXPECT_EQ(fretish::to_fretish(*expr("- 1 ^ 2")), "- 1 ^ 2");
+  EXPECT_EQ(fretish::to_fretish(*expr("-1 ^ 2")), "(-1) ^ 2");
 }
 
 TEST(FretishExpression, RelationsAndNegation) {
@@ -137,6 +162,9 @@ TEST(FretishExpression, ToFretishRoundTrips) {
       "(a <-> b) <-> c",
       "a <-> (b <-> c)",
       "if a then b",
+      "q & if p then r",
+      "-1 ^ 2 < x",
+      "- 1 ^ 2 < x",
       "x - 1 > 0",
       "x - (y - z) = 0",
       "-x ^ 2 < 4",

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "base/diagnostics.hpp"
 #include "fretish/parse.hpp"
 #include "fretish_test_support.hpp"
 
@@ -272,6 +273,46 @@ TEST(FretishRequirement, PrecedenceWarningInsideARequirement) {
   EXPECT_EQ(findings[0].check, "fretish-precedence");
   EXPECT_EQ(findings[0].location.line, 3);
   EXPECT_EQ(findings[0].location.column, 7 + 24);
+}
+
+// What uabt accepts and FRET's parser refuses is read as meant, with FRET's spelling as the fix.
+TEST(FretishRequirement, SpellingsFretRefusesAreWarned) {
+  std::vector<Finding> findings;
+  fretish::TextOrigin origin{"requirements.fret", 1, 5};
+  auto r = fretish::parse_requirement(
+      "not in idle mode, when speed == 0 is true the rover shall always satisfy x-1 < TRUE_LIMIT",
+      origin, findings);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(format_text(findings),
+            "requirements.fret:1:5: warning: FRET spells this scope 'when not in' or 'if not in', "
+            "not 'not in' [fretish-not-fret]\n"
+            "requirements.fret:1:34: warning: FRET has no '==': write '=' so that FRET can load "
+            "the requirement [fretish-not-fret]\n"
+            "requirements.fret:1:42: warning: FRET cannot parse a lower-case 'is true': write "
+            "'is TRUE' [fretish-not-fret]\n"
+            "requirements.fret:1:79: warning: FRET reads a '-' written against a number as its "
+            "sign and cannot parse this subtraction: write a space after '-' "
+            "[fretish-not-fret]\n");
+  ASSERT_TRUE(r->scope);
+  EXPECT_TRUE(r->scope->negated);
+  EXPECT_EQ(text_of(r->response), "((x - 1) < TRUE_LIMIT)");
+  EXPECT_TRUE(r->conditions[0].is_true_suffix);
+
+  // FRET's own spellings are silent.
+  findings.clear();
+  ASSERT_TRUE(fretish::parse_requirement(
+      "when not in idle mode, when speed = 0 is TRUE the rover shall always satisfy x - 1 < 2 "
+      "& true & y > -1",
+      origin, findings));
+  EXPECT_TRUE(findings.empty()) << format_text(findings);
+
+  findings.clear();
+  ASSERT_TRUE(
+      fretish::parse_requirement("the rover shall always satisfy TRUE | False", origin, findings));
+  ASSERT_EQ(findings.size(), 2u);
+  EXPECT_EQ(findings[0].message,
+            "FRET reads only lower-case 'true' inside an expression: write 'true'");
+  EXPECT_EQ(findings[1].check, "fretish-not-fret");
 }
 
 }  // namespace

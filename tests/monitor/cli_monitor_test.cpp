@@ -225,5 +225,107 @@ TEST(MonitorCli, FretExportAsItShips) {
   }
 }
 
+// The classes where uabt once disagreed with FRET's formalizer. Each case carries FRET's
+// formula for the sentence: semantics.json's ptExpanded for its key, filled with the fields as
+// FRET's SemanticsAnalyzer rewrites them (`if A then B` -> `A => B`); the oracle evaluates it on
+// the same trace and `uabt monitor` must give the same verdict.
+TEST(MonitorCli, ExpressionsMeanWhatFretFormalizes) {
+  struct Case {
+    const char* sentence;
+    const char* fret_formula;
+    const char* domain;  // declarations, or "" for types as JSON writes them
+    std::vector<std::map<std::string, std::string>> trace;  // JSON values a tick
+    const char* verdict;
+  };
+  const std::vector<Case> cases = {
+      // null,null,always: (H $post_condition$), post_condition "(q & p => r)".
+      {"the sw shall always satisfy q & if p then r",
+       "(H ((q & p) => r))",
+       "",
+       {{{"p", "false"}, {"q", "false"}, {"r", "false"}}},
+       "held"},
+      {"the sw shall always satisfy q & if p then r",
+       "(H ((q & p) => r))",
+       "",
+       {{{"p", "true"}, {"q", "true"}, {"r", "false"}}},
+       "violated from tick 0 (q=true, p=true, r=false)"},
+      // FRET's NUMBER carries its sign: -1 ^ 2 is 1.
+      {"the sw shall always satisfy x > -1 ^ 2",
+       "(H (x > -1 ^ 2))",
+       "",
+       {{{"x", "0"}}},
+       "violated from tick 0 (x=0)"},
+      {"the sw shall always satisfy x > -1 ^ 2", "(H (x > -1 ^ 2))", "", {{{"x", "2"}}}, "held"},
+      // Integers divide as integers: 1 / 2 is 0.
+      {"the sw shall always satisfy n / 2 > x",
+       "(H (n / 2 > x))",
+       "integer n, x\n",
+       {{{"n", "1"}, {"x", "0"}}},
+       "violated from tick 0 (n=1, x=0)"},
+      {"the sw shall always satisfy n mod 4 = -3 & n / -4 = -1",
+       "(H (n mod 4 = -3 & n / -4 = -1))",
+       "integer n\n",
+       {{{"n", "-7"}}},
+       "violated from tick 0 (n=-7)"},
+      {"the sw shall always satisfy n mod 4 = -3 & n / -4 = 1",
+       "(H (n mod 4 = -3 & n / -4 = 1))",
+       "integer n\n",
+       {{{"n", "-7"}}},
+       "held"},
+      // FRET's predefined FTP, as in its Lift+Cruise case study: FTP is (Z FALSE).
+      {"the sw shall always satisfy FTP | absReal(preReal(0.0, kias) - kias) <= 10.0",
+       "(H ((Z FALSE) | (absReal(preReal(0.0, kias) - kias) <= 10.0)))",
+       "",
+       {{{"kias", "50"}}, {{"kias", "55"}}, {{"kias", "70"}}},
+       "violated from tick 2 (kias=70)"},
+      {"the sw shall always satisfy FTP | absReal(preReal(0.0, kias) - kias) <= 10.0",
+       "(H ((Z FALSE) | (absReal(preReal(0.0, kias) - kias) <= 10.0)))",
+       "",
+       {{{"kias", "50"}}, {{"kias", "55"}}, {{"kias", "60"}}},
+       "held"},
+      // Reals stay real.
+      {"the sw shall always satisfy y / 2 > x",
+       "(H (y / 2 > x))",
+       "real y\ninteger x\n",
+       {{{"y", "1"}, {"x", "0"}}},
+       "held"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.sentence);
+    std::string jsonl;
+    std::vector<OracleState> oracle_trace;
+    const std::string domain = c.domain;
+    for (std::size_t t = 0; t < c.trace.size(); ++t) {
+      jsonl += "{\"tick\": " + std::to_string(t) + ", \"state\": {";
+      OracleState state;
+      bool first = true;
+      for (const auto& [name, value] : c.trace[t]) {
+        jsonl += std::string(first ? "" : ", ") + "\"" + name + "\": " + value;
+        first = false;
+        if (value == "true" || value == "false") {
+          state[name] = OracleValue{false, value == "true", 0, false};
+        } else {
+          const bool declared_real = domain.find("real " + name) != std::string::npos;
+          state[name] = OracleValue{true, false, std::stod(value), !declared_real};
+        }
+      }
+      jsonl += "}}\n";
+      oracle_trace.push_back(state);
+    }
+    const std::vector<bool> fret = PtFormula::parse(c.fret_formula).evaluate(oracle_trace);
+    Files files{{"r.fret", std::string("R: ") + c.sentence + "\n"}, {"run.jsonl", jsonl}};
+    std::string args = "monitor r.fret run.jsonl";
+    if (!domain.empty()) {
+      files["domain.fret"] = domain;
+      args += " --domain domain.fret";
+    }
+    TempMission dir(files);
+    const CliRun run = uabt_in(dir.dir(), args);
+    EXPECT_EQ(run.out.substr(0, run.out.find('\n')), std::string("r.fret:1:4: R: ") + c.verdict)
+        << run.out;
+    EXPECT_EQ(std::string(c.verdict) == "held", static_cast<bool>(fret.back())) << c.fret_formula;
+  }
+}
+
 }  // namespace
 }  // namespace uabt::testing

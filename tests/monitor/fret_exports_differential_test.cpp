@@ -63,11 +63,11 @@ void check_export(const std::string& file, std::size_t expected_requirements) {
           const int slot = *variables.find(v.name);
           if (v.type == fretish::VarType::boolean) {
             const bool b = unit(rng) < density[k];
-            state[v.name] = {false, b, 0};
+            state[v.name] = {false, b, 0, false};
             frame[static_cast<std::size_t>(slot)] = monitor::Val::of_bool(b);
           } else {
             const double x = std::uniform_int_distribution<int>(0, range[k])(rng);
-            state[v.name] = {true, false, x};
+            state[v.name] = {true, false, x, false};
             frame[static_cast<std::size_t>(slot)] = monitor::Val::of_number(x);
           }
         }

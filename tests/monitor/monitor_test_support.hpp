@@ -36,7 +36,7 @@ inline std::vector<OracleState> random_boolean_trace(std::mt19937& rng,
   std::vector<OracleState> trace(length);
   for (auto& state : trace)
     for (std::size_t i = 0; i < names.size(); ++i)
-      state[names[i]] = OracleValue{false, any(rng) < density[i], 0};
+      state[names[i]] = OracleValue{false, any(rng) < density[i], 0, false};
   return trace;
 }
 

@@ -10,6 +10,7 @@ struct PtFormula::Node {
   std::string op;  // "var", "num", "const", "call", or the operator
   std::string name;
   double number = 0;
+  bool integer = false;  // "num": written without '.' or 'e'
   bool truth = false;
   long lo = 0, hi = 0;  // bounded temporal operators: distances lo..hi
   bool bounded = false;
@@ -136,7 +137,14 @@ class Parser {
         return l;
     }
   }
+  bool at_signed_number() {
+    skip();
+    return i_ + 1 < s_.size() && s_[i_] == '-' &&
+           std::isdigit(static_cast<unsigned char>(s_[i_ + 1]));
+  }
   NodePtr power() {
+    // LTL.g4: unary '-' binds looser than '^' (-x ^ 2 is -(x ^ 2)), but a NUMBER keeps its sign.
+    if (!at_signed_number() && eat("-")) return make("neg", {power()});
     NodePtr l = unary();
     if (eat("^")) return make("^", {l, power()});
     return l;
@@ -157,7 +165,7 @@ class Parser {
   }
   NodePtr unary() {
     if (eat("!") || eat("~")) return make("!", {unary()});
-    if (eat("-")) return make("neg", {unary()});
+    if (!at_signed_number() && eat("-")) return make("neg", {unary()});
     skip();
     for (const char* op : {"Y", "Z", "H", "O"}) {
       if (i_ < s_.size() && s_[i_] == op[0] && i_ + 1 < s_.size() &&
@@ -196,14 +204,17 @@ class Parser {
       if (!eat(")")) fail("')' expected");
       return n;
     }
-    if (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.')) {
+    if (at_signed_number() ||
+        (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.'))) {
       const std::size_t start = i_;
+      if (s_[i_] == '-') ++i_;
       while (i_ < s_.size() &&
              (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == 'e'))
         ++i_;
       auto n = std::make_shared<Node>();
       n->op = "num";
       n->number = std::stod(s_.substr(start, i_ - start));
+      n->integer = s_.substr(start, i_ - start).find_first_of(".e") == std::string::npos;
       return n;
     }
     if (i_ < s_.size() && (std::isalpha(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_')) {
@@ -242,10 +253,10 @@ class Parser {
 using Column = std::vector<OracleValue>;
 
 OracleValue boolean(bool b) {
-  return {false, b, 0};
+  return {false, b, 0, false};
 }
-OracleValue number(double x) {
-  return {true, false, x};
+OracleValue number(double x, bool integer = false) {
+  return {true, false, x, integer};
 }
 
 Column eval(const Node& n, const std::vector<OracleState>& trace) {
@@ -256,6 +267,11 @@ Column eval(const Node& n, const std::vector<OracleState>& trace) {
   const auto truth = [&](std::size_t i, std::size_t t) {
     if (a[i][t].is_number) throw std::runtime_error("boolean expected for " + n.op);
     return a[i][t].truth;
+  };
+  const auto ints = [&](std::size_t t) {
+    for (const Column& c : a)
+      if (!c[t].integer) return false;
+    return true;
   };
   const auto num = [&](std::size_t i, std::size_t t) {
     if (!a[i][t].is_number) throw std::runtime_error("number expected for " + n.op);
@@ -268,7 +284,7 @@ Column eval(const Node& n, const std::vector<OracleState>& trace) {
       if (it == trace[t].end()) throw std::runtime_error("no value for " + n.name);
       out[t] = it->second;
     } else if (op == "num") {
-      out[t] = number(n.number);
+      out[t] = number(n.number, n.integer);
     } else if (op == "const") {
       out[t] = boolean(n.truth);
     } else if (op == "!") {
@@ -328,19 +344,30 @@ Column eval(const Node& n, const std::vector<OracleState>& trace) {
     } else if (op == ">=") {
       out[t] = boolean(num(0, t) >= num(1, t));
     } else if (op == "+") {
-      out[t] = number(num(0, t) + num(1, t));
+      out[t] = number(num(0, t) + num(1, t), ints(t));
     } else if (op == "-") {
-      out[t] = number(num(0, t) - num(1, t));
+      out[t] = number(num(0, t) - num(1, t), ints(t));
     } else if (op == "*") {
-      out[t] = number(num(0, t) * num(1, t));
+      out[t] = number(num(0, t) * num(1, t), ints(t));
     } else if (op == "/") {
-      out[t] = number(num(0, t) / num(1, t));
+      // Integers: C's division, truncated toward zero.
+      if (ints(t))
+        out[t] = number(static_cast<double>(static_cast<long long>(num(0, t)) /
+                                            static_cast<long long>(num(1, t))),
+                        true);
+      else
+        out[t] = number(num(0, t) / num(1, t));
     } else if (op == "mod") {
-      out[t] = number(std::fmod(num(0, t), num(1, t)));
+      if (ints(t))
+        out[t] = number(static_cast<double>(static_cast<long long>(num(0, t)) %
+                                            static_cast<long long>(num(1, t))),
+                        true);
+      else
+        out[t] = number(std::fmod(num(0, t), num(1, t)));
     } else if (op == "^") {
-      out[t] = number(std::pow(num(0, t), num(1, t)));
+      out[t] = number(std::pow(num(0, t), num(1, t)), ints(t) && num(1, t) >= 0);
     } else if (op == "neg") {
-      out[t] = number(-num(0, t));
+      out[t] = number(-num(0, t), a[0][t].integer);
     } else if (op == "call") {
       const std::string& f = n.name;
       if (f == "absReal" || f == "absInt") {

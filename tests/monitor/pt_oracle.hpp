@@ -5,7 +5,9 @@
 //   Boolean: ! & | xor -> => <-> <=>, TRUE FALSE true false
 //   Temporal: Y Z H O (unary), S T (binary), bounded O[..] H[..] with [<=n] [<n] [=n] [a,b],
 //             where n may be a sum such as 5+1
-//   Arithmetic and relations: + - * / mod ^ unary -, = != < <= > >=
+//   Arithmetic and relations: + - * / mod ^ unary -, = != < <= > >=; a '-' against a digit is
+//   the sign of the number (FRET's NUMBER); `-x ^ 2` is -(x ^ 2); on integers `/` and `mod`
+//   truncate toward zero (FRET's targets), numbers written without '.' or 'e' are integers
 //   Functions: absReal absInt minReal maxReal minInt maxInt ite preBool preInt preReal
 #include <map>
 #include <memory>
@@ -18,6 +20,7 @@ struct OracleValue {
   bool is_number = false;
   bool truth = false;
   double number = 0;
+  bool integer = false;  // a number of integer type
 };
 
 // One tick of a trace: variable name -> value (booleans with is_number false).

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <regex>
 
 #include "fretish/parse.hpp"
 #include "monitor/monitor.hpp"
@@ -124,6 +125,175 @@ TEST(MonitorSemantics, EveryPhraseMeansItsFretTemplate) {
     }
   }
   EXPECT_EQ(checked, static_cast<int>(kScopes.size() * kConditions.size() * kTimings.size()));
+}
+
+// FRET's own rewrite of a condition or response before it formalizes it
+// (SemanticsAnalyzer.js, enterPre_condition / enterPost_condition): the field's text in
+// parentheses, ` then ` made `=>` and `if` dropped; FRET's LTL.g4 precedence then applies.
+std::string fret_rewrite(const std::string& field) {
+  const std::regex then_word(" then ", std::regex::icase);
+  const std::regex if_word("(\\(| )(if )", std::regex::icase);
+  return std::regex_replace(std::regex_replace("(" + field + ")", then_word, " => "), if_word,
+                            "$1");
+}
+
+// Random FRETISH expressions over booleans c, d, integers i, j and the real x, in FRET's
+// spelling and without extra parentheses, so that precedence, `if … then` inside expressions,
+// signed numbers under `^`, and integer `/` and `mod` all decide the verdict.
+class ExpressionMaker {
+ public:
+  explicit ExpressionMaker(std::mt19937& rng) : rng_(rng) {}
+
+  std::string boolean(int depth) {
+    switch (depth <= 0 ? pick(3) : pick(8)) {
+      case 0: return pick(2) ? "c" : "d";
+      case 1: return pick(2) ? "true" : "false";
+      case 2:
+      case 3: return relation(depth - 1);
+      case 4: return "!(" + boolean(depth - 1) + ")";
+      case 5: {
+        static const char* const ops[] = {" & ", " | ", " xor ", " -> ", " <-> "};
+        return boolean(depth - 1) + ops[pick(5)] + boolean(depth - 1);
+      }
+      case 6: {
+        // FRET drops only an `if ` that follows a space or '(', so `if if` is not FRETISH.
+        std::string antecedent = boolean(depth - 1);
+        if (antecedent.rfind("if ", 0) == 0) antecedent = "(" + antecedent + ")";
+        return "if " + antecedent + " then " + boolean(depth - 1);
+      }
+      default: return "(" + boolean(depth - 1) + ")";
+    }
+  }
+
+ private:
+  int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
+
+  std::string relation(int depth) {
+    static const char* const ops[] = {" < ", " <= ", " = ", " != ", " > ", " >= "};
+    const bool integer = pick(2) == 0;
+    return numeric(depth, integer) + ops[pick(6)] + numeric(depth, integer);
+  }
+
+  std::string atom(bool integer) {
+    static const char* const ints[] = {"i", "j", "i", "j", "0", "2", "3", "-1", "-2"};
+    static const char* const reals[] = {"x", "x", "0.5", "-1.5", "i", "2"};
+    return integer ? ints[pick(9)] : reals[pick(6)];
+  }
+
+  std::string numeric(int depth, bool integer) {
+    if (depth <= 0) return atom(integer);
+    static const char* const int_divisors[] = {"2", "3", "-2"};
+    static const char* const real_divisors[] = {"2", "0.5", "-2.5"};
+    switch (pick(9)) {
+      case 0: return numeric(depth - 1, integer) + " + " + numeric(depth - 1, integer);
+      case 1: return numeric(depth - 1, integer) + " - " + numeric(depth - 1, integer);
+      case 2: return numeric(depth - 1, integer) + " * " + numeric(depth - 1, integer);
+      case 3:
+        return numeric(depth - 1, integer) + " / " +
+               (integer ? int_divisors[pick(3)] : real_divisors[pick(3)]);
+      case 4:
+        if (integer) return numeric(depth - 1, true) + " mod " + int_divisors[pick(3)];
+        return numeric(depth - 1, false) + " / " + real_divisors[pick(3)];
+      case 5: return atom(integer) + " ^ 2";
+      case 6: return "- " + numeric(depth - 1, integer);
+      case 7: return "(" + numeric(depth - 1, integer) + ")";
+      default: return atom(integer);
+    }
+  }
+
+  std::mt19937& rng_;
+};
+
+monitor::Resolved resolve_typed(const std::string& name) {
+  static const std::vector<std::string> names = {"m", "c", "d", "s", "i", "j", "x"};
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return {monitor::Resolved::Kind::variable, static_cast<int>(i)};
+  return {};
+}
+
+// A trace of m, c, d, s (booleans), i, j (integers in [-4, 4]) and x (a real).
+std::vector<OracleState> random_typed_trace(std::mt19937& rng, std::size_t length) {
+  auto trace = random_boolean_trace(rng, {"m", "c", "d", "s"}, length);
+  std::uniform_int_distribution<int> small(-4, 4);
+  static const double reals[] = {-2.5, -1.5, -0.5, 0, 0.5, 1, 2, 3.5};
+  std::uniform_int_distribution<int> real_index(0, 7);
+  for (auto& state : trace) {
+    state["i"] = OracleValue{true, false, static_cast<double>(small(rng)), true};
+    state["j"] = OracleValue{true, false, static_cast<double>(small(rng)), true};
+    state["x"] = OracleValue{true, false, reals[real_index(rng)], false};
+  }
+  return trace;
+}
+
+// Every scope, condition and timing, with generated conditions and responses: the monitor's
+// verdict equals FRET's formula for the sentence (its template, filled with the fields as FRET
+// rewrites them) at every tick.
+TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
+  if (!std::filesystem::exists(fret_reference("semantics.json"))) GTEST_SKIP() << "no FRET data";
+  const nlohmann::json semantics = fret_semantics();
+  std::mt19937 rng(24);
+  std::uniform_int_distribution<std::size_t> length(1, 14);
+  ExpressionMaker make(rng);
+  int sentences = 0, verdicts = 0, disagreements = 0;
+  std::string first;
+  for (const Phrase& scope : kScopes) {
+    for (const Phrase& condition : kConditions) {
+      for (const Phrase& timing : kTimings) {
+        for (int variant = 0; variant < 2; ++variant) {
+          const std::string cond = make.boolean(3), response = make.boolean(3);
+          std::string phrase = condition.text;
+          if (const auto at = phrase.find(" c"); at != std::string::npos)
+            phrase.replace(at, 2, " " + cond);
+          const std::string sentence =
+              scope.text + phrase + "the sw shall " + timing.text + "satisfy " + response;
+          const fretish::ParseResult parsed =
+              fretish::parse_requirements_file("X: " + sentence + "\n", "r.fret");
+          ASSERT_EQ(parsed.requirements.size(), 1u) << sentence;
+          const std::string key =
+              scope.key + "," + condition.key + "," + timing.key + ",satisfaction";
+          const std::string formula =
+              instantiate(semantics.at(key).at("ptExpanded").get<std::string>(),
+                          {{"scope_mode", "m"},
+                           {"regular_condition", fret_rewrite(cond)},
+                           {"post_condition", fret_rewrite(response)},
+                           {"stop_condition", "s"},
+                           {"duration", "3"}});
+          const PtFormula oracle = PtFormula::parse(formula);
+          ++sentences;
+          for (int k = 0; k < 6; ++k) {
+            const auto trace = random_typed_trace(rng, length(rng));
+            const std::vector<bool> expected = oracle.evaluate(trace);
+            std::string reason;
+            auto run = monitor::RequirementMonitor::compile(parsed.requirements[0], resolve_typed,
+                                                            {}, reason);
+            ASSERT_NE(run, nullptr) << sentence << ": " << reason;
+            for (std::size_t t = 0; t < trace.size(); ++t) {
+              std::vector<monitor::Val> frame;
+              for (const char* n : {"m", "c", "d", "s"})
+                frame.push_back(monitor::Val::of_bool(trace[t].at(n).truth));
+              for (const char* n : {"i", "j"})
+                frame.push_back(monitor::Val::of_integer(trace[t].at(n).number));
+              frame.push_back(monitor::Val::of_number(trace[t].at("x").number));
+              const bool got = run->step(frame);
+              ++verdicts;
+              if (run->failed() || got != expected[t]) {
+                if (disagreements++ == 0)
+                  first = sentence + "\nFRET: " + formula + "\ntick " + std::to_string(t) +
+                          (run->failed() ? ": " + run->error() : "") + "\n" + trace_text(trace);
+                break;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  RecordProperty("sentences", sentences);
+  RecordProperty("verdicts", verdicts);
+  EXPECT_EQ(disagreements, 0) << disagreements << " disagreements in " << verdicts
+                              << " verdicts of " << sentences << " sentences; the first:\n"
+                              << first;
+  EXPECT_EQ(sentences, static_cast<int>(2 * kScopes.size() * kConditions.size() * kTimings.size()));
 }
 
 TEST(MonitorClassify, WhatHasNoMeaningOnATraceIsNamed) {

@@ -24,13 +24,16 @@ bool eval(const std::string& text, const State& s) {
   return evaluate(*expr(text), kDomain, s);
 }
 
-TEST(Evaluate, IntegerDivisionAndModFollowSmtLib) {
-  EXPECT_TRUE(eval("x / y = -4", state(-7, 2)));
-  EXPECT_TRUE(eval("x mod y = 1", state(-7, 2)));
+// FRET's targets (C, Lustre, SMV) truncate the quotient toward zero; the remainder has the
+// sign of the dividend.
+TEST(Evaluate, IntegerDivisionAndModTruncateAsFretTargets) {
+  EXPECT_TRUE(eval("x / y = -3", state(-7, 2)));
+  EXPECT_TRUE(eval("x mod y = -1", state(-7, 2)));
   EXPECT_TRUE(eval("x / y = -3", state(7, -2)));
   EXPECT_TRUE(eval("x mod y = 1", state(7, -2)));
-  EXPECT_TRUE(eval("x / y = 4", state(-7, -2)));
-  EXPECT_TRUE(eval("x mod y = 1", state(-7, -2)));
+  EXPECT_TRUE(eval("x / y = 3", state(-7, -2)));
+  EXPECT_TRUE(eval("x mod y = -1", state(-7, -2)));
+  EXPECT_TRUE(eval("x / 2 = 0", state(1, 0)));
   EXPECT_THROW(eval("x / y = 0", state(1, 0)), EvaluationError);
   EXPECT_FALSE(try_evaluate(*expr("x mod y = 0"), kDomain, state(1, 0)).has_value());
 }
