@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "bench_support.hpp"
@@ -122,6 +123,63 @@ void BM_Gate(benchmark::State& state) {
   state.counters["solver_queries"] = static_cast<double>(queries);
 }
 
+// One guard of `atoms` atoms on the MSL mission's navigation node. Layout 0: atoms over ten
+// integers joined at random by & and | (most end up vacuous: the guard collapses under the
+// domain); layout 1: (v0 > c | v1 < d) & (v2 > c | …) over distinct integers, where every atom
+// matters and each needs its own question.
+std::filesystem::path long_guard_mission(int atoms, int layout) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      workspace() / ("long_guard_" + std::to_string(atoms) + "_" + std::to_string(layout));
+  if (fs::exists(dir)) return dir;
+  fs::copy(fs::path(UABT_SOURCE_DIR) / "missions/msl_curiosity", dir, fs::copy_options::recursive);
+  std::string domain = "boolean OnDust, OnRocks\n", guard;
+  if (layout == 0) {
+    for (int v = 0; v < 10; ++v) domain += "integer v" + std::to_string(v) + " in [0, 20]\n";
+    static const char* const kOps[] = {"<", ">", "<=", ">=", "=", "!="};
+    unsigned seed = 1;
+    auto next = [&seed] { return (seed = seed * 1103515245u + 12345u) >> 16; };
+    for (int i = 0; i < atoms; ++i) {
+      if (i > 0) guard += next() % 2 ? " & " : " | ";
+      guard += "v" + std::to_string(next() % 10) + " " + kOps[next() % 6] + " " +
+               std::to_string(next() % 21);
+    }
+  } else {
+    for (int v = 0; v < atoms; ++v) domain += "integer v" + std::to_string(v) + " in [0, 20]\n";
+    for (int i = 0; i + 1 < atoms; i += 2)
+      guard += std::string(i > 0 ? " & " : "") + "(v" + std::to_string(i) + " > " +
+               std::to_string(i % 17) + " | v" + std::to_string(i + 1) + " < " +
+               std::to_string(3 + i % 11) + ")";
+  }
+  std::ofstream(dir / "domain.fret") << domain;
+  std::ofstream(dir / "requirements.fret")
+      << "Req1: In navigation if OnDust & (" << guard
+      << ") Mission shall satisfy selected_alt = on_dust\n"
+         "Req2: In navigation if OnRocks Mission shall satisfy selected_alt = on_rocks\n"
+         "Safe: In navigation Mission shall satisfy selected_alt = hold_position\n";
+  return dir;
+}
+
+void BM_VerifyLongGuard(benchmark::State& state) {
+  std::string error;
+  auto mission = uabt::load::load_mission(
+      long_guard_mission(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {},
+      error);
+  if (!mission) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  uabt::verify::Result result;
+  for (auto _ : state) {
+    result = uabt::verify::verify_mission(*mission, {});
+    benchmark::DoNotOptimize(result);
+  }
+  std::uint64_t vacuous = 0;
+  for (const auto& f : result.findings) vacuous += f.check == "guard-vacuous-atom" ? 1 : 0;
+  state.counters["solver_queries"] = static_cast<double>(result.statistics.solver_queries);
+  state.counters["vacuous"] = static_cast<double>(vacuous);
+}
+
 // Args: nodes, alternatives, threads (0: one per core).
 BENCHMARK(BM_Verify)
     ->Args({1, 8, 0})
@@ -156,5 +214,13 @@ BENCHMARK(BM_NaiveVerify)
     ->Args({3, 32, 1})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Gate)->Unit(benchmark::kMillisecond);
+// Args: atoms in the guard, layout (see long_guard_mission).
+BENCHMARK(BM_VerifyLongGuard)
+    ->Args({400, 0})
+    ->Args({2000, 0})
+    ->Args({100, 1})
+    ->Args({400, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
