@@ -174,9 +174,7 @@ class VacuityQuestions {
     for (auto& [atom, question] : questions_) {
       if (question.places > 1) {
         const z3::expr flipped = encoder.lower(guard, {{atom, !question.value}});
-        question.decides.emplace(session.define(formula != flipped, "vacuity"));
-      } else {
-        question.decides.emplace(*question.path);  // already a literal
+        question.decides = session.define(formula != flipped, "vacuity");
       }
       question.literal.emplace(session.define(question.value, "vacuity_atom"));
     }
@@ -184,7 +182,7 @@ class VacuityQuestions {
 
   Answer ask(const fretish::Expr* atom, bool atom_value) {
     const Question& q = questions_.at(atom);
-    return session_.check({*q.decides, atom_value ? *q.literal : !*q.literal});
+    return session_.check({q.decides, atom_value ? *q.literal : !*q.literal});
   }
 
   const z3::expr& atom_formula(const fretish::Expr* atom) const {
@@ -195,9 +193,9 @@ class VacuityQuestions {
 
  private:
   struct Question {
-    z3::expr value;                // the atom itself
-    std::optional<z3::expr> path;  // when flipping it flips the guard (single place)
-    std::optional<z3::expr> decides, literal;
+    z3::expr value;    // the atom itself
+    z3::expr decides;  // a literal: flipping the occurrence flips the guard
+    std::optional<z3::expr> literal;
     int places = 0;
   };
 
@@ -218,8 +216,7 @@ class VacuityQuestions {
     using fretish::ExprKind;
     if (e.kind == ExprKind::bool_literal) return;
     if (!smt::is_boolean_structure(e, session_.encoder().typing())) {
-      auto [it, fresh] = questions_.try_emplace(&e, Question{term(e), path, {}, {}, 0});
-      ++it->second.places;
+      ++questions_.try_emplace(&e, Question{term(e), path, {}, 0}).first->second.places;
       return;
     }
     const std::size_t n = e.args.size();
