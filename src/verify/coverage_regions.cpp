@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <map>
 
 #include "base/number_text.hpp"
 #include "verify/coverage_parts.hpp"
@@ -391,14 +392,23 @@ void fill_regions(const Space& space,
                   const std::vector<const fretish::SelectionRequirement*>& requirements,
                   const NodeTruths& truths, const std::vector<Finding>& findings,
                   Coverage& coverage) {
-  auto witnesses = [&](const char* check, const std::vector<std::string>& ids) {
-    std::vector<std::uint64_t> out;
-    for (const auto& f : findings) {
-      if (f.check != check || f.adaptable != coverage.adaptable) continue;
-      if (!ids.empty() && f.requirements != ids) continue;
-      if (const auto s = space.state_of(f.witness)) out.push_back(*s);
-    }
-    return out;
+  // The witnesses of this node's findings, by check and requirements, in finding order: one
+  // pass, so that a node with thousands of overlaps does not scan every finding per pair.
+  std::map<std::vector<std::string>, std::vector<std::uint64_t>> overlap_witnesses;
+  std::vector<std::uint64_t> gap_witnesses;
+  for (const auto& f : findings) {
+    if (f.adaptable != coverage.adaptable) continue;
+    if (f.check != "guard-gap" && f.check != "guard-overlap") continue;
+    const auto s = space.state_of(f.witness);
+    if (!s) continue;
+    if (f.check == "guard-gap")
+      gap_witnesses.push_back(*s);
+    else
+      overlap_witnesses[f.requirements].push_back(*s);
+  }
+  auto witnesses = [&](const std::vector<std::string>& ids) {
+    const auto it = overlap_witnesses.find(ids);
+    return it == overlap_witnesses.end() ? std::vector<std::uint64_t>{} : it->second;
   };
   const fretish::Domain& domain = space.domain();
   const Fraction total = space.measure(truths.domain.sure);
@@ -406,8 +416,8 @@ void fill_regions(const Space& space,
   if (truths.gap.maybe.any()) {
     std::vector<std::string> ids;
     for (const auto* r : requirements) ids.push_back(r->id);
-    cover(space, truths.gap.maybe, truths.gap.sure, outside, ids, domain, total,
-          witnesses("guard-gap", {}), coverage.gap_regions, coverage.gap_regions_omitted);
+    cover(space, truths.gap.maybe, truths.gap.sure, outside, ids, domain, total, gap_witnesses,
+          coverage.gap_regions, coverage.gap_regions_omitted);
   }
   if (!truths.overlap.maybe.any()) return;
   for (std::size_t i = 0; i < requirements.size(); ++i) {
@@ -418,8 +428,7 @@ void fill_regions(const Space& space,
       if (!both.any()) continue;
       const std::vector<std::string> ids{requirements[i]->id, requirements[j]->id};
       cover(space, both, truths.enabled[i].sure & truths.enabled[j].sure, outside, ids, domain,
-            total, witnesses("guard-overlap", ids), coverage.overlap_regions,
-            coverage.overlap_regions_omitted);
+            total, witnesses(ids), coverage.overlap_regions, coverage.overlap_regions_omitted);
     }
   }
 }

@@ -23,14 +23,14 @@ struct AtomTable {
   std::vector<z3::expr> literals;
 };
 
-AtomTable atom_table(const Node& node, Session& session) {
+AtomTable atom_table(const std::vector<const Guard*>& guards, Session& session) {
   AtomTable table;
   smt::Encoder& encoder = session.encoder();
   std::unordered_map<unsigned, std::size_t> seen;  // Z3 hash-conses: equal atoms share an id
-  for (const Guard& g : node.guards) {
-    if (g.is_default) continue;
+  for (const Guard* g : guards) {
+    if (g->is_default) continue;
     for (const fretish::Expr* atom :
-         smt::atom_occurrences(*g.requirement->guard, encoder.typing())) {
+         smt::atom_occurrences(*g->requirement->guard, encoder.typing())) {
       const z3::expr formula = encoder.lower(*atom);
       if (!seen.emplace(formula.id(), table.atoms.size()).second) continue;
       table.atoms.push_back(atom);
@@ -43,12 +43,13 @@ AtomTable atom_table(const Node& node, Session& session) {
 
 }  // namespace
 
-RegionCubes describe_region(const Node& node, Session& session, z3::model model,
-                            const std::vector<z3::expr>& inside, const z3::expr& outside) {
+RegionCubes describe_region(const std::vector<const Guard*>& guards, Session& session,
+                            z3::model model, const std::vector<z3::expr>& inside,
+                            const z3::expr& outside) {
   // Generalise each model of the region to a cube over the guards' atoms that lies wholly in
   // it (drop literals while D ∧ cube ∧ outside stays unsat), block it, repeat.
   RegionCubes region;
-  const AtomTable table = atom_table(node, session);
+  const AtomTable table = atom_table(guards, session);
   const z3::expr blocking = session.encoder().fresh_literal("regionblock");
   std::vector<z3::expr> search = inside;
   search.push_back(blocking);
@@ -136,7 +137,7 @@ void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
   z3::expr_vector guard_literals(session.context());
   for (const Guard& g : node.guards) guard_literals.push_back(g.literal);
   const z3::expr some_holds = session.define(z3::mk_or(guard_literals), "any");
-  RegionCubes cubes = describe_region(node, session, model, none_hold, some_holds);
+  RegionCubes cubes = describe_region(all, session, model, none_hold, some_holds);
   region = cubes.cubes;
 
   Finding f = node_finding(node, "guard-gap",

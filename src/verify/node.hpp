@@ -54,10 +54,13 @@ struct RegionCubes {
   std::vector<std::string> cubes;
   std::string more;  // "… and more" when the list is cut short, else ""
 };
-// Describes the region that `inside` (assumption literals, satisfied by `model`) selects;
+// Describes the region that `inside` (assumption literals, satisfied by `model`) selects, as
+// cubes over the atoms of `guards` (those the region depends on: the two guards of an overlap,
+// not the whole node, so that describing one overlap costs what the two guards cost);
 // `outside` is a literal that holds exactly outside it. Uses the session's current scope.
-RegionCubes describe_region(const Node& node, Session& session, z3::model model,
-                            const std::vector<z3::expr>& inside, const z3::expr& outside);
+RegionCubes describe_region(const std::vector<const Guard*>& guards, Session& session,
+                            z3::model model, const std::vector<z3::expr>& inside,
+                            const z3::expr& outside);
 
 // The checks, in the order verify_mission runs them.
 void check_satisfiable_and_shadowed(Node& node, Session& session);

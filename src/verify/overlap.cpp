@@ -30,7 +30,7 @@ void check_overlaps(Node& node, Session& session) {
       const z3::model model = session.model();
       const State witness = session.encoder().state_of(model);
       const RegionCubes region =
-          describe_region(node, session, model, {a.literal, b.literal},
+          describe_region({&a, &b}, session, model, {a.literal, b.literal},
                           session.define(!(a.literal && b.literal), "notboth"));
       Finding f =
           node_finding(node, "guard-overlap",

@@ -180,6 +180,57 @@ void BM_VerifyLongGuard(benchmark::State& state) {
   state.counters["vacuous"] = static_cast<double>(vacuous);
 }
 
+// One adaptable node with `requirements` requirements whose guards are sliding windows
+// `x >= i & x <= i + width` over one integer, each its own alternative, and a default: every
+// requirement overlaps the `width` next ones, so the node has about requirements × width
+// guard-overlap findings, each with a witness and a region.
+std::filesystem::path overlapping_mission(int requirements, int width) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      workspace() / ("overlapping_" + std::to_string(requirements) + "_" + std::to_string(width));
+  if (fs::exists(dir)) return dir;
+  fs::create_directories(dir / "alternatives/nav");
+  std::ofstream(dir / "domain.fret") << "integer x in [0, " << requirements + width + 10 << "]\n";
+  std::ofstream fret(dir / "requirements.fret");
+  auto alternative = [&](const std::string& name) {
+    std::ofstream(dir / "alternatives/nav" / (name + ".xml"))
+        << "<root BTCPP_format=\"4\"><BehaviorTree ID=\"" << name
+        << "\"><AlwaysSuccess/></BehaviorTree></root>\n";
+  };
+  for (int i = 0; i < requirements; ++i) {
+    const std::string name = "a" + std::to_string(i);
+    fret << "R" << i << ": In nav if x >= " << i << " & x <= " << i + width
+         << " Mission shall satisfy selected_alt = " << name << "\n";
+    alternative(name);
+  }
+  fret << "Default: In nav Mission shall satisfy selected_alt = fallback\n";
+  alternative("fallback");
+  std::ofstream(dir / "mission.xml")
+      << "<root BTCPP_format=\"4\" main_tree_to_execute=\"M\"><BehaviorTree ID=\"M\">"
+         "<Sequence><Adaptable ID=\"nav\"/></Sequence></BehaviorTree></root>\n";
+  return dir;
+}
+
+void BM_VerifyOverlapping(benchmark::State& state) {
+  std::string error;
+  auto mission = uabt::load::load_mission(
+      overlapping_mission(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {},
+      error);
+  if (!mission) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  uabt::verify::Result result;
+  for (auto _ : state) {
+    result = uabt::verify::verify_mission(*mission, {});
+    benchmark::DoNotOptimize(result);
+  }
+  std::uint64_t overlaps = 0;
+  for (const auto& f : result.findings) overlaps += f.check == "guard-overlap" ? 1 : 0;
+  state.counters["solver_queries"] = static_cast<double>(result.statistics.solver_queries);
+  state.counters["overlaps"] = static_cast<double>(overlaps);
+}
+
 // Args: nodes, alternatives, threads (0: one per core).
 BENCHMARK(BM_Verify)
     ->Args({1, 8, 0})
@@ -220,6 +271,14 @@ BENCHMARK(BM_VerifyLongGuard)
     ->Args({2000, 0})
     ->Args({100, 1})
     ->Args({400, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+// Args: requirements on the node, window width (overlaps per requirement).
+BENCHMARK(BM_VerifyOverlapping)
+    ->Args({100, 5})
+    ->Args({100, 200})
+    ->Args({2000, 5})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
