@@ -1,6 +1,9 @@
 #include "base/json_input.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <unordered_map>
+#include <vector>
 
 #include "base/number_fit.hpp"
 
@@ -47,31 +50,54 @@ std::string syntax_message(const std::string& what) {
 
 namespace detail {
 
-// Scans the bytes outside strings: the first place where nesting passes kMaxJsonDepth or a
-// number fits no type. Invalid JSON is left to the parser.
+// Scans the bytes outside strings: the first place where nesting passes kMaxJsonDepth, a
+// number fits no type or an object repeats a key. Invalid JSON is left to the parser.
 std::optional<JsonInputError> refuse_before_parsing(std::string_view text) {
-  int depth = 0;
+  // One entry per open array or object; an object remembers where each of its keys starts,
+  // because the parser keeps only the last of two equal keys and says nothing.
+  struct Open {
+    bool object = false;
+    std::unordered_map<std::string_view, std::size_t> keys;
+  };
+  std::vector<Open> open;
   bool in_string = false, escaped = false;
+  std::size_t string_start = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
-      if (escaped)
+      if (escaped) {
         escaped = false;
-      else if (c == '\\')
+      } else if (c == '\\') {
         escaped = true;
-      else if (c == '"')
+      } else if (c == '"') {
         in_string = false;
+        if (open.empty() || !open.back().object) continue;
+        std::size_t next = i + 1;
+        while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+        if (next >= text.size() || text[next] != ':') continue;  // a value, not a key
+        const std::string_view key = text.substr(string_start, i + 1 - string_start);
+        const auto [first, inserted] = open.back().keys.emplace(key, string_start);
+        if (!inserted) {
+          const JsonInputError earlier = error_at(text, first->second, "");
+          return error_at(text, string_start,
+                          "key " + std::string(key) + " appears twice in one object (first at " +
+                              std::to_string(earlier.line) + ":" + std::to_string(earlier.column) +
+                              "); JSON readers keep only one of them, so write it once");
+        }
+      }
       continue;
     }
     if (c == '"') {
       in_string = true;
+      string_start = i;
     } else if (c == '[' || c == '{') {
-      if (++depth > kMaxJsonDepth)
+      if (static_cast<int>(open.size()) >= kMaxJsonDepth)
         return error_at(text, i,
                         "JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                             " arrays and objects (uabt's limit for every JSON input)");
+      open.push_back({c == '{', {}});
     } else if (c == ']' || c == '}') {
-      if (depth > 0) --depth;
+      if (!open.empty()) open.pop_back();
     } else if (c == '-' || (c >= '0' && c <= '9')) {
       std::size_t end = i;
       while (end < text.size() && is_number_char(text[end])) ++end;

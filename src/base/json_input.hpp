@@ -24,15 +24,17 @@ struct JsonInputError {
 };
 
 namespace detail {
-// The first place where nesting passes kMaxJsonDepth or a number fits no type, if any.
+// The first place where nesting passes kMaxJsonDepth, a number fits no type, or an object
+// repeats a key, if any.
 std::optional<JsonInputError> refuse_before_parsing(std::string_view text);
 JsonInputError syntax_error(std::string_view text, const nlohmann::json::parse_error& e);
 JsonInputError unrepresentable(std::string_view text);
 }  // namespace detail
 
 // Parses one JSON document (as nlohmann::json, or nlohmann::ordered_json where the order of
-// keys matters). Nesting beyond kMaxJsonDepth and numbers that fit no 64-bit type (an integer
-// beyond 64 bits, a real beyond a double's range such as 1e400) are refused by a scan over the
+// keys matters). Nesting beyond kMaxJsonDepth, numbers that fit no 64-bit type (an integer
+// beyond 64 bits, a real beyond a double's range such as 1e400) and a key written twice in one
+// object (which the parser would silently resolve to the last) are refused by a scan over the
 // bytes before the recursive parse; syntax errors are reported in uabt's words.
 template <class Json = nlohmann::json>
 std::optional<Json> parse_json_input(std::string_view text, JsonInputError& error) {

@@ -94,6 +94,24 @@ TEST(JsonInput, SyntaxErrorsAreInUabtsWords) {
   expect_own_words(error.message);
 }
 
+TEST(JsonInput, AKeyWrittenTwiceInOneObjectIsRefusedAtTheSecond) {
+  JsonInputError error;
+  EXPECT_FALSE(parse_json_input("{\"ticks\": 1,\n \"x\": {\"ticks\": 2},\n \"ticks\" : 3}", error));
+  EXPECT_EQ(error.line, 3);
+  EXPECT_EQ(error.column, 2);
+  EXPECT_NE(error.message.find("key \"ticks\" appears twice in one object (first at 1:2)"),
+            std::string::npos)
+      << error.message;
+}
+
+TEST(JsonInput, EqualKeysInDifferentObjectsAndEqualValuesAreFine) {
+  JsonInputError error;
+  EXPECT_TRUE(parse_json_input(
+      "[{\"a\": \"a\", \"b\": {\"a\": 1}}, {\"a\": \"a\"}, \"a\", {\"s\": \"\\\"a\\\": 1\"}]",
+      error))
+      << error.message;
+}
+
 TEST(NumberFit, IntegerRangeSizesDoNotOverflow) {
   constexpr auto lowest = std::numeric_limits<std::int64_t>::min();
   constexpr auto highest = std::numeric_limits<std::int64_t>::max();
@@ -177,6 +195,22 @@ TEST(JsonInputs, EveryFormatRefusesDeepNestingAndHugeNumbersWithAPlace) {
     const std::string broken = f.error_for("[1,");
     EXPECT_NE(broken.find("invalid JSON"), std::string::npos) << broken;
     expect_own_words(broken);
+  }
+}
+
+TEST(JsonInputs, EveryFormatRefusesAKeyWrittenTwice) {
+  const Format formats[] = {
+      {"scenario", scenario_error, "scenarios/s.json:1:"},
+      {"world.json", world_error, "world.json:1:"},
+      {"FRET export", fret_export_error, "requirements.json:1:"},
+      {"trace", trace_error, "t.jsonl:1:"},
+      {"uplink.json", uplink_error, "uplinks/u/uplink.json:1:"},
+  };
+  for (const Format& f : formats) {
+    SCOPED_TRACE(f.name);
+    const std::string twice = f.error_for("{\"k\": 1, \"k\": 2}");
+    EXPECT_EQ(twice.rfind(f.where, 0), 0u) << twice;
+    EXPECT_NE(twice.find("key \"k\" appears twice"), std::string::npos) << twice;
   }
 }
 
