@@ -142,7 +142,11 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
     const auto answer = on_merged.find(g.id);
     const bool holds =
         answer != on_merged.end() && answer->second.verdict == prove::Verdict::proved;
-    const load::GuaranteeConsent* agreed = consent.count(g.id) ? consent[g.id] : nullptr;
+    const load::GuaranteeConsent* given = consent.count(g.id) ? consent[g.id] : nullptr;
+    // "retire" gives the guarantee up altogether, so it also covers a weaker restatement;
+    // "weaken" agrees to a weaker statement, not to none: it does not cover a removal.
+    const bool covers = given && (given->kind == "retire" || restated);
+    const load::GuaranteeConsent* agreed = covers ? given : nullptr;
     report::ContractChange change{g.id,
                                   restated ? (holds ? "restated" : "weakened") : "removed",
                                   g.text,
@@ -182,6 +186,11 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
                           ")");
       if (agreed)
         f.notes.push_back("uplink.json may " + agreed->kind + " it: " + agreed->reason);
+      else if (given)
+        f.notes.push_back(
+            "uplink.json may weaken it, but the package removes it: to give it "
+            "up, say so with {\"retire\": {\"" +
+            g.id + "\": \"why\"}}");
       else
         f.notes.push_back(
             "if the mission may give it up, say so in the package's uplink.json: "

@@ -185,6 +185,32 @@ TEST(UplinkContract, RetiringAGuaranteeNeedsConsent) {
               "retire": {"Straight": "the rover must turn on this ground"}})");
   o = gate_uplink(m.dir(), "uplinks/turn");
   EXPECT_TRUE(o.passed()) << format_text(o.report.findings);
+  // "weaken" agrees to a weaker statement, not to dropping the guarantee.
+  m.write("uplinks/turn/uplink.json",
+          R"({"remove": ["Straight"], "weaken": {"Arrive": "turning first takes longer",
+                                                  "Straight": "the rover must turn"}})");
+  o = gate_uplink(m.dir(), "uplinks/turn");
+  EXPECT_FALSE(o.passed()) << format_text(o.report.findings);
+  removed = only(o, "uplink-guarantee-removed");
+  ASSERT_NE(removed, nullptr) << format_text(o.report.findings);
+  EXPECT_EQ(removed->severity, Severity::error);
+  EXPECT_TRUE(std::any_of(removed->notes.begin(), removed->notes.end(), [](const auto& n) {
+    return n.find("may weaken it, but the package removes it") != std::string::npos;
+  })) << format_text(o.report.findings);
+
+  // "retire" gives it up altogether, which covers a weaker restatement too.
+  m.write("uplinks/turn/uplink.json",
+          R"({"remove": ["Straight"], "retire": {"Arrive": "turning first takes longer",
+                                                  "Straight": "the rover must turn on this ground"}})");
+  o = gate_uplink(m.dir(), "uplinks/turn");
+  EXPECT_TRUE(o.passed()) << format_text(o.report.findings);
+  EXPECT_EQ(change(o, "Arrive")->change, "weakened");
+  EXPECT_EQ(change(o, "Arrive")->consent, "retire");
+
+  m.write("uplinks/turn/uplink.json",
+          R"({"remove": ["Straight"], "weaken": {"Arrive": "turning first takes longer"},
+              "retire": {"Straight": "the rover must turn on this ground"}})");
+  o = gate_uplink(m.dir(), "uplinks/turn");
   EXPECT_EQ(only(o, "uplink-guarantee-removed")->severity, Severity::warning);
   EXPECT_EQ(o.report.verdict_text(), "pass with 1 guarantee retired and 1 weakened");
   // Contract changes first in the uplink section, in every format.
