@@ -106,6 +106,11 @@ void register_prove(CLI::App& app, int& exit_code) {
       prove::Options options;
       options.depth = args->depth;
       options.engine = args->engine;
+      if (!world.warnings.empty()) {
+        TextOptions text;
+        text.path_prefix = path_prefix_for(outcome.mission->dir);
+        std::cerr << format_text(world.warnings, text);
+      }
       result = prove::prove(*outcome.mission, *doc, world, options);
     } catch (const prove::WorldError& e) {
       // world.json named as opened from the current directory, like every other finding.

@@ -44,11 +44,13 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
                                     report::counterexample_file_name(a.requirement))
                                        .generic_string();
     found = prove::findings_of(result, written, replay);
+    found.insert(found.end(), world.warnings.begin(), world.warnings.end());
     outcome.report.proofs = prove::report_proofs(result, written);
     outcome.report.proofs->mission_path = replay.mission_path;
     outcome.report.proofs->run_options = replay.run_options;
   } catch (const prove::WorldError& e) {
     found = {make_finding(e.check, e.text, e.location)};
+    found.back().severity = Severity::error;  // world.json cannot be used: whatever the check
     add_proofs_not_run(outcome, "world.json cannot be read");
   } catch (const std::exception& e) {
     found = {make_finding("prove-bounded", std::string("the mission cannot be proved: ") + e.what(),

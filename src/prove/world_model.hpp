@@ -2,10 +2,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <vector>
+
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+#include "base/finding.hpp"
 
 #include "base/location.hpp"
 #include "fretish/expr.hpp"
@@ -34,6 +37,8 @@ struct WorldModel {
   std::string file;          // displayed path, "" without a world.json
   fretish::ExprPtr initial;  // nullptr: every state of the domain
   std::map<std::string, ActionContract, std::less<>> actions;
+  // What is worth saying but does not stop the proof (an action no tree of the mission runs).
+  std::vector<Finding> warnings;
 
   const ActionContract* find(std::string_view qualified, std::string_view plain) const;
 };

@@ -168,6 +168,10 @@ TEST(ProveCli, WorldFileIsCheckedAgainstTheMission) {
       {R"({"actions": {"Drill": {"ticks": 2, "on_failure": "wind = 30 / wind"}}})", "/ wind",
        "on_failure of 'Drill' divides by wind, which is zero in a state the domain allows (",
        "guard-division-by-zero"},
+      {R"({"actions": {"Dril": {"ticks": 2, "on_success": "IsBitCool = false"}}})", "\"Dril\"",
+       "action 'Dril' is not a leaf of the mission (did you mean 'Drill'?); as written, the world "
+       "describes an action no tree runs",
+       "world-unknown-action"},
   };
   for (const Case& c : cases) {
     auto files = mission_files("sample_drilling");
@@ -198,6 +202,29 @@ TEST(ProveCli, WorldFileIsCheckedAgainstTheMission) {
   EXPECT_EQ(prove.exit_code, 2) << prove.out;
   EXPECT_NE(prove.out.find("world.json: error: is a directory, not a file"), std::string::npos)
       << prove.out;
+}
+
+// An entry for an action that only an uplink adds is kept, with a warning at the entry: it
+// describes nothing on board.
+TEST(ProveCli, AWorldEntryNoTreeRunsIsAWarning) {
+  auto files = mission_files("sample_drilling");
+  std::string& world = files["world.json"];
+  const std::string entry = R"("TurnLeft": {"ticks": 1}, )";
+  world.insert(world.find("\"actions\"") + std::string("\"actions\": {").size(), entry);
+  TempMission m(files);
+  const CliRun prove = run("prove " + m.dir().string());
+  EXPECT_EQ(prove.exit_code, 1) << "CoolBit is violated as without the entry\n" << prove.out;
+  EXPECT_NE(prove.out.find(": warning: no tree of the mission runs 'TurnLeft': its entry takes "
+                           "effect only once an uplink adds it [world-unknown-action]"),
+            std::string::npos)
+      << prove.out;
+  const CliRun gate = run("gate " + m.dir().string() + " --format json");
+  const auto j = nlohmann::json::parse(gate.out.substr(gate.out.find('{')));
+  int warnings = 0;
+  for (const auto& f : j["findings"])
+    warnings += f["check"] == "world-unknown-action" && f["severity"] == "warning" &&
+                f["location"]["file"] == "world.json";
+  EXPECT_EQ(warnings, 1) << gate.out;
 }
 
 // BT.CPP ignores a misspelt main_tree_to_execute: with one tree that passed unnoticed, with
