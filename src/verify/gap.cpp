@@ -11,6 +11,7 @@ namespace {
 
 // How many cubes of a region a finding lists before it says "and more".
 constexpr std::size_t kMaxRegionCubes = 5;
+constexpr std::size_t kMaxMinimisedCube = 64;  // literals
 
 bool contains(const std::vector<z3::expr>& v, const z3::expr& x) {
   return std::any_of(v.begin(), v.end(), [&](const z3::expr& y) { return z3::eq(x, y); });
@@ -67,7 +68,9 @@ RegionCubes describe_region(const std::vector<const Guard*>& guards, Session& se
       std::vector<z3::expr> needed;
       for (const auto& l : cube)
         if (contains(core, l)) needed.push_back(l);
-      cube = session.minimise({outside}, needed);
+      // Minimising asks one question per literal, each as costly as the mission is large: a
+      // cube the core leaves longer than that is shown as the core gives it, still inside.
+      cube = needed.size() <= kMaxMinimisedCube ? session.minimise({outside}, needed) : needed;
     }
     std::vector<CubeLiteral> literals;
     for (std::size_t k = 0; k < table.atoms.size(); ++k) {

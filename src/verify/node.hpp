@@ -35,6 +35,9 @@ struct Node {
   Result* result = nullptr;
   const Options* options = nullptr;
   bool first_hit = false;  // policy="first": an overlap is a note, priority decides
+  // Conditions the checks build from parts of guards (the independent parts vacuity asks
+  // about): the encoder's typing refers to them, so they live as long as the node.
+  std::vector<fretish::ExprPtr> made;
 };
 
 // "Req1 (on_dust)"

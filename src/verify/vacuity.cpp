@@ -259,6 +259,163 @@ class VacuityQuestions {
 
 }  // namespace
 
+namespace {
+
+// What the questions found for one atom occurrence.
+struct Decision {
+  std::optional<bool> replaceable_by;  // the constant that can stand for it
+  bool undecided = false;              // the solver could not tell
+};
+
+// Decides every occurrence of `guard` (a satisfiable guard, or an independent part of one).
+void decide_occurrences(const fretish::Expr& guard, Session& session,
+                        const std::set<std::string>& assumed,
+                        std::unordered_map<const fretish::Expr*, Decision>& decisions) {
+  smt::Encoder& encoder = session.encoder();
+  const auto atoms = smt::atom_occurrences(guard, encoder.typing());
+  // A lone atom is the whole guard: it matters unless the guard always holds under D
+  // (`!(x = 1)` with x in [-3, 0]), which the question below finds like any other case.
+  if (read_once_over_free_booleans(guard, atoms, encoder.typing(), assumed)) {
+    session.statistics().prefiltered += atoms.size();
+    for (const fretish::Expr* atom : atoms) decisions[atom] = {};
+    return;
+  }
+  std::vector<std::pair<const fretish::Expr*, bool>> conjuncts;
+  top_level_literals(guard, true, conjuncts);
+  VacuityQuestions questions(guard, encoder.lower(guard), session);
+  // An occurrence matters when states where it alone decides the guard exist with the
+  // atom true and with it false. Every model found shows, for all occurrences at once,
+  // which ones decide the guard there: most need no question of their own.
+  // Reading a model costs about as much as a question, so models stop being read while
+  // they teach little (each skip twice as long), and are read again once one teaches.
+  std::unordered_map<const fretish::Expr*, std::array<bool, 2>> decides_when;
+  std::size_t skip = 0, skipped = 0;
+  // A model holds every variable of the mission, so reading one costs what the mission costs;
+  // a small part (each `(a | b)` of a long conjunction) is cheaper to ask about directly.
+  constexpr std::size_t kLearnFrom = 8;  // occurrences
+  auto learn = [&]() {
+    if (atoms.size() < kLearnFrom) return;
+    if (skipped < skip) {
+      ++skipped;
+      return;
+    }
+    skipped = 0;
+    const z3::model model = session.model();
+    std::unordered_map<const fretish::Expr*, bool> values;
+    for (const fretish::Expr* atom : atoms) {
+      const z3::expr v = model.eval(questions.atom_formula(atom), true);
+      if (!v.is_true() && !v.is_false()) return;  // not evaluated to a constant: learn nothing
+      values[atom] = v.is_true();
+    }
+    std::unordered_set<const fretish::Expr*> sensitive;
+    Sensitivity(encoder.typing(), values).run(guard, sensitive);
+    std::size_t learnt = 0;
+    for (const fretish::Expr* atom : sensitive) {
+      if (!questions.is_single(atom)) continue;
+      bool& known = decides_when[atom][values.at(atom) ? 1 : 0];
+      learnt += known ? 0 : 1;
+      known = true;
+    }
+    skip = learnt > 2 ? 0 : std::min<std::size_t>(std::max<std::size_t>(2 * skip, 1), 64);
+  };
+  for (const fretish::Expr* atom : atoms) {
+    // The occurrence is vacuous when a constant c can stand for it: g ≡ g[atom := c] under
+    // D, that is, no state where the atom is !c decides the guard through it alone.
+    Decision& d = decisions[atom];
+    for (const bool constant : {true, false}) {
+      if (decides_when[atom][constant ? 0 : 1] ||
+          std::any_of(conjuncts.begin(), conjuncts.end(),
+                      [&](const auto& c) { return c.first == atom && c.second != constant; })) {
+        ++session.statistics().prefiltered;
+        continue;
+      }
+      const Answer differs = questions.ask(atom, !constant);
+      if (differs == Answer::sat) learn();
+      if (differs == Answer::unsat) {
+        d.replaceable_by = constant;
+        break;
+      }
+      if (differs == Answer::unknown) {  // reported with this question's reason
+        d.undecided = true;
+        break;
+      }
+    }
+  }
+}
+
+void collect_names(const fretish::Expr& e, std::vector<std::string>& out) {
+  if (e.kind == fretish::ExprKind::identifier) out.push_back(e.text);
+  for (const auto& a : e.args) collect_names(*a, out);
+}
+
+void flatten_and(const fretish::ExprPtr& e, std::vector<fretish::ExprPtr>& out) {
+  if (e->kind == fretish::ExprKind::logical_and) {
+    for (const auto& a : e->args) flatten_and(a, out);
+    return;
+  }
+  out.push_back(e);
+}
+
+// The guard's top-level conjuncts grouped into parts that share no variable, directly or
+// through an assumption (names are joined whenever one conjunct or assumption reads them
+// together). With g = A ∧ B over disjoint variables and assumptions, an occurrence in A decides
+// g exactly where it decides A and B holds, and B holds somewhere independently of A (g is
+// satisfiable), so each part is asked on its own: a question then costs what its part costs,
+// not what the whole guard does. One part: the guard itself.
+std::vector<fretish::ExprPtr> independent_parts(const fretish::ExprPtr& guard,
+                                                const fretish::Domain& domain) {
+  std::vector<fretish::ExprPtr> conjuncts;
+  flatten_and(guard, conjuncts);
+  if (conjuncts.size() < 2) return {guard};
+  std::unordered_map<std::string, std::string> parent;
+  auto find = [&](std::string x) {
+    auto it = parent.try_emplace(x, x).first;
+    while (it->second != x) {
+      x = it->second;
+      it = parent.find(x);
+    }
+    return x;
+  };
+  auto join = [&](const std::vector<std::string>& names) {
+    for (std::size_t i = 1; i < names.size(); ++i) {
+      const std::string a = find(names[0]), b = find(names[i]);
+      if (a != b) parent[b] = a;
+    }
+  };
+  std::vector<std::vector<std::string>> names(conjuncts.size());
+  for (std::size_t i = 0; i < conjuncts.size(); ++i) {
+    collect_names(*conjuncts[i], names[i]);
+    join(names[i]);
+  }
+  for (const auto& a : domain.assumptions) {
+    if (!a.expr) continue;  // did not parse: not part of D
+    std::vector<std::string> read;
+    collect_names(*a.expr, read);
+    join(read);
+  }
+  // Parts in the order of their first conjunct; a conjunct that reads no name (a constant
+  // comparison) stays with the first part.
+  std::vector<std::string> roots;
+  std::vector<std::vector<fretish::ExprPtr>> members;
+  for (std::size_t i = 0; i < conjuncts.size(); ++i) {
+    const std::string root = names[i].empty() ? (roots.empty() ? "" : roots[0]) : find(names[i][0]);
+    const auto it = std::find(roots.begin(), roots.end(), root);
+    if (it == roots.end()) {
+      roots.push_back(root);
+      members.push_back({conjuncts[i]});
+    } else {
+      members[static_cast<std::size_t>(it - roots.begin())].push_back(conjuncts[i]);
+    }
+  }
+  if (members.size() == 1) return {guard};
+  std::vector<fretish::ExprPtr> parts;
+  for (auto& m : members)
+    parts.push_back(m.size() == 1 ? m[0] : fretish::make_expr(fretish::ExprKind::logical_and, m));
+  return parts;
+}
+
+}  // namespace
+
 void check_vacuous_atoms(Node& node, Session& session,
                          const std::vector<std::string>& assumed_names) {
   const std::set<std::string> assumed(assumed_names.begin(), assumed_names.end());
@@ -268,80 +425,28 @@ void check_vacuous_atoms(Node& node, Session& session,
     if (g.is_default || g.satisfiable != Answer::sat) continue;
     const fretish::Expr& guard = *g.requirement->guard;
     const auto atoms = smt::atom_occurrences(guard, encoder.typing());
-    // A lone atom is the whole guard: it matters unless the guard always holds under D
-    // (`!(x = 1)` with x in [-3, 0]), which the question below finds like any other case.
-    if (read_once_over_free_booleans(guard, atoms, encoder.typing(), assumed)) {
-      session.statistics().prefiltered += atoms.size();
-      continue;
+    std::unordered_map<const fretish::Expr*, Decision> decisions;
+    for (const fretish::ExprPtr& part : independent_parts(g.requirement->guard, encoder.domain())) {
+      if (encoder.typing().find(*part) == nullptr) {  // a conjunction made of several conjuncts
+        std::vector<Finding> none;  // its conjuncts are typed already: nothing to report
+        if (!encoder.lower_condition(*part, g.requirement->guard_location, none)) continue;
+        node.made.push_back(part);
+      }
+      decide_occurrences(*part, session, assumed, decisions);
     }
-    std::vector<std::pair<const fretish::Expr*, bool>> conjuncts;
-    top_level_literals(guard, true, conjuncts);
-    VacuityQuestions questions(guard, g.formula, session);
-    // An occurrence matters when states where it alone decides the guard exist with the
-    // atom true and with it false. Every model found shows, for all occurrences at once,
-    // which ones decide the guard there: most need no question of their own.
-    // Reading a model costs about as much as a question, so models stop being read while
-    // they teach little (each skip twice as long), and are read again once one teaches.
-    std::unordered_map<const fretish::Expr*, std::array<bool, 2>> decides_when;
-    std::size_t skip = 0, skipped = 0;
-    auto learn = [&]() {
-      if (skipped < skip) {
-        ++skipped;
-        return;
-      }
-      skipped = 0;
-      const z3::model model = session.model();
-      std::unordered_map<const fretish::Expr*, bool> values;
-      for (const fretish::Expr* atom : atoms) {
-        const z3::expr v = model.eval(questions.atom_formula(atom), true);
-        if (!v.is_true() && !v.is_false()) return;  // not evaluated to a constant: learn nothing
-        values[atom] = v.is_true();
-      }
-      std::unordered_set<const fretish::Expr*> sensitive;
-      Sensitivity(encoder.typing(), values).run(guard, sensitive);
-      std::size_t learnt = 0;
-      for (const fretish::Expr* atom : sensitive) {
-        if (!questions.is_single(atom)) continue;
-        bool& known = decides_when[atom][values.at(atom) ? 1 : 0];
-        learnt += known ? 0 : 1;
-        known = true;
-      }
-      skip = learnt > 2 ? 0 : std::min<std::size_t>(std::max<std::size_t>(2 * skip, 1), 64);
-    };
     std::string note;  // made once, for the first finding that needs it
     for (const fretish::Expr* atom : atoms) {
+      const Decision& d = decisions[atom];
       const std::string atom_text = fretish::to_fretish(*atom);
       const SourceLocation where = atom_location(*atom, g.requirement->guard_location);
-      // The occurrence is vacuous when a constant c can stand for it: g ≡ g[atom := c] under
-      // D, that is, no state where the atom is !c decides the guard through it alone.
-      std::optional<bool> replaceable_by;
-      bool undecided = false;
-      for (const bool constant : {true, false}) {
-        if (decides_when[atom][constant ? 0 : 1] ||
-            std::any_of(conjuncts.begin(), conjuncts.end(),
-                        [&](const auto& c) { return c.first == atom && c.second != constant; })) {
-          ++session.statistics().prefiltered;
-          continue;
-        }
-        const Answer differs = questions.ask(atom, !constant);
-        if (differs == Answer::sat) learn();
-        if (differs == Answer::unsat) {
-          replaceable_by = constant;
-          break;
-        }
-        if (differs == Answer::unknown) {  // reported with this question's reason
-          undecided = true;
-          break;
-        }
-      }
-      if (!replaceable_by) {
-        if (undecided)
+      if (!d.replaceable_by) {
+        if (d.undecided)
           report_inconclusive(node, session,
                               "whether the atom '" + atom_text + "' matters in " + label(g), where,
                               {&g});
         continue;
       }
-      const std::string constant = *replaceable_by ? "true" : "false";
+      const std::string constant = *d.replaceable_by ? "true" : "false";
       Finding f = node_finding(node, "guard-vacuous-atom",
                                "the atom '" + atom_text + "' in the guard of " + label(g) +
                                    " never changes it: under the domain the guard means the same "

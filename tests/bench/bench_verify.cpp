@@ -271,6 +271,7 @@ BENCHMARK(BM_VerifyLongGuard)
     ->Args({2000, 0})
     ->Args({100, 1})
     ->Args({400, 1})
+    ->Args({2000, 1})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
