@@ -232,6 +232,49 @@ class TextParser {
     return tag;
   }
 
+  // Where each attribute name of `node`'s start tag stands: a walk over that tag alone, from
+  // the element's '<' (columns count characters, as the scanner's do).
+  std::vector<std::pair<int, int>> attribute_positions(const Node& node) {
+    std::vector<std::pair<int, int>> out;
+    if (node.line <= 0 || node.column <= 0) return out;
+    if (line_starts_.empty()) {
+      line_starts_.push_back(0);
+      for (std::size_t k = 0; k < text_.size(); ++k)
+        if (text_[k] == '\n') line_starts_.push_back(k + 1);
+    }
+    if (static_cast<std::size_t>(node.line) > line_starts_.size()) return out;
+    const std::size_t n = text_.size();
+    std::size_t i = line_starts_[static_cast<std::size_t>(node.line) - 1];
+    int line = node.line, column = 1;
+    auto advance = [&] {
+      if (text_[i] == '\n') {
+        ++line;
+        column = 1;
+      } else if (i + 1 < n && (static_cast<unsigned char>(text_[i + 1]) & 0xC0) != 0x80) {
+        ++column;
+      }
+      ++i;
+    };
+    auto space = [&] { return std::isspace(static_cast<unsigned char>(text_[i])) != 0; };
+    while (i < n && column < node.column && text_[i] != '\n') advance();
+    if (i >= n || text_[i] != '<') return out;
+    advance();
+    while (i < n && !space() && text_[i] != '/' && text_[i] != '>') advance();
+    while (out.size() < node.attributes.size()) {
+      while (i < n && space()) advance();
+      if (i >= n || text_[i] == '/' || text_[i] == '>') break;
+      out.emplace_back(line, column);
+      while (i < n && !space() && text_[i] != '=') advance();
+      while (i < n && text_[i] != '"' && text_[i] != '\'') advance();
+      if (i >= n) break;
+      const char quote = text_[i];
+      advance();
+      while (i < n && text_[i] != quote) advance();
+      if (i < n) advance();
+    }
+    return out;
+  }
+
   TreeDef read_tree(const XMLElement* element) {
     TreeDef tree;
     tree.id = attribute_or_empty(element, "ID");
@@ -264,6 +307,7 @@ class TextParser {
     for (const tinyxml2::XMLAttribute* a = element->FirstAttribute(); a != nullptr; a = a->Next()) {
       node.attributes.emplace_back(a->Name(), a->Value());
     }
+    if (!node.attributes.empty()) node.attribute_positions = attribute_positions(node);
     for (const XMLElement* child = element->FirstChildElement(); child != nullptr;
          child = child->NextSiblingElement()) {
       node.children.push_back(read_node(child));
@@ -329,6 +373,7 @@ class TextParser {
   const std::string& text_;
   const std::string& file_;
   std::vector<Finding>& findings_;
+  std::vector<std::size_t> line_starts_;  // byte offset of each line, built on first use
   const detail::ElementPositions* positions_ = nullptr;
 };
 

@@ -9,22 +9,7 @@
 
 namespace uabt::bt {
 
-namespace {
-
-bool is_explicit_family_tag(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
-// Attributes BT.CPP interprets itself; they are not ports of the node.
-bool is_reserved_attribute(const std::string& name) {
-  static const std::set<std::string_view> kReserved = {
-      "name",   "ID",         "_autoremap", "_failureIf", "_successIf", "_skipIf",
-      "_while", "_onSuccess", "_onFailure", "_onHalted",  "_post"};
-  return kReserved.contains(name) || name.starts_with("_");
-}
-
-// Newlines and tabs are escaped too: an XML parser turns raw ones in attributes into spaces.
-std::string escape(std::string_view text) {
+std::string xml_escape(std::string_view text) {
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {
@@ -42,6 +27,20 @@ std::string escape(std::string_view text) {
   return out;
 }
 
+namespace {
+
+bool is_explicit_family_tag(const std::string& tag) {
+  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
+}
+
+// Attributes BT.CPP interprets itself; they are not ports of the node.
+bool is_reserved_attribute(const std::string& name) {
+  static const std::set<std::string_view> kReserved = {
+      "name",   "ID",         "_autoremap", "_failureIf", "_successIf", "_skipIf",
+      "_while", "_onSuccess", "_onFailure", "_onHalted",  "_post"};
+  return kReserved.contains(name) || name.starts_with("_");
+}
+
 void indent(std::string& out, int level) {
   out.append(static_cast<std::size_t>(level) * 2, ' ');
 }
@@ -50,7 +49,7 @@ void write_attribute(std::string& out, const std::string& name, const std::strin
   out += ' ';
   out += name;
   out += "=\"";
-  out += escape(value);
+  out += xml_escape(value);
   out += '"';
 }
 
@@ -169,7 +168,7 @@ void write_models(std::string& out, const std::vector<NodeModel>& models) {
       if (port.description.empty()) {
         out += "/>\n";
       } else {
-        out += '>' + escape(port.description) + "</" + port.direction + ">\n";
+        out += '>' + xml_escape(port.description) + "</" + port.direction + ">\n";
       }
     }
     indent(out, 2);

@@ -36,6 +36,10 @@ struct WriteOptions {
 // multi-byte UTF-8 sequence; no digit, '.' or '-' first).
 bool is_xml_name(std::string_view name);
 
+// Text for an XML attribute value or element content: & < > " escaped, and newlines and tabs
+// too (an XML parser turns raw ones in attributes into spaces).
+std::string xml_escape(std::string_view text);
+
 // Deterministic text: 2-space indentation, attributes in stored order, LF line ends, compact
 // syntax, <TreeNodesModel> last.
 std::string write_document(const Document& doc, const WriteOptions& options = {});

@@ -16,5 +16,6 @@ void register_diff(CLI::App& app, int& exit_code);
 void register_run(CLI::App& app, int& exit_code);
 void register_prove(CLI::App& app, int& exit_code);
 void register_monitor(CLI::App& app, int& exit_code);
+void register_schema(CLI::App& app, int& exit_code);
 
 }  // namespace uabt::cli

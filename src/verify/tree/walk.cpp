@@ -1,0 +1,66 @@
+#include "verify/tree/walk.hpp"
+
+namespace uabt::verify::tree {
+
+Registry::Registry(const load::Mission& mission) : mission_(mission) {
+  if (mission.nodes)
+    for (const auto& model : *mission.nodes) models_.emplace(model.id, &model);
+  auto add_document = [&](const bt::Document& document) {
+    for (const auto& model : document.node_models) models_.emplace(model.id, &model);
+  };
+  add_document(mission.tree);
+  for (const auto& alternative : mission.alternatives) add_document(alternative.document);
+  for (const auto& builtin : bt::builtin_nodes()) families_.emplace(builtin.name, builtin.family);
+  static const std::unordered_map<std::string, bt::Family> kFamilies = {
+      {"Action", bt::Family::action},
+      {"Condition", bt::Family::condition},
+      {"Control", bt::Family::control},
+      {"Decorator", bt::Family::decorator},
+      {"SubTree", bt::Family::subtree}};
+  for (const auto& [id, model] : models_) {
+    const auto it = kFamilies.find(model->family);
+    families_.emplace(id, it == kFamilies.end() ? bt::Family::unknown : it->second);
+  }
+  for (const auto& v : mission.domain.variables) domain_names_.insert(v.name);
+}
+
+const bt::NodeModel* Registry::model(const std::string& id) const {
+  const auto it = models_.find(id);
+  return it == models_.end() ? nullptr : it->second;
+}
+
+bt::Family Registry::family(const std::string& id) const {
+  const auto it = families_.find(id);
+  return it == families_.end() ? bt::Family::unknown : it->second;
+}
+
+SourceLocation Site::location() const {
+  return location_of(*node);
+}
+
+SourceLocation Site::attribute_location(const std::string& name) const {
+  const auto [line, column] = node->attribute_position(name);
+  return {tree->file, line, column};
+}
+
+SourceLocation Site::location_of(const bt::Node& other) const {
+  return {tree->file, other.line, other.column};
+}
+
+std::string describe(const bt::Node& node) {
+  std::string out = "<" + node.tag;
+  for (const char* key : {"ID", "name"})
+    if (const std::string* value = node.attribute(key))
+      out += " " + std::string(key) + "=\"" + *value + "\"";
+  return out + ">";
+}
+
+void add_path(Finding& finding, const Site& site, bool through_node) {
+  finding.related.push_back({{site.tree->file, site.tree->line, site.tree->column},
+                             "in <BehaviorTree ID=\"" + site.tree->id + "\">"});
+  for (const bt::Node* ancestor : *site.path)
+    finding.related.push_back({site.location_of(*ancestor), "in " + describe(*ancestor)});
+  if (through_node) finding.related.push_back({site.location(), "in " + describe(*site.node)});
+}
+
+}  // namespace uabt::verify::tree
