@@ -174,11 +174,32 @@ TEST(ReadBeforeWrite, PreconditionsAndDecoratorsThatMaySkipTheWriter) {
       run("      <Parallel success_count=\"1\"><Wait/><Script code=\"x := 1\"/></Parallel>\n"
           "      <ScriptCondition code=\"x == 1\"/>");
   EXPECT_TRUE(of(parallel, "bb-read-before-write").empty());
+  // RunOnce ticks its child before it ever skips it; Precondition may never tick it.
+  const auto once =
+      run("      <RunOnce><Script code=\"x := 1\"/></RunOnce>\n"
+          "      <ScriptCondition code=\"x == 1\"/>");
+  EXPECT_TRUE(of(once, "bb-read-before-write").empty());
+  const auto precondition =
+      run("      <Precondition if=\"battery &gt; 5\" else=\"SUCCESS\"><Script code=\"x := 1\"/>"
+          "</Precondition>\n      <ScriptCondition code=\"x == 1\"/>");
+  EXPECT_EQ(of(precondition, "bb-read-before-write").size(), 1u);
   // `x = 1` needs x to exist; `x := x + 1` reads it first.
   const auto assign = run("      <Script code=\"x = 1\"/>");
   EXPECT_EQ(of(assign, "bb-read-before-write").size(), 1u);
   const auto increment = run("      <Script code=\"y := 0; x := y + 1\"/>");
   EXPECT_TRUE(of(increment, "bb-read-before-write").empty());
+}
+
+TEST(ReadBeforeWrite, BuiltInPortsReadExceptTheOnesBehaviorTreeCppWrites) {
+  // LoopDouble writes `value` from the queue it reads; Repeat reads num_cycles.
+  const auto loop =
+      run("      <Script code=\"q := '1;2'\"/>\n"
+          "      <LoopDouble queue=\"{q}\" value=\"{v}\"><Wait/></LoopDouble>\n"
+          "      <Repeat num_cycles=\"{n}\"><Wait/></Repeat>");
+  const auto found = of(loop, "bb-read-before-write");
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NE(found[0].message.find("input port 'num_cycles' ({n}) of Repeat"), std::string::npos)
+      << found[0].message;
 }
 
 TEST(ReadBeforeWrite, DomainVariablesAreTheRobotsAndAreNotReported) {

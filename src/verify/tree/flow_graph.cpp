@@ -9,6 +9,8 @@
 
 namespace uabt::verify::tree {
 
+using bt::blackboard_key;
+
 namespace {
 
 constexpr std::uint32_t kNone = UINT32_MAX;
@@ -25,12 +27,14 @@ bool is_port(const std::string& attribute) {
          attribute != "ID" && attribute != "name";
 }
 
-// `{key}` (`{=}`: the key named like the port) → the key.
-std::optional<std::string> blackboard_key(const std::string& port, const std::string& value) {
-  if (value.size() < 2 || value.front() != '{' || value.back() != '}') return std::nullopt;
-  std::string key = value.substr(1, value.size() - 2);
-  if (key == "=") key = port;
-  return key;
+// A built-in node's port: the Loop decorators write `value` (and pop `queue`, which must be
+// there); every other built-in port is an input.
+std::string builtin_direction(const std::string& kind, const std::string& port) {
+  if (kind.rfind("Loop", 0) == 0) {
+    if (port == "value") return "output_port";
+    if (port == "queue") return "inout_port";
+  }
+  return "input_port";
 }
 
 bool is_precondition(const std::string& a) {
@@ -223,7 +227,7 @@ class Builder {
       // it, BT.CPP refuses the node: ref-unknown-node says so, and the entry is not judged).
       const bool builtin = model == nullptr && bt::find_builtin(kind) != nullptr;
       if (!builtin && port == nullptr) continue;
-      const std::string direction = builtin ? "input_port" : port->direction;
+      const std::string direction = !builtin ? port->direction : builtin_direction(kind, attribute);
       const std::uint32_t e = entry(scope, *key);
       if (direction != "output_port")
         g_.vertices[at].reads.push_back(
@@ -374,10 +378,11 @@ class Builder {
         out.failure = c.failure;
       }
       out.skipped = c.skipped;
-      // Decorators that may end without ticking their child.
-      if (kind == "RunOnce" || kind == "Precondition" || kind == "Timeout" ||
-          kind == "SkipUnlessUpdated" || kind == "LoopInt" || kind == "LoopBool" ||
-          kind == "LoopDouble" || kind == "LoopString" || kind.rfind("BlackboardCheck", 0) == 0) {
+      // Decorators that may end without ticking their child. (RunOnce skips it only once it
+      // has run it to the end; Timeout and Delay tick it before they can end.)
+      if (kind == "Precondition" || kind == "SkipUnlessUpdated" || kind == "LoopInt" ||
+          kind == "LoopBool" || kind == "LoopDouble" || kind == "LoopString" ||
+          kind.rfind("BlackboardCheck", 0) == 0) {
         out.success.push_back(enter);
         out.failure.push_back(enter);
         out.skipped.push_back(enter);
