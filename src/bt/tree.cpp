@@ -59,4 +59,11 @@ const TreeDef* Document::main() const {
   return nullptr;
 }
 
+std::optional<std::string> blackboard_key(const std::string& port, const std::string& value) {
+  if (value.size() < 2 || value.front() != '{' || value.back() != '}') return std::nullopt;
+  std::string key = value.substr(1, value.size() - 2);
+  if (key == "=") key = port;
+  return key;
+}
+
 }  // namespace uabt::bt

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +28,10 @@ struct Node {
   std::string kind() const;
   bool operator==(const Node& other) const;  // tag, attributes, children; not positions
 };
+
+// A port value that names a blackboard entry, as BT.CPP 4 reads it: `{key}` → key, and `{=}`
+// → the entry named like the port; nullopt for a literal.
+std::optional<std::string> blackboard_key(const std::string& port, const std::string& value);
 
 struct TreeDef {
   std::string id;

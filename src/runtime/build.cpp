@@ -11,6 +11,8 @@
 
 namespace uabt::runtime {
 
+using bt::blackboard_key;
+
 namespace detail {
 
 namespace {
@@ -81,14 +83,6 @@ const ConditionAttribute* condition_attribute(std::string_view name) {
 
 bool is_explicit_family(const std::string& tag) {
   return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
-// `{key}` (or `{=}`: the key named like the port) → the key; otherwise nullopt.
-std::optional<std::string> blackboard_key(const std::string& port, const std::string& value) {
-  if (value.size() < 2 || value.front() != '{' || value.back() != '}') return std::nullopt;
-  std::string key = value.substr(1, value.size() - 2);
-  if (key == "=") key = port;
-  return key;
 }
 
 // BT.CPP treats only attributes that start with a letter as ports; `_description`, `_uid`

@@ -11,6 +11,7 @@
 #include "verify/division.hpp"
 #include "verify/domain_check.hpp"
 #include "verify/node.hpp"
+#include "verify/tree/blackboard_checks.hpp"
 #include "verify/tree/tree_checks.hpp"
 
 namespace uabt::verify {
@@ -238,6 +239,8 @@ Result verify_mission(const load::Mission& mission, const Options& options) {
   for (auto& f : skipped.findings) result.findings.push_back(std::move(f));
   for (auto& f : check_divisions(mission, options)) result.findings.push_back(std::move(f));
   for (auto& f : tree::check_trees(mission)) result.findings.push_back(std::move(f));
+  for (auto& f : tree::check_blackboard_and_scripts(mission, options))
+    result.findings.push_back(std::move(f));
   for (const auto& id : order) {
     for (auto* list : {&analysed, &skipped.coverage})
       for (auto& c : *list)

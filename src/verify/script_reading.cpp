@@ -1,13 +1,13 @@
 // BehaviorTree.CPP script conditions back into FRETISH (the inverse of compile's
 // atom_to_script): the script is parsed by the one BT.CPP script parser (bt/script), and its
 // tree is translated here.
-#include "conform/script_parse.hpp"
+#include "verify/script_reading.hpp"
 
 #include <stdexcept>
 
 #include "bt/script/ast.hpp"
 
-namespace uabt::conform {
+namespace uabt::verify {
 
 using bt::script::CompareOp;
 using bt::script::Expr;
@@ -113,6 +113,7 @@ class Translator {
                     e.column);
   }
 
+ public:
   ExprPtr translate(std::uint32_t index) {
     const Expr& e = script_.nodes()[index];
     switch (e.op) {
@@ -146,6 +147,7 @@ class Translator {
     throw ReadError("an unknown operator", e.column);
   }
 
+ private:
   const bt::script::Script& script_;
   const fretish::Domain& domain_;
   ScriptReading& out_;
@@ -167,4 +169,16 @@ ScriptReading parse_script_condition(const std::string& code, const fretish::Dom
   return reading;
 }
 
-}  // namespace uabt::conform
+ScriptReading read_script_expression(const bt::script::Script& script, std::uint32_t index,
+                                     const fretish::Domain& domain) {
+  ScriptReading reading;
+  try {
+    reading.expr = Translator(script, domain, reading).translate(index);
+  } catch (const ReadError& e) {
+    reading.error = e.what();
+  }
+  if (!reading.expr) reading.local_reads.clear();
+  return reading;
+}
+
+}  // namespace uabt::verify

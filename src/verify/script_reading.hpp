@@ -1,0 +1,34 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "bt/script/ast.hpp"
+#include "fretish/domain.hpp"
+#include "fretish/expr.hpp"
+
+namespace uabt::verify {
+
+// A ScriptCondition's `code` read back into a FRETISH condition.
+struct ScriptReading {
+  fretish::ExprPtr expr;  // nullptr when `error` says why the code is not a condition
+  std::string error;
+  // Blackboard entries the code reads without the `@` root prefix: they resolve through the
+  // SubTree blackboards between the script and the tree that owns the state.
+  std::vector<std::string> local_reads;
+};
+
+// Parses BehaviorTree.CPP 4.x script syntax as a side-effect-free condition: numbers,
+// true/false, identifiers (blackboard entries; `@x` is the root blackboard's x), 'quoted'
+// strings (enum literals: `'rocks'` is the literal rocks), parentheses, unary - and !,
+// * /, + -, comparison chains (`a < b < c` is `a < b && b < c`), and && || (one precedence
+// level, left-associative, as in BT.CPP's grammar). Assignments, `;`, `?:` and bitwise operators
+// are refused. `domain` tells enum literals from variables: a quoted string must be a literal
+// of one of its enums, an unquoted name must not be only a literal.
+ScriptReading parse_script_condition(const std::string& code, const fretish::Domain& domain);
+
+// One expression of a parsed script (a statement, or an assignment's value) read the same way:
+// the whole-tree checks ask the domain about preconditions and assigned values with it.
+ScriptReading read_script_expression(const bt::script::Script& script, std::uint32_t index,
+                                     const fretish::Domain& domain);
+
+}  // namespace uabt::verify
