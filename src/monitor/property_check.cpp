@@ -101,8 +101,10 @@ class PartChecker {
         return std::nullopt;
       }
       case ExprKind::call: {
-        if (!is_monitored_function(e.text)) {
-          report("property-reference", "function '" + e.text + "' is not monitored on a run", e);
+        const std::string why = unmonitored_temporal(e.text, e.args.size());
+        if (!is_monitored_function(e.text) || !why.empty()) {
+          report("property-reference",
+                 why.empty() ? "function '" + e.text + "' is not monitored on a run" : why, e);
           return std::nullopt;
         }
         std::optional<Type> result = Type::number;
@@ -111,7 +113,7 @@ class PartChecker {
           if (!t) return std::nullopt;
           if (e.text.rfind("pre", 0) == 0 || e.text == "ite") result = t;
         }
-        if (e.text == "preBool") return Type::boolean;
+        if (e.text == "preBool" || is_temporal_function(e.text)) return Type::boolean;
         return result;
       }
       case ExprKind::logical_not:
