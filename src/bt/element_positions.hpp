@@ -21,9 +21,14 @@ class ElementPositions {
 
   // (line, column); column 0 when unknown.
   std::pair<int, int> of(const tinyxml2::XMLElement* e) const;
+  // (line, column) of each attribute name of the start tag at (line, column), in document
+  // order; empty when the element's column is unknown.
+  std::vector<std::pair<int, int>> attributes_at(int line, int column) const;
 
  private:
   int search_column(int line, const std::string& name) const;
+  std::pair<int, int> position_of(std::size_t offset) const;
+  std::vector<std::size_t> line_starts_;  // byte offset of each line
 
   const std::string& text_;
   std::unordered_map<const tinyxml2::XMLElement*, std::pair<int, int>> positions_;

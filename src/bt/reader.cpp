@@ -264,6 +264,11 @@ class TextParser {
     for (const tinyxml2::XMLAttribute* a = element->FirstAttribute(); a != nullptr; a = a->Next()) {
       node.attributes.emplace_back(a->Name(), a->Value());
     }
+    if (!node.attributes.empty()) {
+      node.attribute_positions = positions_->attributes_at(at.line, at.column);
+      if (node.attribute_positions.size() != node.attributes.size())
+        node.attribute_positions.clear();  // a tag the scan could not follow: element positions
+    }
     for (const XMLElement* child = element->FirstChildElement(); child != nullptr;
          child = child->NextSiblingElement()) {
       node.children.push_back(read_node(child));

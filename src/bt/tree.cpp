@@ -17,6 +17,12 @@ const std::string* Node::attribute(const std::string& name) const {
   return nullptr;
 }
 
+std::pair<int, int> Node::attribute_position(const std::string& name) const {
+  for (std::size_t i = 0; i < attributes.size() && i < attribute_positions.size(); ++i)
+    if (attributes[i].first == name) return attribute_positions[i];
+  return {line, column};
+}
+
 void Node::set_attribute(const std::string& name, std::string value) {
   for (auto& [key, existing] : attributes) {
     if (key == name) {

@@ -14,8 +14,13 @@ struct Node {
   std::vector<Node> children;
   int line = 0;  // 1-based position of '<' in the file
   int column = 0;
+  // Where each attribute's name starts, (line, column), parallel to `attributes` as read
+  // (empty or shorter when unknown or for attributes set later).
+  std::vector<std::pair<int, int>> attribute_positions;
 
   const std::string* attribute(const std::string& name) const;
+  // Where attribute `name` starts, or the element's own position when unknown.
+  std::pair<int, int> attribute_position(const std::string& name) const;
   void set_attribute(const std::string& name, std::string value);
   // The node's registered name: ID="X" for explicit <Action|Condition|Control|Decorator ID="X">,
   // otherwise the tag.
