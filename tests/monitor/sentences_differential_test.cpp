@@ -324,6 +324,7 @@ TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
   }
   RecordProperty("sentences", sentences);
   RecordProperty("verdicts", verdicts);
+  RecordProperty("temporal_sentences", temporal);
   EXPECT_EQ(disagreements, 0) << disagreements << " disagreements in " << verdicts
                               << " verdicts of " << sentences << " sentences; the first:\n"
                               << first;
