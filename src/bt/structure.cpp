@@ -5,6 +5,7 @@
 #include <map>
 
 #include "bt/node_kinds.hpp"
+#include "bt/script/load_check.hpp"
 
 namespace uabt::bt {
 
@@ -124,6 +125,12 @@ class StructureChecker {
 
   void check_node(std::size_t tree_index, const Node& node) {
     const TreeDef& tree = *trees_[tree_index];
+    // BT.CPP parses every script when it builds the node (the engine does the same).
+    for (auto& [attribute, message] : script::node_script_refusals(node)) {
+      const auto [line, column] = attribute.empty() ? std::pair{node.line, node.column}
+                                                    : node.attribute_position(attribute);
+      report(tree, line, column, std::move(message));
+    }
     const std::size_t n = node.children.size();
     if (node.tag == "Adaptable") return check_adaptable(tree, node);
     if (is_explicit_family_tag(node.tag) && node.attribute("ID") == nullptr) {

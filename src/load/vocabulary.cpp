@@ -125,6 +125,7 @@ void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
     std::set<std::string> reported;  // once per name and expression
     for (const Expr* id : ids) {
       if (known.count(id->text) || !reported.insert(id->text).second) continue;
+      if (id->text == "FTP") continue;  // FRET's own name: report_first_time_point
       m.undeclared.insert(id->text);
       if (!unparsed.empty()) {  // unknowable: the broken line may declare it
         const std::string why = source_of(use) + " reads '" + id->text +
@@ -202,6 +203,7 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
     std::vector<const Expr*> ids;
     identifier_nodes(*use.expr, ids);
     for (const Expr* id : ids) {
+      if (id->text == "FTP") continue;  // FRET's own name: report_first_time_point
       Seen& s = seen[id->text];
       if (s.count++ == 0) {
         s.first = id;
@@ -262,6 +264,47 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
   }
 }
 
+// FRET's predefined FTP (true at the first tick only) is FRET's, not a typo: a mission property
+// reads it as FRET does (uabt monitor, uabt run). A selection guard or an assumption is a
+// condition of one state, where the first tick has no meaning: refused by name, never a
+// condition of its own.
+// Returns the assumptions that read it (they leave the domain once every use is checked).
+std::set<std::string> report_first_time_point(Mission& m, const std::vector<VocabularyUse>& uses) {
+  std::set<std::string> assumptions;
+  for (const auto& v : m.domain.variables)
+    if (v.declared && v.name == "FTP") return assumptions;  // a variable of that name is it
+  for (const auto& use : uses) {
+    std::vector<const Expr*> ids;
+    identifier_nodes(*use.expr, ids);
+    const auto ftp =
+        std::find_if(ids.begin(), ids.end(), [](const Expr* id) { return id->text == "FTP"; });
+    if (ftp == ids.end()) continue;
+    m.undeclared.insert("FTP");
+    Finding f = make_finding(
+        "fretish-unsupported",
+        "FRET's first time point 'FTP' in " + source_of(use) + " has no meaning here: " +
+            (use.requirement.empty() ? "an assumption holds in every state"
+                                     : "a selection guard is a condition of the state the tree "
+                                       "ticks in"),
+        at(**ftp, use.owner));
+    f.adaptable = use.adaptable;
+    if (!use.requirement.empty()) f.requirements = {use.requirement};
+    f.notes.push_back(
+        "state what holds at the first tick in a mission property, e.g. 'the rover shall always "
+        "satisfy FTP -> battery = 100', which uabt monitor and uabt run check");
+    m.findings.push_back(std::move(f));
+    const std::string why = source_of(use) + " reads FRET's first time point 'FTP'";
+    if (!use.adaptable.empty()) {
+      m.not_verified.emplace(use.adaptable, why);
+    } else if (use.requirement.empty()) {
+      assumptions.insert(use.assumption);
+      for (const auto& site : m.adaptables)
+        if (!site.id.empty()) m.not_verified.emplace(site.id, why);
+    }
+  }
+  return assumptions;
+}
+
 }  // namespace
 
 std::vector<VocabularyUse> vocabulary_uses(const Mission& m) {
@@ -274,12 +317,15 @@ std::vector<VocabularyUse> vocabulary_uses(const Mission& m) {
 }
 
 void check_vocabulary(Mission& m, const std::vector<VocabularyUse>& uses) {
+  const std::set<std::string> first_tick = report_first_time_point(m, uses);
   if (m.has_domain_file || m.nodes) {
     report_undeclared(m, uses);
     report_unused(m);
   } else {
     report_similar(m, uses);
   }
+  std::erase_if(m.domain.assumptions,
+                [&](const fretish::Assumption& a) { return first_tick.count(a.name) > 0; });
 }
 
 }  // namespace uabt::load

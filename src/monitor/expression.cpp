@@ -29,8 +29,9 @@ struct Function {
 // FRET's built-in functions (its LTL.g4 / SMV translation), by the name FRETISH writes.
 std::optional<int> function_arity(const std::string& name) {
   static const Function functions[] = {
-      {"absReal", 1}, {"absInt", 1}, {"minReal", 2}, {"minInt", 2}, {"maxReal", 2},
-      {"maxInt", 2},  {"ite", 3},    {"preBool", 2}, {"preInt", 2}, {"preReal", 2}};
+      {"absReal", 1},   {"absInt", 1},   {"minReal", 2}, {"minInt", 2}, {"maxReal", 2},
+      {"maxInt", 2},    {"ite", 3},      {"preBool", 2}, {"preInt", 2}, {"preReal", 2},
+      {"persisted", 2}, {"occurred", 2}, {"prevOcc", 2}};
   for (const Function& f : functions)
     if (name == f.name) return f.arity;
   return std::nullopt;
@@ -52,10 +53,40 @@ bool is_monitored_function(const std::string& name) {
   return function_arity(name).has_value();
 }
 
+bool is_temporal_function(const std::string& name) {
+  return name == "persisted" || name == "occurred" || name == "prevOcc";
+}
+
+std::string unmonitored_temporal(const std::string& name, std::size_t args) {
+  if (name == "nextOcc")
+    return "FRET's 'nextOcc' looks ahead to the next occurrence: FRET expands it only into "
+           "future-time LTL, ($Right$ | (X (((!p & !$Right$) U p) => ((!p & !$Right$) U (p & "
+           "q))))), and its past-time formula, the one a monitor evaluates, keeps it unexpanded";
+  if (name == "persists" || name == "occurs")
+    return "FRET's '" + name + "' looks ahead (G[<=n] / F[<=n]): FRET expands it only into " +
+           "future-time LTL, and its past-time formula, the one a monitor evaluates, has none";
+  if ((name == "persisted" || name == "occurred") && args == 3)
+    return "FRET's '" + name + "(m, n, p)' needs p at each of the last n ticks (" +
+           (name == "persisted" ? "H[m,n]" : "S[m,n]") + "); only " + name + "(n, p) is monitored";
+  return {};
+}
+
+namespace {
+
+bool is_whole_number(const fretish::Expr& e) {
+  if (e.kind != ExprKind::number || e.text.empty() || e.text.size() > 12) return false;
+  for (char ch : e.text)
+    if (ch < '0' || ch > '9') return false;
+  return true;
+}
+
+}  // namespace
+
 std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Expr& e,
                                                               const Resolver& resolve,
-                                                              std::string& error) {
+                                                              std::string& error, Field field) {
   CompiledExpression c;
+  c.field_ = field;
   c.root_ = c.build(e, resolve, error);
   if (c.root_ < 0) return std::nullopt;
   return c;
@@ -96,25 +127,43 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
     case ExprKind::call: {
       const auto arity = function_arity(e.text);
       if (!arity) {
-        // FRET's temporal predicates need the scope's interval; not monitored (yet).
-        static const char* const temporal[] = {"persisted", "occurred", "persists",
-                                               "occurs",    "prevOcc",  "nextOcc"};
-        bool is_temporal = false;
-        for (const char* t : temporal) is_temporal = is_temporal || e.text == t;
-        error = is_temporal ? "FRET's temporal function '" + e.text + "' is not monitored"
-                            : "'" + e.text + "' is not one of FRET's functions";
+        error = unmonitored_temporal(e.text, e.args.size());
+        if (error.empty()) error = "'" + e.text + "' is not one of FRET's functions";
         return -1;
       }
       if (static_cast<int>(e.args.size()) != *arity) {
-        error = "function '" + e.text + "' takes " + std::to_string(*arity) + " arguments";
+        error = unmonitored_temporal(e.text, e.args.size());
+        if (error.empty())
+          error = "function '" + e.text + "' takes " + std::to_string(*arity) + " arguments";
         return -1;
       }
       const std::string& f = e.text;
-      n.kind = f.rfind("abs", 0) == 0   ? K::abs
-               : f.rfind("min", 0) == 0 ? K::min
-               : f.rfind("max", 0) == 0 ? K::max
-               : f == "ite"             ? K::ite
-                                        : K::previous;
+      if (f == "persisted" || f == "occurred") {
+        // FRET expands them only when n is an integer (xform.js, nIsNumber).
+        if (!is_whole_number(*e.args[0])) {
+          error = "the first argument of '" + f + "' is '" + fretish::to_fretish(*e.args[0]) +
+                  "': FRET expands " + f + "(n, p) only for a whole number of ticks n";
+          return -1;
+        }
+        n.kind = f == "persisted" ? K::persisted : K::occurred;
+        n.bound = std::strtoull(e.args[0]->text.c_str(), nullptr, 10);
+        const int p = build(*e.args[1], resolve, error);
+        if (p < 0) return -1;
+        n.args.push_back(p);
+      } else if (f == "prevOcc") {
+        n.kind = K::prev_occ;
+        for (const auto& a : e.args) {
+          const int x = build(*a, resolve, error);
+          if (x < 0) return -1;
+          n.args.push_back(x);
+        }
+      } else {
+        n.kind = f.rfind("abs", 0) == 0   ? K::abs
+                 : f.rfind("min", 0) == 0 ? K::min
+                 : f.rfind("max", 0) == 0 ? K::max
+                 : f == "ite"             ? K::ite
+                                          : K::previous;
+      }
       break;
     }
     case ExprKind::logical_not: n.kind = K::logical_not; break;
@@ -137,22 +186,88 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
     case ExprKind::pow: n.kind = K::pow; break;
     case ExprKind::negate: n.kind = K::negate; break;
   }
-  for (const auto& arg : e.args) {
-    const int a = build(*arg, resolve, error);
-    if (a < 0) return -1;
-    n.args.push_back(a);
+  const bool temporal = n.kind == K::persisted || n.kind == K::occurred || n.kind == K::prev_occ;
+  if (!temporal) {
+    for (const auto& arg : e.args) {
+      const int a = build(*arg, resolve, error);
+      if (a < 0) return -1;
+      n.args.push_back(a);
+    }
   }
   if (n.kind == K::previous) {
     n.state = static_cast<int>(previous_.size());
     previous_.push_back({});
   }
+  if (temporal) {
+    n.state = static_cast<int>(temporal_.size());
+    Temporal t;
+    t.age_a = t.age_left = n.bound + 1;  // never seen: beyond the bound
+    temporal_.push_back(t);
+  }
   nodes_.push_back(std::move(n));
   const int id = static_cast<int>(nodes_.size()) - 1;
   if (nodes_[static_cast<std::size_t>(id)].kind == K::previous) previous_nodes_.push_back(id);
+  if (temporal) temporal_nodes_.push_back(id);
   return id;
 }
 
+// This tick's value of every temporal function, inner ones first, each from its arguments at
+// this tick and its state, which then moves on: FRET's expansions (xform.js,
+// pastTemporalConditions; pastTemporalConditionsNoBounds in the mode, where $Left$ is absent).
+bool CompiledExpression::update_temporal(const std::vector<Val>& frame, std::string& error) {
+  const bool in_mode = field_ == Field::mode;
+  const bool left = !in_mode && (left_ ? *left_ : first_tick_);
+  const auto boolean = [&](int node) -> std::optional<bool> {
+    const Val v = eval(node, frame, error);
+    if (!error.empty()) return std::nullopt;
+    if (v.kind != Val::Kind::boolean) {
+      error = std::string("a boolean is needed, got ") + kind_name(v.kind);
+      return std::nullopt;
+    }
+    return v.number != 0;
+  };
+  const auto older = [](std::uint64_t age, std::uint64_t bound) {
+    return age > bound ? bound + 1 : age + 1;
+  };
+  for (int id : temporal_nodes_) {
+    const N& n = nodes_[static_cast<std::size_t>(id)];
+    Temporal& t = temporal_[static_cast<std::size_t>(n.state)];
+    const auto p = boolean(n.args[0]);
+    if (!p) return false;
+    t.age_left = left ? 0 : older(t.age_left, n.bound);
+    switch (n.kind) {
+      case K::persisted:
+        // H[<=n] p: no !p at distance 0..n; H[<n] !$Left$: no $Left$ at distance 0..n-1.
+        t.age_a = *p ? older(t.age_a, n.bound) : 0;
+        t.value = t.age_a > n.bound && t.age_left >= n.bound;
+        break;
+      case K::occurred:
+        // (!$Left$) S p and O[<=n] p.
+        t.age_a = *p ? 0 : older(t.age_a, n.bound);
+        t.since_a = *p || (!left && t.since_a);
+        t.value = t.since_a && t.age_a <= n.bound;
+        break;
+      default: {
+        const auto q = boolean(n.args[1]);
+        if (!q) return false;
+        // Y reads the previous tick's S values; at the first tick Y is false.
+        if (in_mode) {
+          t.value = !first_tick_ && t.since_b;  // Y((!p) S (p & q))
+        } else {
+          t.value = left || (!first_tick_ && (!t.since_a || t.since_b));
+        }
+        const bool quiet = !left && !*p;
+        t.since_a = *p || (quiet && t.since_a);
+        t.since_b = (*p && *q) || (quiet && t.since_b);
+        break;
+      }
+    }
+  }
+  return true;
+}
+
 Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& error) {
+  if (!temporal_nodes_.empty() && !update_temporal(frame, error)) return {};
   const Val v = eval(root_, frame, error);
   // pre*: read this tick's argument values first, then store them all, so nested ones and
   // short-circuited branches see the same previous values.
@@ -315,6 +430,9 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string&
       return p.seen ? p.value : arg(0);
     }
     case K::first_tick: return Val::of_bool(first_tick_);
+    case K::persisted:
+    case K::occurred:
+    case K::prev_occ: return Val::of_bool(temporal_[static_cast<std::size_t>(n.state)].value);
   }
   return {};
 }

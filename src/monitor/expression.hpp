@@ -50,8 +50,21 @@ struct Resolved {
 };
 using Resolver = std::function<Resolved(const std::string&)>;
 
-// absReal, ite, preBool, …: FRET's functions the monitor evaluates.
+// absReal, ite, preBool, persisted, …: FRET's functions the monitor evaluates.
 bool is_monitored_function(const std::string& name);
+
+// persisted, occurred, prevOcc: FRET's past-time temporal functions (they read earlier ticks).
+bool is_temporal_function(const std::string& name);
+
+// Why FRET's temporal function `name` with `args` arguments is not monitored, in FRET's terms
+// (nextOcc, persists, occurs look ahead; the three-argument forms need a window), or "".
+std::string unmonitored_temporal(const std::string& name, std::size_t args);
+
+// Where an expression stands in its requirement, for FRET's temporal functions: in the scope's
+// mode FRET expands them without the scope (xform.js, pastTemporalConditionsNoBounds); in the
+// condition, response and stop condition they count from the scope's left end point ($Left$),
+// which the caller gives each tick (set_scope_start), and which is FRET's FTP until then.
+enum class Field { mode, other };
 
 // A FRETISH expression compiled for evaluation once per tick: FRET's operators, arithmetic,
 // absReal/absInt, minReal/maxReal/minInt/maxInt, ite, preBool/preInt/preReal (the value at
@@ -61,7 +74,12 @@ class CompiledExpression {
  public:
   // Fails (returns nullopt, with `error` set) for an unknown identifier or function.
   static std::optional<CompiledExpression> compile(const fretish::Expr& e, const Resolver& resolve,
-                                                   std::string& error);
+                                                   std::string& error, Field field = Field::other);
+
+  // Whether this tick is the first point of the requirement's scope (FRET's $Left$), for
+  // persisted/occurred/prevOcc; call before evaluate(). Without a call, the first tick is.
+  void set_scope_start(bool left) { left_ = left; }
+  bool has_temporal_functions() const { return !temporal_nodes_.empty(); }
 
   // Evaluates the expression at this tick; `error` is set on a type error (then the value is
   // missing). Call exactly once per tick: pre* keep the previous tick's value.
@@ -98,15 +116,19 @@ class CompiledExpression {
     max,
     ite,
     previous,
-    first_tick
+    first_tick,
+    persisted,  // FRET: (H[<=n] p) & (H[<n] !$Left$)
+    occurred,   // FRET: ((!$Left$) S p) & (O[<=n] p)
+    prev_occ    // FRET: $Left$ | Y(((!$Left$ & !p) S p) => ((!$Left$ & !p) S (p & q)))
   };
   struct N {
     K kind = K::constant;
     std::vector<int> args;
     Val constant;
     int slot = -1;
-    std::string name;  // variable: for messages
-    int state = -1;    // previous: index into previous_
+    std::string name;         // variable: for messages
+    int state = -1;           // previous: index into previous_; temporal: into temporal_
+    std::uint64_t bound = 0;  // persisted, occurred: n
   };
   int build(const fretish::Expr& e, const Resolver& resolve, std::string& error);
   Val eval(int node, const std::vector<Val>& frame, std::string& error);
@@ -121,6 +143,19 @@ class CompiledExpression {
   std::vector<Previous> previous_;
   std::vector<int> previous_nodes_;  // pre* nodes, outermost last
   bool first_tick_ = true;           // FTP: no tick evaluated yet
+  // Constant state of a temporal function: two ages that stop at bound + 1 and two bits.
+  struct Temporal {
+    std::uint64_t age_a = ~std::uint64_t{0};     // persisted: ticks since !p; occurred: since p
+    std::uint64_t age_left = ~std::uint64_t{0};  // ticks since $Left$
+    bool since_a = false;  // occurred: (!$Left$) S p; prevOcc: (!$Left$ & !p) S p
+    bool since_b = false;  // prevOcc: (!$Left$ & !p) S (p & q)
+    bool value = false;    // this tick's value
+  };
+  std::vector<Temporal> temporal_;
+  std::vector<int> temporal_nodes_;  // inner ones first
+  Field field_ = Field::other;
+  std::optional<bool> left_;  // $Left$ at this tick, when given
+  bool update_temporal(const std::vector<Val>& frame, std::string& error);
 };
 
 }  // namespace uabt::monitor

@@ -146,7 +146,8 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
       continue;
     }
     std::string error;
-    auto compiled = CompiledExpression::compile(*parts[i], resolve, error);
+    auto compiled =
+        CompiledExpression::compile(*parts[i], resolve, error, i == 0 ? Field::mode : Field::other);
     if (!compiled) {
       reason = std::string(part_names[i]) + ": " + error;
       return nullptr;
@@ -158,6 +159,12 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
     }
     m->parts_.push_back(std::move(compiled));
   }
+  bool temporal = false;
+  for (std::size_t i = 1; i < 4; ++i)
+    temporal = temporal || (m->parts_[i] && m->parts_[i]->has_temporal_functions());
+  if (temporal)
+    m->start_.emplace(m->start_formula_,
+                      build_scope_start_formula(m->start_formula_, m->shape_.scope, 0));
   const int root = build_requirement_formula(m->formula_, m->shape_, Slots{});
   m->pending_node_ = r.response ? build_pending_formula(m->formula_, m->shape_, Slots{}) : -1;
   if (m->pending_node_ >= 0) {
@@ -181,6 +188,11 @@ bool RequirementMonitor::step(const std::vector<Val>& frame) {
   bool inputs[4] = {false, false, false, false};
   static const char* part_names[] = {"scope", "condition", "response", "stop condition"};
   for (std::size_t i = 0; i < 4; ++i) {
+    if (i == 1 && start_) {
+      const bool left = start_->step(inputs);  // reads the mode, input 0
+      for (std::size_t j = 1; j < 4; ++j)
+        if (parts_[j]) parts_[j]->set_scope_start(left);
+    }
     if (!parts_[i]) continue;
     std::string error;
     inputs[i] = parts_[i]->evaluate_bool(frame, error);

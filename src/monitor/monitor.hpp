@@ -65,6 +65,8 @@ class RequirementMonitor {
   std::vector<std::optional<CompiledExpression>> parts_;  // mode, condition, response, stop
   Formula formula_;
   std::optional<FormulaMonitor> run_;
+  Formula start_formula_;  // FRET's $Left$, when a part has temporal functions
+  std::optional<FormulaMonitor> start_;
   std::vector<int> variables_;
   std::vector<Val> violation_values_;
   std::string error_;

@@ -101,17 +101,29 @@ class PartChecker {
         return std::nullopt;
       }
       case ExprKind::call: {
-        if (!is_monitored_function(e.text)) {
-          report("property-reference", "function '" + e.text + "' is not monitored on a run", e);
+        const std::string why = unmonitored_temporal(e.text, e.args.size());
+        if (!is_monitored_function(e.text) || !why.empty()) {
+          report("property-reference",
+                 why.empty() ? "function '" + e.text + "' is not monitored on a run" : why, e);
           return std::nullopt;
         }
         std::optional<Type> result = Type::number;
-        for (const auto& a : e.args) {
-          const auto t = type_of(*a);
+        const bool temporal = is_temporal_function(e.text);
+        for (std::size_t i = 0; i < e.args.size(); ++i) {
+          const Expr& a = *e.args[i];
+          const auto t = type_of(a);
           if (!t) return std::nullopt;
           if (e.text.rfind("pre", 0) == 0 || e.text == "ite") result = t;
+          // persisted(n, p), occurred(n, p), prevOcc(p, q): p and q are conditions.
+          if (temporal && *t != Type::boolean && (e.text == "prevOcc" || i == 1)) {
+            report("property-type",
+                   "'" + fretish::to_fretish(a) + "' is " + type_name(*t) + ", but " + e.text +
+                       " needs a boolean there",
+                   a);
+            return std::nullopt;
+          }
         }
-        if (e.text == "preBool") return Type::boolean;
+        if (e.text == "preBool" || is_temporal_function(e.text)) return Type::boolean;
         return result;
       }
       case ExprKind::logical_not:

@@ -250,6 +250,33 @@ int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots
   return f.constant(true);
 }
 
+int build_scope_start_formula(Formula& f, ScopeKind scope, int mode_slot) {
+  const int M = f.input(mode_slot);
+  const int nM = f.negation(M);
+  const int ftp = f.first_tick();
+  // First point of an interval where m holds: m & (FTP | Y !m).
+  const auto first_of = [&](int m, int not_m) {
+    return f.conjunction(m, f.disjunction(ftp, f.yesterday(not_m)));
+  };
+  switch (scope) {
+    case ScopeKind::null:
+    case ScopeKind::before:
+    case ScopeKind::only_after: return ftp;
+    case ScopeKind::in: return first_of(M, nM);
+    case ScopeKind::notin:
+    case ScopeKind::only_in: return first_of(nM, M);
+    case ScopeKind::after: {
+      // FLin: the first point after the end of the first interval of m.
+      const int past_end = f.conjunction(nM, f.yesterday(M));
+      return f.conjunction(past_end, f.yesterday(f.historically(f.negation(past_end))));
+    }
+    case ScopeKind::only_before:
+      // FFin: the first point where m holds.
+      return f.conjunction(first_of(M, nM), f.disjunction(f.yesterday(f.historically(nM)), ftp));
+  }
+  return ftp;
+}
+
 namespace {
 
 // An open obligation of the null-scope formula (not dual) in context `c`, or -1.

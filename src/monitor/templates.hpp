@@ -46,6 +46,11 @@ struct Slots {
 // formalization. Returns the root node.
 int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots);
 
+// FRET's $Left$ for the scope: true at the scope's left end point, from which the temporal
+// functions persisted/occurred/prevOcc of the condition, response and stop count (semantics.json,
+// endpoints.SMVptExtleft). Reads the mode from input `mode_slot`. Returns the node.
+int build_scope_start_formula(Formula& f, ScopeKind scope, int mode_slot);
+
 // An obligation still open at tick t: true at t when the trace so far holds the requirement
 // only because it ends before a deadline (a `within`, `for`, `after` or `next` whose trigger
 // was recent). FRET's finite-trace meaning counts such a trace as held; reports say it is

@@ -53,7 +53,9 @@ struct ProbeWorld : runtime::World {
 constexpr long long kMaxValues = 4096;
 
 bool uses_previous(const fretish::Expr& e) {
-  if (e.kind == fretish::ExprKind::call && e.text.rfind("pre", 0) == 0) return true;
+  if (e.kind == fretish::ExprKind::call &&
+      (e.text.rfind("pre", 0) == 0 || monitor::is_temporal_function(e.text)))
+    return true;
   if (e.kind == fretish::ExprKind::identifier && e.text == "FTP") return true;
   for (const auto& a : e.args)
     if (a && uses_previous(*a)) return true;
@@ -218,7 +220,9 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
         continue;
       }
       if (uses_previous(*part)) {
-        p.unsupported = "preBool/preInt/preReal and FTP are not supported by prove";
+        p.unsupported =
+            "persisted, occurred, prevOcc, preBool/preInt/preReal and FTP read earlier ticks, "
+            "and prove's monitor tables read each part from one state: not supported by prove";
         break;
       }
       std::string error;

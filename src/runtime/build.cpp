@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "bt/node_kinds.hpp"
+#include "bt/script/load_check.hpp"
 #include "bt/structure.hpp"
 #include "runtime/core.hpp"
 #include "runtime/smart_selection.hpp"
@@ -155,6 +156,13 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
   if (xml.tag == "Adaptable")
     throw refuse("<Adaptable ID=\"" + (xml.attribute("ID") ? *xml.attribute("ID") : "") +
                  "\"/> cannot run: compile the mission first (uabt compile)");
+  // BT.CPP parses a node's scripts when it builds it; the static checks apply the same rules.
+  for (const auto& [attribute, message] : bt::script::node_script_refusals(xml)) {
+    const auto [line, column] =
+        attribute.empty() ? std::pair{xml.line, xml.column} : xml.attribute_position(attribute);
+    throw LoadError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                    message);
+  }
   const auto spec_it = specs().find(kind_name);
   const Spec* spec = spec_it == specs().end() ? nullptr : &spec_it->second;
   if (spec == nullptr && bt::find_builtin(kind_name) != nullptr)
@@ -223,15 +231,9 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     return in;
   };
 
-  // A script compiled now (BT.CPP validates scripts at load) and bound to this scope.
-  auto compile = [&](const std::string& what, const std::string& code) -> std::uint32_t {
-    script::Program program;
-    try {
-      program = script::Program::parse(code);
-    } catch (const script::ScriptError& e) {
-      throw refuse(what + ": the script `" + code + "` does not parse: " + e.what() + " (column " +
-                   std::to_string(e.column()) + ")");
-    }
+  // A script compiled now (node_script_refusals above: it parses) and bound to this scope.
+  auto compile = [&](const std::string& code) -> std::uint32_t {
+    script::Program program = script::Program::parse(code);
     program.bind(bb, scope);
     core.programs.push_back(std::move(program));
     return static_cast<std::uint32_t>(core.programs.size() - 1);
@@ -246,7 +248,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
         core.conditions.emplace_back();
       }
       ConditionScripts& scripts = core.conditions[core.nodes[id].conditions];
-      const auto program = static_cast<std::int32_t>(compile(kind_name + " " + attr, value));
+      const auto program = static_cast<std::int32_t>(compile(value));
       (c->pre ? scripts.pre : scripts.post)[c->index] = program;
       continue;
     }
@@ -277,9 +279,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     case Kind::script_condition: {
       const std::string* code = xml.attribute("code");
       if (code == nullptr) throw refuse(kind_name + " needs its port 'code'");
-      const std::uint32_t program = compile(kind_name, *code);
-      if (kind == Kind::script_condition && core.programs[program].empty())
-        throw refuse("ScriptCondition with an empty script has no result");
+      const std::uint32_t program = compile(*code);
       new_params().program = program;
       break;
     }

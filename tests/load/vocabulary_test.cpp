@@ -65,6 +65,44 @@ TEST(Vocabulary, AssumptionWithUndeclaredNameStopsEveryNode) {
   EXPECT_TRUE(m.domain.assumptions.empty()) << "a broken assumption leaves the domain";
 }
 
+// FRET's predefined FTP is not an undeclared name: a property reads it as FRET does; in a
+// guard or an assumption (a condition of one state) it is refused by name, with or without a
+// declared vocabulary, and never becomes a condition.
+TEST(Vocabulary, FretsFirstTimePointIsFretsNotATypo) {
+  const std::string requirements =
+      "Req1: In navigation if OnDust & FTP Mission shall satisfy selected_alt = on_dust\n"
+      "Req2: In navigation if OnRocks Mission shall satisfy selected_alt = on_rocks\n"
+      "Start: the rover shall always satisfy FTP -> !OnDust\n";
+  for (const std::string& domain :
+       {std::string("boolean OnDust, OnRocks\nassume first: FTP -> !OnRocks\n"), std::string()}) {
+    SCOPED_TRACE(domain);
+    TempMission dir(domain.empty() ? navigation_files(requirements)
+                                   : navigation_files(requirements, domain));
+    Mission m = load_dir(dir.dir());
+    EXPECT_TRUE(with_check(m, "ref-undeclared").empty()) << format_text(m.findings);
+    EXPECT_TRUE(with_check(m, "ref-similar-name").empty()) << format_text(m.findings);
+    const auto refused = with_check(m, "fretish-unsupported");
+    ASSERT_EQ(refused.size(), domain.empty() ? 1u : 2u) << format_text(m.findings);
+    EXPECT_EQ(format_text({*refused.back()}),
+              "requirements.fret:1:33: error: FRET's first time point 'FTP' in requirement Req1 "
+              "has no meaning here: a selection guard is a condition of the state the tree ticks "
+              "in [fretish-unsupported]\n"
+              "requirements.fret:1:33: note: state what holds at the first tick in a mission "
+              "property, e.g. 'the rover shall always satisfy FTP -> battery = 100', which uabt "
+              "monitor and uabt run check\n");
+    if (!domain.empty()) {
+      EXPECT_EQ(refused[0]->message,
+                "FRET's first time point 'FTP' in assumption 'first' has no meaning here: an "
+                "assumption holds in every state");
+      EXPECT_EQ(refused[0]->location.file, "domain.fret");
+      EXPECT_EQ(refused[0]->location.line, 2);
+      EXPECT_TRUE(m.domain.assumptions.empty());
+    }
+    EXPECT_EQ(m.domain.find("FTP"), nullptr) << "FTP never becomes a condition";
+    EXPECT_EQ(m.not_verified.count("navigation"), 1u);
+  }
+}
+
 TEST(Vocabulary, UnusedDeclaredVariableIsAWarning) {
   TempMission dir(navigation_files(kTwoTerrains, "boolean OnDust, OnRocks, OnSand\n"));
   Mission m = load_dir(dir.dir());

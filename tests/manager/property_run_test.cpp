@@ -214,12 +214,33 @@ TEST(MissionProperties, AssumptionsAreTracedGuaranteesDecide) {
   EXPECT_FALSE(run.guarantees_failed);
 }
 
+// FRET's temporal functions on a run: Drill runs in ticks 1 and 2 and succeeds in tick 3, so
+// it persisted for one tick more at tick 2, never for three, and its success follows a run.
+TEST(MissionProperties, TemporalFunctionsAreMonitoredOnARun) {
+  uabt::testing::TempMission m(drill_mission(
+      "Long: the rover shall always satisfy !persisted(1, Drill.running)\n"
+      "Short: the rover shall always satisfy !persisted(3, Drill.running)\n"
+      "Ran: upon Drill.success the rover shall immediately satisfy occurred(2, Drill.running)\n"
+      "First: the rover shall always satisfy FTP -> !Drill.success\n",
+      "{\"max_ticks\": 10, \"actions\": {\"Drill\": {\"ticks\": 3}}}"));
+  const ManagerRun run = run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
+  EXPECT_EQ(property(run, "Long").verdict, monitor::Verdict::violated) << trace_summary(run);
+  EXPECT_EQ(property(run, "Short").verdict, monitor::Verdict::held) << trace_summary(run);
+  EXPECT_EQ(property(run, "Ran").verdict, monitor::Verdict::held) << trace_summary(run);
+  EXPECT_EQ(property(run, "First").verdict, monitor::Verdict::held) << trace_summary(run);
+  const auto found = violations(run);
+  ASSERT_EQ(found.size(), 1u) << trace_summary(run);
+  EXPECT_EQ(found[0]->requirement, "Long");
+  EXPECT_EQ(found[0]->tick, 2u);
+}
+
 // A property that names what the run cannot observe never reaches a run: the gate refuses it.
 TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
   uabt::testing::TempMission m(
       drill_mission("Typo: the rover shall always satisfy !Dril.running\n"
                     "Kind: the rover shall always satisfy nav.selected < 3\n"
-                    "Secs: the rover shall within 2 seconds satisfy Drill.success\n",
+                    "Secs: the rover shall within 2 seconds satisfy Drill.success\n"
+                    "Temp: the rover shall always satisfy occurred(2, nav.selected)\n",
                     "{\"max_ticks\": 10}"));
   try {
     run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
@@ -237,6 +258,10 @@ TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
         << text;
     EXPECT_NE(text.find("requirements.fret:4:7: error: Secs: timing 'within 2 seconds' is not in "
                         "ticks"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("requirements.fret:5:50: error: 'nav.selected' is a name, but occurred "
+                        "needs a boolean there [property-type]"),
               std::string::npos)
         << text;
   }

@@ -80,6 +80,30 @@ TEST(MonitorCli, MissingVariablesAreNotMonitoredWithTheReason) {
   EXPECT_EQ(doc["verdict"], "fail");
 }
 
+// FRET formalizes nextOcc only in future time; the monitor says so in FRET's terms, and a
+// persisted(n, p) whose n is not a number is refused as FRET leaves it unexpanded.
+TEST(MonitorCli, TemporalFunctionsFretCannotMonitorAreNamedWithFretsReason) {
+  TempMission files(Files{{"r.fret",
+                           "N: the sw shall always satisfy at the next occurrence of hot, fan\n"
+                           "P: the sw shall always satisfy persisted(k, hot)\n"
+                           "W: the sw shall always satisfy occurred(1, 3, hot)\n"},
+                          {"run.jsonl",
+                           "{\"tick\": 0, \"state\": {\"hot\": true, \"fan\": true, \"k\": 2}}\n"
+                           "{\"tick\": 1, \"state\": {}}\n"}});
+  const CliRun run = uabt_in(files.dir(), "monitor r.fret run.jsonl");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_EQ(run.out,
+            "r.fret:1:4: N: not-monitored: response: FRET's 'nextOcc' looks ahead to the next "
+            "occurrence: FRET expands it only into future-time LTL, ($Right$ | (X (((!p & "
+            "!$Right$) U p) => ((!p & !$Right$) U (p & q))))), and its past-time formula, the "
+            "one a monitor evaluates, keeps it unexpanded\n"
+            "r.fret:2:4: P: not-monitored: response: the first argument of 'persisted' is 'k': "
+            "FRET expands persisted(n, p) only for a whole number of ticks n\n"
+            "r.fret:3:4: W: not-monitored: response: FRET's 'occurred(m, n, p)' needs p at each "
+            "of the last n ticks (S[m,n]); only occurred(n, p) is monitored\n"
+            "verdict: fail (2 ticks; 0 held, 0 violated, 3 not monitored)\n");
+}
+
 TEST(MonitorCli, BadTracesAreErrorsWithFileAndLine) {
   TempMission files(
       Files{{"r.fret", "Arm: the rover shall never satisfy arm_open\n"},
@@ -283,6 +307,40 @@ TEST(MonitorCli, ExpressionsMeanWhatFretFormalizes) {
        "",
        {{{"kias", "50"}}, {{"kias", "55"}}, {{"kias", "60"}}},
        "held"},
+      // FRET's temporal functions, expanded as its xform.js does, from the scope's first
+      // point ($Left$: FTP here, the first point of m for "in m").
+      {"upon persisted(2, hot) the sw shall immediately satisfy fan",
+       "(H ((((H[<=2] hot) & (H[<2] ! (!(Y TRUE)))) & (Z (! ((H[<=2] hot) & (H[<2] ! (!(Y "
+       "TRUE))))))) -> fan))",
+       "",
+       {{{"hot", "true"}, {"fan", "false"}},
+        {{"hot", "true"}, {"fan", "false"}},
+        {{"hot", "true"}, {"fan", "false"}}},
+       "violated from tick 2 (hot=true, fan=false)"},
+      {"upon persisted(2, hot) the sw shall immediately satisfy fan",
+       "(H ((((H[<=2] hot) & (H[<2] ! (!(Y TRUE)))) & (Z (! ((H[<=2] hot) & (H[<2] ! (!(Y "
+       "TRUE))))))) -> fan))",
+       "",
+       {{{"hot", "true"}, {"fan", "false"}},
+        {{"hot", "true"}, {"fan", "false"}},
+        {{"hot", "true"}, {"fan", "true"}}},
+       "held"},
+      {"in m the sw shall always satisfy occurred(1, hot)",
+       "(H (m -> (((! (m & ((!(Y TRUE)) | (Y (!m))))) S hot) & (O[<=1] hot))))",
+       "",
+       {{{"m", "false"}, {"hot", "true"}},
+        {{"m", "true"}, {"hot", "false"}},
+        {{"m", "true"}, {"hot", "false"}}},
+       "violated from tick 1 (m=true, hot=false)"},
+      {"the sw shall always satisfy prevOcc(hot, fan)",
+       "(H ((!(Y TRUE)) | (Y (((! (!(Y TRUE)) & !hot) S hot) => ((! (!(Y TRUE)) & !hot) S (hot "
+       "& fan))))))",
+       "",
+       {{{"hot", "true"}, {"fan", "true"}},
+        {{"hot", "false"}, {"fan", "false"}},
+        {{"hot", "true"}, {"fan", "false"}},
+        {{"hot", "false"}, {"fan", "false"}}},
+       "violated from tick 3 (hot=false, fan=false)"},
       // Reals stay real.
       {"the sw shall always satisfy y / 2 > x",
        "(H (y / 2 > x))",

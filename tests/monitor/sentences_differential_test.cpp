@@ -130,11 +130,28 @@ TEST(MonitorSemantics, EveryPhraseMeansItsFretTemplate) {
 // FRET's own rewrite of a condition or response before it formalizes it
 // (SemanticsAnalyzer.js, enterPre_condition / enterPost_condition): the field's text in
 // parentheses, ` then ` made `=>` and `if` dropped; FRET's LTL.g4 precedence then applies.
-std::string fret_rewrite(const std::string& field) {
+// Then FRET's temporal functions become past-time formulas (xform.js, pastTemporalConditions),
+// counted from the scope's left end point `left` (semantics.json, endpoints.SMVptExtleft).
+std::string fret_rewrite(const std::string& field, const std::string& left = "(!(Y TRUE))") {
   const std::regex then_word(" then ", std::regex::icase);
   const std::regex if_word("(\\(| )(if )", std::regex::icase);
-  return std::regex_replace(std::regex_replace("(" + field + ")", then_word, " => "), if_word,
-                            "$1");
+  std::string out =
+      std::regex_replace(std::regex_replace("(" + field + ")", then_word, " => "), if_word, "$1");
+  // n = 0 gives FRET's H[<0], which holds: nothing lies at a distance below 0.
+  const std::regex persisted("persisted\\(([0-9]+), ([^(),]+)\\)");
+  const std::regex occurred("occurred\\(([0-9]+), ([^(),]+)\\)");
+  const std::regex prev_occ("prevOcc\\(([^(),]+), ([^(),]+)\\)");
+  std::smatch m;
+  while (std::regex_search(out, m, persisted)) {
+    const std::string n = m[1], p = m[2];
+    const std::string below = n == "0" ? "TRUE" : "(H[<" + n + "] ! " + left + ")";
+    out = m.prefix().str() + "((H[<=" + n + "] (" + p + ")) & " + below + ")" + m.suffix().str();
+  }
+  out = std::regex_replace(out, occurred, "(((! " + left + ") S ($2)) & (O[<=$1] ($2)))");
+  out = std::regex_replace(out, prev_occ,
+                           "(" + left + " | (Y (((! " + left + " & !($1)) S ($1)) => ((! " + left +
+                               " & !($1)) S (($1) & ($2))))))");
+  return out;
 }
 
 // Random FRETISH expressions over booleans c, d, integers i, j and the real x, in FRET's
@@ -145,7 +162,7 @@ class ExpressionMaker {
   explicit ExpressionMaker(std::mt19937& rng) : rng_(rng) {}
 
   std::string boolean(int depth) {
-    switch (depth <= 0 ? pick(3) : pick(8)) {
+    switch (depth <= 0 ? pick(3) : pick(9)) {
       case 0: return pick(2) ? "c" : "d";
       case 1: return pick(2) ? "true" : "false";
       case 2:
@@ -161,11 +178,24 @@ class ExpressionMaker {
         if (antecedent.rfind("if ", 0) == 0) antecedent = "(" + antecedent + ")";
         return "if " + antecedent + " then " + boolean(depth - 1);
       }
+      case 7: return temporal();
       default: return "(" + boolean(depth - 1) + ")";
     }
   }
 
  private:
+  // FRET's past-time functions over small arguments (no parentheses, so that fret_rewrite
+  // can expand them as FRET does).
+  std::string temporal() {
+    static const char* const args[] = {"c", "d", "!c", "i > j", "x <= 0.5", "i = 0"};
+    const std::string p = args[pick(6)], q = args[pick(6)];
+    switch (pick(3)) {
+      case 0: return "persisted(" + std::to_string(pick(4)) + ", " + p + ")";
+      case 1: return "occurred(" + std::to_string(pick(4)) + ", " + p + ")";
+      default: return "prevOcc(" + p + ", " + q + ")";
+    }
+  }
+
   int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
 
   std::string relation(int depth) {
@@ -234,7 +264,7 @@ TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
   std::mt19937 rng(24);
   std::uniform_int_distribution<std::size_t> length(1, 14);
   ExpressionMaker make(rng);
-  int sentences = 0, verdicts = 0, disagreements = 0;
+  int sentences = 0, verdicts = 0, disagreements = 0, temporal = 0;
   std::string first;
   for (const Phrase& scope : kScopes) {
     for (const Phrase& condition : kConditions) {
@@ -251,15 +281,19 @@ TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
           ASSERT_EQ(parsed.requirements.size(), 1u) << sentence;
           const std::string key =
               scope.key + "," + condition.key + "," + timing.key + ",satisfaction";
+          const std::string left =
+              instantiate(semantics.at(key).at("endpoints").at("SMVptExtleft").get<std::string>(),
+                          {{"scope_mode", "m"}});
           const std::string formula =
               instantiate(semantics.at(key).at("ptExpanded").get<std::string>(),
                           {{"scope_mode", "m"},
-                           {"regular_condition", fret_rewrite(cond)},
-                           {"post_condition", fret_rewrite(response)},
+                           {"regular_condition", fret_rewrite(cond, left)},
+                           {"post_condition", fret_rewrite(response, left)},
                            {"stop_condition", "s"},
                            {"duration", "3"}});
           const PtFormula oracle = PtFormula::parse(formula);
           ++sentences;
+          if (std::regex_search(sentence, std::regex("persisted|occurred|prevOcc"))) ++temporal;
           for (int k = 0; k < 6; ++k) {
             const auto trace = random_typed_trace(rng, length(rng));
             const std::vector<bool> expected = oracle.evaluate(trace);
@@ -290,10 +324,78 @@ TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
   }
   RecordProperty("sentences", sentences);
   RecordProperty("verdicts", verdicts);
+  RecordProperty("temporal_sentences", temporal);
   EXPECT_EQ(disagreements, 0) << disagreements << " disagreements in " << verdicts
                               << " verdicts of " << sentences << " sentences; the first:\n"
                               << first;
   EXPECT_EQ(sentences, static_cast<int>(2 * kScopes.size() * kConditions.size() * kTimings.size()));
+  EXPECT_GT(temporal, sentences / 4) << "too few sentences use persisted, occurred or prevOcc";
+}
+
+// FRET's own past-time formulas for its temporal functions, from its test suite
+// (fret-electron/test/semantics/temporal.js: the ptExpanded of "In mode m the sw shall always
+// satisfy persisted(42,p) <=> r" and its after/before and occurred variants, there with
+// O[<=42] written O[0,42]), with 42 made 3 and 41 made 2.
+TEST(MonitorSemantics, TemporalFunctionsMeanFretsOwnFormulas) {
+  struct Case {
+    std::string sentence, formula;
+  };
+  const std::vector<Case> cases = {
+      {"in m the sw shall always satisfy persisted(3, p) <-> r",
+       "(H (m -> (((H[0,3] p) & (H[0,2] (! (m & ((!(Y TRUE)) | (Y (!m))))))) <-> r)))"},
+      {"after m the sw shall always satisfy persisted(3, p) <-> r",
+       "((O (((! m) & (Y m)) & (Y (H (! ((! m) & (Y m))))))) -> ((((H[0,3] p) & (H[0,2] (! "
+       "(((!m) & (Y m)) & (Y (H (!((!m) & (Y m))))))))) <-> r) S ((((H[0,3] p) & (H[0,2] (! "
+       "(((!m) & (Y m)) & (Y (H (!((!m) & (Y m))))))))) <-> r) & (((! m) & (Y m)) & (Y (H (! "
+       "((! m) & (Y m)))))))))"},
+      {"before m the sw shall always satisfy persisted(3, p) <-> r",
+       "((H ((((m & ((! (Y TRUE)) | (Y (! m)))) & ((Y (H (! m))) | (! (Y TRUE)))) & (Y TRUE)) "
+       "-> (Y (H (((H[0,3] p) & (H[0,2] (! (!(Y TRUE))))) <-> r))))) & ((H (! ((m & ((! (Y "
+       "TRUE)) | (Y (! m)))) & ((Y (H (! m))) | (! (Y TRUE)))))) -> (H (((H[0,3] p) & (H[0,2] "
+       "(! (!(Y TRUE))))) <-> r))))"},
+      {"in m the sw shall always satisfy occurred(3, p) <-> r",
+       "(H (m -> ((((! (m & ((!(Y TRUE)) | (Y (!m))))) S p) & (O[0,3] p)) <-> r)))"},
+      {"after m the sw shall always satisfy occurred(3, p) <-> r",
+       "((O (((! m) & (Y m)) & (Y (H (! ((! m) & (Y m))))))) -> (((((! (((!m) & (Y m)) & (Y (H "
+       "(!((!m) & (Y m))))))) S p) & (O[0,3] p)) <-> r) S (((((! (((!m) & (Y m)) & (Y (H (!((!m) "
+       "& (Y m))))))) S p) & (O[0,3] p)) <-> r) & (((! m) & (Y m)) & (Y (H (! ((! m) & (Y "
+       "m)))))))))"},
+      {"before m the sw shall always satisfy occurred(3, p) <-> r",
+       "((H ((((m & ((! (Y TRUE)) | (Y (! m)))) & ((Y (H (! m))) | (! (Y TRUE)))) & (Y TRUE)) "
+       "-> (Y (H ((((! (!(Y TRUE))) S p) & (O[0,3] p)) <-> r))))) & ((H (! ((m & ((! (Y TRUE)) "
+       "| (Y (! m)))) & ((Y (H (! m))) | (! (Y TRUE)))))) -> (H ((((! (!(Y TRUE))) S p) & "
+       "(O[0,3] p)) <-> r))))"},
+  };
+  const auto resolve_mpr = [](const std::string& name) -> monitor::Resolved {
+    static const std::vector<std::string> names = {"m", "p", "r"};
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == name) return {monitor::Resolved::Kind::variable, static_cast<int>(i)};
+    return {};
+  };
+  std::mt19937 rng(42);
+  std::uniform_int_distribution<std::size_t> length(1, 24);
+  for (const Case& c : cases) {
+    const fretish::ParseResult parsed =
+        fretish::parse_requirements_file("X: " + c.sentence + "\n", "r.fret");
+    ASSERT_EQ(parsed.requirements.size(), 1u) << c.sentence;
+    const PtFormula oracle = PtFormula::parse(c.formula);
+    for (int k = 0; k < 200; ++k) {
+      const auto trace = random_boolean_trace(rng, {"m", "p", "r"}, length(rng));
+      const std::vector<bool> expected = oracle.evaluate(trace);
+      std::string reason;
+      auto run =
+          monitor::RequirementMonitor::compile(parsed.requirements[0], resolve_mpr, {}, reason);
+      ASSERT_NE(run, nullptr) << c.sentence << ": " << reason;
+      for (std::size_t t = 0; t < trace.size(); ++t) {
+        std::vector<monitor::Val> frame;
+        for (const char* n : {"m", "p", "r"})
+          frame.push_back(monitor::Val::of_bool(trace[t].at(n).truth));
+        const bool got = run->step(frame);
+        ASSERT_FALSE(run->failed()) << run->error();
+        ASSERT_EQ(got, expected[t]) << c.sentence << " at tick " << t << "\n" << trace_text(trace);
+      }
+    }
+  }
 }
 
 TEST(MonitorClassify, WhatHasNoMeaningOnATraceIsNamed) {

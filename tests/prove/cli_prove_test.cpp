@@ -139,6 +139,28 @@ TEST(ProveCli, CuriosityGateProvesItsGuaranteesAndRejectsTheSequenceStyle) {
       << violated.out;
 }
 
+// What uabt monitor and uabt run check tick by tick but prove's monitor tables cannot model
+// (FRET's temporal functions, FTP) is named, not proved and not silently dropped.
+TEST(ProveCli, TemporalFunctionsAndFtpAreNamedAsNotProved) {
+  auto files = mission_files("sample_drilling");
+  files["requirements.fret"] +=
+      "Cool: Mission shall always satisfy !Drill.running | persisted(1, IsBitCool)\n"
+      "Start: Mission shall always satisfy FTP -> !IsBitCool\n";
+  TempMission m(files);
+  const CliRun r = run("prove " + m.dir().string());
+  const std::string why =
+      "persisted, occurred, prevOcc, preBool/preInt/preReal and FTP read earlier ticks, and "
+      "prove's monitor tables read each part from one state: not supported by prove "
+      "[fretish-unsupported]";
+  EXPECT_NE(r.out.find("requirements.fret:7:7: error: guarantee 'Cool' cannot be proved: " + why),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("requirements.fret:8:8: error: guarantee 'Start' cannot be proved: " + why),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("2 not checked"), std::string::npos) << r.out;
+}
+
 TEST(ProveCli, BadWorldFileIsAUsageError) {
   auto files = mission_files("sample_drilling");
   files["world.json"] = "{\"actions\": {\"Drill\": {\"ticks\": [3, 1]}}}";

@@ -1,0 +1,45 @@
+#include "bt/script/load_check.hpp"
+
+#include "bt/script/ast.hpp"
+#include "bt/tree.hpp"
+
+namespace uabt::bt::script {
+
+bool is_condition_attribute(std::string_view name) {
+  static constexpr std::string_view kNames[] = {"_failureIf", "_successIf", "_skipIf",    "_while",
+                                                "_onHalted",  "_onFailure", "_onSuccess", "_post"};
+  for (std::string_view n : kNames)
+    if (n == name) return true;
+  return false;
+}
+
+std::optional<std::string> script_refusal(const std::string& what, const std::string& code,
+                                          bool empty_refused) {
+  try {
+    if (Script::parse(code).empty() && empty_refused)
+      return what + " with an empty script has no result";
+  } catch (const ScriptError& e) {
+    return what + ": the script `" + code + "` does not parse: " + e.what() + " (column " +
+           std::to_string(e.column()) + ")";
+  }
+  return std::nullopt;
+}
+
+std::vector<std::pair<std::string, std::string>> node_script_refusals(const Node& node) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const std::string kind = node.kind();
+  for (const auto& [attr, value] : node.attributes)
+    if (is_condition_attribute(attr))
+      if (auto why = script_refusal(kind + " " + attr, value, false))
+        out.emplace_back(attr, std::move(*why));
+  if (kind == "Script" || kind == "ScriptCondition") {
+    const std::string* code = node.attribute("code");
+    if (code == nullptr)
+      out.emplace_back("", kind + " needs its port 'code'");
+    else if (auto why = script_refusal(kind, *code, kind == "ScriptCondition"))
+      out.emplace_back("code", std::move(*why));
+  }
+  return out;
+}
+
+}  // namespace uabt::bt::script
