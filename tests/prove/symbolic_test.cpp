@@ -17,34 +17,6 @@ namespace {
 
 using prove::Verdict;
 
-// A mission gated once, to prove with either engine.
-struct Gated {
-  explicit Gated(const std::filesystem::path& dir,
-                 compile::SelectionStyle style = compile::SelectionStyle::sequence) {
-    std::string error;
-    auto mission = load::load_mission(dir, {}, error);
-    if (!mission) return;
-    gate::Options options;
-    options.compile.selection = style;
-    options.compile.selection_forced = true;
-    outcome = std::make_unique<gate::Outcome>(gate::check_mission(std::move(*mission), options, "t"));
-    if (outcome->compiled_xml.empty()) return;
-    std::vector<Finding> findings;
-    doc = bt::parse_document(outcome->compiled_xml, "compiled.xml", findings);
-    world = prove::mission_world(*outcome->mission);
-  }
-  bool ok() const { return doc.has_value(); }
-  prove::Result prove(const std::string& engine, std::uint64_t depth = 0) const {
-    prove::Options o;
-    o.engine = engine;
-    o.depth = depth;
-    return prove::prove(*outcome->mission, *doc, world, o);
-  }
-  std::unique_ptr<gate::Outcome> outcome;
-  std::optional<bt::Document> doc;
-  prove::WorldModel world;
-};
-
 void expect_same_answers(const prove::Result& a, const prove::Result& b, const std::string& what) {
   ASSERT_EQ(a.answers.size(), b.answers.size()) << what;
   for (std::size_t i = 0; i < a.answers.size(); ++i) {
