@@ -151,14 +151,26 @@ TEST(ProveSweep, AVariableAScriptWritesIsTheMissions) {
   }
 }
 
+// By default 40 missions (and one the sweep once caught), each proved explicitly, and the symbolic
+// engine (BMC, k-induction, IC3/PDR: seconds to minutes on some of these missions) on the few whose
+// symbolic proof takes well under a second, so that the test runs in seconds. A longer sweep by
+// hand: UABT_SWEEP_FIRST=41 UABT_SWEEP_MISSIONS=3000 [UABT_SWEEP_SYMBOLIC=0|1] [UABT_SWEEP_DEPTH=k]
+// (UABT_SWEEP_SYMBOLIC=1: the symbolic engine on every mission; UABT_SWEEP_VERBOSE=1: times).
 TEST(ProveSweep, EnginesAgreeAndEveryCounterexampleReplays) {
   const unsigned first = env_or("UABT_SWEEP_FIRST", 1), count = env_or("UABT_SWEEP_MISSIONS", 40);
+  const bool by_default = std::getenv("UABT_SWEEP_MISSIONS") == nullptr;
+  const std::set<unsigned> quick_symbolic = {7, 13, 17, 19, 25};
   // The symbolic engine's depth (0: its own bound, 40 ticks and IC3/PDR).
-  const std::uint64_t depth = env_or("UABT_SWEEP_DEPTH", 6);
+  const std::uint64_t depth = env_or("UABT_SWEEP_DEPTH", 3);
+  const bool symbolic = env_or("UABT_SWEEP_SYMBOLIC", 0) != 0;
+  std::vector<unsigned> seeds;
+  for (unsigned seed = first; seed < first + count; ++seed) seeds.push_back(seed);
+  // The mission whose counterexample did not replay (a variable only a Script writes).
+  if (by_default) seeds.push_back(183);
   Tally tally;
-  for (unsigned seed = first; seed < first + count; ++seed) {
+  for (unsigned seed : seeds) {
     const auto start = std::chrono::steady_clock::now();
-    sweep_one(seed, env_or("UABT_SWEEP_SYMBOLIC", 1) != 0, depth, tally);
+    sweep_one(seed, symbolic || (by_default && quick_symbolic.contains(seed)), depth, tally);
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count();
@@ -168,11 +180,14 @@ TEST(ProveSweep, EnginesAgreeAndEveryCounterexampleReplays) {
             << tally.explicit_answered << " proved explicitly, " << tally.both
             << " by both engines, " << tally.violated << " violated and " << tally.proved
             << " proved guarantees\n";
-  if (first != 1 || count != 40) return;
-  // The default sweep exercises both verdicts and both engines on most missions.
-  EXPECT_GE(tally.both, 15);
-  EXPECT_GE(tally.violated, 20);
-  EXPECT_GE(tally.proved, 10);
+  if (!by_default) return;
+  // The default sweep exercises both verdicts, both engines, and every node kind.
+  EXPECT_EQ(tally.gated, 41);
+  EXPECT_GE(tally.explicit_answered, 30);
+  EXPECT_EQ(tally.both, 5);
+  EXPECT_GE(tally.violated, 40);
+  EXPECT_GE(tally.proved, 40);
+  EXPECT_EQ(tally.kinds.size(), 22u);
 }
 
 }  // namespace
