@@ -392,10 +392,11 @@ std::map<std::string, std::string> wide_mission() {
       <IfThenElse>
         <ScriptCondition code="x &gt;= 2"/>
         <Act0/>
-        <Sequence><Script code="x = x + 1"/><Act1/></Sequence>
+        <Sequence><Script code="y = x + 1"/><Act1/></Sequence>
       </IfThenElse>
     </ReactiveSequence>)")},
-          {"domain.fret", "integer x in [0, 100000]\nreal speed in [0, 10]\n"},
+          {"domain.fret",
+           "integer x in [0, 100000]\ninteger y in [0, 100001]\nreal speed in [0, 10]\n"},
           {"requirements.fret",
            "Slow: Mission shall always satisfy Act1.running -> speed < 9.5\n"
            "Small: Mission shall always satisfy x < 4\n"},
@@ -414,7 +415,7 @@ TEST(SymbolicWide, AnswersWhereTheExplicitEngineRefuses) {
   EXPECT_EQ(answer(r, "Slow").verdict, Verdict::proved);
   const prove::Answer& small = answer(r, "Small");
   ASSERT_EQ(small.verdict, Verdict::violated);
-  // x is the environment's (no action writes it): it may jump to 4 before tick 2 at the
+  // x is the environment's (no action or script writes it): it may jump to 4 before tick 2 at the
   // earliest, since the first tick starts at x = 0.
   EXPECT_EQ(small.counterexample->tick, 2u);
   // The scenario replays on the runtime to the same violation.
