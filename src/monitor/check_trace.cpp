@@ -75,15 +75,16 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
   report.properties = properties.results();
   for (const PropertyResult& p : report.properties) {
     if (p.verdict == Verdict::not_monitored) report.pass = false;
-    if (p.verdict == Verdict::violated && !p.assumption) report.pass = false;
+    if (p.verdict == Verdict::violated && !p.assumption) report.failed = true;
   }
-  if (has_errors(findings)) report.pass = false;
+  if (has_errors(findings)) report.failed = true;
+  if (report.failed) report.pass = false;
   return report;
 }
 
 std::string trace_report_json(const TraceReport& report) {
   nlohmann::ordered_json out;
-  out["verdict"] = report.pass ? "pass" : "fail";
+  out["verdict"] = report.verdict();
   out["ticks"] = report.ticks;
   out["requirements"] = nlohmann::ordered_json::array();
   for (const PropertyResult& p : report.properties) {
@@ -137,10 +138,9 @@ std::string trace_report_text(const TraceReport& report) {
         break;
     }
   }
-  out += std::string("verdict: ") + (report.pass ? "pass" : "fail") + " (" +
-         std::to_string(report.ticks) + " ticks; " + std::to_string(held) + " held, " +
-         std::to_string(violated) + " violated, " + std::to_string(unmonitored) +
-         " not monitored)\n";
+  out += std::string("verdict: ") + report.verdict() + " (" + std::to_string(report.ticks) +
+         " ticks; " + std::to_string(held) + " held, " + std::to_string(violated) + " violated, " +
+         std::to_string(unmonitored) + " not monitored)\n";
   return out;
 }
 

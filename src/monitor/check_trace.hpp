@@ -12,7 +12,10 @@
 namespace uabt::monitor {
 
 struct TraceReport {
-  bool pass = true;  // no guarantee violated, everything monitored
+  bool pass = true;     // no guarantee violated, everything monitored
+  bool failed = false;  // a guarantee violated, or the trace does not fit the domain
+  // "pass", "fail", or "inconclusive": nothing failed, but some requirement is not monitored.
+  const char* verdict() const { return pass ? "pass" : failed ? "fail" : "inconclusive"; }
   std::uint64_t ticks = 0;
   std::vector<PropertyResult> properties;
 };

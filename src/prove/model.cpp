@@ -176,6 +176,17 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
                            "', which is neither declared in the domain nor a condition");
         it->env = false;
       }
+  // So is what the tree's scripts assign: the runtime keeps it from one tick to the next, the
+  // environment does not choose it again.
+  std::function<void(const bt::Node&)> assigned_by_tree = [&](const bt::Node& n) {
+    for (const auto& [attr, value] : n.attributes)
+      if (attr == "code" || (!attr.empty() && attr[0] == '_'))
+        for (const std::string& written : assigned_names(value))
+          for (StateVar& v : vars)
+            if (v.name == written) v.env = false;
+    for (const auto& c : n.children) assigned_by_tree(c);
+  };
+  for (const auto& t : doc.trees) assigned_by_tree(t.root);
 
   // 3. The engine on the choice world, and what properties observe.
   choice = std::make_unique<ChoiceWorld>(world, models, state_names);

@@ -77,7 +77,7 @@ TEST(MonitorCli, MissingVariablesAreNotMonitoredWithTheReason) {
   const auto doc = nlohmann::json::parse(run.out);
   EXPECT_EQ(doc["requirements"][0]["verdict"], "not-monitored");
   EXPECT_EQ(doc["requirements"][0]["reason"], "response: the trace has no variable 'arm_open'");
-  EXPECT_EQ(doc["verdict"], "fail");
+  EXPECT_EQ(doc["verdict"], "inconclusive");  // nothing violated, nothing to pass on
 }
 
 // FRET formalizes nextOcc only in future time; the monitor says so in FRET's terms, and a
@@ -383,6 +383,34 @@ TEST(MonitorCli, ExpressionsMeanWhatFretFormalizes) {
         << run.out;
     EXPECT_EQ(std::string(c.verdict) == "held", static_cast<bool>(fret.back())) << c.fret_formula;
   }
+}
+
+// Nothing violated but a requirement the trace cannot monitor: the verdict says so
+// (inconclusive, exit 1), not `fail` with 0 violated; a violation is still `fail`.
+TEST(MonitorCli, NotMonitoredWithoutViolationIsInconclusive) {
+  TempMission files(Files{{"r.fret",
+                           "Arm: the rover shall never satisfy arm_open\n"
+                           "Cam: the rover shall always satisfy camera_on\n"},
+                          {"run.jsonl",
+                           "{\"tick\": 1, \"state\": {\"arm_open\": false}}\n"
+                           "{\"tick\": 2, \"state\": {\"arm_open\": false}}\n"},
+                          {"open.jsonl",
+                           "{\"tick\": 1, \"state\": {\"arm_open\": false}}\n"
+                           "{\"tick\": 2, \"state\": {\"arm_open\": true}}\n"}});
+  const CliRun text = uabt_in(files.dir(), "monitor r.fret run.jsonl");
+  EXPECT_EQ(text.exit_code, 1) << text.out;
+  EXPECT_EQ(text.out,
+            "r.fret:1:6: Arm: held\n"
+            "r.fret:2:6: Cam: not-monitored: response: the trace has no variable 'camera_on'\n"
+            "verdict: inconclusive (2 ticks; 1 held, 0 violated, 1 not monitored)\n");
+  const CliRun json = uabt_in(files.dir(), "monitor r.fret run.jsonl --format json");
+  EXPECT_EQ(json.exit_code, 1) << json.out;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["verdict"], "inconclusive");
+  const CliRun open = uabt_in(files.dir(), "monitor r.fret open.jsonl");
+  EXPECT_EQ(open.exit_code, 1) << open.out;
+  EXPECT_NE(open.out.find("verdict: fail (2 ticks; 0 held, 1 violated, 1 not monitored)"),
+            std::string::npos)
+      << open.out;
 }
 
 }  // namespace

@@ -33,6 +33,36 @@ inline prove::Result prove_dir(const std::filesystem::path& dir, prove::Options 
   return prove::prove(*outcome.mission, *doc, world, options);
 }
 
+// A mission gated once, to prove with either engine.
+struct Gated {
+  explicit Gated(const std::filesystem::path& dir,
+                 compile::SelectionStyle style = compile::SelectionStyle::sequence,
+                 bool forced = true) {
+    std::string error;
+    auto mission = load::load_mission(dir, {}, error);
+    if (!mission) return;
+    gate::Options options;
+    options.compile.selection = style;
+    options.compile.selection_forced = forced;
+    outcome =
+        std::make_unique<gate::Outcome>(gate::check_mission(std::move(*mission), options, "t"));
+    if (outcome->compiled_xml.empty()) return;
+    std::vector<Finding> findings;
+    doc = bt::parse_document(outcome->compiled_xml, "compiled.xml", findings);
+    world = prove::mission_world(*outcome->mission);
+  }
+  bool ok() const { return doc.has_value(); }
+  prove::Result prove(const std::string& engine, std::uint64_t depth = 0) const {
+    prove::Options o;
+    o.engine = engine;
+    o.depth = depth;
+    return prove::prove(*outcome->mission, *doc, world, o);
+  }
+  std::unique_ptr<gate::Outcome> outcome;
+  std::optional<bt::Document> doc;
+  prove::WorldModel world;
+};
+
 inline const prove::Answer& answer(const prove::Result& r, const std::string& id) {
   for (const auto& a : r.answers)
     if (a.requirement == id) return a;
