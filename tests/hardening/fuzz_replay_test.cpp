@@ -158,6 +158,29 @@ TEST(FuzzReplay, FretExportErrorStandsWhereTheEscapedFulltextIsWritten) {
   EXPECT_EQ(parsed.findings[0].location.column, 59) << parsed.findings[0].message;
 }
 
+// Found by fuzz_trace under UBSan (regressions/trace/integer-beyond-64-bits-cast-undefined.jsonl):
+// whether a number is whole was asked by casting it to a 64-bit integer, undefined for 2.2e31.
+// The fuzz build's replay (ctest -L fuzz) fails on the old code; here, what the user reads.
+TEST(FuzzReplay, TraceIntegerBeyond64BitsDoesNotFitAnIntegerVariable) {
+  std::vector<Finding> findings;
+  const auto trace = monitor::read_trace(
+      "{\"tick\": 1, \"state\": {\"depth\": 22222222222222222222222222222220.5}}\n", "trace.jsonl",
+      findings);
+  ASSERT_TRUE(trace.has_value());
+  std::vector<Finding> parsed;
+  const fretish::Domain domain =
+      fretish::parse_domain_file("integer depth in [0, 20]\n", "domain.fret", parsed);
+  const auto requirements =
+      fretish::parse_requirements_file("R: Mission shall always satisfy depth <= 20\n",
+                                       "requirements.fret")
+          .requirements;
+  monitor::check_trace(requirements, domain, *trace, "trace.jsonl", findings);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].message,
+            "'depth' at tick 1 does not fit its type: the domain declares it integer");
+  EXPECT_EQ(findings[0].location.line, 1);
+}
+
 // Found by fuzz_scenario (regressions/scenario/escaped-key-error-without-line-and-column.json):
 // the position scanner kept a key's escapes as written ("Dr\u0069ll"), so the error about the
 // key the parser decoded (Drill) found no position and named the file alone.
