@@ -120,4 +120,59 @@ JsonInputError unrepresentable(std::string_view text) {
 
 }  // namespace detail
 
+std::size_t json_string_source_offset(std::string_view text, std::size_t quote, int start_line,
+                                      int start_column, int reported_line, int reported_column) {
+  // The place within the decoded string.
+  const int line = reported_line - start_line + 1;
+  const int column = line == 1 ? reported_column - start_column + 1 : reported_column;
+  auto hex = [&](std::size_t at) -> long {
+    if (at + 4 > text.size()) return -1;
+    long code = 0;
+    for (std::size_t k = at; k < at + 4; ++k) {
+      const char c = text[k];
+      const int digit = c >= '0' && c <= '9'   ? c - '0'
+                        : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                        : c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                               : -1;
+      if (digit < 0) return -1;
+      code = code * 16 + digit;
+    }
+    return code;
+  };
+  int at_line = 1, at_column = 1;
+  std::size_t i = quote + 1;
+  while (i < text.size() && text[i] != '"') {
+    // One decoded unit: how many raw characters, how many decoded bytes, a line break or not.
+    std::size_t raw = 1;
+    int bytes = 1;
+    bool newline = false;
+    if (text[i] == '\\' && i + 1 < text.size()) {
+      raw = 2;
+      newline = text[i + 1] == 'n';
+      if (text[i + 1] == 'u') {
+        raw = 6;
+        const long code = hex(i + 2);
+        newline = code == '\n';
+        bytes = code < 0x80 ? 1 : code < 0x800 ? 2 : 3;
+        const bool pair = code >= 0xD800 && code <= 0xDBFF && i + 11 < text.size() &&
+                          text[i + 6] == '\\' && text[i + 7] == 'u' && hex(i + 8) >= 0xDC00 &&
+                          hex(i + 8) <= 0xDFFF;
+        if (pair) {
+          raw = 12;
+          bytes = 4;
+        }
+      }
+    }
+    if (at_line > line || (at_line == line && at_column + bytes > column)) return i;
+    if (newline) {
+      ++at_line;
+      at_column = 1;
+    } else {
+      at_column += bytes;
+    }
+    i += raw;
+  }
+  return std::min(i, text.size());
+}
+
 }  // namespace uabt

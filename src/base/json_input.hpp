@@ -23,6 +23,14 @@ struct JsonInputError {
   std::string message;  // e.g. "invalid JSON in array: unexpected end of input; expected ']'"
 };
 
+// Where a place inside a JSON string value stands in the file. `quote` is the offset of the
+// string's opening quote in `text`; a parser of the decoded string reported `line:column`
+// (1-based, in bytes) counting from `start_line:start_column`, where the string's first
+// character stands. Escapes count as written ("\n" is two characters of one line, "\u00e9"
+// six); a place inside an escape is the escape's backslash, one past the end the closing quote.
+std::size_t json_string_source_offset(std::string_view text, std::size_t quote, int start_line,
+                                      int start_column, int line, int column);
+
 namespace detail {
 // The first place where nesting passes kMaxJsonDepth, a number fits no type, or an object
 // repeats a key, if any.

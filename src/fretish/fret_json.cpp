@@ -88,8 +88,9 @@ void add_variables(const json& variables, const std::vector<detail::JsonPosition
   }
 }
 
-void add_requirements(const json& requirements, const detail::JsonLayout& layout,
-                      const std::string& file, ParseResult& result, Domain& domain) {
+void add_requirements(std::string_view json_text, const json& requirements,
+                      const detail::JsonLayout& layout, const std::string& file,
+                      ParseResult& result, Domain& domain) {
   for (std::size_t i = 0; i < requirements.size(); ++i) {
     const json& entry = requirements[i];
     const detail::JsonElement element =
@@ -108,7 +109,19 @@ void add_requirements(const json& requirements, const detail::JsonLayout& layout
     const std::string text = entry["fulltext"].get<std::string>();
     const detail::JsonPosition text_at = element.has_text ? element.text : element.start;
     const TextOrigin origin{file, text_at.line, text_at.column};
+    const std::size_t before = result.findings.size();
     std::optional<Requirement> r = parse_requirement(text, origin, result.findings);
+    // The parser counts in the decoded sentence: "\n" and "\u0041" are written otherwise.
+    for (std::size_t k = before; element.has_text && k < result.findings.size(); ++k) {
+      SourceLocation& l = result.findings[k].location;
+      if (l.line < 1) continue;
+      const detail::JsonPosition p = detail::position_of(
+          json_text, json_string_source_offset(json_text, element.text_quote, text_at.line,
+                                               text_at.column, l.line, l.column));
+      l.line = p.line;
+      l.column = p.column;
+      l.end_line = 0;
+    }
     if (!r) continue;
     r->id = id;
     if (lower(reqid).find("assumption") != std::string::npos && is_assumption_form(*r)) {
@@ -149,7 +162,7 @@ void parse_export(const std::string& content, const std::string& file, Domain& d
                      {file, 1, 1}));
     return;
   }
-  add_requirements(*requirements, layout, file, result, domain);
+  add_requirements(text, *requirements, layout, file, result, domain);
 }
 
 }  // namespace

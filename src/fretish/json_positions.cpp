@@ -89,10 +89,12 @@ class Scanner {
     if (!is_key) value_starts('"');
     const bool is_text = !is_key && !stack_.empty() && stack_.back().role == Role::requirement &&
                          stack_.back().key == "fulltext";
+    const std::size_t quote = i_;
     advance();  // opening quote
     if (is_text && !layout_.requirements.empty()) {
       layout_.requirements.back().has_text = true;
       layout_.requirements.back().text = {line_, column_};
+      layout_.requirements.back().text_quote = quote;
     }
     std::string value;
     while (i_ < text_.size() && text_[i_] != '"') {

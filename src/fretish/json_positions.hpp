@@ -14,9 +14,10 @@ struct JsonPosition {
 };
 
 struct JsonElement {
-  JsonPosition start;     // the element's first character
-  bool has_text = false;  // a "fulltext" string member was found
-  JsonPosition text;      // first character inside the "fulltext" quotes
+  JsonPosition start;          // the element's first character
+  bool has_text = false;       // a "fulltext" string member was found
+  JsonPosition text;           // first character inside the "fulltext" quotes
+  std::size_t text_quote = 0;  // offset of the "fulltext" value's opening quote
 };
 
 struct JsonLayout {

@@ -1,6 +1,7 @@
 #include "monitor/check_trace.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <nlohmann/json.hpp>
 
@@ -30,7 +31,8 @@ std::optional<Val> to_val(const TraceValue& v, const fretish::Variable* declared
                     ((declared->type == VarType::integer || declared->type == VarType::real) &&
                      v.kind == TraceValue::Kind::number &&
                      (declared->type == VarType::real ||
-                      v.number == static_cast<double>(static_cast<long long>(v.number)))) ||
+                      // Whole, and within 64 bits (casting 1e31 to an integer is undefined).
+                      (std::trunc(v.number) == v.number && std::fabs(v.number) < 0x1p63))) ||
                     (declared->type == VarType::enumeration && v.kind == TraceValue::Kind::text &&
                      std::find(declared->enum_values.begin(), declared->enum_values.end(),
                                v.text) != declared->enum_values.end());

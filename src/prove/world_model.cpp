@@ -300,8 +300,13 @@ WorldModel parse_world(std::string_view text, const std::string& file,
       const auto [line, column] = position(text, quote + 1);
       w.initial = fretish::parse_expression(value.get<std::string>(),
                                             fretish::TextOrigin{file, line, column}, findings);
-      for (const Finding& f : findings)
-        if (f.severity == Severity::error) loc.fail(f.location, "initial: " + f.message);
+      for (const Finding& f : findings) {
+        if (f.severity != Severity::error) continue;
+        // The parser counts in the decoded string: "\n" and "\u0041" are written otherwise.
+        loc.fail(loc.at_offset(json_string_source_offset(text, quote, line, column, f.location.line,
+                                                         f.location.column)),
+                 "initial: " + f.message);
+      }
     } else if (key == "actions") {
       if (!value.is_object()) loc.fail(at, "actions must be an object");
       for (const auto& [name, spec] : value.items())

@@ -31,14 +31,16 @@ class PositionScanner {
     }
   }
   std::pair<int, int> here() const { return {line_, static_cast<int>(i_ - line_start_) + 1}; }
+  // A string token, decoded as the parser decodes it ("Dr\u0069ll" is the key Drill), so that
+  // its pointer is the one the shape checks look up.
   std::string string() {
-    std::string s;
-    for (++i_; i_ < t_.size() && t_[i_] != '"'; ++i_) {
-      if (t_[i_] == '\\' && i_ + 1 < t_.size()) ++i_;  // an escaped character, kept as is
-      s += t_[i_];
-    }
+    const std::size_t start = i_;
+    for (++i_; i_ < t_.size() && t_[i_] != '"'; ++i_)
+      if (t_[i_] == '\\' && i_ + 1 < t_.size()) ++i_;
     ++i_;
-    return s;
+    const auto token = t_.substr(start, i_ - start);
+    const Json decoded = Json::parse(token.begin(), token.end(), nullptr, false);
+    return decoded.is_string() ? decoded.get<std::string>() : std::string(token);
   }
   void value(const std::string& path) {
     space();

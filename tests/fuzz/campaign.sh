@@ -1,8 +1,10 @@
 #!/bin/sh
-# Runs every fuzz target for SECONDS (default 600) one after the other and prints, per target,
-# the executions, the final coverage and the number of crashes. Usage:
+# Runs every fuzz target (or those named in TARGETS) for SECONDS (default 600) one after the
+# other and prints, per target, the executions, the final coverage and the number of crashes.
+# Usage:
 #
-#   sh tests/fuzz/campaign.sh [SECONDS] [WORK_DIR]
+#   sh tests/fuzz/campaign.sh [SECONDS] [WORK_DIR] [TARGETS...]
+#   sh tests/fuzz/campaign.sh 600 /tmp/work world uplink     # two targets only
 #
 # WORK_DIR (default: a new temporary directory) receives the growing corpora, the logs and any
 # crash-* / timeout-* / oom-* files. Exits 1 when any target found something.
@@ -10,11 +12,13 @@ set -eu
 cd "$(dirname "$0")/../.."
 seconds=${1:-600}
 work=${2:-$(mktemp -d)}
+[ $# -ge 2 ] && shift 2 || shift $#
+targets=${*:-fretish domain fret_json bt_xml pipeline world uplink scenario trace}
 bin=${UABT_FUZZ_BUILD_DIR:-build-fuzz}/tests/fuzz
 mkdir -p "$work"
 found=0
 printf '%-16s %12s %10s %8s %8s\n' target executions exec/s cov crashes
-for target in fretish domain fret_json bt_xml pipeline; do
+for target in $targets; do
   mkdir -p "$work/$target/corpus" "$work/$target/artifacts"
   seeds="tests/fuzz/corpus/$target"
   [ -d "tests/fuzz/regressions/$target" ] && seeds="$seeds tests/fuzz/regressions/$target"

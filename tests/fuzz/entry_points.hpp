@@ -163,15 +163,15 @@ inline std::string check_domain_file(std::string_view data) {
   return {};
 }
 
-// A FRET export: parse_fret_json; requirements as for requirements.fret.
+// A FRET export: parse_fret_json; findings name the file and an existing line; requirements
+// as for requirements.fret.
 inline std::string check_fret_json(std::string_view data) {
   const std::string text(data);
   fretish::Domain domain;
   const fretish::ParseResult parsed = fretish::parse_fret_json(text, "requirements.json", domain);
-  for (const Finding& f : parsed.findings) {
-    if (f.location.file != "requirements.json")
-      return "finding '" + f.message + "' names the file '" + f.location.file + "'";
-  }
+  if (std::string p = detail::check_locations(parsed.findings, "requirements.json", text, false);
+      !p.empty())
+    return p;
   for (const auto& a : domain.assumptions) {
     if (!a.expr) return "assumption " + a.name + " without an expression";
     if (std::string p = detail::round_trip(*a.expr, "assumption " + a.name); !p.empty()) return p;

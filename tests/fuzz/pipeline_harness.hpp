@@ -15,6 +15,37 @@
 
 namespace uabt::fuzz {
 
+namespace detail {
+
+// A directory under the system's temporary directory, removed with the object.
+class TempMission {
+ public:
+  explicit TempMission(const std::string& name) {
+    static std::atomic<int> counter{0};
+    root_ = std::filesystem::temp_directory_path() /
+            ("uabt-fuzz-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    dir_ = root_ / name;
+  }
+  ~TempMission() {
+    std::error_code ec;
+    std::filesystem::remove_all(root_, ec);
+  }
+  TempMission(const TempMission&) = delete;
+  TempMission& operator=(const TempMission&) = delete;
+
+  const std::filesystem::path& dir() const { return dir_; }
+  void write(const std::string& path, const std::string& content) const {
+    const auto full = dir_ / path;
+    std::filesystem::create_directories(full.parent_path());
+    std::ofstream(full, std::ios::binary | std::ios::trunc) << content;
+  }
+
+ private:
+  std::filesystem::path root_, dir_;
+};
+
+}  // namespace detail
+
 // The whole gate on a fixed mission (two adaptable nodes, their alternatives) whose
 // requirements.fret and domain.fret come from the input: the part before the first line
 // "%%" is requirements.fret, the rest domain.fret (absent when there is no such line).
@@ -23,10 +54,6 @@ class PipelineHarness {
   static constexpr std::string_view kSeparator = "\n%%\n";
 
   PipelineHarness() {
-    static std::atomic<int> counter{0};
-    root_ = std::filesystem::temp_directory_path() /
-            ("uabt-fuzz-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    dir_ = root_ / "mission";
     write("mission.xml",
           "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
           "  <BehaviorTree ID=\"MainTree\">\n"
@@ -45,26 +72,19 @@ class PipelineHarness {
     for (const char* alt : {"sand_alternative", "rocks_alternative", "nav_to_base"})
       write(std::string("alternatives/exploration/") + alt + ".xml", alternative(alt));
   }
-  ~PipelineHarness() {
-    std::error_code ec;
-    std::filesystem::remove_all(root_, ec);
-  }
-  PipelineHarness(const PipelineHarness&) = delete;
-  PipelineHarness& operator=(const PipelineHarness&) = delete;
-
-  const std::filesystem::path& dir() const { return dir_; }
+  const std::filesystem::path& dir() const { return files_.dir(); }
 
   std::string check(std::string_view data, unsigned timeout_ms = 200) {
     const std::size_t cut = data.find(kSeparator);
     write("requirements.fret", std::string(data.substr(0, cut)));
     std::error_code ec;
     if (cut == std::string_view::npos)
-      std::filesystem::remove(dir_ / "domain.fret", ec);
+      std::filesystem::remove(dir() / "domain.fret", ec);
     else
       write("domain.fret", std::string(data.substr(cut + kSeparator.size())));
 
     std::string error;
-    std::optional<load::Mission> mission = load::load_mission(dir_, {}, error);
+    std::optional<load::Mission> mission = load::load_mission(dir(), {}, error);
     if (!mission) return "the mission did not load: " + error;
     const bool load_errors = has_errors(mission->findings);
     gate::Options options;
@@ -120,13 +140,10 @@ class PipelineHarness {
            "\"/>\n      <MoveForward/>\n    </Sequence>\n  </BehaviorTree>\n</root>\n";
   }
   void write(const std::string& path, const std::string& content) const {
-    const auto full = dir_ / path;
-    std::filesystem::create_directories(full.parent_path());
-    std::ofstream(full, std::ios::binary | std::ios::trunc) << content;
+    files_.write(path, content);
   }
 
-  std::filesystem::path root_;
-  std::filesystem::path dir_;
+  detail::TempMission files_{"mission"};
 };
 
 }  // namespace uabt::fuzz

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "fuzz/entry_points.hpp"
+#include "fuzz/format_harnesses.hpp"
 #include "fuzz/pipeline_harness.hpp"
 #include "test_support.hpp"
 
@@ -76,6 +77,123 @@ TEST(FuzzReplay, Pipeline) {
   const auto check = [&](std::string_view data) { return harness.check(data, 2000); };
   EXPECT_GT(replay("pipeline", "corpus", check), 3u);
   replay("pipeline", "regressions", check);
+}
+
+// The seeds (more than `seeds` of them) and the regressions of a target over a fixed mission.
+template <class Harness, class... Limit>
+void replay_target(const std::string& target, std::size_t seeds, Limit... limit) {
+  const Harness harness;
+  const auto check = [&](std::string_view data) { return harness.check(data, limit...); };
+  EXPECT_GT(replay(target, "corpus", check), seeds);
+  replay(target, "regressions", check);
+}
+
+TEST(FuzzReplay, World) {
+  replay_target<fuzz::WorldHarness>("world", 3);
+}
+
+TEST(FuzzReplay, Uplink) {
+  replay_target<fuzz::UplinkHarness>("uplink", 3, 2000u);  // a longer solver limit, as above
+}
+
+TEST(FuzzReplay, Scenario) {
+  replay_target<fuzz::ScenarioHarness>("scenario", 3);
+}
+
+TEST(FuzzReplay, Trace) {
+  replay_target<fuzz::TraceHarness>("trace", 3);
+}
+
+// The uplink target reaches the uplink gate's contract, not only the loader's errors: its
+// fixed package, placed by the seed uplink.json, passes the gate.
+TEST(FuzzReplay, UplinkHarnessPackagePasses) {
+  const fuzz::UplinkHarness harness;
+  ASSERT_EQ(
+      harness.check(contents(source_dir() / "tests/fuzz/corpus/uplink/place_before.json"), 2000),
+      "");
+  std::string error;
+  const auto running = load::load_mission(harness.dir(), {}, error);
+  ASSERT_TRUE(running.has_value()) << error;
+  load::LoadOptions options;
+  options.uplinks.push_back(harness.dir() / "uplinks" / "fuzz");
+  auto merged = load::load_mission(harness.dir(), options, error);
+  ASSERT_TRUE(merged.has_value()) << error;
+  const gate::Outcome outcome = gate::run_uplink_gate(*running, std::move(*merged), {}, "test");
+  EXPECT_TRUE(outcome.passed()) << outcome.report.findings.size() << " findings";
+  ASSERT_TRUE(outcome.report.uplink.has_value());
+}
+
+// Found by fuzz_world (regressions/world/initial-escaped-newline-error-past-the-last-line.json):
+// a syntax error in "initial" was placed by counting in the decoded string, so "\n" escapes
+// moved it to line 3 of a one-line file. It is now where the parser stopped, as written.
+TEST(FuzzReplay, WorldInitialErrorStandsWhereTheEscapedTextIsWritten) {
+  try {
+    prove::parse_world("{\"initial\": \"IsBitCool &\\n\\n(\"}\n", "world.json");
+    FAIL() << "the world was accepted";
+  } catch (const prove::WorldError& e) {
+    EXPECT_STREQ(e.what(), "world.json:1:30: error: initial: expected an expression after '('");
+    EXPECT_EQ(e.location.line, 1);
+    EXPECT_EQ(e.location.column, 30);
+  }
+  // An escape before the error counts as written: \u0026 is '&', six characters.
+  try {
+    prove::parse_world("{\"initial\": \"IsBitCool \\u0026 )\"}", "world.json");
+    FAIL() << "the world was accepted";
+  } catch (const prove::WorldError& e) {
+    EXPECT_EQ(e.location.column, 31) << e.what();
+  }
+}
+
+// Found by the tighter fuzz_fret_json check
+// (regressions/fret_json/fulltext-escaped-newline-error-past-the-last-line.json): a syntax
+// error in a "fulltext" was placed by counting in the decoded sentence, so "\n" escapes moved
+// it past the last line of the export. It is now where the sentence ends, as written.
+TEST(FuzzReplay, FretExportErrorStandsWhereTheEscapedFulltextIsWritten) {
+  fretish::Domain domain;
+  const fretish::ParseResult parsed = fretish::parse_fret_json(
+      "[{\"reqid\": \"R1\", \"fulltext\": \"Mission shall\\n\\n\\nsatisfy (\"}]\n",
+      "requirements.json", domain);
+  ASSERT_EQ(parsed.findings.size(), 1u);
+  EXPECT_EQ(parsed.findings[0].location.line, 1);
+  EXPECT_EQ(parsed.findings[0].location.column, 59) << parsed.findings[0].message;
+}
+
+// Found by fuzz_trace under UBSan (regressions/trace/integer-beyond-64-bits-cast-undefined.jsonl):
+// whether a number is whole was asked by casting it to a 64-bit integer, undefined for 2.2e31.
+// The fuzz build's replay (ctest -L fuzz) fails on the old code; here, what the user reads.
+TEST(FuzzReplay, TraceIntegerBeyond64BitsDoesNotFitAnIntegerVariable) {
+  std::vector<Finding> findings;
+  const auto trace = monitor::read_trace(
+      "{\"tick\": 1, \"state\": {\"depth\": 22222222222222222222222222222220.5}}\n", "trace.jsonl",
+      findings);
+  ASSERT_TRUE(trace.has_value());
+  std::vector<Finding> parsed;
+  const fretish::Domain domain =
+      fretish::parse_domain_file("integer depth in [0, 20]\n", "domain.fret", parsed);
+  const auto requirements =
+      fretish::parse_requirements_file("R: Mission shall always satisfy depth <= 20\n",
+                                       "requirements.fret")
+          .requirements;
+  monitor::check_trace(requirements, domain, *trace, "trace.jsonl", findings);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].message,
+            "'depth' at tick 1 does not fit its type: the domain declares it integer");
+  EXPECT_EQ(findings[0].location.line, 1);
+}
+
+// Found by fuzz_scenario (regressions/scenario/escaped-key-error-without-line-and-column.json):
+// the position scanner kept a key's escapes as written ("Dr\u0069ll"), so the error about the
+// key the parser decoded (Drill) found no position and named the file alone.
+TEST(FuzzReplay, ScenarioErrorUnderAnEscapedKeyHasItsLineAndColumn) {
+  try {
+    runtime::parse_scenario("{\"actions\": {\"Dr\\u0069ll\": {\"ticks\": 0}}}\n",
+                            "scenarios/fuzz.json");
+    FAIL() << "the scenario was accepted";
+  } catch (const runtime::ScenarioError& e) {
+    EXPECT_STREQ(e.what(),
+                 "scenarios/fuzz.json:1:38: error: /actions/Drill/ticks: must be at least 1, "
+                 "not 0");
+  }
 }
 
 // Found by fuzz_bt_xml (regressions/bt_xml/writer-explicit-id-not-an-xml-name.xml): the writer
