@@ -236,12 +236,13 @@ ActionContract contract(const std::string& name, const Json& j, const Locator& l
   return c;
 }
 
-// An entry for an action that no tree runs describes nothing on board. Close to the name of a
-// leaf that has no entry, it is a typo: the real action would then be modelled as doing
-// anything and writing nothing, and what its effects would have changed stays put, so a
-// guarantee about it could be proved vacuously. Otherwise it is kept, with a warning: one
-// world.json also describes the actions that uplinks may add.
-void check_action_names(WorldModel& w, const Vocabulary& vocabulary, const Locator& loc) {
+// An entry for an action that no tree runs describes nothing on board. When its name is close
+// to a leaf that has no entry, it may be a typo: the real action would then be modelled as
+// doing anything and writing nothing, and what the entry's effects would change stays put, so
+// a guarantee about it could be proved vacuously. Names one digit apart are common (Drive1,
+// Drive2), so the name alone cannot decide it: a warning that says which leaf is undescribed.
+// One world.json also describes the actions that uplinks may add.
+void check_action_names(WorldModel& w, const Vocabulary& vocabulary) {
   std::set<std::string> undescribed;
   for (const std::string& leaf : vocabulary.scenario.leaves)
     if (!w.actions.contains(leaf) && vocabulary.domain->find(leaf) == nullptr)
@@ -249,16 +250,16 @@ void check_action_names(WorldModel& w, const Vocabulary& vocabulary, const Locat
   for (const auto& [name, c] : w.actions) {
     if (vocabulary.scenario.is_leaf(name)) continue;
     const std::string base = name.substr(0, name.find('('));
+    Finding f = make_finding("world-unknown-action",
+                             "no tree of the mission runs '" + name +
+                                 "': its entry takes effect only once an uplink adds it",
+                             c.location);
+    f.severity = Severity::warning;
     if (const std::string hint = runtime::did_you_mean_hint(base, undescribed); !hint.empty())
-      loc.fail(c.location,
-               "action '" + name + "' is not a leaf of the mission" + hint +
-                   "; as written, the world describes an action no tree runs",
-               "world-unknown-action");
-    w.warnings.push_back(make_finding("world-unknown-action",
-                                      "no tree of the mission runs '" + name +
-                                          "': its entry takes effect only once an uplink adds it",
-                                      c.location));
-    w.warnings.back().severity = Severity::warning;
+      f.notes.push_back(hint.substr(hint.find('(') + 1, hint.rfind(')') - hint.find('(') - 1) +
+                        " That leaf has no entry: as written, it may do anything and writes "
+                        "nothing in the proof");
+    w.warnings.push_back(std::move(f));
   }
 }
 
@@ -315,7 +316,7 @@ WorldModel parse_world(std::string_view text, const std::string& file,
       loc.fail(at, "unknown key '" + key + "' (expected: initial, actions, description)");
     }
   }
-  if (vocabulary) check_action_names(w, *vocabulary, loc);
+  if (vocabulary) check_action_names(w, *vocabulary);
   return w;
 }
 

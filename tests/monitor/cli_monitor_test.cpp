@@ -101,7 +101,7 @@ TEST(MonitorCli, TemporalFunctionsFretCannotMonitorAreNamedWithFretsReason) {
             "FRET expands persisted(n, p) only for a whole number of ticks n\n"
             "r.fret:3:4: W: not-monitored: response: FRET's 'occurred(m, n, p)' needs p at each "
             "of the last n ticks (S[m,n]); only occurred(n, p) is monitored\n"
-            "verdict: fail (2 ticks; 0 held, 0 violated, 3 not monitored)\n");
+            "verdict: inconclusive (2 ticks; 0 held, 0 violated, 3 not monitored)\n");
 }
 
 TEST(MonitorCli, BadTracesAreErrorsWithFileAndLine) {
