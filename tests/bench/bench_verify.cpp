@@ -160,11 +160,11 @@ std::filesystem::path long_guard_mission(int atoms, int layout) {
   return dir;
 }
 
-void BM_VerifyLongGuard(benchmark::State& state) {
+// Verifies the generated mission at `dir` and counts the findings of `check` as `counter`.
+void verify_generated(benchmark::State& state, const std::filesystem::path& dir,
+                      const std::string& check, const char* counter) {
   std::string error;
-  auto mission = uabt::load::load_mission(
-      long_guard_mission(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {},
-      error);
+  auto mission = uabt::load::load_mission(dir, {}, error);
   if (!mission) {
     state.SkipWithError(error.c_str());
     return;
@@ -174,10 +174,16 @@ void BM_VerifyLongGuard(benchmark::State& state) {
     result = uabt::verify::verify_mission(*mission, {});
     benchmark::DoNotOptimize(result);
   }
-  std::uint64_t vacuous = 0;
-  for (const auto& f : result.findings) vacuous += f.check == "guard-vacuous-atom" ? 1 : 0;
+  std::uint64_t counted = 0;
+  for (const auto& f : result.findings) counted += f.check == check ? 1 : 0;
   state.counters["solver_queries"] = static_cast<double>(result.statistics.solver_queries);
-  state.counters["vacuous"] = static_cast<double>(vacuous);
+  state.counters[counter] = static_cast<double>(counted);
+}
+
+void BM_VerifyLongGuard(benchmark::State& state) {
+  verify_generated(
+      state, long_guard_mission(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))),
+      "guard-vacuous-atom", "vacuous");
 }
 
 // One adaptable node with `requirements` requirements whose guards are sliding windows
@@ -212,23 +218,10 @@ std::filesystem::path overlapping_mission(int requirements, int width) {
 }
 
 void BM_VerifyOverlapping(benchmark::State& state) {
-  std::string error;
-  auto mission = uabt::load::load_mission(
-      overlapping_mission(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))), {},
-      error);
-  if (!mission) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
-  uabt::verify::Result result;
-  for (auto _ : state) {
-    result = uabt::verify::verify_mission(*mission, {});
-    benchmark::DoNotOptimize(result);
-  }
-  std::uint64_t overlaps = 0;
-  for (const auto& f : result.findings) overlaps += f.check == "guard-overlap" ? 1 : 0;
-  state.counters["solver_queries"] = static_cast<double>(result.statistics.solver_queries);
-  state.counters["overlaps"] = static_cast<double>(overlaps);
+  verify_generated(
+      state,
+      overlapping_mission(static_cast<int>(state.range(0)), static_cast<int>(state.range(1))),
+      "guard-overlap", "overlaps");
 }
 
 // Args: nodes, alternatives, threads (0: one per core).
