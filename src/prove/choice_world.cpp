@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "runtime/scenario_check.hpp"
+
 namespace uabt::prove {
 
 using runtime::NodeStatus;
@@ -45,8 +47,12 @@ bool Chooser::advance(std::vector<std::uint32_t>& prefix) const {
 }
 
 ChoiceWorld::ChoiceWorld(const WorldModel& model, std::vector<bt::NodeModel> node_models,
-                         std::set<std::string, std::less<>> state_names)
-    : model_(model), models_(std::move(node_models)), state_names_(std::move(state_names)) {}
+                         std::set<std::string, std::less<>> state_names,
+                         const fretish::Domain* domain)
+    : model_(model),
+      models_(std::move(node_models)),
+      state_names_(std::move(state_names)),
+      domain_(domain) {}
 
 namespace {
 
@@ -156,6 +162,20 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
                                (result == NodeStatus::success ? "on_success" : "on_failure") +
                                ": " + e.what());
     }
+    // An effect that leaves a variable outside its declaration (`HardRock = ~HardRock` makes
+    // a boolean -2, as BehaviorTree.CPP computes it) describes a world the domain rules out:
+    // the proof and its counterexample would be about states no run of the mission has.
+    if (domain_ != nullptr)
+      for (const std::string& name : leaf.writes) {
+        const fretish::Variable* var = domain_->find(name);
+        const runtime::ScriptValue* value = context.blackboard.get(name);
+        if (var == nullptr || value == nullptr) continue;
+        if (const std::string why = runtime::misfit_message(name, *value, *var); !why.empty())
+          throw WorldError(leaf.contract->location,
+                           "action '" + leaf.label + "' " +
+                               (result == NodeStatus::success ? "on_success" : "on_failure") +
+                               ": " + why);
+      }
   }
   if (recorder) recorder->ended(context.handle, context.tick, result);
   return result;

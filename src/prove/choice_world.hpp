@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "fretish/domain.hpp"
 #include "prove/world_model.hpp"
 #include "runtime/script/program.hpp"
 #include "runtime/world.hpp"
@@ -56,8 +57,10 @@ class ActionRecorder {
 // any tick and changes nothing.
 class ChoiceWorld : public runtime::World {
  public:
+  // `domain` (optional) is what effects must keep each variable within.
   ChoiceWorld(const WorldModel& model, std::vector<bt::NodeModel> node_models,
-              std::set<std::string, std::less<>> state_names);
+              std::set<std::string, std::less<>> state_names,
+              const fretish::Domain* domain = nullptr);
 
   std::uint32_t bind_leaf(const runtime::LeafBinding& leaf) override;
   runtime::NodeStatus tick_leaf(const runtime::LeafContext& leaf) override;
@@ -92,6 +95,7 @@ class ChoiceWorld : public runtime::World {
   const WorldModel& model_;
   std::vector<bt::NodeModel> models_;
   std::set<std::string, std::less<>> state_names_;
+  const fretish::Domain* domain_ = nullptr;
   std::vector<Leaf> leaves_;
   std::vector<std::int64_t> elapsed_;
   const std::vector<std::vector<std::int32_t>>* forced_ = nullptr;

@@ -189,7 +189,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   for (const auto& t : doc.trees) assigned_by_tree(t.root);
 
   // 3. The engine on the choice world, and what properties observe.
-  choice = std::make_unique<ChoiceWorld>(world, models, state_names);
+  choice = std::make_unique<ChoiceWorld>(world, models, state_names, &mission.domain);
   try {
     engine = std::make_unique<runtime::Engine>(runtime::Engine::build(doc, *choice));
   } catch (const std::exception& e) {

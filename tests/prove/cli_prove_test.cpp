@@ -190,6 +190,10 @@ TEST(ProveCli, WorldFileIsCheckedAgainstTheMission) {
       {R"({"actions": {"Drill": {"ticks": 2, "on_failure": "wind = 30 / wind"}}})", "/ wind",
        "on_failure of 'Drill' divides by wind, which is zero in a state the domain allows (",
        "guard-division-by-zero"},
+      // BehaviorTree.CPP's ~ turns a boolean into an integer: the effect leaves the domain.
+      {R"({"actions": {"Drill": {"ticks": 2, "results": ["failure"], )"
+       R"("on_failure": "IsBitCool = false; HardRock = ~HardRock"}}})",
+       "\"Drill\"", "action 'Drill' on_failure: HardRock = -", "load-file"},
   };
   for (const Case& c : cases) {
     auto files = mission_files("sample_drilling");
