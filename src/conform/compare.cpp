@@ -62,6 +62,15 @@ std::optional<std::string> adaptable_difference(const bt::Node& source, const bt
   return std::nullopt;
 }
 
+// A node's attributes without the ID of the explicit form (<Action ID="X">).
+std::vector<std::pair<std::string, std::string>> without_id(const bt::Node& n) {
+  if (n.tag == n.kind()) return n.attributes;
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& a : n.attributes)
+    if (a.first != "ID") out.push_back(a);
+  return out;
+}
+
 struct Frame {
   const bt::Node* source;
   const bt::Node* compiled;
@@ -87,9 +96,11 @@ std::optional<Difference> first_difference(const bt::Node& source, const bt::Nod
         return Difference{&c, f.path, *what};
       continue;
     }
-    if (s.tag != c.tag)
+    // <Condition ID="Stow"/> and <Stow/> are one node to BT.CPP: the ID is the node, not an
+    // attribute, and the writer may give either form.
+    if (s.tag != c.tag && s.kind() != c.kind())
       return Difference{&c, f.path, "<" + c.tag + "> where the source has <" + s.tag + ">"};
-    if (auto what = attribute_difference(s.attributes, c.attributes))
+    if (auto what = attribute_difference(without_id(s), without_id(c)))
       return Difference{&c, f.path, *what};
     const std::size_t n = std::min(s.children.size(), c.children.size());
     if (s.children.size() != c.children.size()) {

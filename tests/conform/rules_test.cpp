@@ -116,6 +116,17 @@ TEST_F(Rules, ReactiveFallbackInTheFixedPartIsAChange) {
             std::string::npos);
 }
 
+// <Action ID="Stop"/> is <Stop/> to BehaviorTree.CPP: either form conforms to the other, and
+// another ID in the explicit form is still a change.
+TEST_F(Rules, TheExplicitFormOfTheSameNodeIsNoChange) {
+  const std::string xml = msl_document(msl_default_selector());
+  const auto same = msl(replace(xml, "<Stop/>", "<Action ID=\"Stop\"/>"));
+  EXPECT_TRUE(with_check(same, "compiled-fixed-part-changed").empty()) << describe(same);
+  const Finding& f =
+      only(msl(replace(xml, "<Stop/>", "<Action ID=\"Halt\"/>")), "compiled-fixed-part-changed");
+  EXPECT_NE(f.message.find("<Action> where the source has <Stop>"), std::string::npos) << f.message;
+}
+
 TEST_F(Rules, DroppedFixedNodeIsAChange) {
   const Finding& f = only(msl(replace(msl_document(msl_default_selector()), "      <Stop/>\n", "")),
                           "compiled-fixed-part-changed");
