@@ -27,6 +27,7 @@ const char* kNodes = R"(<root BTCPP_format="4"><TreeNodesModel>
   <Action ID="Count"><input_port name="n" type="int"/></Action>
   <Action ID="Scale"><input_port name="n" type="double"/></Action>
   <Action ID="Flag"><input_port name="on" type="bool"/></Action>
+  <Action ID="Report"><input_port name="status" type="BT::NodeStatus"/></Action>
   <Action ID="Scoop"/><Action ID="Drill"/>
 </TreeNodesModel></root>)";
 
@@ -254,6 +255,16 @@ TEST(LiteralType, ALiteralThatDoesNotConvertToThePortTypeIsAnError) {
   EXPECT_NE(found[0].message.find("\"fast\""), std::string::npos);
   EXPECT_EQ(found[1].location.line, 6);
   EXPECT_EQ(found[2].location.line, 7);
+}
+
+TEST(LiteralType, ANodeStatusLiteralIsOneOfTheFiveStatusesAsTheSchemaSays) {
+  // convertFromString<NodeStatus> knows IDLE, RUNNING, SUCCESS, FAILURE and SKIPPED only; the
+  // check and `uabt schema` read one table of them.
+  const auto r = run("      <Report status=\"SKIPPED\"/>\n      <Report status=\"DONE\"/>");
+  const auto found = of(r, "bb-literal-type");
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].location.line, 5);
+  EXPECT_NE(found[0].message.find("\"DONE\""), std::string::npos) << found[0].message;
 }
 
 TEST(ScriptDecided, PreconditionsAndConditionsTheDomainDecideAreWarnings) {

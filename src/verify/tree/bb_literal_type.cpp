@@ -1,9 +1,11 @@
 // bb-literal-type: BT.CPP converts a port's literal with convertFromString<T> of the port's
 // type; a literal that does not convert fails in getInput(), on the robot.
+#include "bt/port_types.hpp"
 #include "verify/tree/blackboard_checks.hpp"
-#include "verify/tree/type_names.hpp"
 
 namespace uabt::verify::tree {
+
+using bt::literal_converts;
 
 std::vector<Finding> check_literal_types(const FlowGraph& g) {
   std::vector<Finding> out;

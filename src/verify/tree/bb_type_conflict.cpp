@@ -7,10 +7,15 @@
 #include <set>
 #include <tuple>
 
+#include "bt/port_types.hpp"
 #include "verify/tree/blackboard_checks.hpp"
-#include "verify/tree/type_names.hpp"
 
 namespace uabt::verify::tree {
+
+using bt::is_string_type;
+using bt::literal_converts;
+using bt::same_type;
+using bt::strongly_typed;
 
 namespace {
 

@@ -6,6 +6,7 @@
 
 #include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
+#include "verify/tree/walk.hpp"
 
 namespace uabt::verify::tree {
 
@@ -304,9 +305,10 @@ class Builder {
     if (xml.tag == "Adaptable") return adaptable(xml, node, enter);
     if (kind == "SubTree" || kind == "SubTreePlus") return subtree(xml, def, scope, node, enter);
     const bt::BuiltinNode* builtin = bt::find_builtin(kind);
-    const bt::Family family = builtin ? builtin->family : bt::Family::unknown;
+    const ControlRule rule =
+        control_rule(kind, builtin ? builtin->family : bt::Family::unknown, children.size());
 
-    if (children.empty()) {  // a leaf
+    if (rule.combine == Combine::leaf) {
       if (kind == "Script" || kind == "ScriptCondition") {
         if (const std::string* code = xml.attribute("code"))
           add_script("code", kind, *code, node, kind == "ScriptCondition", enter, enter);
@@ -320,74 +322,76 @@ class Builder {
     }
     leaf_ports(xml, kind, node, enter);  // a control's or decorator's own ports ({key} inputs)
 
-    const bool sequence = kind == "Sequence" || kind == "SequenceWithMemory" ||
-                          kind == "SequenceStar" || kind == "ReactiveSequence";
-    const bool fallback = kind == "Fallback" || kind == "ReactiveFallback";
-    if (sequence || fallback) {
-      // Each child runs when the ones before it returned the result that goes on (a skipped
-      // child goes on as well); the first other result ends the node.
-      std::vector<std::uint32_t> from{enter};
-      for (std::size_t i = 0; i < children.size(); ++i) {
-        Exits c = tick(children[i], def, scope, from);
-        auto& go_on = sequence ? c.success : c.failure;
-        auto& stop = sequence ? c.failure : c.success;
-        for (auto v : stop) (sequence ? out.failure : out.success).push_back(v);
-        from = go_on;
-        for (auto v : c.skipped) from.push_back(v);
+    switch (rule.combine) {
+      case Combine::sequence:
+      case Combine::fallback: {
+        // Each child runs when the ones before it returned the result that goes on (a skipped
+        // child goes on as well); the first other result ends the node.
+        const bool sequence = rule.combine == Combine::sequence;
+        std::vector<std::uint32_t> from{enter};
+        for (std::size_t i = 0; i < children.size(); ++i) {
+          Exits c = tick(children[i], def, scope, from);
+          auto& go_on = sequence ? c.success : c.failure;
+          auto& stop = sequence ? c.failure : c.success;
+          for (auto v : stop) (sequence ? out.failure : out.success).push_back(v);
+          from = go_on;
+          for (auto v : c.skipped) from.push_back(v);
+        }
+        for (auto v : from) (sequence ? out.success : out.failure).push_back(v);
+        return out;
       }
-      for (auto v : from) (sequence ? out.success : out.failure).push_back(v);
-      return out;
-    }
-    if ((kind == "IfThenElse" || kind == "WhileDoElse") && children.size() >= 2) {
-      Exits c = tick(children[0], def, scope, {enter});
-      Exits then = tick(children[1], def, scope, c.success);
-      append(out, then);
-      if (children.size() == 3) {
-        append(out, tick(children[2], def, scope, c.failure));
-      } else {
-        for (auto v : c.failure) out.failure.push_back(v);
+      case Combine::if_then_else: {
+        Exits c = tick(children[0], def, scope, {enter});
+        Exits then = tick(children[1], def, scope, c.success);
+        append(out, then);
+        if (children.size() == 3) {
+          append(out, tick(children[2], def, scope, c.failure));
+        } else {
+          for (auto v : c.failure) out.failure.push_back(v);
+        }
+        return out;
       }
-      return out;
-    }
-    if (kind == "Parallel" || kind == "ParallelAll") {
-      // Every child is ticked in order in the same tick, whatever the ones before returned.
-      std::vector<std::uint32_t> from{enter};
-      for (const auto& child : children) {
-        Exits c = tick(child, def, scope, from);
-        from = c.success;
-        for (auto v : c.failure) from.push_back(v);
-        for (auto v : c.skipped) from.push_back(v);
+      case Combine::parallel: {
+        // Every child is ticked in order in the same tick, whatever the ones before returned.
+        std::vector<std::uint32_t> from{enter};
+        for (const auto& child : children) {
+          Exits c = tick(child, def, scope, from);
+          from = c.success;
+          for (auto v : c.failure) from.push_back(v);
+          for (auto v : c.skipped) from.push_back(v);
+        }
+        out.success = from;
+        out.failure = from;
+        return out;
       }
-      out.success = from;
-      out.failure = from;
-      return out;
-    }
-    if (family == bt::Family::decorator && children.size() == 1) {
-      Exits c = tick(children[0], def, scope, {enter});
-      if (kind == "Inverter") {
-        out.success = c.failure;
-        out.failure = c.success;
-      } else if (kind == "ForceSuccess") {
-        out.success = c.success;
-        for (auto v : c.failure) out.success.push_back(v);
-      } else if (kind == "ForceFailure") {
-        out.failure = c.success;
-        for (auto v : c.failure) out.failure.push_back(v);
-      } else {
-        out.success = c.success;
-        out.failure = c.failure;
+      case Combine::pass:
+      case Combine::invert:
+      case Combine::force_success:
+      case Combine::force_failure: {
+        Exits c = tick(children[0], def, scope, {enter});
+        if (rule.combine == Combine::invert) {
+          out.success = c.failure;
+          out.failure = c.success;
+        } else if (rule.combine == Combine::force_success) {
+          out.success = c.success;
+          for (auto v : c.failure) out.success.push_back(v);
+        } else if (rule.combine == Combine::force_failure) {
+          out.failure = c.success;
+          for (auto v : c.failure) out.failure.push_back(v);
+        } else {
+          out.success = c.success;
+          out.failure = c.failure;
+        }
+        out.skipped = c.skipped;
+        if (rule.may_end_without_child) {
+          out.success.push_back(enter);
+          out.failure.push_back(enter);
+          out.skipped.push_back(enter);
+        }
+        return out;
       }
-      out.skipped = c.skipped;
-      // Decorators that may end without ticking their child. (RunOnce skips it only once it
-      // has run it to the end; Timeout and Delay tick it before they can end.)
-      if (kind == "Precondition" || kind == "SkipUnlessUpdated" || kind == "LoopInt" ||
-          kind == "LoopBool" || kind == "LoopDouble" || kind == "LoopString" ||
-          kind.rfind("BlackboardCheck", 0) == 0) {
-        out.success.push_back(enter);
-        out.failure.push_back(enter);
-        out.skipped.push_back(enter);
-      }
-      return out;
+      case Combine::leaf:
+      case Combine::any_child: break;
     }
     // Any other control (Switch, TryCatch, ManualSelector, a robot's own): it may tick any one
     // child; the node ends with what that child returns.

@@ -69,7 +69,8 @@ bool Outcomes::compute(const bt::Document& document, const bt::Node& node, Quest
     return answer(document, *root, q);
   }
   const bt::Family family = registry_.family(kind);
-  if (children.empty() || family == bt::Family::action || family == bt::Family::condition) {
+  const ControlRule rule = control_rule(kind, family, children.size());
+  if (rule.combine == Combine::leaf) {
     switch (q) {
       case succeeds: return kind == "AlwaysSuccess";
       case fails: return kind == "AlwaysFailure";
@@ -83,30 +84,34 @@ bool Outcomes::compute(const bt::Document& document, const bt::Node& node, Quest
         return !registry_.is_domain_name(kind);
     }
   }
-  const bt::Node& first = children.front();
-  if (kind == "ForceSuccess" && q == succeeds) return !may_skip(document, first);
-  if (kind == "ForceFailure" && q == fails) return !may_skip(document, first);
-  if (kind == "Inverter" && q == succeeds) return always_fails(document, first);
-  if (kind == "Inverter" && q == fails) return always_succeeds(document, first);
-  if (kind == "Delay" || kind == "Timeout" || kind == "WaitValueUpdate")
-    if (q == runs) return true;
-  if (kind == "SkipUnlessUpdated" && q == skips) return true;
+  if (q == runs && rule.may_run_alone) return true;
   if (q == runs || q == skips) {
+    if (kind == "SkipUnlessUpdated" && q == skips) return true;
     for (const auto& child : children)
       if (answer(document, child, q)) return true;
     return false;
   }
-  // A Sequence fails as soon as one child fails and succeeds only when all do; a Fallback the
-  // other way round.
-  const bool all = (is_sequence(kind) && q == succeeds) || (is_fallback(kind) && q == fails);
-  const bool any = (is_sequence(kind) && q == fails) || (is_fallback(kind) && q == succeeds);
-  if (!all && !any) return false;
-  for (const auto& child : children) {
-    const bool holds = answer(document, child, q);
-    if (any && holds) return true;
-    if (all && !holds) return false;
+  const bt::Node& first = children.front();
+  switch (rule.combine) {
+    case Combine::force_success: return q == succeeds && !may_skip(document, first);
+    case Combine::force_failure: return q == fails && !may_skip(document, first);
+    case Combine::invert:
+      return q == succeeds ? always_fails(document, first) : always_succeeds(document, first);
+    case Combine::sequence:
+    case Combine::fallback: {
+      // A Sequence fails as soon as one child fails and succeeds only when all do; a Fallback
+      // the other way round.
+      const bool sequence = rule.combine == Combine::sequence;
+      const bool all = sequence == (q == succeeds);
+      for (const auto& child : children) {
+        const bool holds = answer(document, child, q);
+        if (!all && holds) return true;
+        if (all && !holds) return false;
+      }
+      return all;
+    }
+    default: return false;  // what the children return does not decide it alone
   }
-  return all;
 }
 
 }  // namespace uabt::verify::tree

@@ -2,8 +2,8 @@
 // can never run, a node that always fails, a precondition with no effect.
 #include "verify/division.hpp"
 #include "verify/script_reading.hpp"
-#include "verify/tree/domain_questions.hpp"
 #include "verify/tree/blackboard_checks.hpp"
+#include "verify/tree/domain_questions.hpp"
 
 namespace uabt::verify::tree {
 

@@ -3,8 +3,8 @@
 #include "bt/script/ast.hpp"
 #include "verify/division.hpp"
 #include "verify/script_reading.hpp"
-#include "verify/tree/domain_questions.hpp"
 #include "verify/tree/blackboard_checks.hpp"
+#include "verify/tree/domain_questions.hpp"
 
 namespace uabt::verify::tree {
 

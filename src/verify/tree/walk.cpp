@@ -47,6 +47,32 @@ SourceLocation Site::location_of(const bt::Node& other) const {
   return {tree->file, other.line, other.column};
 }
 
+ControlRule control_rule(std::string_view kind, bt::Family family, std::size_t children) {
+  ControlRule rule;
+  if (children == 0 || family == bt::Family::action || family == bt::Family::condition) return rule;
+  if (is_sequence(kind)) {
+    rule.combine = Combine::sequence;
+  } else if (is_fallback(kind)) {
+    rule.combine = Combine::fallback;
+  } else if ((kind == "IfThenElse" || kind == "WhileDoElse") && children >= 2) {
+    rule.combine = Combine::if_then_else;
+  } else if (kind == "Parallel" || kind == "ParallelAll") {
+    rule.combine = Combine::parallel;
+  } else if (family == bt::Family::decorator && children == 1) {
+    rule.combine = kind == "Inverter"       ? Combine::invert
+                   : kind == "ForceSuccess" ? Combine::force_success
+                   : kind == "ForceFailure" ? Combine::force_failure
+                                            : Combine::pass;
+    rule.may_end_without_child = kind == "Precondition" || kind == "SkipUnlessUpdated" ||
+                                 kind == "LoopInt" || kind == "LoopBool" || kind == "LoopDouble" ||
+                                 kind == "LoopString" || kind.starts_with("BlackboardCheck");
+    rule.may_run_alone = kind == "Delay" || kind == "Timeout" || kind == "WaitValueUpdate";
+  } else {
+    rule.combine = Combine::any_child;
+  }
+  return rule;
+}
+
 std::string describe(const bt::Node& node) {
   std::string out = "<" + node.tag;
   for (const char* key : {"ID", "name"})

@@ -1,6 +1,8 @@
 #pragma once
 // What the whole-tree checks share: the robot's registered nodes, and one node of a tree as a
 // check sees it (with the path from its <BehaviorTree>).
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -56,6 +58,34 @@ inline bool is_sequence(std::string_view kind) {
 inline bool is_fallback(std::string_view kind) {
   return kind == "Fallback" || kind == "ReactiveFallback" || kind == "AsyncFallback";
 }
+
+// How BehaviorTree.CPP 4.10 makes a node's result from its children's. The one reading of its
+// tick rules that the flow graph (what runs before what) and the outcome questions (what a node
+// can return) share, so that a rule is fixed in one place.
+enum class Combine : std::uint8_t {
+  leaf,           // no children: a robot action or condition, or a built-in leaf
+  sequence,       // stops at the first child that fails; succeeds when every child did
+  fallback,       // stops at the first child that succeeds; fails when every child did
+  if_then_else,   // IfThenElse, WhileDoElse: the first child picks the branch
+  parallel,       // every child in the same tick; its thresholds decide
+  pass,           // a decorator that returns what its child returns
+  invert,         // Inverter
+  force_success,  // ForceSuccess: a child that completes makes it succeed
+  force_failure,  // ForceFailure: a child that completes makes it fail
+  any_child,      // another control (Switch, TryCatch, the robot's own): one of its children
+};
+
+struct ControlRule {
+  Combine combine = Combine::leaf;
+  // Precondition, SkipUnlessUpdated, Loop*, BlackboardCheck*: may end without ticking the child.
+  // (RunOnce skips it only once it has run it to the end; Timeout and Delay tick it first.)
+  bool may_end_without_child = false;
+  // Delay, Timeout, WaitValueUpdate: may return RUNNING whatever the child does.
+  bool may_run_alone = false;
+};
+
+// `family` is the kind's registered family (a built-in's or nodes.xml's).
+ControlRule control_rule(std::string_view kind, bt::Family family, std::size_t children);
 
 // "<Sequence name=\"collect\">", "<Drill>", "<Action ID=\"Drill\">": how a message names a node.
 std::string describe(const bt::Node& node);
