@@ -153,7 +153,7 @@ ManagerRun BehaviorTreeManager::run() {
     e.adaptable = s.adaptable;
     e.requirement = s.requirement;
     e.alternative = alternative_name(*running.outcome.mission, s.adaptable, s.alternative);
-    properties.select(e.adaptable, e.alternative);
+    properties.select(e.adaptable, e.alternative, e.requirement);
     result.trace.push_back(std::move(e));
   });
   runner.engine().add_observer(&selections);
@@ -291,7 +291,10 @@ std::string trace_summary(const ManagerRun& run, const std::string& path_prefix)
 std::string property_summary(const ManagerRun& run) {
   std::string out;
   for (const monitor::PropertyResult& p : run.properties) {
-    out += std::string(p.assumption ? "assumption " : "property ") + p.id + ": " +
+    out += std::string(p.assumption  ? "assumption "
+                       : p.selection ? "selection "
+                                     : "property ") +
+           p.id + ": " +
            (p.verdict == monitor::Verdict::held ? monitor::held_text(p)
                                                 : monitor::verdict_name(p.verdict));
     if (p.first_violation) out += " from tick " + std::to_string(*p.first_violation);

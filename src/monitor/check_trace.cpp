@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/number_text.hpp"
+#include "monitor/selection_check.hpp"
 
 namespace uabt::monitor {
 
@@ -54,27 +55,63 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
   Vocabulary vocabulary{&variables, &symbols, trace.strings};
   for (const fretish::Variable& v : domain.variables)
     for (const std::string& literal : v.enum_values) vocabulary.literals.insert(literal);
-  PropertySet properties(requirements, domain.assumptions, vocabulary, domain.tick_seconds);
+  // Selection requirements are judged on the selections the trace records, the others are
+  // mission properties.
+  std::vector<Finding> ignored;  // a malformed selection requirement reads as a property
+  const std::vector<fretish::SelectionRequirement> selections =
+      fretish::classify_selection(requirements, ignored);
+  const auto is_selection = [&](const fretish::Requirement& r) {
+    return std::any_of(selections.begin(), selections.end(), [&](const auto& s) {
+      return s.id == r.id && s.location.line == r.location.line &&
+             s.location.column == r.location.column && s.location.file == r.location.file;
+    });
+  };
+  std::vector<fretish::Requirement> properties_only;
+  for (const fretish::Requirement& r : requirements)
+    if (!is_selection(r)) properties_only.push_back(r);
+  for (const fretish::SelectionRequirement& r : selections)
+    vocabulary.literals.insert(r.alternative);
+  PropertySet properties(properties_only, domain.assumptions, vocabulary, domain.tick_seconds);
+  SelectionJudge judge(selections, symbols, vocabulary.literals);
 
+  const auto to_frame_value = [&](const std::string& name, const TraceValue& value,
+                                  const TraceTick& tick) -> std::optional<Val> {
+    std::string error;
+    const auto val = to_val(value, domain.find(name), symbols, error);
+    if (!val)
+      findings.push_back(make_finding("trace-invalid",
+                                      "'" + name + "' at tick " + std::to_string(tick.tick) +
+                                          " does not fit its type: " + error,
+                                      {trace_file, tick.line, 1}));
+    return val;
+  };
   TraceReport report;
   std::vector<Val> frame(variables.size());
   for (const TraceTick& tick : trace.ticks) {
-    for (const auto& [name, value] : tick.state) {
-      std::string error;
-      const auto val = to_val(value, domain.find(name), symbols, error);
-      if (!val) {
-        findings.push_back(make_finding("trace-invalid",
-                                        "'" + name + "' at tick " + std::to_string(tick.tick) +
-                                            " does not fit its type: " + error,
-                                        {trace_file, tick.line, 1}));
-        continue;
-      }
-      frame[static_cast<std::size_t>(*variables.find(name))] = *val;
+    for (const TraceAdaptable& a : tick.adaptables) judge.set_order(a.id, a.requirements);
+    for (const auto& [name, value] : tick.state)
+      if (const auto val = to_frame_value(name, value, tick))
+        frame[static_cast<std::size_t>(*variables.find(name))] = *val;
+    for (const TraceSelection& s : tick.selections) {
+      SelectionRecord record{s.adaptable, s.alternative, s.after, {}};
+      for (const auto& [name, value] : s.read)
+        if (const auto val = to_frame_value(name, value, tick))
+          record.read.emplace_back(name, *val);
+      judge.observe(tick.tick, record);
     }
     properties.step(frame, tick.tick);
     ++report.ticks;
   }
-  report.properties = properties.results();
+  // In the requirements' order, the assumptions last.
+  const std::vector<PropertyResult> judged = judge.results(trace.records_selections);
+  const std::vector<PropertyResult> monitored = properties.results();
+  std::size_t next_selection = 0, next_property = 0;
+  for (const fretish::Requirement& r : requirements)
+    report.properties.push_back(is_selection(r) ? judged[next_selection++]
+                                                : monitored[next_property++]);
+  report.properties.insert(report.properties.end(),
+                           monitored.begin() + static_cast<std::ptrdiff_t>(next_property),
+                           monitored.end());
   for (const PropertyResult& p : report.properties) {
     if (p.verdict == Verdict::not_monitored) report.pass = false;
     if (p.verdict == Verdict::violated && !p.assumption) report.failed = true;
@@ -92,7 +129,7 @@ std::string trace_report_json(const TraceReport& report) {
   for (const PropertyResult& p : report.properties) {
     nlohmann::ordered_json r;
     r["id"] = p.id;
-    r["role"] = p.assumption ? "assumption" : "guarantee";
+    r["role"] = p.assumption ? "assumption" : p.selection ? "selection" : "guarantee";
     r["verdict"] = verdict_name(p.verdict);
     r["first_violation"] = p.first_violation ? nlohmann::ordered_json(*p.first_violation)
                                              : nlohmann::ordered_json(nullptr);
@@ -119,7 +156,7 @@ std::string trace_report_text(const TraceReport& report) {
                                   ? std::string()
                                   : p.location.file + ":" + std::to_string(p.location.line) + ":" +
                                         std::to_string(p.location.column) + ": ";
-    const std::string role = p.assumption ? " (assumption)" : "";
+    const std::string role = p.assumption ? " (assumption)" : p.selection ? " (selection)" : "";
     switch (p.verdict) {
       case Verdict::held:
         ++held;

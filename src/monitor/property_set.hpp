@@ -24,6 +24,7 @@ bool is_assumption(const fretish::Requirement& r);
 struct PropertyResult {
   std::string id;
   bool assumption = false;
+  bool selection = false;  // a selection requirement (selection_check.hpp), not a property
   SourceLocation location;
   Verdict verdict = Verdict::held;
   std::optional<std::uint64_t> first_violation;       // tick (as numbered by the caller)

@@ -19,21 +19,40 @@ struct TraceValue {
   std::string text;
 };
 
+// A selection an adaptable node made in a tick ("select" of a trace line).
+struct TraceSelection {
+  std::string adaptable, alternative, after;
+  std::vector<std::pair<std::string, TraceValue>> read;  // its guards' variables, as read
+};
+
+// An adaptable node as a "selection" line describes it: its alternatives and its selection
+// requirements in priority order, from the next tick on.
+struct TraceAdaptable {
+  std::string id;
+  std::vector<std::string> alternatives, requirements;
+};
+
 struct TraceTick {
   std::uint64_t tick = 0;
   int line = 0;
   std::vector<std::pair<std::string, TraceValue>> state;  // what this line sets
+  std::vector<TraceSelection> selections;                 // what this line's "select" says
+  std::vector<TraceAdaptable> adaptables;                 // "selection" lines before this one
 };
 
 struct Trace {
   std::vector<TraceTick> ticks;
-  std::set<std::string> names;    // every variable the trace sets
-  std::set<std::string> strings;  // every string value: names of values, not variables
+  std::set<std::string> names;      // every variable the trace sets
+  std::set<std::string> strings;    // every string value and alternative: values, not variables
+  bool records_selections = false;  // a "selection" or "select" somewhere
 };
 
 // A recorded trace (DESIGN §10): JSON lines {"tick": t, "state": {"name": value, …}}, one a
-// tick, ticks consecutive. A line sets the values it lists; the others keep their value.
-// Problems are `trace-invalid` findings naming file, line and column.
+// tick, ticks consecutive. A line sets the values it lists; the others keep their value. A
+// line may also carry "select": {"<adaptable>": [{"alternative": "a", "read": {…}, "after":
+// "Req1"}]}, the selections made in that tick; a line {"selection": {"<adaptable>":
+// {"alternatives": […], "requirements": […]}}} describes the adaptable nodes from the next
+// tick on. Problems are `trace-invalid` findings naming file, line and column.
 std::optional<Trace> read_trace(const std::string& content, const std::string& file,
                                 std::vector<Finding>& findings);
 

@@ -118,7 +118,7 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
     return v.is_number() && v.as_double() != 0.0 ? NodeStatus::success : NodeStatus::failure;
   }
   std::int64_t& elapsed = elapsed_[context.handle];
-  if (elapsed == 0 && recorder) recorder->started(context.handle, context.tick);
+  if (recorder) recorder->ticked(context.handle, elapsed == 0);
   const std::int64_t now = elapsed + 1;
   // Options: keep running (when the contract allows more ticks), or end with each result.
   const ActionContract* c = leaf.contract;
@@ -177,13 +177,13 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
                                ": " + why);
       }
   }
-  if (recorder) recorder->ended(context.handle, context.tick, result);
+  if (recorder) recorder->ended(context.handle, result);
   return result;
 }
 
 void ChoiceWorld::halt_leaf(const runtime::LeafContext& context) {
   if (leaves_[context.handle].condition) return;
-  if (recorder) recorder->halted(context.handle, context.tick);
+  if (recorder) recorder->halted(context.handle);
   elapsed_[context.handle] = 0;
 }
 

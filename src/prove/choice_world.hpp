@@ -40,14 +40,16 @@ class Chooser {
   std::size_t pos_ = 0, forced_ = 0;
 };
 
-// What an action did, for building a counterexample.
+// What an action did, for building a counterexample. An action's duration is counted in its
+// own ticks, as the simulated world counts a scenario's `ticks`: a tick of the engine may tick
+// it twice (a wake-up re-tick) or not at all (a parent waiting on another child).
 class ActionRecorder {
  public:
   virtual ~ActionRecorder() = default;
-  // `tick`: the engine's tick in which it happened.
-  virtual void started(std::uint32_t leaf, std::uint64_t tick) = 0;
-  virtual void ended(std::uint32_t leaf, std::uint64_t tick, runtime::NodeStatus result) = 0;
-  virtual void halted(std::uint32_t leaf, std::uint64_t tick) = 0;
+  // Every tick of the action; `first`: the first one of a start.
+  virtual void ticked(std::uint32_t leaf, bool first) = 0;
+  virtual void ended(std::uint32_t leaf, runtime::NodeStatus result) = 0;
+  virtual void halted(std::uint32_t leaf) = 0;
 };
 
 // The world `uabt prove` explores: conditions read the state as the simulated world does

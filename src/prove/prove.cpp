@@ -44,15 +44,18 @@ class RunRecorder : public ActionRecorder {
     for (std::uint32_t leaf = 0; leaf < m.choice->leaves().size(); ++leaf)
       if (!m.choice->leaves()[leaf].condition) runs_[label(leaf)];
   }
-  void started(std::uint32_t leaf, std::uint64_t tick) override {
-    auto& list = runs_[label(leaf)];
-    list.push_back(Json::object());
-    current_[leaf] = list.size() - 1;
-    started_[leaf] = tick;
+  void ticked(std::uint32_t leaf, bool first) override {
+    if (first) {
+      auto& list = runs_[label(leaf)];
+      list.push_back(Json::object());
+      current_[leaf] = list.size() - 1;
+      ticks_[leaf] = 0;
+    }
+    ++ticks_[leaf];
   }
-  void ended(std::uint32_t leaf, std::uint64_t tick, NodeStatus result) override {
+  void ended(std::uint32_t leaf, NodeStatus result) override {
     Json& run = runs_[label(leaf)][current_[leaf]];
-    run["ticks"] = tick - started_[leaf] + 1;
+    run["ticks"] = ticks_[leaf];
     run["result"] = result == NodeStatus::success ? "success" : "failure";
     const auto& writes = m_.choice->leaves()[leaf].writes;
     if (!writes.empty()) {
@@ -63,18 +66,18 @@ class RunRecorder : public ActionRecorder {
       run["effects"] = effects;
     }
   }
-  // A halted start must not end before its halt: one tick more than it could have run.
-  void halted(std::uint32_t leaf, std::uint64_t tick) override {
-    runs_[label(leaf)][current_[leaf]]["ticks"] = tick - started_[leaf] + 2;
+  // A halted start must not end before its halt: one tick more than it has run.
+  void halted(std::uint32_t leaf) override {
+    runs_[label(leaf)][current_[leaf]]["ticks"] = ticks_[leaf] + 1;
   }
   // Actions still running when the path ends: they would end after it.
-  Json actions(std::uint64_t last_tick) {
+  Json actions() {
     const auto& elapsed = m_.choice->elapsed();
     for (std::size_t leaf = 0; leaf < elapsed.size(); ++leaf) {
       if (m_.choice->leaves()[leaf].condition) continue;
       auto& list = runs_[label(static_cast<std::uint32_t>(leaf))];
       if (elapsed[leaf] > 0 && !list.empty() && !list[current_[leaf]].contains("ticks"))
-        list[current_[leaf]]["ticks"] = last_tick - started_[leaf] + 2;
+        list[current_[leaf]]["ticks"] = ticks_[leaf] + 1;
     }
     Json out = Json::object();
     for (auto& [name, list] : runs_) {
@@ -89,7 +92,7 @@ class RunRecorder : public ActionRecorder {
   const std::string& label(std::uint32_t leaf) const { return m_.choice->leaves()[leaf].label; }
   Model& m_;
   std::vector<std::size_t> current_;
-  std::vector<std::uint64_t> started_ = std::vector<std::uint64_t>(current_.size(), 0);
+  std::vector<std::uint64_t> ticks_ = std::vector<std::uint64_t>(current_.size(), 0);
   std::map<std::string, std::vector<Json>> runs_;
 };
 
@@ -132,7 +135,7 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
                      " found by uabt prove: violated at tick " + std::to_string(f.tick);
   s["max_ticks"] = f.tick;
   s["initial"] = initial;
-  s["actions"] = recorder.actions(f.tick);
+  s["actions"] = recorder.actions();
   if (!events.empty()) s["events"] = events;
   return s.dump(2) + "\n";
 }

@@ -1,5 +1,6 @@
 #include "runtime/property_monitor.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -33,6 +34,38 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
   monitor::Vocabulary vocabulary{&variables_, &symbols_, literals};
   properties_.emplace(mission.properties, mission.domain.assumptions, vocabulary,
                       mission.domain.tick_seconds);
+  bind_selections(mission, literals);
+}
+
+void PropertyMonitor::bind_selections(const load::Mission& mission,
+                                      const std::set<std::string>& literals) {
+  if (!judge_)
+    judge_.emplace(mission.selections, symbols_, literals);
+  else
+    judge_->add(mission.selections, literals);
+  selecting_.clear();
+  for (const fretish::SelectionRequirement& r : mission.selections) {
+    Selecting& s = selecting_[r.adaptable];
+    s.requirements.push_back(r.id);
+    if (r.guard)
+      for (const std::string& name : fretish::identifiers_of(*r.guard))
+        if ((literals.count(name) == 0 || mission.domain.find(name) != nullptr) &&
+            std::find(s.reads.begin(), s.reads.end(), name) == s.reads.end())
+          s.reads.push_back(name);
+  }
+  for (const load::Alternative& alt : mission.alternatives)
+    if (auto it = selecting_.find(alt.adaptable); it != selecting_.end())
+      it->second.alternatives.push_back(alt.name);
+  for (auto& [id, s] : selecting_) {
+    judge_->set_order(id, s.requirements);
+    s.calls = engine_.subtree_calls(id);
+    for (const std::string& name : s.reads) {
+      const fretish::Variable* declared = mission.domain.find(name);
+      boolean_variable_.emplace(name,
+                                declared == nullptr || declared->type == fretish::VarType::boolean);
+    }
+  }
+  header_due_ = true;
 }
 
 std::vector<PropertyViolation> PropertyMonitor::adopt(const load::Mission& mission,
@@ -42,6 +75,7 @@ std::vector<PropertyViolation> PropertyMonitor::adopt(const load::Mission& missi
   for (std::size_t i : properties_->update(mission.properties, mission.domain.assumptions, literals,
                                            mission.domain.tick_seconds, last_tick))
     out.push_back({last_tick, properties_->result(i)});
+  bind_selections(mission, literals);
   return out;
 }
 
@@ -135,12 +169,39 @@ void PropertyMonitor::on_status_change(NodeId node, NodeStatus, NodeStatus next)
   if (next == NodeStatus::running) bits |= kRunning;
 }
 
-void PropertyMonitor::select(const std::string& adaptable, const std::string& alternative) {
+void PropertyMonitor::select(const std::string& adaptable, const std::string& alternative,
+                             const std::string& requirement) {
   for (Adaptable& a : adaptables_) {
     if (a.id != adaptable) continue;
     a.chosen = alternative;
     a.running = alternative;
   }
+  const auto it = selecting_.find(adaptable);
+  if (it == selecting_.end()) return;
+  Selecting& s = it->second;
+  monitor::SelectionRecord record{adaptable, alternative, "", {}};
+  // A later branch than the one still running: the selection went on past that branch.
+  const auto rank = [&](const std::string& id) {
+    return std::find(s.requirements.begin(), s.requirements.end(), id) - s.requirements.begin();
+  };
+  if (!s.running.empty() && rank(s.running) < rank(requirement)) record.after = s.running;
+  s.running = requirement;
+  for (const std::string& name : s.reads) record.read.emplace_back(name, read(name));
+  selected_.push_back(std::move(record));
+}
+
+monitor::Val PropertyMonitor::read(const std::string& key) {
+  const ScriptValue* v = engine_.blackboard().get(key);
+  if (v == nullptr || v->empty()) {
+    const auto it = boolean_variable_.find(key);
+    return it == boolean_variable_.end() || it->second ? monitor::Val::of_bool(false)
+                                                       : monitor::Val{};
+  }
+  if (v->kind == ScriptValue::Kind::boolean) return monitor::Val::of_bool(v->boolean);
+  if (v->is_number())
+    return v->kind == ScriptValue::Kind::integer ? monitor::Val::of_integer(v->as_double())
+                                                 : monitor::Val::of_number(v->as_double());
+  return monitor::Val::of_symbol(symbols_.id(v->text));
 }
 
 std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
@@ -174,37 +235,59 @@ std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
     a.chosen.clear();
     if (!still_running) a.running.clear();
   }
-  for (const auto& [slot, key] : blackboard_) {
-    const ScriptValue* v = engine_.blackboard().get(key);
-    monitor::Val value;
-    if (v == nullptr || v->empty()) {
-      if (boolean_variable_[key]) value = monitor::Val::of_bool(false);  // unset condition
-    } else if (v->kind == ScriptValue::Kind::boolean) {
-      value = monitor::Val::of_bool(v->boolean);
-    } else if (v->is_number()) {
-      value = v->kind == ScriptValue::Kind::integer ? monitor::Val::of_integer(v->as_double())
-                                                    : monitor::Val::of_number(v->as_double());
-    } else {
-      value = monitor::Val::of_symbol(symbols_.id(v->text));
-    }
-    frame_[static_cast<std::size_t>(slot)] = value;
-  }
+  for (const auto& [slot, key] : blackboard_) frame_[static_cast<std::size_t>(slot)] = read(key);
   std::fill(seen_.begin(), seen_.end(), 0);
+  for (const monitor::SelectionRecord& record : selected_) judge_->observe(tick, record);
+  traced_ = std::move(selected_);
+  selected_.clear();
+  for (auto& [id, s] : selecting_)
+    if (std::none_of(s.calls.begin(), s.calls.end(),
+                     [&](NodeId n) { return engine_.status(n) == NodeStatus::running; }))
+      s.running.clear();
   std::vector<PropertyViolation> out;
   for (std::size_t i : properties_->step(frame_, tick))
     out.push_back({tick, properties_->result(i)});
   return out;
 }
 
-std::string PropertyMonitor::monitor_trace_line(std::uint64_t tick) const {
-  nlohmann::ordered_json state = nlohmann::ordered_json::object();
+std::string PropertyMonitor::monitor_trace_line(std::uint64_t tick) {
+  using Json = nlohmann::ordered_json;
+  std::string out;
+  if (header_due_ && !selecting_.empty()) {
+    Json nodes = Json::object();
+    for (const auto& [id, s] : selecting_)
+      nodes[id] = {{"alternatives", s.alternatives}, {"requirements", s.requirements}};
+    out += Json{{"selection", std::move(nodes)}}.dump() + "\n";
+  }
+  header_due_ = false;
+  Json state = Json::object();
   for (std::size_t slot = 0; slot < frame_.size(); ++slot) {
     if (frame_[slot].kind == monitor::Val::Kind::missing) continue;
     state[variables_.name(static_cast<int>(slot))] =
         value_json(monitor::value_of(frame_[slot], symbols_));
   }
-  nlohmann::ordered_json line = {{"tick", tick}, {"state", std::move(state)}};
-  return line.dump() + "\n";
+  Json line = {{"tick", tick}, {"state", std::move(state)}};
+  if (!traced_.empty()) {
+    Json select = Json::object();
+    for (const monitor::SelectionRecord& r : traced_) {
+      Json read = Json::object();
+      for (const auto& [name, value] : r.read)
+        if (value.kind != monitor::Val::Kind::missing)
+          read[name] = value_json(monitor::value_of(value, symbols_));
+      Json one = {{"alternative", r.alternative}, {"read", std::move(read)}};
+      if (!r.after.empty()) one["after"] = r.after;
+      if (!select.contains(r.adaptable)) select[r.adaptable] = Json::array();
+      select[r.adaptable].push_back(std::move(one));
+    }
+    line["select"] = std::move(select);
+  }
+  return out + line.dump() + "\n";
+}
+
+std::vector<monitor::PropertyResult> PropertyMonitor::results() const {
+  std::vector<monitor::PropertyResult> out = judge_->results();
+  for (monitor::PropertyResult& r : properties_->results()) out.push_back(std::move(r));
+  return out;
 }
 
 std::vector<PropertyViolation> PropertyMonitor::at_end(std::uint64_t last_tick) const {
@@ -215,7 +298,7 @@ std::vector<PropertyViolation> PropertyMonitor::at_end(std::uint64_t last_tick) 
 }
 
 bool PropertyMonitor::guarantees_failed() const {
-  for (const monitor::PropertyResult& r : properties_->results())
+  for (const monitor::PropertyResult& r : results())
     if (!r.assumption && r.verdict != monitor::Verdict::held) return true;
   return false;
 }

@@ -9,6 +9,7 @@
 
 #include "load/mission.hpp"
 #include "monitor/property_set.hpp"
+#include "monitor/selection_check.hpp"
 #include "runtime/engine.hpp"
 
 namespace uabt::runtime {
@@ -32,8 +33,10 @@ class PropertyMonitor : public Observer {
   PropertyMonitor(const load::Mission& mission, const Engine& engine);
 
   void on_status_change(NodeId node, NodeStatus previous, NodeStatus next) override;
-  // A selection subtree started `alternative` (the mission's name for it) in this tick.
-  void select(const std::string& adaptable, const std::string& alternative);
+  // A selection subtree started `alternative` (the mission's name for it) in this tick, by the
+  // branch of `requirement`: judged (monitor::SelectionJudge) on the values its guards read now.
+  void select(const std::string& adaptable, const std::string& alternative,
+              const std::string& requirement = "");
 
   // Call after each tick: builds the tick's observables and steps every property; returns the
   // violations that became final at this tick.
@@ -51,9 +54,13 @@ class PropertyMonitor : public Observer {
   // The tick's observables as one line of a `uabt monitor` trace, after after_tick(tick):
   // {"tick": t, "state": {name: value, …}} with every name the properties read and the value
   // it had (booleans, numbers and names as JSON booleans, numbers and strings), then "\n".
-  std::string monitor_trace_line(std::uint64_t tick) const;
+  // Its tick's selections ride along ("select", with the values their guards read), and
+  // before the first line and after an uplink, a {"selection": {…}} line gives each adaptable
+  // node's alternatives and requirements in priority order.
+  std::string monitor_trace_line(std::uint64_t tick);
 
-  std::vector<monitor::PropertyResult> results() const { return properties_->results(); }
+  // The selection requirements' verdicts, then the properties'.
+  std::vector<monitor::PropertyResult> results() const;
   bool empty() const { return properties_->size() == 0; }
   // A guarantee violated or not monitored: the run fails.
   bool guarantees_failed() const;
@@ -70,6 +77,14 @@ class PropertyMonitor : public Observer {
     std::string chosen;   // selected in this tick
     std::string running;  // the alternative whose branch is still running
   };
+  // An adaptable node with selection requirements, for judging them.
+  struct Selecting {
+    std::vector<std::string> requirements;  // priority order
+    std::vector<std::string> alternatives;
+    std::vector<std::string> reads;  // what its guards read
+    std::string running;             // requirement of the branch still running
+    std::vector<NodeId> calls;       // SubTree nodes calling its selection tree
+  };
 
   static Adaptable make_adaptable(std::string id) {
     Adaptable a;
@@ -85,6 +100,10 @@ class PropertyMonitor : public Observer {
   // Binds every name `mission`'s properties and assumptions read to what the engine shows;
   // returns the vocabulary's literals (alternatives, enum values).
   std::set<std::string> bind(const load::Mission& mission);
+  // The selection requirements of `mission` (judge_, selecting_).
+  void bind_selections(const load::Mission& mission, const std::set<std::string>& literals);
+  // A blackboard entry as the properties read it (unset: false for a condition).
+  monitor::Val read(const std::string& key);
 
   const Engine& engine_;
   monitor::Variables variables_;
@@ -96,6 +115,11 @@ class PropertyMonitor : public Observer {
   std::vector<std::uint8_t> seen_;  // per NodeId: bit 0 success, 1 failure, 2 running, 3 ticked
   std::vector<monitor::Val> frame_;
   std::map<std::string, bool> boolean_variable_;
+  std::optional<monitor::SelectionJudge> judge_;
+  std::map<std::string, Selecting> selecting_;
+  std::vector<monitor::SelectionRecord> selected_;  // this tick's, until after_tick
+  std::vector<monitor::SelectionRecord> traced_;    // the last tick's, for its trace line
+  bool header_due_ = true;
 };
 
 }  // namespace uabt::runtime

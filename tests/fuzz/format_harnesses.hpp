@@ -484,28 +484,50 @@ class TraceHarness {
     return {};
   }
 
+  static nlohmann::ordered_json values(
+      const std::vector<std::pair<std::string, monitor::TraceValue>>& list) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const auto& [name, v] : list) {
+      switch (v.kind) {
+        case monitor::TraceValue::Kind::boolean: out[name] = v.boolean; break;
+        case monitor::TraceValue::Kind::text: out[name] = v.text; break;
+        case monitor::TraceValue::Kind::number:
+          // Integers as integers (a double holds those the reader gave exactly).
+          if (v.integer && v.number >= 0 && v.number < 1.8e19)
+            out[name] = static_cast<std::uint64_t>(v.number);
+          else if (v.integer && v.number < 0 && v.number >= -9.2e18)
+            out[name] = static_cast<std::int64_t>(v.number);
+          else
+            out[name] = v.number;
+          break;
+      }
+    }
+    return out;
+  }
+
   static std::string write(const monitor::Trace& trace) {
+    using Json = nlohmann::ordered_json;
     std::string out;
     for (const monitor::TraceTick& t : trace.ticks) {
-      nlohmann::ordered_json state = nlohmann::ordered_json::object();
-      for (const auto& [name, v] : t.state) {
-        switch (v.kind) {
-          case monitor::TraceValue::Kind::boolean: state[name] = v.boolean; break;
-          case monitor::TraceValue::Kind::text: state[name] = v.text; break;
-          case monitor::TraceValue::Kind::number:
-            // Integers as integers (a double holds those the reader gave exactly).
-            if (v.integer && v.number >= 0 && v.number < 1.8e19)
-              state[name] = static_cast<std::uint64_t>(v.number);
-            else if (v.integer && v.number < 0 && v.number >= -9.2e18)
-              state[name] = static_cast<std::int64_t>(v.number);
-            else
-              state[name] = v.number;
-            break;
-        }
+      if (!t.adaptables.empty()) {
+        Json nodes = Json::object();
+        for (const auto& a : t.adaptables)
+          nodes[a.id] = {{"alternatives", a.alternatives}, {"requirements", a.requirements}};
+        out += Json{{"selection", nodes}}.dump() + "\n";
       }
-      nlohmann::ordered_json line;
+      Json line;
       line["tick"] = t.tick;
-      line["state"] = state;
+      line["state"] = values(t.state);
+      if (!t.selections.empty()) {
+        Json select = Json::object();
+        for (const auto& s : t.selections) {
+          Json one = {{"alternative", s.alternative}, {"read", values(s.read)}};
+          if (!s.after.empty()) one["after"] = s.after;
+          if (!select.contains(s.adaptable)) select[s.adaptable] = Json::array();
+          select[s.adaptable].push_back(one);
+        }
+        line["select"] = select;
+      }
       out += line.dump() + "\n";
     }
     return out;

@@ -45,9 +45,9 @@ const monitor::PropertyResult& property(const ManagerRun& run, const std::string
 TEST(MissionProperties, CuriosityHoldsItsPropertiesInItsScenarios) {
   for (const char* scenario : {"dusty_start.json", "rocks_mid_drive.json", "mud_uplink.json"}) {
     const ManagerRun run = run_in(curiosity(), scenario, compile::SelectionStyle::reactive);
-    // Four properties and the domain's assumption; on_mud restates HoldOnUnknown and adds
-    // the assumption mud_alone.
-    ASSERT_EQ(run.properties.size(), scenario == std::string("mud_uplink.json") ? 7u : 5u);
+    // Three selection requirements, four properties and the domain's assumption; on_mud adds
+    // the selection requirement Req3, restates HoldOnUnknown and adds the assumption mud_alone.
+    ASSERT_EQ(run.properties.size(), scenario == std::string("mud_uplink.json") ? 11u : 8u);
     for (const auto& p : run.properties)
       EXPECT_EQ(p.verdict, monitor::Verdict::held) << scenario << ": " << p.id << " " << p.reason;
     EXPECT_FALSE(run.guarantees_failed);

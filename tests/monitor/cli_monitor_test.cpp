@@ -2,6 +2,9 @@
 // not-monitored with its reason, exit codes, and errors that name file and line.
 #include <gtest/gtest.h>
 
+#include <regex>
+#include <sstream>
+
 #include "cli/cli_support.hpp"
 #include "monitor_test_support.hpp"
 #include "temp_mission.hpp"
@@ -411,6 +414,111 @@ TEST(MonitorCli, NotMonitoredWithoutViolationIsInconclusive) {
   EXPECT_NE(open.out.find("verdict: fail (2 ticks; 0 held, 1 violated, 1 not monitored)"),
             std::string::npos)
       << open.out;
+}
+
+// "selection|property|assumption ID: VERDICT[ from tick N]" lines of `uabt run`, and the same
+// from `uabt monitor --format json`.
+std::map<std::string, std::string> run_verdicts(const std::string& out) {
+  std::map<std::string, std::string> verdicts;
+  static const std::regex line(
+      R"(^(?:selection|property|assumption) (\S+): (\S+( from tick \d+)?))");
+  std::istringstream in(out);
+  for (std::string text; std::getline(in, text);)
+    if (std::smatch m; std::regex_search(text, m, line)) verdicts[m[1]] = m[2];
+  return verdicts;
+}
+
+std::map<std::string, std::string> monitor_verdicts(const std::string& out) {
+  std::map<std::string, std::string> verdicts;
+  const auto doc = nlohmann::json::parse(out);
+  for (const auto& r : doc["requirements"]) {
+    std::string verdict = r["verdict"];
+    if (!r["first_violation"].is_null())
+      verdict += " from tick " + std::to_string(r["first_violation"].get<int>());
+    verdicts[r["id"]] = verdict;
+  }
+  return verdicts;
+}
+
+// `uabt run --monitor-trace` records each selection with the values its guards read and the
+// adaptable nodes' alternatives and priority orders, so that `uabt monitor` judges the
+// selection requirements (and properties that name an alternative never selected, such as
+// HoldOnUnknown's hold_position) as the run does, instead of "not monitored".
+TEST(MonitorCli, RunThenMonitorJudgeSelectionRequirementsAlike) {
+  TempMission m(mission_files("msl_curiosity"), "msl");
+  const std::string dir = m.dir().parent_path().string();
+  for (const char* scenario :
+       {"dusty_start", "rejected_uplink", "rocks_mid_drive", "short_drive"}) {
+    SCOPED_TRACE(scenario);
+    const CliRun run = uabt_in(dir, std::string("run msl --scenario msl/scenarios/") + scenario +
+                                        ".json --monitor-trace t.jsonl");
+    const CliRun monitor = uabt_in(
+        dir, "monitor msl/requirements.fret t.jsonl --domain msl/domain.fret --format json");
+    const auto ran = run_verdicts(run.out);
+    EXPECT_EQ(ran.size(), 8u) << run.out;
+    EXPECT_EQ(monitor_verdicts(monitor.out), ran) << run.out << monitor.out;
+    for (const char* id : {"Req1", "Req2", "Safe", "HoldOnUnknown"})
+      EXPECT_EQ(ran.at(id), "held") << id;
+    EXPECT_EQ(monitor.exit_code, run.exit_code) << run.out << monitor.out;
+  }
+  // An accepted uplink adds Req3, which the mission's own requirements do not state: the
+  // selections from then on cannot be judged with them, and monitor says why.
+  uabt_in(dir, "run msl --scenario msl/scenarios/mud_uplink.json --monitor-trace t.jsonl");
+  const CliRun monitor =
+      uabt_in(dir, "monitor msl/requirements.fret t.jsonl --domain msl/domain.fret");
+  EXPECT_NE(monitor.out.find("Req1 (selection): not-monitored: the run selected by requirement "
+                             "'Req3' of 'navigation', which these requirements do not state"),
+            std::string::npos)
+      << monitor.out;
+}
+
+// The judgement itself, on a hand-written trace: a selection must start the alternative of the
+// first requirement, in priority order, whose guard held in the values it read; one that goes
+// on after an earlier branch ("after") is judged from that branch on; a trace that records no
+// selection (as every trace before) leaves selection requirements not monitored.
+TEST(MonitorCli, SelectionsAreJudgedInPriorityOrder) {
+  const std::string requirements =
+      "Req1: In navigation if OnDust Mission shall satisfy selected_alt = on_dust\n"
+      "Req2: In navigation if OnRocks Mission shall satisfy selected_alt = on_rocks\n"
+      "Safe: In navigation Mission shall satisfy selected_alt = hold_position\n"
+      "Hold: Mission shall always satisfy navigation.selected != hold_position\n";
+  const std::string header =
+      "{\"selection\": {\"navigation\": {\"alternatives\": [\"on_dust\", \"on_rocks\", "
+      "\"hold_position\"], \"requirements\": [\"Req1\", \"Req2\", \"Safe\"]}}}\n";
+  const auto tick = [](int t, const std::string& alternative, const std::string& read,
+                       const std::string& after = "") {
+    return "{\"tick\": " + std::to_string(t) + ", \"state\": {\"navigation.selected\": \"" +
+           alternative + "\"}, \"select\": {\"navigation\": [{\"alternative\": \"" + alternative +
+           "\", \"read\": {" + read + "}" +
+           (after.empty() ? "" : ", \"after\": \"" + after + "\"") + "}]}}\n";
+  };
+  const std::string dust = "\"OnDust\": true, \"OnRocks\": true";
+  TempMission files(
+      Files{{"r.fret", requirements},
+            {"good.jsonl", header + tick(1, "on_dust", dust) + tick(2, "on_rocks", dust, "Req1")},
+            {"bad.jsonl", header + tick(1, "on_dust", dust) + tick(2, "on_rocks", dust)},
+            {"old.jsonl", "{\"tick\": 1, \"state\": {\"navigation.selected\": \"on_dust\"}}\n"}});
+  const CliRun good = uabt_in(files.dir(), "monitor r.fret good.jsonl");
+  EXPECT_EQ(good.exit_code, 0) << good.out;
+  EXPECT_EQ(good.out,
+            "r.fret:1:7: Req1 (selection): held\n"
+            "r.fret:2:7: Req2 (selection): held\n"
+            "r.fret:3:7: Safe (selection): held\n"
+            "r.fret:4:7: Hold: held\n"
+            "verdict: pass (2 ticks; 4 held, 0 violated, 0 not monitored)\n");
+  const CliRun bad = uabt_in(files.dir(), "monitor r.fret bad.jsonl");
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+  EXPECT_NE(bad.out.find("r.fret:1:7: Req1 (selection): violated from tick 2 (OnDust=true, "
+                         "navigation.selected=on_rocks)\n"),
+            std::string::npos)
+      << bad.out;
+  const CliRun old = uabt_in(files.dir(), "monitor r.fret old.jsonl");
+  EXPECT_EQ(old.exit_code, 1) << old.out;
+  EXPECT_NE(old.out.find("r.fret:1:7: Req1 (selection): not-monitored: the trace records no "
+                         "selection of 'navigation'"),
+            std::string::npos)
+      << old.out;
+  EXPECT_NE(old.out.find("r.fret:4:7: Hold: held"), std::string::npos) << old.out;
 }
 
 }  // namespace

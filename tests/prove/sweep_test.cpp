@@ -5,6 +5,7 @@
 // sweep by hand.
 #include <chrono>
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "prove_support.hpp"
@@ -149,6 +150,71 @@ TEST(ProveSweep, AVariableAScriptWritesIsTheMissions) {
     EXPECT_EQ(within.counterexample->scenario.find("\"events\""), std::string::npos)
         << within.counterexample->scenario;
   }
+}
+
+// Proves sweep mission `seed` with the explicit engine (each counterexample is replayed on the
+// runtime by prove itself: a replay that disagrees is an internal error) and returns the
+// counterexample of `id`, whose replay rows the caller checks.
+prove::Counterexample sweep_counterexample(unsigned seed, const std::string& id,
+                                           std::uint64_t tick) {
+  const SweepMission m(seed);
+  const TempMission dir(m.files);
+  const Gated g(dir.dir(), m.style, false);
+  EXPECT_TRUE(g.ok()) << describe(seed, m);
+  if (!g.ok()) return {};
+  const Proof e = prove_with(g, "explicit");
+  EXPECT_TRUE(e.result) << e.error << "\n" << describe(seed, m);
+  if (!e.result) return {};
+  const prove::Answer& a = answer(*e.result, id);
+  EXPECT_EQ(a.verdict, Verdict::violated) << describe(seed, m);
+  EXPECT_TRUE(a.counterexample) << describe(seed, m);
+  if (!a.counterexample) return {};
+  EXPECT_EQ(a.counterexample->tick, tick);
+  return *a.counterexample;
+}
+
+std::vector<std::string> actions_at(const prove::Counterexample& cex, std::uint64_t tick) {
+  for (const auto& row : cex.rows)
+    if (row.tick == tick) return row.actions;
+  ADD_FAILURE() << "no row for tick " << tick;
+  return {};
+}
+
+// Found by the sweep (seed 1774): a Parallel runs Act2 next to a reactive adaptable node whose
+// alternative (a SequenceWithMemory) runs another Act2. The SequenceWithMemory's wake-up
+// re-tick ticks the Parallel's Act2 twice in tick 1. The counterexample gave each run's
+// `ticks` as engine ticks, while the simulated world (as BehaviorTree.CPP) counts the action's
+// own ticks, so on replay the Parallel's Act2 ended at tick 3 where the proof had it still
+// running ("violates it at tick 3 in the model but its replay does not violate it").
+TEST(ProveSweep, AnActionTickedTwiceInOneTickReplaysItsRun) {
+  const prove::Counterexample cex = sweep_counterexample(1774, "P1", 3);
+  ASSERT_EQ(cex.rows.size(), 3u);
+  EXPECT_EQ(actions_at(cex, 1),
+            (std::vector<std::string>{"C started", "C success", "Act2 started", "Act2 started"}));
+  // The alternative switches away and halts its Act2; the Parallel's Act2 runs on.
+  EXPECT_EQ(actions_at(cex, 3), std::vector<std::string>{"Act2 halted"});
+  // The Parallel's Act2 has run 4 ticks of its own in 3 engine ticks (it ends after the run);
+  // the halted one 2 (it does not end before its halt).
+  const auto runs = nlohmann::json::parse(cex.scenario)["actions"]["Act2"]["runs"];
+  ASSERT_EQ(runs.size(), 2u) << cex.scenario;
+  EXPECT_EQ(runs[0]["ticks"], 5) << cex.scenario;
+  EXPECT_EQ(runs[1]["ticks"], 3) << cex.scenario;
+}
+
+// Found by the sweep (seed 964): WhileDoElse(Act0, Act0). The condition Act0 starts over at
+// tick 3 and runs, so the WhileDoElse does not tick the do-branch's Act0 (started at tick 2)
+// until tick 4: two ticks of its own over three engine ticks. The counterexample said 3 ticks,
+// and on replay that Act0 was still running at tick 4.
+TEST(ProveSweep, AnActionItsParentDoesNotTickForATickReplaysItsRun) {
+  const prove::Counterexample cex = sweep_counterexample(964, "P2", 4);
+  ASSERT_EQ(cex.rows.size(), 4u);
+  EXPECT_EQ(actions_at(cex, 3), std::vector<std::string>{"Act0 started"});
+  EXPECT_EQ(actions_at(cex, 4),
+            (std::vector<std::string>{"Act0 success", "Act0 success", "Act0 started"}));
+  // The do-branch's Act0 (the second start) ran 2 ticks of its own, as its contract says.
+  const auto runs = nlohmann::json::parse(cex.scenario)["actions"]["Act0"]["runs"];
+  ASSERT_EQ(runs.size(), 4u) << cex.scenario;
+  EXPECT_EQ(runs[1]["ticks"], 2) << cex.scenario;
 }
 
 // By default 40 missions (and one the sweep once caught), each proved explicitly, and the symbolic
