@@ -21,6 +21,8 @@ struct Step {
   std::vector<std::uint32_t> inner;
   std::vector<runtime::ScriptValue> values;
   std::vector<std::vector<std::int32_t>> outcomes;
+  // Per leaf, per time it is ticked, per output port: what it writes if it ends (symbolic).
+  std::vector<std::vector<std::vector<runtime::ScriptValue>>> outputs;
 };
 
 // What the explicit-state search found for one guarantee.
