@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_support.hpp"
 #include "prove_support.hpp"
 #include "runtime/runner.hpp"
 #include "runtime/scenario.hpp"
@@ -153,6 +154,34 @@ TEST(BlackboardPorts, AReadBeforeAnyWriteStopsThatRunInBothEngines) {
             n.find("Burn: input port 'target' reads {waypoint}, which nothing has written") !=
                 std::string::npos;
   EXPECT_TRUE(noted);
+}
+
+// From the command line: each engine's counterexample file replays in `uabt run` to the same
+// violation, and the gate passes once world.json says what PlanOrbit writes.
+TEST(BlackboardPorts, TheCounterexampleFileReplaysInUabtRunAndTheGatePasses) {
+  TempMission m(orbit_mission());
+  const std::string mission = m.dir().string();
+  for (const std::string engine : {"explicit", "symbolic"}) {
+    SCOPED_TRACE(engine);
+    const auto cex = m.dir().parent_path() / ("cex-" + engine);
+    const CliRun proved = run_shell(std::string(UABT_BINARY) + " prove " + mission + " --engine " +
+                                    engine + " --counterexamples " + cex.string() + " 2>&1");
+    EXPECT_EQ(proved.exit_code, 1) << proved.out;
+    EXPECT_NE(proved.out.find("guarantee 'NoAbort' is violated at tick 1"), std::string::npos)
+        << proved.out;
+    const CliRun replay = run_shell(std::string(UABT_BINARY) + " run " + mission + " --scenario " +
+                                    (cex / "NoAbort.json").string() + " 2>&1");
+    EXPECT_EQ(replay.exit_code, 1) << replay.out;
+    EXPECT_NE(replay.out.find("tick 1: guarantee NoAbort violated (abort.success=true)"),
+              std::string::npos)
+        << replay.out;
+  }
+  m.write("world.json", R"({"actions": {"PlanOrbit": {"outputs": {"waypoint": 3}}}})");
+  const auto out = m.dir().parent_path() / "report";
+  const CliRun gated =
+      run_shell(std::string(UABT_BINARY) + " gate " + mission + " --out " + out.string() + " 2>&1");
+  EXPECT_EQ(gated.exit_code, 0) << gated.out;
+  EXPECT_EQ(gated.out.find("prove-bounded"), std::string::npos) << gated.out;
 }
 
 TEST(BlackboardPorts, WorldJsonOutputsAreCheckedAgainstTheNodesPortsAndTypes) {
