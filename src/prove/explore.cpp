@@ -326,7 +326,10 @@ class Search {
       ++result_.transitions;
     } catch (const runtime::TickException& e) {
       ++result_.transitions;
-      if (!result_.tick_error) result_.tick_error = e.error.message;
+      // As in `uabt run`, the run stops there: the runs that go on are still explored.
+      if (!result_.tick_error)
+        result_.tick_error =
+            "tick " + std::to_string(from.tick + 1) + " of a run: " + e.error.message;
       outcomes.errors = true;
       return;
     }
