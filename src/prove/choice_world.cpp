@@ -54,12 +54,13 @@ ChoiceWorld::ChoiceWorld(const WorldModel& model, std::vector<bt::NodeModel> nod
       state_names_(std::move(state_names)),
       domain_(domain) {}
 
-namespace {
-
-std::string qualified(const std::string& name, std::span<const runtime::LeafPort> ports) {
+std::string leaf_state_key(const std::string& name, std::span<const runtime::LeafPort> ports) {
   if (ports.empty()) return name;
   std::vector<const runtime::LeafPort*> sorted;
-  for (const auto& p : ports) sorted.push_back(&p);
+  for (const auto& p : ports) {
+    if (p.from_blackboard()) return name;
+    sorted.push_back(&p);
+  }
   std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->name < b->name; });
   std::string key = name + "(";
   for (std::size_t i = 0; i < sorted.size(); ++i)
@@ -67,17 +68,13 @@ std::string qualified(const std::string& name, std::span<const runtime::LeafPort
   return key + ")";
 }
 
-}  // namespace
-
 std::uint32_t ChoiceWorld::bind_leaf(const runtime::LeafBinding& binding) {
   Leaf leaf;
   leaf.node = binding.node;
   leaf.name = binding.kind;
+  const std::string key = leaf_state_key(leaf.name, binding.ports);
   for (const auto& p : binding.ports)
-    if (p.from_blackboard())
-      throw std::runtime_error("leaf '" + leaf.name + "' reads port '" + p.name +
-                               "' from the blackboard; prove models literal ports only");
-  const std::string key = qualified(leaf.name, binding.ports);
+    if (p.reads_entry()) leaf.inputs.push_back(p.slot);
   std::string family = binding.declared_family;
   if (family.empty())
     for (const auto& m : models_)
@@ -104,6 +101,14 @@ std::uint32_t ChoiceWorld::bind_leaf(const runtime::LeafBinding& binding) {
     if (leaf.contract) {
       compile(leaf.contract->on_success, leaf.on_success);
       compile(leaf.contract->on_failure, leaf.on_failure);
+    }
+    for (const auto& p : binding.ports) {
+      if (!p.writes_entry()) continue;
+      Leaf::Output out{p.name, p.slot, nullptr};
+      if (leaf.contract)
+        if (const auto it = leaf.contract->outputs.find(p.name); it != leaf.contract->outputs.end())
+          out.fixed = &it->second;
+      leaf.outputs.push_back(std::move(out));
     }
   }
   leaves_.push_back(std::move(leaf));
@@ -153,6 +158,39 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
   }
   const NodeStatus result = results[pick];
   elapsed = 0;
+  // Its output ports first (the node's setOutput before it returns), then the world's effect.
+  for (std::size_t k = 0; k < leaf.outputs.size(); ++k) {
+    const Leaf::Output& out = leaf.outputs[k];
+    runtime::ScriptValue& entry = context.blackboard.value(out.slot);
+    if (out.fixed != nullptr) {
+      entry = *out.fixed;
+      const std::string& name = context.blackboard.key(out.slot);
+      if (const fretish::Variable* var = domain_ ? domain_->find(name) : nullptr;
+          var != nullptr && context.blackboard.owner(out.slot) == runtime::Blackboard::kRootScope)
+        if (const std::string why = runtime::misfit_message(name, entry, *var); !why.empty())
+          throw WorldError(leaf.contract->location,
+                           "action '" + leaf.label + "' outputs '" + out.port + "': " + why);
+      continue;
+    }
+    const auto values = output_values.find(out.slot);
+    if (values == output_values.end() || values->second.empty())
+      throw std::runtime_error("internal error: no values for the output port '" + out.port +
+                               "' of '" + leaf.label + "'");
+    if (forced_) {
+      const std::size_t n = forced_next_[context.handle];
+      if (forced_outputs_ == nullptr || n == 0 || (*forced_outputs_)[context.handle].size() < n ||
+          (*forced_outputs_)[context.handle][n - 1].size() <= k)
+        throw std::runtime_error("internal error: the counterexample does not say what '" +
+                                 leaf.label + "' writes to '" + out.port + "'");
+      entry = (*forced_outputs_)[context.handle][n - 1][k];
+      continue;
+    }
+    const std::uint32_t n = static_cast<std::uint32_t>(values->second.size());
+    const std::uint32_t k_value =
+        n > 1 ? chooser.choose(n, (1u << 31) + 64 * context.handle + static_cast<std::uint32_t>(k))
+              : 0;
+    entry = values->second[k_value];
+  }
   auto& effect = result == NodeStatus::success ? leaf.on_success : leaf.on_failure;
   if (effect) {
     try {

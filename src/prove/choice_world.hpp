@@ -1,8 +1,10 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,11 @@ class Chooser {
   std::size_t pos_ = 0, forced_ = 0;
 };
 
+// The state key a robot leaf answers from or is contracted by: `Name(port=value,…)` with its
+// literal ports, sorted by name; a leaf with a `{key}` port is keyed by its name alone (what
+// the simulated world falls back to once the qualified key is not set).
+std::string leaf_state_key(const std::string& name, std::span<const runtime::LeafPort> ports);
+
 // What an action did, for building a counterexample. An action's duration is counted in its
 // own ticks, as the simulated world counts a scenario's `ticks`: a tick of the engine may tick
 // it twice (a wake-up re-tick) or not at all (a parent waiting on another child).
@@ -73,8 +80,11 @@ class ChoiceWorld : public runtime::World {
   // From now on, until called again, the outcomes of the actions instead of the chooser's:
   // per leaf, one per time it is ticked (-1 runs on, k >= 0 ends with its contract's k-th
   // result), as a symbolic engine's counterexample gives them. nullptr: the chooser again.
-  void force(const std::vector<std::vector<std::int32_t>>* outcomes) {
+  // `outputs` (per leaf, per time it is ticked, per output port): what an ending action writes.
+  void force(const std::vector<std::vector<std::int32_t>>* outcomes,
+             const std::vector<std::vector<std::vector<runtime::ScriptValue>>>* outputs = nullptr) {
     forced_ = outcomes;
+    forced_outputs_ = outputs;
     forced_next_.assign(leaves_.size(), 0);
   }
 
@@ -86,7 +96,18 @@ class ChoiceWorld : public runtime::World {
     const ActionContract* contract = nullptr;
     std::optional<runtime::script::Program> on_success, on_failure;
     std::vector<std::string> writes;
+    // Its output ports `{key}`: what it writes when it ends, the contract's value or one of
+    // output_values[slot] (chosen).
+    struct Output {
+      std::string port;
+      runtime::SlotId slot = runtime::kNoSlot;
+      const runtime::ScriptValue* fixed = nullptr;
+    };
+    std::vector<Output> outputs;
+    std::vector<runtime::SlotId> inputs;  // the entries its input ports `{key}` read
   };
+  // Per entry an output port writes without a value from world.json: the values it may get.
+  std::map<runtime::SlotId, std::vector<runtime::ScriptValue>> output_values;
   const std::vector<Leaf>& leaves() const { return leaves_; }
   // Progress of every action (ticks it has run in its current start; for an action without
   // contract only whether it runs, as nothing else about it matters): the world's state.
@@ -101,6 +122,7 @@ class ChoiceWorld : public runtime::World {
   std::vector<Leaf> leaves_;
   std::vector<std::int64_t> elapsed_;
   const std::vector<std::vector<std::int32_t>>* forced_ = nullptr;
+  const std::vector<std::vector<std::vector<runtime::ScriptValue>>>* forced_outputs_ = nullptr;
   std::vector<std::size_t> forced_next_;
 };
 

@@ -60,7 +60,7 @@ Product initial_product(const Model& m) {
   if (m.world.initial) fixed_values(*m.world.initial, m, fixed);
   Product p;
   for (const StateVar& v : m.vars) {
-    if (!v.relevant || v.env) continue;
+    if (!v.relevant || v.env || v.unset_first) continue;
     std::vector<runtime::ScriptValue> values = v.values;
     // Only a boolean literal is fixed here; the initial condition is still checked on each.
     if (const auto it = fixed.find(v.name); it != fixed.end() && values.size() == 2 &&
@@ -272,7 +272,7 @@ class Search {
         m_.choice->chooser.start(prefix);
         m_.environment->start_tick(first);
         try {
-          successor(from, from_index, Step{e, {}, {}, {}}, outcomes);
+          successor(from, from_index, Step{e, {}, {}, {}, {}}, outcomes);
         } catch (const ChoicePruned&) {
         }
         m_.environment->end_tick();
@@ -326,7 +326,10 @@ class Search {
       ++result_.transitions;
     } catch (const runtime::TickException& e) {
       ++result_.transitions;
-      if (!result_.tick_error) result_.tick_error = e.error.message;
+      // As in `uabt run`, the run stops there: the runs that go on are still explored.
+      if (!result_.tick_error)
+        result_.tick_error =
+            "tick " + std::to_string(from.tick + 1) + " of a run: " + e.error.message;
       outcomes.errors = true;
       return;
     }
@@ -472,14 +475,14 @@ void replay_path(Model& m, const std::vector<Step>& path,
   for (std::size_t t = 0; t < path.size(); ++t) {
     if (symbolic) {
       for (std::size_t i = 0; i < m.vars.size(); ++i)
-        if (m.vars[i].relevant && (t == 0 || m.vars[i].env))
+        if (m.vars[i].relevant && ((t == 0 && !m.vars[i].unset_first) || m.vars[i].env))
           m.engine->blackboard().value(m.vars[i].slot) = path[t].values[i];
     } else {
       if (t == 0) initial.set(m, path[t].env);
       m.environment->start_tick(t == 0);
     }
     before_tick(t + 1);
-    m.choice->force(symbolic ? &path[t].outcomes : nullptr);
+    m.choice->force(symbolic ? &path[t].outcomes : nullptr, symbolic ? &path[t].outputs : nullptr);
     m.choice->chooser.start(path[t].inner);
     m.observables->begin_tick();
     NodeStatus root;

@@ -21,6 +21,8 @@ struct Step {
   std::vector<std::uint32_t> inner;
   std::vector<runtime::ScriptValue> values;
   std::vector<std::vector<std::int32_t>> outcomes;
+  // Per leaf, per time it is ticked, per output port: what it writes if it ends (symbolic).
+  std::vector<std::vector<std::vector<runtime::ScriptValue>>> outputs;
 };
 
 // What the explicit-state search found for one guarantee.
@@ -35,7 +37,7 @@ struct SearchResult {
   std::vector<std::uint64_t> first_trigger;  // per property: first tick its trigger holds, 0 never
   std::uint64_t states = 0, transitions = 0, depth = 0;
   bool complete = false;
-  std::optional<std::string> tick_error;  // the first reachable tick error, if any
+  std::optional<std::string> tick_error;  // the first reachable tick error: "tick N of a run: …"
   std::optional<Vacuity> vacuous;
 };
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 
+#include "bt/node_kinds.hpp"
 #include "fretish/expr.hpp"
 #include "monitor/monitor.hpp"
 #include "monitor/property_set.hpp"
@@ -21,24 +22,33 @@ namespace {
 
 // The leaves of the tree as the engine binds them, learnt by building it once.
 struct ProbeWorld : runtime::World {
+  struct Output {
+    std::string entry, port, type;  // type: the port's C++ type in nodes.xml
+    bool root = true;               // the entry lives on the root blackboard
+    std::string where;              // "file:line:col: Kind"
+  };
   struct Seen {
     std::string kind, family, key;
+    std::vector<Output> outputs;
   };
   std::vector<Seen> leaves;
   std::vector<bt::NodeModel> models;
   std::uint32_t bind_leaf(const runtime::LeafBinding& b) override {
-    Seen s{b.kind, b.declared_family, b.kind};
-    if (s.family.empty())
-      for (const auto& m : models)
-        if (m.id == b.kind) s.family = m.family;
-    if (!b.ports.empty()) {
-      std::vector<const runtime::LeafPort*> sorted;
-      for (const auto& p : b.ports) sorted.push_back(&p);
-      std::sort(sorted.begin(), sorted.end(), [](auto* x, auto* y) { return x->name < y->name; });
-      s.key += "(";
-      for (std::size_t i = 0; i < sorted.size(); ++i)
-        s.key += (i ? "," : "") + sorted[i]->name + "=" + sorted[i]->literal;
-      s.key += ")";
+    Seen s{b.kind, b.declared_family, leaf_state_key(b.kind, b.ports), {}};
+    const bt::NodeModel* model = nullptr;
+    for (const auto& m : models)
+      if (m.id == b.kind) model = &m;
+    if (s.family.empty() && model) s.family = model->family;
+    for (const auto& p : b.ports) {
+      if (!p.writes_entry()) continue;
+      Output out{b.blackboard.key(p.slot), p.name, "",
+                 b.blackboard.owner(p.slot) == runtime::Blackboard::kRootScope,
+                 b.info.location.file + ":" + std::to_string(b.info.location.line) + ":" +
+                     std::to_string(b.info.location.column) + ": " + b.kind};
+      if (model)
+        for (const auto& port : model->ports)
+          if (port.name == p.name) out.type = port.type;
+      s.outputs.push_back(std::move(out));
     }
     leaves.push_back(std::move(s));
     return 0;
@@ -163,6 +173,66 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     state_names.insert(leaf.key);
   }
 
+  // The entries output ports write: a domain variable, or an entry of the tree's own with the
+  // port's type, empty until its first write.
+  std::map<std::string, std::vector<const ProbeWorld::Output*>, std::less<>> written_by;
+  for (const auto& leaf : probe.leaves)
+    for (const auto& out : leaf.outputs) {
+      if (!out.root)
+        throw ProveError(out.where + ": output port '" + out.port + "' writes {" + out.entry +
+                         "}, an entry of a SubTree's own blackboard: prove models the root "
+                         "blackboard's entries (remap the port, or use _autoremap)");
+      written_by[out.entry].push_back(&out);
+    }
+  for (const auto& [entry, writers] : written_by) {
+    auto it =
+        std::find_if(vars.begin(), vars.end(), [&](const StateVar& v) { return v.name == entry; });
+    if (it == vars.end()) {
+      fretish::Variable decl;
+      decl.name = entry;
+      const std::string& type = writers.front()->type;
+      if (type == "bool") {
+        decl.type = fretish::VarType::boolean;
+      } else if (type == "double" || type == "float") {
+        decl.type = fretish::VarType::real;
+      } else if (type.find("int") != std::string::npos || type.find("long") != std::string::npos ||
+                 type.find("short") != std::string::npos || type == "unsigned" ||
+                 type.find("size_t") != std::string::npos) {
+        decl.type = fretish::VarType::integer;
+      } else {
+        decl.type = fretish::VarType::enumeration;  // strings: the values world.json gives
+        for (const auto& [name, c] : world.actions)
+          for (const auto& [port, value] : c.outputs)
+            for (const auto* w : writers)
+              if (port == w->port && value.is_string() &&
+                  std::find(decl.enum_values.begin(), decl.enum_values.end(), value.text) ==
+                      decl.enum_values.end())
+                decl.enum_values.push_back(value.text);
+        if (decl.enum_values.empty())
+          unenumerable[entry] = "the values of {" + entry + "} (output port '" +
+                                writers.front()->port + "' of type '" + type +
+                                "'): declare the entry in domain.fret, or give the value in "
+                                "world.json's outputs";
+      }
+      port_entries[entry] = decl;
+      StateVar s;
+      s.name = entry;
+      std::string why;
+      s.values = values_of(decl, why);
+      if (!why.empty() && !unenumerable.contains(entry)) unenumerable[entry] = why;
+      // Until it is cut into cells (or when nothing reads its value), one value of its type.
+      if (s.values.empty())
+        s.values.push_back(decl.type == fretish::VarType::integer ? ScriptValue::of_int(0)
+                           : decl.type == fretish::VarType::real  ? ScriptValue::of_real(0)
+                                                                  : ScriptValue::of_string(""));
+      s.unset_first = true;
+      vars.push_back(std::move(s));
+      it = vars.end() - 1;
+    }
+    it->port_written = true;
+    it->env = false;
+  }
+
   // 2. What the actions write is the mission's.
   for (const auto& [name, c] : world.actions)
     for (const std::string* code : {&c.on_success, &c.on_failure})
@@ -175,6 +245,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
                            "' writes '" + written +
                            "', which is neither declared in the domain nor a condition");
         it->env = false;
+        it->script_written = true;
       }
   // So is what the tree's scripts assign: the runtime keeps it from one tick to the next, the
   // environment does not choose it again.
@@ -183,7 +254,10 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       if (attr == "code" || (!attr.empty() && attr[0] == '_'))
         for (const std::string& written : assigned_names(value))
           for (StateVar& v : vars)
-            if (v.name == written) v.env = false;
+            if (v.name == written) {
+              v.env = false;
+              v.script_written = true;
+            }
     for (const auto& c : n.children) assigned_by_tree(c);
   };
   for (const auto& t : doc.trees) assigned_by_tree(t.root);
@@ -288,7 +362,10 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
         }
       }
       const auto open = value.find('{');
-      if (open != std::string::npos && value.back() == '}') {
+      // A robot leaf's port only needs its entry to be there (ChoiceWorld reads no value).
+      const bool robot_leaf = n.children.empty() && bt::find_builtin(n.kind()) == nullptr &&
+                              n.kind() != "SubTree" && n.tag != "Adaptable";
+      if (open != std::string::npos && value.back() == '}' && !robot_leaf) {
         read.insert(value.substr(open + 1, value.size() - open - 2));
         port_reads.push_back(value.substr(open + 1, value.size() - open - 2));
       }
@@ -300,7 +377,10 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   for (StateVar& v : vars) v.relevant = read.contains(v.name);
   choose_values(unenumerable);
   mark_read_once();
-  for (StateVar& v : vars) engine->blackboard().value(v.slot) = v.values.front();
+  for (StateVar& v : vars) {
+    if (v.port_written) choice->output_values[v.slot] = v.values;
+    if (!v.unset_first) engine->blackboard().value(v.slot) = v.values.front();
+  }
   environment = std::make_unique<Environment>(*this);
   fresh = runtime::EngineState::save(*engine);
 }
@@ -310,9 +390,11 @@ Model::~Model() = default;
 void Model::choose_values(const std::map<std::string, std::string, std::less<>>& unenumerable) {
   // Numeric environment variables are cut into cells by every atom that reads them.
   std::set<std::string, std::less<>> numeric;
+  // So are the entries output ports write (and nothing computes): the action may write any
+  // value, and one per cell is all the readers tell apart.
   for (const StateVar& v : vars) {
-    const fretish::Variable* d = mission.domain.find(v.name);
-    if (v.relevant && v.env && d &&
+    const fretish::Variable* d = declaration(v.name);
+    if (v.relevant && (v.env || (v.port_written && !v.script_written)) && d &&
         (d->type == fretish::VarType::integer || d->type == fretish::VarType::real))
       numeric.insert(v.name);
   }
@@ -338,7 +420,7 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
   }
   for (StateVar& v : vars) {
     if (!v.relevant) continue;
-    const fretish::Variable* d = mission.domain.find(v.name);
+    const fretish::Variable* d = declaration(v.name);
     const auto why = unenumerable.find(v.name);
     if (numeric.contains(v.name)) {
       const std::string uncut = cuts.uncut(v.name);
@@ -367,6 +449,12 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
                          " (the mission writes it: fix its initial value in world.json's "
                          "`initial`, or bound its range)";
   }
+}
+
+const fretish::Variable* Model::declaration(const std::string& name) const {
+  if (const fretish::Variable* d = mission.domain.find(name)) return d;
+  const auto it = port_entries.find(name);
+  return it == port_entries.end() ? nullptr : &it->second;
 }
 
 void Model::mark_read_once() {

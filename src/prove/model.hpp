@@ -32,6 +32,12 @@ struct StateVar {
   bool read_once = false;
   runtime::SlotId slot = runtime::kNoSlot;
   int frame = -1;  // its monitor::Variables slot
+  // An entry an output port `{key}` writes (DESIGN §10): its values are those the action may
+  // write. `unset_first`: no variable of the domain, so nothing is in it before the first write
+  // (a read before then is BT.CPP's error).
+  bool port_written = false;
+  bool script_written = false;  // an effect or a script of the tree assigns it
+  bool unset_first = false;
 };
 
 // A mission property compiled for model checking.
@@ -87,6 +93,13 @@ struct Model {
   void mark_read_once();
   std::vector<std::pair<runtime::script::Program, std::string>> tree_scripts;  // and where
   std::vector<std::string> port_reads;  // blackboard keys ports read
+  // The declaration an output port's entry that the domain does not declare gets from the
+  // port's type (nodes.xml), by entry name.
+  std::map<std::string, fretish::Variable, std::less<>> port_entries;
+
+ public:
+  // The domain's declaration of a variable, or the one its output port's type gives it.
+  const fretish::Variable* declaration(const std::string& name) const;
 };
 
 }  // namespace uabt::prove

@@ -65,6 +65,13 @@ class RunRecorder : public ActionRecorder {
           effects[name] = runtime::value_json(*v);
       run["effects"] = effects;
     }
+    const auto& outputs = m_.choice->leaves()[leaf].outputs;
+    if (!outputs.empty()) {
+      Json written = Json::object();
+      for (const auto& out : outputs)
+        written[out.port] = runtime::value_json(m_.engine->blackboard().value(out.slot));
+      run["outputs"] = written;
+    }
   }
   // A halted start must not end before its halt: one tick more than it has run.
   void halted(std::uint32_t leaf) override {

@@ -26,6 +26,18 @@ Step step_of(const z3::model& model, SymbolicTick& tick, const Model& m, const T
     for (int k = 0; k < ticked; ++k)
       step.outcomes.back().push_back(static_cast<std::int32_t>(
           model.eval(in.outcomes[l][static_cast<std::size_t>(k)], true).get_numeral_int()));
+    step.outputs.emplace_back();
+    for (int k = 0; k < ticked; ++k) {
+      step.outputs.back().emplace_back();
+      const auto& outputs = m.choice->leaves()[l].outputs;
+      for (std::size_t p = 0; p < in.outputs[l].size(); ++p) {
+        const runtime::SlotId slot = outputs[p].slot;
+        std::size_t var = 0;
+        while (var + 1 < m.vars.size() && m.vars[var].slot != slot) ++var;
+        step.outputs.back().back().push_back(
+            tick.value(model, in.outputs[l][p][static_cast<std::size_t>(k)], var));
+      }
+    }
   }
   return step;
 }
@@ -71,6 +83,9 @@ std::vector<bool> spacer_proofs(z3::context& ctx, SymbolicTick& tick, const Mode
     for (const auto& v : x.values) vars.push_back(v);
     for (const auto& per_leaf : x.outcomes)
       for (const auto& o : per_leaf) vars.push_back(o);
+    for (const auto& per_leaf : x.outputs)
+      for (const auto& per_port : per_leaf)
+        for (const auto& o : per_port) vars.push_back(o);
     for (const auto& l : with_state ? step.locals : start.locals) vars.push_back(l);
     return vars;
   };

@@ -90,6 +90,8 @@ struct NodeDef {
   int cycles = 0;  // Repeat: num_cycles
   std::optional<runtime::script::Program> program;
   std::map<std::string, int> script_vars;  // script names -> variables (in its scope)
+  std::vector<int> inputs;                 // robot leaf: the variables its input ports `{key}` read
+  std::vector<int> outputs;                // action: the variables its output ports write, by port
   std::string where;
 };
 
@@ -167,7 +169,7 @@ struct SymbolicTick::Impl {
     for (std::size_t i = 0; i < m.vars.size(); ++i) {
       const StateVar& v = m.vars[i];
       VarDef d;
-      if (const fretish::Variable* decl = m.mission.domain.find(v.name)) {
+      if (const fretish::Variable* decl = m.declaration(v.name)) {
         switch (decl->type) {
           case fretish::VarType::boolean: d.type = SymType::boolean; break;
           case fretish::VarType::integer: d.type = SymType::integer; break;
@@ -218,6 +220,27 @@ struct SymbolicTick::Impl {
       } else if (const auto l = leaf_of.find(id); l != leaf_of.end()) {
         d.leaf = l->second;
         d.kind = leaves[static_cast<std::size_t>(d.leaf)].condition ? NK::condition : NK::action;
+        const ChoiceWorld::Leaf& leaf = leaves[static_cast<std::size_t>(d.leaf)];
+        for (const runtime::SlotId slot : leaf.inputs) {
+          const auto v = var_of_slot.find(slot);
+          if (v == var_of_slot.end())
+            throw SymbolicUnsupported(d.where + ": an input port reads {" +
+                                      m.engine->blackboard().key(slot) +
+                                      "}, which no output port writes and the domain does not "
+                                      "declare");
+          d.inputs.push_back(v->second);
+        }
+        for (const auto& out : leaf.outputs) {
+          const auto v = var_of_slot.find(out.slot);
+          if (v == var_of_slot.end() || m.vars[static_cast<std::size_t>(v->second)].script_written)
+            throw SymbolicUnsupported(d.where + ": output port '" + out.port +
+                                      "' writes an entry a script or an effect also assigns");
+          if (types[static_cast<std::size_t>(v->second)] == SymType::symbol &&
+              domains[static_cast<std::size_t>(v->second)].empty() && out.fixed == nullptr)
+            throw SymbolicUnsupported(d.where + ": output port '" + out.port +
+                                      "' has no values the symbolic engine can choose from");
+          d.outputs.push_back(v->second);
+        }
       } else {
         throw SymbolicUnsupported(d.where + ": the symbolic engine does not model this node");
       }
@@ -432,11 +455,17 @@ struct SymbolicTick::Impl {
                             return it == d.script_vars.end() ? -1 : it->second;
                           },
                           &types, &domains, &codes};
+        // A read of an entry nothing has written yet stops the tick (BT.CPP throws): such a
+        // step is not one of the mission's (the explicit engine drops it too).
+        for (const auto& [name, var] : d.script_vars)
+          if (var >= 0 && m.vars[static_cast<std::size_t>(var)].unset_first)
+            x.constraints.push_back(z3::implies(g, x.cur.written[static_cast<std::size_t>(var)]));
         const auto v = run_script(ctx, *d.program, scope, x.cur.values, g, d.where);
         if (d.kind == NK::script) return ctx.int_val(kSuccess);
         return z3::ite(script_truth(*v, d.where), ctx.int_val(kSuccess), ctx.int_val(kFailure));
       }
       case NK::condition: {
+        require_inputs(x, d, g);
         const z3::expr& v = x.cur.values[static_cast<std::size_t>(d.var)];
         z3::expr truth = ctx.bool_val(false);
         switch (types[static_cast<std::size_t>(d.var)]) {
@@ -578,8 +607,16 @@ struct SymbolicTick::Impl {
     return result;
   }
 
+  // The engine's check before a robot leaf ticks: its input ports' entries are there.
+  void require_inputs(Exec& x, const NodeDef& d, const z3::expr& g) {
+    for (const int var : d.inputs)
+      if (m.vars[static_cast<std::size_t>(var)].unset_first)
+        x.constraints.push_back(z3::implies(g, x.cur.written[static_cast<std::size_t>(var)]));
+  }
+
   // ChoiceWorld::tick_leaf for an action.
   z3::expr action(Exec& x, NodeId id, const z3::expr& g) {
+    require_inputs(x, nodes[id], g);
     const std::size_t l = static_cast<std::size_t>(nodes[id].leaf);
     const ChoiceWorld::Leaf& leaf = m.choice->leaves()[l];
     const ActionContract* c = leaf.contract;
@@ -598,6 +635,22 @@ struct SymbolicTick::Impl {
         g, (d == -1 && may_run) || (d >= 0 && d < static_cast<int>(results.size()) && may_end)));
     z3::expr status = ctx.int_val(kRunning);
     set(x.cur.elapsed[l], g && d == -1, c ? now : ctx.int_val(1));
+    // Its output ports when it ends, before its effect (ChoiceWorld::tick_leaf): the value
+    // world.json gives, else any value of the entry (of this tick of the leaf).
+    const z3::expr ends_any = g && d >= 0;
+    for (std::size_t k = 0; k < leaf.outputs.size(); ++k) {
+      const auto var = static_cast<std::size_t>(nodes[id].outputs[k]);
+      z3::expr value = x.in->outputs[l][k].back();
+      for (std::size_t n = x.in->outputs[l][k].size() - 1; n-- > 0;)
+        value = z3::ite(x.leaf_ticks[l] == static_cast<int>(n) + 1, x.in->outputs[l][k][n], value);
+      if (leaf.outputs[k].fixed != nullptr) {
+        value = constant_of(ctx, *leaf.outputs[k].fixed, types[var], codes);
+      } else {
+        x.constraints.push_back(z3::implies(ends_any, in_range(var, value)));
+      }
+      if (vars[var].tracked) set(x.cur.values[var], ends_any, value);
+      set(x.cur.written[var], ends_any, ctx.bool_val(true));
+    }
     for (std::size_t k = 0; k < results.size(); ++k) {
       const z3::expr ends = g && d == static_cast<int>(k);
       status = z3::ite(d == static_cast<int>(k), ctx.int_val(static_cast<int>(results[k])), status);
@@ -741,6 +794,7 @@ SymState SymbolicTick::fresh() const {
   for (std::size_t l = 0; l < i.m.choice->leaves().size(); ++l)
     s.elapsed.push_back(i.ctx.int_val(0));
   s.values = i.first;
+  for (const StateVar& v : i.m.vars) s.written.push_back(i.ctx.bool_val(!v.unset_first));
   for (std::size_t p = 0; p < i.tables.size(); ++p) s.monitor.push_back(i.ctx.int_val(0));
   s.done.push_back(i.ctx.bool_val(false));
   s.started.push_back(i.ctx.bool_val(false));
@@ -766,6 +820,9 @@ SymState SymbolicTick::state(const std::string& prefix) const {
     s.values.push_back(i.vars[v].tracked && !i.vars[v].chosen
                            ? i.sort_const(prefix + i.m.vars[v].name, i.types[v])
                            : i.first[v]);
+  for (const StateVar& v : i.m.vars)
+    s.written.push_back(v.unset_first ? i.ctx.bool_const((prefix + v.name + ".written").c_str())
+                                      : i.ctx.bool_val(true));
   for (std::size_t p = 0; p < i.tables.size(); ++p)
     s.monitor.push_back(i.tables[p]
                             ? i.ctx.int_const((prefix + "monitor" + std::to_string(p)).c_str())
@@ -787,6 +844,17 @@ TickInputs SymbolicTick::inputs(const std::string& prefix) const {
     for (int k = 0; k < std::max(1, i.multiplicity[l]); ++k)
       in.outcomes.back().push_back(i.ctx.int_const(
           (prefix + "outcome" + std::to_string(l) + "." + std::to_string(k)).c_str()));
+    in.outputs.emplace_back();
+    const NodeId node = i.m.choice->leaves()[l].node;
+    for (std::size_t p = 0; p < i.nodes[node].outputs.size(); ++p) {
+      const auto var = static_cast<std::size_t>(i.nodes[node].outputs[p]);
+      in.outputs.back().emplace_back();
+      for (int k = 0; k < std::max(1, i.multiplicity[l]); ++k)
+        in.outputs.back().back().push_back(i.sort_const(prefix + "output" + std::to_string(l) +
+                                                            "." + std::to_string(p) + "." +
+                                                            std::to_string(k),
+                                                        i.types[var]));
+    }
   }
   return in;
 }
@@ -827,8 +895,8 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
 
 std::vector<z3::expr> SymbolicTick::flatten(const SymState& s) {
   std::vector<z3::expr> out;
-  for (const auto* part :
-       {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done, &s.started, &s.wake})
+  for (const auto* part : {&s.status, &s.counter, &s.elapsed, &s.values, &s.monitor, &s.done,
+                           &s.started, &s.wake, &s.written})
     out.insert(out.end(), part->begin(), part->end());
   return out;
 }
@@ -845,6 +913,7 @@ z3::expr SymbolicTick::same(const SymState& a, const SymState& b) const {
   all(a.values, b.values);
   all(a.monitor, b.monitor);
   all(a.wake, b.wake);
+  all(a.written, b.written);
   return eq;
 }
 

@@ -21,6 +21,9 @@ struct SymState {
   std::vector<z3::expr> monitor;  // per property: its MonitorTable state (0 without a monitor)
   std::vector<z3::expr> done, started;  // one term each
   std::vector<z3::expr> wake;           // the wake-up signal carried into the next tick
+  // Per Model::vars: whether the entry holds a value (false only for an entry an output port
+  // writes that the domain does not declare, until its first write).
+  std::vector<z3::expr> written;
 };
 
 // What the world chooses for one tick.
@@ -29,6 +32,8 @@ struct TickInputs {
   // Per ChoiceWorld leaf, per time it is ticked within the tick (wake-up re-ticks and Repeat
   // rounds tick a leaf again): -1 runs on, k ends with result k.
   std::vector<std::vector<z3::expr>> outcomes;
+  // Per ChoiceWorld leaf, per output port, per time it is ticked: what it writes if it ends.
+  std::vector<std::vector<std::vector<z3::expr>>> outputs;
 };
 
 struct TickEncoding {

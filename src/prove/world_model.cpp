@@ -64,6 +64,15 @@ class Locator {
       i += text_[i] != '\\' ? 1 : (i + 1 < text_.size() && text_[i + 1] == 'u' ? 6 : 2);
     return at_offset(i);
   }
+  // Where the value of the member whose key starts at `key_offset` starts.
+  SourceLocation value_at(std::size_t key_offset) const {
+    std::size_t i = text_.find(':', key_offset);
+    if (i == std::string_view::npos) return at_offset(key_offset);
+    ++i;
+    while (i < text_.size() && std::isspace(static_cast<unsigned char>(text_[i]))) ++i;
+    return at_offset(i);
+  }
+  std::string_view text() const { return text_; }
   [[noreturn]] void fail(const SourceLocation& where, const std::string& message,
                          const std::string& check = "load-file") const {
     throw WorldError(where, message, check);
@@ -73,6 +82,12 @@ class Locator {
   std::string_view text_;
   std::string file_;
 };
+
+// Where the key `"key"` stands after `from` (the member of the object that starts there).
+std::size_t text_find_key(const Locator& loc, std::size_t from, const std::string& key) {
+  const std::size_t found = loc.text().find("\"" + key + "\"", from);
+  return found == std::string_view::npos ? from : found;
+}
 
 std::int64_t tick_count(const Json& j, const Locator& loc, const SourceLocation& where) {
   if (!j.is_number_integer() || j.get<std::int64_t>() < 1)
@@ -229,8 +244,40 @@ ActionContract contract(const std::string& name, const Json& j, const Locator& l
         check_divisions(*program, name, key, offset, *vocabulary, loc);
       }
       (key == "on_success" ? c.on_success : c.on_failure) = code;
+    } else if (key == "outputs") {
+      if (!value.is_object())
+        loc.fail(at, "outputs must be an object: output port -> the value the action writes");
+      const std::size_t outputs_offset = loc.offset_of({"actions", name, key});
+      for (const auto& [port, v] : value.items()) {
+        const std::size_t port_offset = text_find_key(loc, outputs_offset, port);
+        runtime::ScriptValue written;
+        if (v.is_boolean()) {
+          written = runtime::ScriptValue::of_bool(v.get<bool>());
+        } else if (v.is_number_integer() &&
+                   !(v.is_number_unsigned() && v.get<std::uint64_t>() > INT64_MAX)) {
+          written = runtime::ScriptValue::of_int(v.get<std::int64_t>());
+        } else if (v.is_number_float()) {
+          written = runtime::ScriptValue::of_real(v.get<double>());
+        } else if (v.is_string()) {
+          written = runtime::ScriptValue::of_string(v.get<std::string>());
+        } else {
+          loc.fail(loc.value_at(port_offset), "outputs of '" + name + "': the value of '" + port +
+                                                  "' must be a boolean, a number or a string, "
+                                                  "not " +
+                                                  v.dump());
+        }
+        if (vocabulary != nullptr && vocabulary->scenario.is_leaf(name)) {
+          bool at_value = false;
+          const std::string why = vocabulary->scenario.output_misfit(name, port, written, at_value);
+          if (!why.empty())
+            loc.fail(at_value ? loc.value_at(port_offset) : loc.at_offset(port_offset),
+                     "outputs of '" + name + "': " + why);
+        }
+        c.outputs[port] = written;
+      }
     } else {
-      loc.fail(at, "unknown key '" + key + "' (expected: ticks, results, on_success, on_failure)");
+      loc.fail(at, "unknown key '" + key +
+                       "' (expected: ticks, results, on_success, on_failure, outputs)");
     }
   }
   return c;

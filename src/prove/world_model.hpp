@@ -12,6 +12,7 @@
 
 #include "base/location.hpp"
 #include "fretish/expr.hpp"
+#include "runtime/script/value.hpp"
 #include "runtime/status.hpp"
 
 namespace uabt::load {
@@ -27,11 +28,15 @@ struct ActionContract {
   std::int64_t min_ticks = 1, max_ticks = 1;
   std::vector<runtime::NodeStatus> results;  // success and/or failure
   std::string on_success, on_failure;        // BT.CPP scripts, "" for none
+  // "outputs": the value it writes to each output port `{key}` when it ends, by port name; a
+  // port not listed gets any value of its entry the mission distinguishes.
+  std::map<std::string, runtime::ScriptValue, std::less<>> outputs;
   SourceLocation location;
 };
 
 // world.json: {"initial": "<FRETISH expression>", "actions": {"Drill": {"ticks": [5, 30],
-// "results": ["success", "failure"], "on_success": "IsDug = true"}}}. Without a file the
+// "results": ["success", "failure"], "on_success": "IsDug = true"}, "PlanOrbit": {"outputs":
+// {"waypoint": 3}}}}. Without a file the
 // world is unconstrained: every initial state of the domain, every action free.
 struct WorldModel {
   std::string file;          // displayed path, "" without a world.json

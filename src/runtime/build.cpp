@@ -293,6 +293,11 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
         port.name = attr;
         if (auto key = blackboard_key(attr, value)) {
           port.slot = bb.resolve(scope, *key);
+          port.key = *key;
+          if (const auto model = core.port_directions.find(core.info[id].kind);
+              model != core.port_directions.end())
+            if (const auto d = model->second.find(attr); d != model->second.end())
+              port.direction = d->second;
         } else {
           port.literal = value;
         }
@@ -419,6 +424,13 @@ Engine Engine::build(const bt::Document& doc, const std::string& main_tree, Worl
   if (options.smart_selection) core->smart = std::make_shared<detail::SmartSelection>();
   core->file = doc.file;
   core->format = doc.format;
+  for (const bt::NodeModel& model : doc.node_models) {
+    auto& ports = core->port_directions[model.id];
+    for (const bt::Port& port : model.ports)
+      ports[port.name] = port.direction == "output_port"  ? PortDirection::output
+                         : port.direction == "inout_port" ? PortDirection::inout
+                                                          : PortDirection::input;
+  }
   for (const bt::TreeDef& tree : doc.trees) {
     auto [it, inserted] = core->defs.emplace(tree.id, std::make_shared<bt::TreeDef>(tree));
     if (!inserted)

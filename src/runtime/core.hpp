@@ -112,6 +112,9 @@ struct Core {
   std::vector<Instance> instances;
 
   std::map<std::string, std::shared_ptr<const bt::TreeDef>, std::less<>> defs;
+  // The robot's port directions (the document's <TreeNodesModel>): node ID -> port -> direction.
+  std::map<std::string, std::map<std::string, PortDirection, std::less<>>, std::less<>>
+      port_directions;
   std::vector<std::shared_ptr<const bt::TreeDef>> retired;  // replaced, still referenced
   std::string file;  // the document's displayed path, for trees without their own
   int format = 4;    // the document's BTCPP_format (3: v3 SubTree attributes apply)

@@ -150,10 +150,11 @@ NodeStatus action_result(const Json& r, const Scenario& file, const std::string&
 ActionSpec action(const Json& j, const Scenario& file, const std::string& where) {
   if (!j.is_object())
     shape_error(file, where, std::string("an action must be an object, not ") + j.type_name());
-  only_keys(j, {"ticks", "effects", "result", "runs"}, file, where);
+  only_keys(j, {"ticks", "effects", "outputs", "result", "runs"}, file, where);
   ActionSpec spec;
   if (j.contains("ticks")) spec.ticks = integer(j["ticks"], file, where + "/ticks", 1);
   if (j.contains("effects")) spec.effects = assignment(j["effects"], file, where + "/effects");
+  if (j.contains("outputs")) spec.outputs = assignment(j["outputs"], file, where + "/outputs");
   if (j.contains("result")) spec.result = action_result(j["result"], file, where + "/result");
   if (j.contains("runs")) {
     const Json& runs = j["runs"];
@@ -163,13 +164,15 @@ ActionSpec action(const Json& j, const Scenario& file, const std::string& where)
       const std::string at = where + "/runs/" + std::to_string(i);
       if (!runs[i].is_object())
         shape_error(file, at, std::string("a run must be an object, not ") + runs[i].type_name());
-      only_keys(runs[i], {"ticks", "effects", "result"}, file, at);
+      only_keys(runs[i], {"ticks", "effects", "outputs", "result"}, file, at);
       ActionRun run;
       if (runs[i].contains("ticks")) run.ticks = integer(runs[i]["ticks"], file, at + "/ticks", 1);
       if (runs[i].contains("result"))
         run.result = action_result(runs[i]["result"], file, at + "/result");
       if (runs[i].contains("effects"))
         run.effects = assignment(runs[i]["effects"], file, at + "/effects");
+      if (runs[i].contains("outputs"))
+        run.outputs = assignment(runs[i]["outputs"], file, at + "/outputs");
       spec.runs.push_back(std::move(run));
     }
   }

@@ -21,11 +21,15 @@ struct ActionRun {
   std::int64_t ticks = 1;
   NodeStatus result = NodeStatus::success;
   StateAssignment effects;
+  StateAssignment outputs;  // by output port name
 };
 
 struct ActionSpec {
   std::int64_t ticks = 1;   // completes on its `ticks`-th tick; RUNNING before
   StateAssignment effects;  // applied when it completes
+  // "outputs": the value it writes to each of its output ports `{key}` when it completes,
+  // by port name (nodes.xml gives the direction); a port not listed is not written.
+  StateAssignment outputs;
   NodeStatus result = NodeStatus::success;
   // "runs": the n-th start of the action (counted over every leaf it names) follows runs[n];
   // starts beyond the list follow ticks/result/effects above.
@@ -43,7 +47,8 @@ struct ScenarioEvent {
 //   {"max_ticks": 2000,
 //    "initial": {"OnDust": true, "battery": 90, "terrain": "dust"},
 //    "actions": {"Drill": {"ticks": 30, "effects": {"IsDug": true}, "result": "success"}},
-//    (an action may also list "runs": [{"ticks": 3, "result": "failure", "effects": {…}}, …])
+//    (an action may also list "runs": [{"ticks": 3, "result": "failure", "effects": {…}}, …]
+//     and "outputs": {"waypoint": 3}, what it writes to its output ports, as may a run)
 //    "events": [{"at": 15, "set": {"OnDust": false}}, {"at": 40, "uplink": "uplinks/on_mud"}]}
 // JSON booleans, integers, reals and strings become state values (strings hold enum values).
 struct Scenario {

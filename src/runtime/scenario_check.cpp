@@ -64,9 +64,34 @@ void add_node(const bt::Node& node, ScenarioVocabulary& v) {
   for (const bt::Node& child : node.children) add_node(child, v);
 }
 
+void add_model(const bt::NodeModel& model, ScenarioVocabulary& v) {
+  v.leaves.insert(model.id);
+  auto& ports = v.ports[model.id];
+  for (const bt::Port& port : model.ports)
+    if (std::none_of(ports.begin(), ports.end(),
+                     [&](const bt::Port& p) { return p.name == port.name; }))
+      ports.push_back(port);
+}
+
 void add_document(const bt::Document& doc, ScenarioVocabulary& v) {
   for (const bt::TreeDef& tree : doc.trees) add_node(tree.root, v);
-  for (const bt::NodeModel& model : doc.node_models) v.leaves.insert(model.id);
+  for (const bt::NodeModel& model : doc.node_models) add_model(model, v);
+}
+
+// What a port's C++ type (nodes.xml's type=) takes, "" for a type uabt does not judge.
+std::string port_misfit(const ScriptValue& value, const std::string& type) {
+  using K = ScriptValue::Kind;
+  if (type == "bool") return value.kind == K::boolean ? "" : "is not a boolean (true or false)";
+  if (type == "double" || type == "float")
+    return value.kind == K::integer || value.kind == K::real ? "" : "is not a number";
+  static const std::set<std::string> integers = {
+      "int",     "unsigned",           "unsigned int", "long",     "unsigned long", "long long",
+      "short",   "unsigned long long", "int8_t",       "int16_t",  "int32_t",       "int64_t",
+      "uint8_t", "uint16_t",           "uint32_t",     "uint64_t", "size_t",        "std::size_t"};
+  if (integers.contains(type)) return value.kind == K::integer ? "" : "is not an integer";
+  if (type == "std::string" || type == "string" || type.starts_with("std::__cxx11::basic_string"))
+    return value.kind == K::string ? "" : "is not a string";
+  return "";
 }
 
 }  // namespace
@@ -117,6 +142,35 @@ bool ScenarioVocabulary::is_leaf(const std::string& key) const {
   return leaves.contains(base_name(key));
 }
 
+std::string ScenarioVocabulary::output_misfit(const std::string& action, const std::string& port,
+                                              const ScriptValue& value, bool& at_value) const {
+  at_value = false;
+  const std::string kind = base_name(action);
+  const auto it = ports.find(kind);
+  std::set<std::string> outputs;
+  const bt::Port* found = nullptr;
+  if (it != ports.end())
+    for (const bt::Port& p : it->second)
+      if (p.direction == "output_port" || p.direction == "inout_port") {
+        outputs.insert(p.name);
+        if (p.name == port) found = &p;
+      }
+  if (found == nullptr) {
+    if (outputs.empty())
+      return "'" + kind + "' has no output port in nodes.xml, so it writes no '" + port + "'";
+    std::string list;
+    for (const std::string& o : outputs) list += (list.empty() ? "" : ", ") + o;
+    return "'" + port + "' is not an output port of '" + kind + "' (its output ports: " + list +
+           ")" + did_you_mean_hint(port, outputs);
+  }
+  const std::string why = port_misfit(value, found->type);
+  if (why.empty()) return "";
+  at_value = true;
+  return "the value of output port '" + port + "' of '" + kind + "', " +
+         (value.is_string() ? "\"" + value.to_string() + "\"" : value.to_string()) + ", " + why +
+         " (the port's type is " + found->type + ")";
+}
+
 void ScenarioVocabulary::add(const load::Mission& mission) {
   for (const fretish::Variable& var : mission.domain.variables) {
     state.insert(var.name);
@@ -125,7 +179,7 @@ void ScenarioVocabulary::add(const load::Mission& mission) {
   add_document(mission.tree, *this);
   for (const load::Alternative& alt : mission.alternatives) add_document(alt.document, *this);
   if (mission.nodes)
-    for (const bt::NodeModel& model : *mission.nodes) leaves.insert(model.id);
+    for (const bt::NodeModel& model : *mission.nodes) add_model(model, *this);
 }
 
 std::vector<std::string> check_scenario(const Scenario& scenario,
@@ -157,9 +211,21 @@ std::vector<std::string> check_scenario(const Scenario& scenario,
                        "' is not a leaf of the mission" +
                        did_you_mean_hint(name, vocabulary.leaves));
     check_state(spec.effects, "/actions/" + name + "/effects");
-    for (std::size_t i = 0; i < spec.runs.size(); ++i)
-      check_state(spec.runs[i].effects,
-                  "/actions/" + name + "/runs/" + std::to_string(i) + "/effects");
+    auto check_outputs = [&](const StateAssignment& outputs, const std::string& where) {
+      if (!vocabulary.is_leaf(name)) return;
+      for (const auto& [port, value] : outputs) {
+        bool at_value = false;
+        const std::string why = vocabulary.output_misfit(name, port, value, at_value);
+        if (!why.empty())
+          errors.push_back(scenario.where(where + "/" + port, at_value) + ": error: " + why);
+      }
+    };
+    check_outputs(spec.outputs, "/actions/" + name + "/outputs");
+    for (std::size_t i = 0; i < spec.runs.size(); ++i) {
+      const std::string run = "/actions/" + name + "/runs/" + std::to_string(i);
+      check_state(spec.runs[i].effects, run + "/effects");
+      check_outputs(spec.runs[i].outputs, run + "/outputs");
+    }
   }
   return errors;
 }

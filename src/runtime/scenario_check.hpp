@@ -18,11 +18,19 @@ struct ScenarioVocabulary {
   std::map<std::string, fretish::Variable> variables;  // declared domain variables
   std::set<std::string> state;   // every name a condition, script or port reads or writes
   std::set<std::string> leaves;  // the robot's leaves (conditions and actions), by kind
+  // The ports nodes.xml (or a tree's <TreeNodesModel>) declares, by node ID.
+  std::map<std::string, std::vector<bt::Port>> ports;
 
   // Adds a loaded mission: its domain, mission.xml, alternatives and nodes.xml.
   void add(const load::Mission& mission);
   // True when `key` (Drill, or Drill(mode=rotary) as scenarios key one instance) is a leaf.
   bool is_leaf(const std::string& key) const;
+  // What is wrong with `value` as what `action` (Drill, or Drill(mode=rotary)) writes to its
+  // output port `port`: not an output (or inout) port nodes.xml declares for it, with "did you
+  // mean", or a value of another type than the port's; "" when it fits. `at_value`: the
+  // value, not the port's name, is wrong.
+  std::string output_misfit(const std::string& action, const std::string& port,
+                            const ScriptValue& value, bool& at_value) const;
 };
 
 // " (did you mean 'x'?)" for the closest of `known` within two edits (a third of the name at

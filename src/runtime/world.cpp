@@ -136,6 +136,14 @@ NodeStatus SimWorld::tick_leaf(const LeafContext& context) {
   if (leaf.elapsed < needed) return NodeStatus::running;
   leaf.elapsed = 0;
   NodeStatus result = leaf.action ? leaf.action->result : NodeStatus::success;
+  // The outputs first (the node's setOutput before it returns), then the world's effects.
+  const StateAssignment* outputs = leaf.run      ? &leaf.run->outputs
+                                   : leaf.action ? &leaf.action->outputs
+                                                 : nullptr;
+  if (outputs != nullptr)
+    for (const auto& [port, value] : *outputs)
+      for (const LeafPort& p : context.ports)
+        if (p.name == port && p.writes_entry()) context.blackboard.value(p.slot) = value;
   if (leaf.run) {
     for (const auto& [key, value] : leaf.run->effects) context.blackboard.set(key, value);
     result = leaf.run->result;

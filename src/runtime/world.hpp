@@ -15,13 +15,27 @@
 
 namespace uabt::runtime {
 
+// A robot port's direction as nodes.xml declares it (`unknown`: the node has no model there).
+enum class PortDirection : std::uint8_t { unknown, input, output, inout };
+
 // One attribute of a robot leaf: a literal (`angle="180"`) or a blackboard key
 // (`goal="{target}"`, `{=}` meaning the key named like the port).
 struct LeafPort {
   std::string name;
   std::string literal;    // the attribute as written when not a key
+  std::string key;        // the blackboard key as written, when a key
   SlotId slot = kNoSlot;  // the entry when a key
+  PortDirection direction = PortDirection::unknown;
   bool from_blackboard() const { return slot != kNoSlot; }
+  // A `{key}` port the node reads (getInput) or writes (setOutput), by its declared direction.
+  bool reads_entry() const {
+    return from_blackboard() &&
+           (direction == PortDirection::input || direction == PortDirection::inout);
+  }
+  bool writes_entry() const {
+    return from_blackboard() &&
+           (direction == PortDirection::output || direction == PortDirection::inout);
+  }
 };
 
 // What a World learns about a robot leaf once, when it is instantiated.

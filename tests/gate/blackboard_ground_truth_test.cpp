@@ -20,6 +20,8 @@ namespace {
 const char* kNodes = R"(<root BTCPP_format="4"><TreeNodesModel>
   <Condition ID="IsReady"/><Condition ID="HasSample"/>
   <Action ID="Wait"/><Action ID="Scoop"/><Action ID="Drill"/>
+  <Action ID="Locate"><output_port name="range" type="int"/></Action>
+  <Action ID="Approach"><input_port name="goal" type="int"/></Action>
 </TreeNodesModel></root>)";
 
 struct Case {
@@ -69,6 +71,11 @@ TEST(ReadBeforeWriteGroundTruth, TheWitnessPathThrowsInTheRuntimeAtTheReportedNo
        "<IfThenElse><IsReady/><Script code=\"mode := 1\"/><Wait/></IfThenElse>\n"
        "      <Script code=\"speed := mode * 2\"/>",
        "<Scoop/>", "mode"},
+      // An input port's getInput() finds no entry: the robot's node throws there.
+      {"input_port",
+       "<Fallback><Sequence><IsReady/><Locate range=\"{range}\"/></Sequence><Wait/>"
+       "</Fallback>\n      <Approach goal=\"{range}\"/>",
+       "<Scoop/>", "range"},
       {"skip_if",
        "<Script code=\"tries := 0\" _skipIf=\"battery &gt; 40\"/>\n"
        "      <Script code=\"tries += 1\"/>",
