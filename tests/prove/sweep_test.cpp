@@ -5,6 +5,7 @@
 // sweep by hand.
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <set>
 
 #include "prove_support.hpp"
@@ -112,6 +113,26 @@ void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
   }
 }
 
+// Sweeps `seeds`, the symbolic engine on those `symbolic_on` accepts, and prints the tally.
+Tally sweep(const std::string& label, const std::vector<unsigned>& seeds,
+            const std::function<bool(unsigned)>& symbolic_on, std::uint64_t depth, bool temporal) {
+  Tally tally;
+  for (unsigned seed : seeds) {
+    const auto start = std::chrono::steady_clock::now();
+    sweep_one(seed, symbolic_on(seed), depth, tally, temporal);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+    if (std::getenv("UABT_SWEEP_VERBOSE")) std::cout << "seed " << seed << ": " << ms << " ms\n";
+  }
+  std::cout << label << ": " << tally.missions << " missions, " << tally.gated << " gated, "
+            << tally.explicit_answered << " proved explicitly, " << tally.both
+            << " by both engines, " << tally.violated << " violated and " << tally.proved
+            << " proved guarantees, " << tally.temporal
+            << " answered guarantees read temporal functions\n";
+  return tally;
+}
+
 // Found by the sweep: a domain variable only a Script writes was taken for the environment's
 // and chosen afresh every tick, while the runtime keeps what the Script wrote. The explicit
 // engine's counterexample then did not replay ("violates it at tick 2 in the model but its
@@ -173,19 +194,10 @@ TEST(ProveSweep, EnginesAgreeAndEveryCounterexampleReplays) {
   for (unsigned seed = first; seed < first + count; ++seed) seeds.push_back(seed);
   // The mission whose counterexample did not replay (a variable only a Script writes).
   if (by_default) seeds.push_back(183);
-  Tally tally;
-  for (unsigned seed : seeds) {
-    const auto start = std::chrono::steady_clock::now();
-    sweep_one(seed, symbolic || (by_default && quick_symbolic.contains(seed)), depth, tally);
-    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
-                        std::chrono::steady_clock::now() - start)
-                        .count();
-    if (std::getenv("UABT_SWEEP_VERBOSE")) std::cout << "seed " << seed << ": " << ms << " ms\n";
-  }
-  std::cout << "sweep: " << tally.missions << " missions, " << tally.gated << " gated, "
-            << tally.explicit_answered << " proved explicitly, " << tally.both
-            << " by both engines, " << tally.violated << " violated and " << tally.proved
-            << " proved guarantees\n";
+  const Tally tally = sweep(
+      "sweep", seeds,
+      [&](unsigned seed) { return symbolic || (by_default && quick_symbolic.contains(seed)); },
+      depth, false);
   if (!by_default) return;
   // The default sweep exercises both verdicts, both engines, and every node kind.
   EXPECT_EQ(tally.gated, 41);
@@ -206,21 +218,12 @@ TEST(ProveSweep, EnginesAgreeOnFretTemporalFunctions) {
   const bool by_default = std::getenv("UABT_SWEEP_TEMPORAL_MISSIONS") == nullptr;
   const std::set<unsigned> quick_symbolic = {4, 7, 9, 13, 17, 19, 25};
   const bool symbolic = env_or("UABT_SWEEP_SYMBOLIC", 0) != 0;
-  Tally tally;
-  for (unsigned seed = 1; seed <= count; ++seed) {
-    const auto start = std::chrono::steady_clock::now();
-    sweep_one(seed, symbolic || (by_default && quick_symbolic.contains(seed)), 3, tally, true);
-    if (std::getenv("UABT_SWEEP_VERBOSE"))
-      std::cout << "seed " << seed << ": "
-                << std::chrono::duration_cast<std::chrono::milliseconds>(
-                       std::chrono::steady_clock::now() - start)
-                       .count()
-                << " ms\n";
-  }
-  std::cout << "temporal sweep: " << tally.missions << " missions, " << tally.gated << " gated, "
-            << tally.explicit_answered << " proved explicitly, " << tally.both
-            << " by both engines, " << tally.violated << " violated and " << tally.proved
-            << " proved guarantees, " << tally.temporal << " of them temporal\n";
+  std::vector<unsigned> seeds;
+  for (unsigned seed = 1; seed <= count; ++seed) seeds.push_back(seed);
+  const Tally tally = sweep(
+      "temporal sweep", seeds,
+      [&](unsigned seed) { return symbolic || (by_default && quick_symbolic.contains(seed)); }, 3,
+      true);
   if (!by_default) return;
   EXPECT_EQ(tally.gated, 30);
   EXPECT_GE(tally.explicit_answered, 20);
