@@ -203,8 +203,9 @@ bool is_dual(ScopeKind s) {
 }  // namespace
 
 int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots) {
-  const Inputs in{f.input(slots.condition), f.input(slots.response), f.input(slots.stop)};
-  const int M = f.input(slots.mode);
+  const Inputs in{slots.at(f, slots.condition), slots.at(f, slots.response),
+                  slots.at(f, slots.stop)};
+  const int M = slots.at(f, slots.mode);
   const int nM = f.negation(M);
   const bool dual = is_dual(shape.scope);
   // First and one-past-last points of the intervals where `m` holds.
@@ -251,7 +252,10 @@ int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots
 }
 
 int build_scope_start_formula(Formula& f, ScopeKind scope, int mode_slot) {
-  const int M = f.input(mode_slot);
+  return build_scope_start_at(f, scope, f.input(mode_slot));
+}
+
+int build_scope_start_at(Formula& f, ScopeKind scope, int M) {
   const int nM = f.negation(M);
   const int ftp = f.first_tick();
   // First point of an interval where m holds: m & (FTP | Y !m).
@@ -310,8 +314,9 @@ int pending_base(const Context& c, const Shape& shape, const Inputs& in) {
 
 int build_pending_formula(Formula& f, const Shape& shape, const Slots& slots) {
   if (is_dual(shape.scope)) return -1;
-  const Inputs in{f.input(slots.condition), f.input(slots.response), f.input(slots.stop)};
-  const int M = f.input(slots.mode);
+  const Inputs in{slots.at(f, slots.condition), slots.at(f, slots.response),
+                  slots.at(f, slots.stop)};
+  const int M = slots.at(f, slots.mode);
   const auto first_of = [&](int m) { return f.conjunction(m, f.weak_yesterday(f.negation(m))); };
   const auto and_if = [&](int open, int now) { return open < 0 ? -1 : f.conjunction(open, now); };
   switch (shape.scope) {

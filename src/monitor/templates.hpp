@@ -36,9 +36,12 @@ const char* condition_key(ConditionKind c);
 const char* timing_key(TimingKind t);
 
 // Input slots of the formula: the scope's mode, the (folded) condition, the response and the
-// stop condition of until/before. Unused ones are ignored.
+// stop condition of until/before. Unused ones are ignored. With `nodes`, the four are nodes
+// already in the formula (a part that is itself a formula over other inputs).
 struct Slots {
   int mode = 0, condition = 1, response = 2, stop = 3;
+  bool nodes = false;
+  int at(Formula& f, int slot) const { return nodes ? slot : f.input(slot); }
 };
 
 // Builds the requirement's meaning at every tick: true at tick t exactly when the trace up to
@@ -50,6 +53,8 @@ int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots
 // functions persisted/occurred/prevOcc of the condition, response and stop count (semantics.json,
 // endpoints.SMVptExtleft). Reads the mode from input `mode_slot`. Returns the node.
 int build_scope_start_formula(Formula& f, ScopeKind scope, int mode_slot);
+// The same, reading the mode from the formula's node `mode`.
+int build_scope_start_at(Formula& f, ScopeKind scope, int mode);
 
 // An obligation still open at tick t: true at t when the trace so far holds the requirement
 // only because it ends before a deadline (a `within`, `for`, `after` or `next` whose trigger

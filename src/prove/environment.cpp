@@ -60,9 +60,8 @@ Environment::Environment(Model& m) : m_(m) {
   for (std::size_t c = 0; c < constraints_.size(); ++c)
     for (std::size_t v : constraints_[c].vars) constraints_of_[v].push_back(c);
   for (const Property& p : m.properties)
-    for (const auto& part : p.parts)
-      if (part)
-        for (std::size_t v : vars_of(*part)) monitor_reads_.push_back(v);
+    for (const auto& atom : p.atoms)
+      for (std::size_t v : vars_of(*atom)) monitor_reads_.push_back(v);
   std::sort(monitor_reads_.begin(), monitor_reads_.end());
   monitor_reads_.erase(std::unique(monitor_reads_.begin(), monitor_reads_.end()),
                        monitor_reads_.end());

@@ -347,21 +347,14 @@ class Search {
     for (std::size_t i = 0; i < m_.properties.size(); ++i) {
       const Property& p = m_.properties[i];
       if (!p.layout) continue;
-      bool inputs[4] = {false, false, false, false};
-      for (std::size_t k = 0; k < 4; ++k) {
-        if (!p.parts[k]) continue;
-        std::string error;
-        inputs[k] = p.parts[k]->evaluate_bool(frame_, error);
-        if (!error.empty())
-          throw ProveError(p.requirement->id + ": at tick " + std::to_string(next.tick) + ": " +
-                           error);
-      }
-      if ((!p.parts[0] || inputs[0]) && (!p.parts[1] || inputs[1])) triggered.push_back(i);
+      bool inputs[Property::kMaxAtoms] = {};
+      p.read_atoms(frame_, inputs, next.tick);
       std::vector<std::uint64_t>& words = words_;
       words.assign(next.monitors.begin() + p.offset,
                    next.monitors.begin() + p.offset + p.layout->words());
       const bool now = p.layout->step(inputs, words, scratch_);
       std::copy(words.begin(), words.end(), next.monitors.begin() + p.offset);
+      if (p.triggered(scratch_)) triggered.push_back(i);
       const bool fails = !now && (monitor::verdict_is_final_once_violated(p.shape) || done);
       if (!fails) continue;
       if (p.assumption) {  // a world the assumptions exclude

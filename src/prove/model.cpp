@@ -12,6 +12,7 @@
 #include "monitor/property_set.hpp"
 #include "prove/cells.hpp"
 #include "prove/environment.hpp"
+#include "prove/property_formula.hpp"
 #include "prove/prove.hpp"
 
 namespace uabt::prove {
@@ -61,16 +62,6 @@ struct ProbeWorld : runtime::World {
 
 // A variable with more values than this is cut into cells or left to the symbolic engine.
 constexpr long long kMaxValues = 4096;
-
-bool uses_previous(const fretish::Expr& e) {
-  if (e.kind == fretish::ExprKind::call &&
-      (e.text.rfind("pre", 0) == 0 || monitor::is_temporal_function(e.text)))
-    return true;
-  if (e.kind == fretish::ExprKind::identifier && e.text == "FTP") return true;
-  for (const auto& a : e.args)
-    if (a && uses_previous(*a)) return true;
-  return false;
-}
 
 std::vector<ScriptValue> values_of(const fretish::Variable& v, std::string& why) {
   std::vector<ScriptValue> out;
@@ -298,34 +289,44 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
                                       r->timing.stop_condition};
     if (!c.shape) p.unsupported = c.reason;
     p.exprs.assign(std::begin(parts), std::end(parts));
-    for (const auto& part : parts) {
-      if (!p.unsupported.empty()) break;
-      if (!part) {
-        p.parts.emplace_back();
-        continue;
-      }
-      if (uses_previous(*part)) {
-        p.unsupported =
-            "persisted, occurred, prevOcc, preBool/preInt/preReal and FTP read earlier ticks, "
-            "and prove's monitor tables read each part from one state: not supported by prove";
-        break;
-      }
+    // Each part compiles as the monitor compiles it (its errors are the monitor's).
+    for (std::size_t k = 0; k < 4 && p.unsupported.empty(); ++k) {
+      if (!parts[k]) continue;
       std::string error;
-      auto compiled_part = monitor::CompiledExpression::compile(*part, resolve, error);
-      if (!compiled_part) {
+      if (!monitor::CompiledExpression::compile(
+              *parts[k], resolve, error, k == 0 ? monitor::Field::mode : monitor::Field::other))
         p.unsupported = error;
-        break;
-      }
-      p.parts.push_back(std::make_shared<monitor::CompiledExpression>(std::move(*compiled_part)));
-      reads(part);
     }
     if (p.unsupported.empty()) {
-      p.shape = *c.shape;
-      monitor::Formula f;
-      const int root = monitor::build_requirement_formula(f, p.shape, monitor::Slots{});
-      p.layout = std::make_unique<PastTimeLayout>(f, root);
-      p.offset = monitor_words;
-      monitor_words += p.layout->words();
+      PropertyFormula pf =
+          build_property_formula(*c.shape, {parts[0], parts[1], parts[2], parts[3]}, resolve);
+      p.unsupported = pf.unsupported;
+      if (p.unsupported.empty() && pf.atoms.size() > Property::kMaxAtoms)
+        p.unsupported = "its parts read " + std::to_string(pf.atoms.size()) +
+                        " separate conditions of a tick; prove's monitors read at most " +
+                        std::to_string(Property::kMaxAtoms);
+      for (const auto& atom : pf.atoms) {
+        if (!p.unsupported.empty()) break;
+        std::string error;
+        auto compiled = monitor::CompiledExpression::compile(*atom, resolve, error);
+        if (!compiled) {
+          p.unsupported = error;
+          break;
+        }
+        p.atoms.push_back(std::make_shared<monitor::CompiledExpression>(std::move(*compiled)));
+      }
+      if (p.unsupported.empty()) {
+        p.shape = *c.shape;
+        p.atom_exprs = std::move(pf.atoms);
+        p.mode_node = pf.mode;
+        p.condition_node = pf.condition;
+        p.layout = std::make_unique<PastTimeLayout>(pf.formula, pf.root);
+        p.offset = monitor_words;
+        monitor_words += p.layout->words();
+        for (const auto& part : parts) reads(part);
+      } else {
+        p.atoms.clear();
+      }
     }
     properties.push_back(std::move(p));
   }
@@ -386,6 +387,16 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
 }
 
 Model::~Model() = default;
+
+void Property::read_atoms(const std::vector<monitor::Val>& frame, bool* bits,
+                          std::uint64_t tick) const {
+  for (std::size_t k = 0; k < atoms.size(); ++k) {
+    std::string error;
+    bits[k] = atoms[k]->evaluate_bool(frame, error);
+    if (!error.empty())
+      throw ProveError(requirement->id + ": at tick " + std::to_string(tick) + ": " + error);
+  }
+}
 
 void Model::choose_values(const std::map<std::string, std::string, std::less<>>& unenumerable) {
   // Numeric environment variables are cut into cells by every atom that reads them.

@@ -45,12 +45,25 @@ struct Property {
   const fretish::Requirement* requirement = nullptr;
   bool assumption = false;  // component Environment
   monitor::Shape shape;
-  std::vector<std::shared_ptr<monitor::CompiledExpression>>
-      parts;                            // mode, condition, response, stop
-  std::vector<fretish::ExprPtr> exprs;  // the same four as written (null where absent)
+  std::vector<fretish::ExprPtr> exprs;  // mode, condition, response, stop (null where absent)
+  // The monitor's inputs: boolean expressions of one tick (property_formula.hpp), compiled.
+  std::vector<fretish::ExprPtr> atom_exprs;
+  std::vector<std::shared_ptr<monitor::CompiledExpression>> atoms;
+  int mode_node = -1, condition_node = -1;  // layout nodes of the parts that trigger
   std::unique_ptr<PastTimeLayout> layout;
   std::size_t offset = 0;  // its words in the monitor state
   std::string unsupported;
+
+  static constexpr std::size_t kMaxAtoms = 16;
+  // This tick's atoms on `frame` into `bits` (kMaxAtoms of them); throws ProveError naming the
+  // property and `tick` on an evaluation error.
+  void read_atoms(const std::vector<monitor::Val>& frame, bool* bits, std::uint64_t tick) const;
+  // Whether the mode and the condition hold, from the node values of the layout's last step.
+  bool triggered(const std::vector<char>& values) const {
+    return (mode_node < 0 || values[static_cast<std::size_t>(mode_node)]) &&
+           (condition_node < 0 || values[static_cast<std::size_t>(condition_node)]);
+  }
+  bool has_trigger() const { return exprs[0] || exprs[1]; }
 };
 
 // The product the explorer walks: the runtime's engine over the compiled tree, the choice

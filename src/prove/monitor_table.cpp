@@ -2,15 +2,22 @@
 
 namespace uabt::prove {
 
-MonitorTable::MonitorTable(const PastTimeLayout& layout, std::size_t max_states) {
+MonitorTable::MonitorTable(const PastTimeLayout& layout, std::size_t max_states)
+    : inputs_(layout.inputs()) {
+  if (inputs_ > kMaxInputs) {
+    failed_ = true;
+    return;
+  }
+  const unsigned combinations = 1u << inputs_;
   states_.push_back(layout.initial());
   index_[states_.front()] = 0;
   std::vector<char> scratch;
+  bool inputs[kMaxInputs] = {};
   for (std::size_t s = 0; s < states_.size(); ++s) {
-    std::array<std::uint32_t, 16> next{};
-    std::array<bool, 16> now{};
-    for (unsigned in = 0; in < 16; ++in) {
-      const bool inputs[4] = {(in & 1) != 0, (in & 2) != 0, (in & 4) != 0, (in & 8) != 0};
+    std::vector<std::uint32_t> next(combinations);
+    std::vector<char> now(combinations);
+    for (unsigned in = 0; in < combinations; ++in) {
+      for (std::size_t k = 0; k < inputs_; ++k) inputs[k] = ((in >> k) & 1u) != 0;
       std::vector<std::uint64_t> words = states_[s];
       now[in] = layout.step(inputs, words, scratch);
       auto [it, added] = index_.emplace(words, static_cast<std::uint32_t>(states_.size()));
@@ -26,8 +33,8 @@ MonitorTable::MonitorTable(const PastTimeLayout& layout, std::size_t max_states)
       }
       next[in] = it->second;
     }
-    next_.push_back(next);
-    now_.push_back(now);
+    next_.push_back(std::move(next));
+    now_.push_back(std::move(now));
   }
 }
 

@@ -7,7 +7,7 @@ namespace uabt::prove {
 using monitor::Op;
 
 PastTimeLayout::PastTimeLayout(const monitor::Formula& formula, int root)
-    : nodes_(formula.nodes()), root_(root) {
+    : nodes_(formula.nodes()), inputs_(static_cast<std::size_t>(formula.inputs())), root_(root) {
   for (const monitor::Node& n : nodes_) {
     offset_.push_back(words_);
     switch (n.op) {

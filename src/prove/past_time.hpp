@@ -17,11 +17,13 @@ class PastTimeLayout {
   // One tick: updates `state`, returns the formula's value. `values` is scratch.
   bool step(const bool* inputs, std::vector<std::uint64_t>& state, std::vector<char>& values) const;
   std::size_t words() const { return words_; }
+  std::size_t inputs() const { return inputs_; }  // the boolean inputs step reads
 
  private:
   std::vector<monitor::Node> nodes_;
   std::vector<std::size_t> offset_;
   std::size_t words_ = 0;
+  std::size_t inputs_ = 0;
   int root_ = 0;
 };
 

@@ -262,7 +262,7 @@ Result prove_explicit(Model& model, const Options& options) {
                                   : Verdict::bounded;
     a.depth = search.depth;
     a.first_trigger = search.first_trigger[i];
-    a.has_trigger = model.properties[i].parts[0] || model.properties[i].parts[1];
+    a.has_trigger = model.properties[i].has_trigger();
   });
   return r;
 }

@@ -312,7 +312,12 @@ struct SymbolicTick::Impl {
       }
       auto t = std::make_unique<MonitorTable>(*p.layout, 4096);
       if (t->failed())
-        throw SymbolicUnsupported(p.requirement->id + ": its monitor has more than 4096 states");
+        throw SymbolicUnsupported(p.requirement->id +
+                                  (p.layout->inputs() > MonitorTable::kMaxInputs
+                                       ? ": its monitor reads more than " +
+                                             std::to_string(MonitorTable::kMaxInputs) +
+                                             " separate conditions of a tick"
+                                       : std::string(": its monitor has more than 4096 states")));
       tables.push_back(std::move(t));
     }
   }
@@ -739,17 +744,17 @@ struct SymbolicTick::Impl {
   }
 
   // The input bits of a property's monitor, as a table lookup.
-  static z3::expr lookup(const MonitorTable& t, const z3::expr& state, const z3::expr* bits,
-                         bool now, z3::context& ctx) {
+  static z3::expr lookup(const MonitorTable& t, const z3::expr& state,
+                         const std::vector<z3::expr>& bits, bool now, z3::context& ctx) {
     auto leaf = [&](std::uint32_t s, unsigned in) {
       return now ? ctx.bool_val(t.now(s, in)) : ctx.int_val(static_cast<int>(t.next(s, in)));
     };
     z3::expr out = now ? ctx.bool_val(false) : ctx.int_val(0);
     for (std::uint32_t s = static_cast<std::uint32_t>(t.size()); s-- > 0;) {
-      // A tree over the four inputs, mode (bit 0) innermost.
+      // A tree over the inputs, input 0 innermost.
       std::vector<z3::expr> level;
-      for (unsigned in = 0; in < 16; ++in) level.push_back(leaf(s, in));
-      for (int bit = 0; bit < 4; ++bit) {
+      for (unsigned in = 0; in < (1u << t.inputs()); ++in) level.push_back(leaf(s, in));
+      for (std::size_t bit = 0; bit < t.inputs(); ++bit) {
         std::vector<z3::expr> up;
         for (std::size_t k = 0; k < level.size(); k += 2)
           up.push_back(z3::eq(level[k], level[k + 1]) ? level[k]
@@ -961,15 +966,12 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
       out.fails.push_back(i.ctx.bool_val(false));
       continue;
     }
-    z3::expr bits[4] = {i.ctx.bool_val(false), i.ctx.bool_val(false), i.ctx.bool_val(false),
-                        i.ctx.bool_val(false)};
-    for (std::size_t k = 0; k < 4; ++k) {
-      if (!prop.exprs[k]) continue;
-      const std::function<SymValue(const std::string&)> resolve = [&](const std::string& name) {
-        return i.observe(name, x);
-      };
-      bits[k] = fretish_bool(i.ctx, *prop.exprs[k], resolve, prop.requirement->id);
-    }
+    std::vector<z3::expr> bits;
+    const std::function<SymValue(const std::string&)> resolve = [&](const std::string& name) {
+      return i.observe(name, x);
+    };
+    for (const fretish::ExprPtr& atom : prop.atom_exprs)
+      bits.push_back(fretish_bool(i.ctx, *atom, resolve, prop.requirement->id));
     for (const z3::expr& b : bits) out.inputs.push_back(b);
     const z3::expr now = Impl::lookup(*t, s.monitor[p], bits, true, i.ctx);
     out.next.monitor[p] = Impl::lookup(*t, s.monitor[p], bits, false, i.ctx);

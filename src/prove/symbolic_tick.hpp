@@ -41,7 +41,7 @@ struct TickEncoding {
   z3::expr root;  // what the root returned
   std::vector<z3::expr>
       returned;                  // per engine node: what it returned this tick, idle if not ticked
-  std::vector<z3::expr> inputs;  // per property: mode, condition, response, stop
+  std::vector<z3::expr> inputs;  // per property: its monitor's atoms (Property::atom_exprs)
   z3::expr valid;                // a step the world model allows from a state where the run goes on
   std::vector<z3::expr> fails;   // per property: a guarantee violated at this tick
   z3::expr overflow;             // the wake-up loop wants more re-ticks than the encoding unrolls

@@ -79,7 +79,10 @@ void append_value(KeyWriter& out, const ScriptValue& v) {
   switch (v.kind) {
     case ScriptValue::Kind::empty: break;
     case ScriptValue::Kind::boolean: out.put(static_cast<char>(v.boolean)); break;
-    case ScriptValue::Kind::integer: out.put(v.integer); break;
+    case ScriptValue::Kind::integer:
+      out.put(v.integer);
+      out.put(static_cast<char>(v.bool_entry));
+      break;
     case ScriptValue::Kind::real: out.put(v.real); break;
     case ScriptValue::Kind::string:
       out.put(static_cast<std::uint32_t>(v.text.size()));

@@ -14,6 +14,7 @@
 #include "load/mission.hpp"
 #include "runtime/runner.hpp"
 #include "runtime/trace.hpp"
+#include "temp_mission.hpp"
 #include "test_support.hpp"
 
 namespace uabt::runtime {
@@ -180,6 +181,62 @@ TEST(BtcppDiff, ScriptResultsAreDoublesSoAnEntryTakesALaterReal) {
 
 TEST(BtcppDiff, AnIntegerAssignedToABooleanEntryIsStored) {
   expect_btcpp_record("script-int-into-bool-entry");
+}
+
+// A boolean entry that receives an integer stays boolean. BehaviorTree.CPP 4.10.0 keeps bools
+// and integers as int64 in its Any (safe_any.hpp, the EnableIntegral constructor), so
+// ExprAssignment::evaluate's Any::copyInto copies the raw integer and the entry keeps its
+// original type bool: a later 0, 1, 1.0, true or false makes it a boolean again, an entry
+// created from it (`y := e`) is typed bool too, a whole real is converted to its integer
+// (convertNumber), a fraction throws. BT.CPP's probe writes a bool-typed entry as true/false
+// when Any::cast<bool> succeeds, else as its integer (b0 = 3 in script-int-into-bool-entry).
+// The expected record below is BT.CPP's for this tree and scenario, from those functions (each
+// conversion checked against BT.CPP 4.10.0's safe_any.hpp).
+Recorded run_inline(const std::string& tree, const std::string& scenario) {
+  const uabt::testing::TempMission dir({{"compiled.xml", tree}, {"scenario.json", scenario}});
+  return run_reproducer(dir.dir());
+}
+
+const char* kBoolEntryTree = R"(<root BTCPP_format="4" main_tree_to_execute="MainTree">
+  <BehaviorTree ID="MainTree">
+    <Sequence>
+      <Script code="a := x; a := 0"/>
+      <Script code="b := x; b = true"/>
+      <Script code="c := x; c += 1"/>
+      <Script code="d := x; d := 1.0"/>
+      <Script code="e := x; y := e; y = false"/>
+    </Sequence>
+  </BehaviorTree>
+</root>
+)";
+
+TEST(BtcppDiff, ABooleanEntryThatReceivesAnIntegerStaysBoolean) {
+  const Recorded got = run_inline(kBoolEntryTree, R"({"max_ticks": 5, "initial": {
+      "x": 3, "a": true, "b": false, "c": true, "d": false, "e": true}})");
+  const Json btcpp = Json::parse(R"([
+    {"tick": 1, "root": "SUCCESS", "leaves": []},
+    {"event": "done", "verdict": "SUCCESS", "ticks": 1, "state": {
+      "a": false, "b": true, "c": 4, "d": true, "e": 3, "x": 3, "y": false}}])");
+  EXPECT_EQ(got.record, btcpp) << got.record.dump(1);
+  EXPECT_FALSE(got.error.has_value());
+}
+
+// A fraction into a boolean entry that holds an integer: Any::copyInto converts it to int64
+// and convertNumber refuses the fraction; the run stops at that script.
+TEST(BtcppDiff, AFractionIntoABooleanEntryStopsTheRun) {
+  const Recorded got = run_inline(R"(<root BTCPP_format="4" main_tree_to_execute="MainTree">
+  <BehaviorTree ID="MainTree">
+    <Script code="f := x; f := 2.5"/>
+  </BehaviorTree>
+</root>
+)",
+                                  R"({"max_ticks": 5, "initial": {"x": 3, "f": true}})");
+  ASSERT_TRUE(got.error.has_value());
+  EXPECT_EQ(got.record[0], Json::parse(R"({"tick": 1, "root": "EXCEPTION", "leaves": []})"));
+  EXPECT_NE(got.error->message.find("cannot assign 2.5 (real) to 'f', which holds a bool"),
+            std::string::npos)
+      << got.error->message;
+  EXPECT_EQ(got.record.back()["state"], Json::parse(R"({"f": 3, "x": 3})"));
 }
 
 TEST(BtcppDiff, ChainedAssignmentAssignsBothEntries) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_support.hpp"
@@ -139,26 +140,76 @@ TEST(ProveCli, CuriosityGateProvesItsGuaranteesAndRejectsTheSequenceStyle) {
       << violated.out;
 }
 
-// What uabt monitor and uabt run check tick by tick but prove's monitor tables cannot model
-// (FRET's temporal functions, FTP) is named, not proved and not silently dropped.
-TEST(ProveCli, TemporalFunctionsAndFtpAreNamedAsNotProved) {
+// FRET's temporal functions and FTP, proved by both engines as `uabt run` monitors them: x
+// counts the ticks up to 3 while Work runs (5 ticks). Each function has a guarantee that holds
+// and one violated at its shortest tick, whose counterexample replays in `uabt run` to the
+// same violation.
+TEST(ProveCli, TemporalFunctionsAndFtpAreProvedAndTheirCounterexamplesReplay) {
+  TempMission m({{"mission.xml", R"(<root BTCPP_format="4" main_tree_to_execute="MainTree">
+  <BehaviorTree ID="MainTree">
+    <ReactiveSequence>
+      <Script code="x = x &lt; 3 ? x + 1 : 3"/>
+      <Work/>
+    </ReactiveSequence>
+  </BehaviorTree>
+</root>
+)"},
+                 {"domain.fret", "integer x in [0, 3]\n"},
+                 {"world.json", R"({"initial": "x = 0", "actions": {
+                    "Work": {"ticks": 5, "results": ["success"]}}})"},
+                 {"requirements.fret",
+                  "PersistedHolds: Mission shall always satisfy x >= 3 -> persisted(1, x >= 2)\n"
+                  "PersistedFails: Mission shall always satisfy x >= 2 -> persisted(1, x >= 2)\n"
+                  "OccurredHolds: Mission shall always satisfy x = 2 -> occurred(1, x = 1)\n"
+                  "OccurredFails: Mission shall always satisfy x = 3 -> occurred(2, x = 1)\n"
+                  "PrevOccHolds: Mission shall always satisfy prevOcc(x = 2, x >= 1)\n"
+                  "PrevOccFails: Mission shall always satisfy prevOcc(x >= 1, x >= 2)\n"
+                  "FtpHolds: Mission shall always satisfy FTP -> x = 1\n"
+                  "FtpFails: Mission shall always satisfy FTP | x = 1\n"}});
+  const std::map<std::string, int> violated = {
+      {"PersistedFails", 2}, {"OccurredFails", 4}, {"PrevOccFails", 2}, {"FtpFails", 2}};
+  for (const std::string engine : {"explicit", "symbolic"}) {
+    const auto cex = m.dir() / ("cex-" + engine);
+    const CliRun r = run("prove " + m.dir().string() + " --engine " + engine +
+                         " --format json --counterexamples " + cex.string());
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["properties"].size(), 8u) << r.out;
+    for (const auto& p : j["properties"]) {
+      const std::string id = p["id"];
+      const auto it = violated.find(id);
+      if (it == violated.end()) {
+        EXPECT_EQ(p["verdict"], "proved") << engine << " " << id;
+        continue;
+      }
+      ASSERT_EQ(p["verdict"], "violated") << engine << " " << id;
+      EXPECT_EQ(p["counterexample"]["tick"], it->second) << engine << " " << id;
+      const CliRun replay =
+          run("run " + m.dir().string() + " --scenario " + (cex / (id + ".json")).string());
+      EXPECT_EQ(replay.exit_code, 1) << replay.out;
+      EXPECT_NE(
+          replay.out.find("property " + id + ": violated from tick " + std::to_string(it->second)),
+          std::string::npos)
+          << engine << " " << id << "\n"
+          << replay.out;
+    }
+  }
+}
+
+// What prove's finite state cannot keep, the value of an earlier tick (preBool, preInt,
+// preReal), is named, not proved and not silently dropped.
+TEST(ProveCli, PreviousValuesAreNamedAsNotProved) {
   auto files = mission_files("sample_drilling");
   files["requirements.fret"] +=
-      "Cool: Mission shall always satisfy !Drill.running | persisted(1, IsBitCool)\n"
-      "Start: Mission shall always satisfy FTP -> !IsBitCool\n";
+      "Cool: Mission shall always satisfy !Drill.running | preBool(false, IsBitCool)\n";
   TempMission m(files);
   const CliRun r = run("prove " + m.dir().string());
-  const std::string why =
-      "persisted, occurred, prevOcc, preBool/preInt/preReal and FTP read earlier ticks, and "
-      "prove's monitor tables read each part from one state: not supported by prove "
-      "[fretish-unsupported]";
-  EXPECT_NE(r.out.find("requirements.fret:7:7: error: guarantee 'Cool' cannot be proved: " + why),
+  EXPECT_NE(r.out.find("requirements.fret:7:7: error: guarantee 'Cool' cannot be proved: "
+                       "preBool/preInt/preReal read the value of an earlier tick, which prove's "
+                       "finite state does not keep: not supported by prove [fretish-unsupported]"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("requirements.fret:8:8: error: guarantee 'Start' cannot be proved: " + why),
-            std::string::npos)
-      << r.out;
-  EXPECT_NE(r.out.find("2 not checked"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 not checked"), std::string::npos) << r.out;
 }
 
 TEST(ProveCli, BadWorldFileIsAUsageError) {

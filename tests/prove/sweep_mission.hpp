@@ -15,10 +15,11 @@ namespace uabt::testing {
 // control node and decorator the runtime has; actions whose world.json effects write booleans
 // and an integer, some copying an environment value; domain assumptions and Environment
 // requirements; guarantees with modes, upon/if/whenever conditions and
-// always/never/immediately/within/for/until timings.
+// always/never/immediately/within/for/until timings. With `temporal`, the guarantees also read
+// FRET's temporal functions persisted, occurred, prevOcc and FTP (and the random choices differ).
 class SweepMission {
  public:
-  explicit SweepMission(unsigned seed) : rng_(seed) {
+  explicit SweepMission(unsigned seed, bool temporal = false) : rng_(seed), temporal_(temporal) {
     style = static_cast<compile::SelectionStyle>(pick(3));
     integer_ = pick(2);
     real_ = pick(2);
@@ -213,6 +214,20 @@ class SweepMission {
     for (const std::string& id : adaptable_ids_)
       for (int k = 0; k < 3; ++k)
         obs.push_back(id + ".selected = " + id + "_alt" + std::to_string(k));
+    if (temporal_) {
+      // Over what the tree and the environment do: FRET's past-time functions of them.
+      const std::vector<std::string> base = obs;
+      const auto some = [&] { return any(base); };
+      for (int i = 0; i < 4; ++i) {
+        const std::string n = std::to_string(pick(3));
+        switch (pick(4)) {
+          case 0: obs.push_back("persisted(" + n + ", " + some() + ")"); break;
+          case 1: obs.push_back("occurred(" + n + ", " + some() + ")"); break;
+          case 2: obs.push_back("prevOcc(" + some() + ", " + some() + ")"); break;
+          default: obs.push_back("(FTP | " + some() + ")"); break;
+        }
+      }
+    }
     const std::vector<std::string> conditions = {"upon", "if", "whenever"};
     for (int i = 0; i < 4; ++i) {
       std::string id = "P" + std::to_string(i) + ": ";
@@ -249,6 +264,7 @@ class SweepMission {
   std::set<std::string> actions_;
   std::vector<std::string> adaptable_ids_;
   int names_ = 0, adaptables_ = 1;
+  bool temporal_ = false;
   bool repeated_ = false, wide_ = false, integer_ = false, real_ = false, enum_ = false;
 };
 

@@ -5,6 +5,7 @@
 // sweep by hand.
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -48,13 +49,15 @@ Proof prove_with(const Gated& g, const std::string& engine, std::uint64_t depth 
 
 struct Tally {
   int missions = 0, gated = 0, explicit_answered = 0, both = 0, violated = 0, proved = 0;
+  int temporal = 0;  // answered guarantees that read persisted, occurred, prevOcc or FTP
   std::set<std::string> kinds;
 };
 
 // Proves one random mission with both engines; a disagreement is a test failure that prints
 // the mission.
-void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally) {
-  const SweepMission m(seed);
+void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
+               bool temporal = false) {
+  const SweepMission m(seed, temporal);
   ++tally.missions;
   const TempMission dir(m.files);
   const Gated g(dir.dir(), m.style, false);
@@ -79,6 +82,10 @@ void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally) 
   for (const auto& a : e.result->answers) {
     tally.violated += a.verdict == Verdict::violated;
     tally.proved += a.verdict == Verdict::proved;
+    bool reads_past = false;
+    for (const char* f : {"persisted(", "occurred(", "prevOcc(", "FTP"})
+      reads_past = reads_past || a.text.find(f) != std::string::npos;
+    tally.temporal += reads_past && a.verdict != Verdict::unsupported;
   }
   if (!symbolic) return;
   const Proof s = prove_with(g, "symbolic", depth);
@@ -105,6 +112,26 @@ void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally) 
       EXPECT_EQ(x[i].depth, y[i].depth) << x[i].requirement << "\n" << describe(seed, m);
     }
   }
+}
+
+// Sweeps `seeds`, the symbolic engine on those `symbolic_on` accepts, and prints the tally.
+Tally sweep(const std::string& label, const std::vector<unsigned>& seeds,
+            const std::function<bool(unsigned)>& symbolic_on, std::uint64_t depth, bool temporal) {
+  Tally tally;
+  for (unsigned seed : seeds) {
+    const auto start = std::chrono::steady_clock::now();
+    sweep_one(seed, symbolic_on(seed), depth, tally, temporal);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+    if (std::getenv("UABT_SWEEP_VERBOSE")) std::cout << "seed " << seed << ": " << ms << " ms\n";
+  }
+  std::cout << label << ": " << tally.missions << " missions, " << tally.gated << " gated, "
+            << tally.explicit_answered << " proved explicitly, " << tally.both
+            << " by both engines, " << tally.violated << " violated and " << tally.proved
+            << " proved guarantees, " << tally.temporal
+            << " answered guarantees read temporal functions\n";
+  return tally;
 }
 
 // Found by the sweep: a domain variable only a Script writes was taken for the environment's
@@ -233,19 +260,10 @@ TEST(ProveSweep, EnginesAgreeAndEveryCounterexampleReplays) {
   for (unsigned seed = first; seed < first + count; ++seed) seeds.push_back(seed);
   // The mission whose counterexample did not replay (a variable only a Script writes).
   if (by_default) seeds.push_back(183);
-  Tally tally;
-  for (unsigned seed : seeds) {
-    const auto start = std::chrono::steady_clock::now();
-    sweep_one(seed, symbolic || (by_default && quick_symbolic.contains(seed)), depth, tally);
-    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
-                        std::chrono::steady_clock::now() - start)
-                        .count();
-    if (std::getenv("UABT_SWEEP_VERBOSE")) std::cout << "seed " << seed << ": " << ms << " ms\n";
-  }
-  std::cout << "sweep: " << tally.missions << " missions, " << tally.gated << " gated, "
-            << tally.explicit_answered << " proved explicitly, " << tally.both
-            << " by both engines, " << tally.violated << " violated and " << tally.proved
-            << " proved guarantees\n";
+  const Tally tally = sweep(
+      "sweep", seeds,
+      [&](unsigned seed) { return symbolic || (by_default && quick_symbolic.contains(seed)); },
+      depth, false);
   if (!by_default) return;
   // The default sweep exercises both verdicts, both engines, and every node kind.
   EXPECT_EQ(tally.gated, 41);
@@ -254,6 +272,31 @@ TEST(ProveSweep, EnginesAgreeAndEveryCounterexampleReplays) {
   EXPECT_GE(tally.violated, 40);
   EXPECT_GE(tally.proved, 40);
   EXPECT_EQ(tally.kinds.size(), 22u);
+}
+
+// The same sweep over guarantees that read FRET's temporal functions and FTP
+// (SweepMission(seed, true)): the explicit engine's monitor state and the symbolic engine's
+// monitor table must agree on every verdict and shortest violation, and every counterexample
+// replays on the runtime, whose monitor reads the functions tick by tick.
+// UABT_SWEEP_TEMPORAL_MISSIONS=N (default 30) runs a longer sweep by hand.
+TEST(ProveSweep, EnginesAgreeOnFretTemporalFunctions) {
+  const unsigned count = env_or("UABT_SWEEP_TEMPORAL_MISSIONS", 30);
+  const bool by_default = std::getenv("UABT_SWEEP_TEMPORAL_MISSIONS") == nullptr;
+  const std::set<unsigned> quick_symbolic = {4, 7, 9, 13, 17, 19, 25};
+  const bool symbolic = env_or("UABT_SWEEP_SYMBOLIC", 0) != 0;
+  std::vector<unsigned> seeds;
+  for (unsigned seed = 1; seed <= count; ++seed) seeds.push_back(seed);
+  const Tally tally = sweep(
+      "temporal sweep", seeds,
+      [&](unsigned seed) { return symbolic || (by_default && quick_symbolic.contains(seed)); }, 3,
+      true);
+  if (!by_default) return;
+  EXPECT_EQ(tally.gated, 30);
+  EXPECT_GE(tally.explicit_answered, 20);
+  EXPECT_EQ(tally.both, 7);
+  EXPECT_GE(tally.violated, 20);
+  EXPECT_GE(tally.proved, 20);
+  EXPECT_GE(tally.temporal, 15);
 }
 
 }  // namespace

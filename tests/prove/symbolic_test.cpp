@@ -270,18 +270,16 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       m.observables->fill(frame);
       m.fill_state(frame);
       bool allowed = assumed;
-      std::size_t q = 0;  // enc.inputs holds four per monitored property
+      std::size_t base = 0;  // enc.inputs holds the atoms of each monitored property
       for (std::size_t p = 0; p < m.properties.size(); ++p) {
         const auto& prop = m.properties[p];
         if (!prop.layout) continue;
-        const std::size_t base = 4 * q++;
-        bool inputs[4] = {false, false, false, false};
-        for (std::size_t k = 0; k < 4; ++k) {
-          std::string error;
-          if (prop.parts[k]) inputs[k] = prop.parts[k]->evaluate_bool(frame, error);
+        bool inputs[prove::Property::kMaxAtoms] = {};
+        prop.read_atoms(frame, inputs, static_cast<std::uint64_t>(t + 1));
+        for (std::size_t k = 0; k < prop.atoms.size(); ++k)
           EXPECT_EQ(enc.inputs[base + k].simplify().is_true(), inputs[k])
               << where << " " << prop.requirement->id << " input " << k;
-        }
+        base += prop.atoms.size();
         std::vector<std::uint64_t> w(monitors.begin() + prop.offset,
                                      monitors.begin() + prop.offset + prop.layout->words());
         std::vector<char> scratch;

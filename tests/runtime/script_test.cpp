@@ -194,11 +194,17 @@ TEST_F(ScriptTest, ResultTypesFollowTheFirstValue) {
 }
 
 TEST_F(ScriptTest, AnIntegerIntoABooleanEntryIsKept) {
-  // BT.CPP's Any keeps bool and int alike as int64: the entry holds the integer.
+  // BT.CPP's Any keeps bool and int alike as int64: the entry holds the integer, and stays
+  // typed bool (a later 1 is the boolean true again).
   bb_.set("b0", ScriptValue::of_bool(true));
   bb_.set("x", ScriptValue::of_int(3));
   run("b0 := x");
-  EXPECT_EQ(*bb_.get("b0"), ScriptValue::of_int(3));
+  ScriptValue three_in_bool = ScriptValue::of_int(3);
+  three_in_bool.bool_entry = true;
+  EXPECT_EQ(*bb_.get("b0"), three_in_bool);
+  EXPECT_EQ(bb_.get("b0")->to_string(), "3");
+  run("b0 := 1");
+  EXPECT_EQ(*bb_.get("b0"), ScriptValue::of_bool(true));
   bb_.set("b1", ScriptValue::of_bool(true));
   run("b1 := 0");
   EXPECT_EQ(*bb_.get("b1"), ScriptValue::of_bool(false));

@@ -64,7 +64,7 @@ bool ScriptValue::operator==(const ScriptValue& other) const {
   switch (kind) {
     case Kind::empty: return true;
     case Kind::boolean: return boolean == other.boolean;
-    case Kind::integer: return integer == other.integer;
+    case Kind::integer: return integer == other.integer && bool_entry == other.bool_entry;
     case Kind::real: return real == other.real;
     case Kind::string: return text == other.text;
   }

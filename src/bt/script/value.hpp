@@ -16,6 +16,10 @@ struct ScriptValue {
   std::int64_t integer = 0;
   double real = 0.0;
   std::string text;
+  // An integer other than 0 and 1 in an entry BT.CPP types bool: its Any keeps both as int64
+  // and Any::copyInto copies the raw integer without changing the entry's type, so the entry
+  // stays boolean (a later 0, 1, true or false is a boolean again; a fraction is refused).
+  bool bool_entry = false;
 
   static ScriptValue of_bool(bool b);
   static ScriptValue of_int(std::int64_t i);

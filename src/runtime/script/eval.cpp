@@ -30,14 +30,17 @@ constexpr std::int64_t kMaxExactInteger = (std::int64_t{1} << 53) - 1;
 void set_bool(ScriptValue& out, bool b) {
   out.kind = Kind::boolean;
   out.boolean = b;
+  out.bool_entry = false;
 }
 void set_int(ScriptValue& out, std::int64_t i) {
   out.kind = Kind::integer;
   out.integer = i;
+  out.bool_entry = false;
 }
 void set_real(ScriptValue& out, double r) {
   out.kind = Kind::real;
   out.real = r;
+  out.bool_entry = false;
 }
 
 bool is_integral(const ScriptValue& v) {
@@ -142,29 +145,39 @@ void append_text(std::string& out, const ScriptValue& v) {
   }
 }
 
+// The type BT.CPP gives the entry that holds `v`.
+const char* entry_type(const ScriptValue& v) {
+  return v.bool_entry ? kind_name(Kind::boolean) : kind_name(v.kind);
+}
+
 [[noreturn]] void fail_store(const ScriptValue& dst, const ScriptValue& value,
                              const std::string& key, std::size_t column) {
   fail("cannot assign " + value.to_string() + " (" + kind_name(value.kind) + ") to '" + key +
-           "', which holds a " + kind_name(dst.kind),
+           "', which holds a " + entry_type(dst),
        column);
 }
 
 // `value`'s number written into an entry of `dst`'s type (BT.CPP's Any::copyInto: no lossy
-// conversions; a boolean entry stores an integer as it is, as BT.CPP's Any keeps both as
-// int64: the entry then holds that integer, which a later boolean read refuses).
+// conversions). A boolean entry stays boolean: BT.CPP's Any keeps bools and integers as int64,
+// so copyInto stores the raw integer (a whole real converted to one) under the type bool; the
+// entry then holds that integer, which a later boolean read refuses, and a later 0, 1, true or
+// false makes it a boolean again.
 void store_number(ScriptValue& dst, const ScriptValue& value, const std::string& key,
                   std::size_t column) {
   std::int64_t i = 0;
+  if (dst.kind == Kind::boolean || dst.bool_entry) {
+    if (value.kind == Kind::boolean) return set_bool(dst, value.boolean);
+    if (!whole(value, i)) fail_store(dst, value, key, column);
+    if (i == 0 || i == 1) return set_bool(dst, i == 1);
+    set_int(dst, i);
+    dst.bool_entry = true;
+    return;
+  }
   switch (dst.kind) {
     case Kind::real: return set_real(dst, number(value, column));
     case Kind::integer:
       if (whole(value, i)) return set_int(dst, i);
       break;
-    case Kind::boolean:
-      if (value.kind == Kind::boolean) return set_bool(dst, value.boolean);
-      if (!whole(value, i)) break;
-      if (i == 0 || i == 1) return set_bool(dst, i == 1);
-      return set_int(dst, i);
     default: break;
   }
   fail_store(dst, value, key, column);
@@ -380,7 +393,7 @@ const ScriptValue& Program::eval_assign(std::uint32_t index, Blackboard& bb) {
   if (&value == &dst) return dst;  // x = x
 
   if (e.op == Op::assign_create || e.op == Op::assign) {
-    if (dst.empty() || dst.kind == value.kind) {
+    if (dst.empty() || (dst.kind == value.kind && dst.bool_entry == value.bool_entry)) {
       dst = value;  // keeps dst.text's buffer
     } else if (value.is_string()) {
       if (!dst.is_number())
