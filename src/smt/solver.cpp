@@ -94,6 +94,15 @@ z3::check_result Solver::check(const z3::expr_vector& assumptions) {
   return answer;
 }
 
+std::uint64_t Solver::statistic(const std::string& key) const {
+  const z3::stats stats = solver_.statistics();
+  for (unsigned i = 0; i < stats.size(); ++i)
+    if (stats.key(i) == key)
+      return stats.is_uint(i) ? stats.uint_value(i)
+                              : static_cast<std::uint64_t>(stats.double_value(i));
+  return 0;
+}
+
 void keep_freed_memory() {
 #if defined(__GLIBC__)
   mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);    // glibc's largest: blocks come from the heap

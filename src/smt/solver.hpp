@@ -1,6 +1,7 @@
 #pragma once
 #include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -36,6 +37,9 @@ class Solver {
   z3::check_result check(const z3::expr_vector& assumptions);
   z3::model model() const { return solver_.get_model(); }
   z3::expr_vector unsat_core() const { return solver_.unsat_core(); }
+  // One of the counters Z3 keeps for this solver since it was made ("mk bool var": the
+  // Boolean variables it has created, "num checks", …); 0 for one it has not counted.
+  std::uint64_t statistic(const std::string& key) const;
   // Stops the check in progress, if any; a no-op between checks. Any thread may call it.
   void interrupt();
   // Why the last check answered unknown: "timeout" when the watchdog stopped it, otherwise

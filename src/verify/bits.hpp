@@ -1,5 +1,6 @@
 #pragma once
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +34,12 @@ class Bits {
   bool any() const {
     for (auto w : words_)
       if (w != 0) return true;
+    return false;
+  }
+  // Whether the two sets share a member: `(*this & o).any()` without making the intersection.
+  bool intersects(const Bits& o) const {
+    for (std::size_t i = 0; i < words_.size(); ++i)
+      if ((words_[i] & o.words_[i]) != 0) return true;
     return false;
   }
   bool operator==(const Bits& o) const { return size_ == o.size_ && words_ == o.words_; }

@@ -424,8 +424,8 @@ void fill_regions(const Space& space,
     if (!requirements[i]->guard) continue;
     for (std::size_t j = i + 1; j < requirements.size(); ++j) {
       if (!requirements[j]->guard) continue;
+      if (!truths.enabled[i].maybe.intersects(truths.enabled[j].maybe)) continue;
       const Bits both = truths.enabled[i].maybe & truths.enabled[j].maybe;
-      if (!both.any()) continue;
       const std::vector<std::string> ids{requirements[i]->id, requirements[j]->id};
       cover(space, both, truths.enabled[i].sure & truths.enabled[j].sure, outside, ids, domain,
             total, witnesses(ids), coverage.overlap_regions, coverage.overlap_regions_omitted);

@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <set>
 #include <unordered_map>
+#include <utility>
 
 #include "smt/atoms.hpp"
 #include "verify/node.hpp"
@@ -42,6 +44,19 @@ AtomTable atom_table(const std::vector<const Guard*>& guards, Session& session) 
   return table;
 }
 
+// Adds to `out` the atoms, with their polarity, that hold wherever `f` has the truth value
+// `positive`: the conjuncts of a conjunction, the negated disjuncts of a false disjunction.
+void implied_atoms(const z3::expr& f, bool positive, std::set<std::pair<unsigned, bool>>& out) {
+  const Z3_decl_kind kind = f.decl().decl_kind();
+  if ((kind == Z3_OP_AND && positive) || (kind == Z3_OP_OR && !positive)) {
+    for (unsigned i = 0; i < f.num_args(); ++i) implied_atoms(f.arg(i), positive, out);
+  } else if (kind == Z3_OP_NOT) {
+    implied_atoms(f.arg(0), !positive, out);
+  } else {
+    out.emplace(f.id(), positive);
+  }
+}
+
 }  // namespace
 
 RegionCubes describe_region(const std::vector<const Guard*>& guards, Session& session,
@@ -51,6 +66,16 @@ RegionCubes describe_region(const std::vector<const Guard*>& guards, Session& se
   // it (drop literals while D ∧ cube ∧ outside stays unsat), block it, repeat.
   RegionCubes region;
   const AtomTable table = atom_table(guards, session);
+  // The atoms that hold throughout the region because `inside` asserts a guard of which they
+  // are conjuncts: a cube of these alone contains the whole region, nothing is left to find.
+  std::set<std::pair<unsigned, bool>> implied;
+  std::unordered_map<unsigned, const Guard*> by_literal;
+  for (const Guard* g : guards) by_literal.emplace(g->literal.id(), g);
+  for (const auto& l : inside) {
+    const bool negated = l.is_app() && l.decl().decl_kind() == Z3_OP_NOT;
+    const auto it = by_literal.find(negated ? l.arg(0).id() : l.id());
+    if (it != by_literal.end()) implied_atoms(it->second->formula, !negated, implied);
+  }
   const z3::expr blocking = session.encoder().fresh_literal("regionblock");
   std::vector<z3::expr> search = inside;
   search.push_back(blocking);
@@ -73,15 +98,21 @@ RegionCubes describe_region(const std::vector<const Guard*>& guards, Session& se
       cube = needed.size() <= kMaxMinimisedCube ? session.minimise({outside}, needed) : needed;
     }
     std::vector<CubeLiteral> literals;
+    bool covers_region = true;
     for (std::size_t k = 0; k < table.atoms.size(); ++k) {
-      if (contains(cube, table.literals[k]))
-        literals.push_back({table.atoms[k], true});
-      else if (contains(cube, !table.literals[k]))
-        literals.push_back({table.atoms[k], false});
+      for (const bool positive : {true, false}) {
+        if (!contains(cube, positive ? table.literals[k] : !table.literals[k])) continue;
+        literals.push_back({table.atoms[k], positive});
+        covers_region = covers_region && implied.count({table.formulas[k].id(), positive}) > 0;
+      }
     }
     region.cubes.push_back(
         render_cube(literals, session.encoder().domain(), session.encoder().typing()));
     if (cube.empty()) break;  // the whole domain
+    if (covers_region) {      // the whole region: whether more is left needs no question
+      ++session.statistics().prefiltered;
+      break;
+    }
     z3::expr_vector conjunction(session.context());
     for (const auto& l : cube) conjunction.push_back(l);
     session.add(z3::implies(blocking, !z3::mk_and(conjunction)));
@@ -117,7 +148,7 @@ void check_gap(Node& node, Session& session, std::vector<std::string>& region) {
     ++session.statistics().prefiltered;
     return;
   }
-  Session::Scope scope(session);
+  Session::Scope scope(session, node.guards.size() > Session::kWideScope);
   std::vector<z3::expr> none_hold;
   std::vector<const Guard*> all;
   for (const Guard& g : node.guards) {

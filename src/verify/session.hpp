@@ -1,4 +1,6 @@
 #pragma once
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,12 @@ enum class Answer { sat, unsat, unknown };
 // Definitions kept for the whole node would make every check assign every guard of it (Z3
 // satisfies each asserted definition), so K questions over K guards would cost K^3. Counts
 // the questions it sends to Z3.
+//
+// Z3 keeps its tables of literals at the largest size any scope gave them and walks them on
+// every check: one question that defines every guard of a node of 2,000 (the default's
+// shadowing, the gap) made each of the thousands of questions after it cost twice as much.
+// Such a wide question is asked of a second solver, over the same base, so the questions
+// about one or two guards stay as cheap as the node's first ones.
 class Session {
  public:
   Session(smt::Encoder& encoder, const Options& options, Statistics& statistics);
@@ -26,23 +34,30 @@ class Session {
   Statistics& statistics() { return statistics_; }
 
   // Asserts `formula` in the current scope.
-  void add(const z3::expr& formula) { solver_.add(formula); }
+  void add(const z3::expr& formula);
+
+  // A scope that defines more guards than this at once is wide.
+  static constexpr std::size_t kWideScope = 64;
 
   // Everything asserted while a Scope lives is retracted when it ends. Read models and cores
-  // before it does.
+  // before it does. A wide scope opened outside every other scope is the second solver's:
+  // every question until it ends goes there.
   class Scope {
    public:
-    explicit Scope(Session& session) : session_(session) { session_.solver_.push(); }
-    ~Scope() { session_.solver_.pop(); }
+    explicit Scope(Session& session, bool wide = false);
+    ~Scope();
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
 
    private:
     Session& session_;
+    smt::Solver* outer_;
   };
 
   Answer check(const std::vector<z3::expr>& assumptions = {});
-  z3::model model() const { return solver_.model(); }
+  z3::model model() const { return solver_->model(); }
+  // The solver questions go to now.
+  const smt::Solver& solver() const { return *solver_; }
   // The assumptions of the last unsat check that suffice for unsat.
   std::vector<z3::expr> core() const;
   // Why the last check answered unknown ("timeout", "incomplete (theory arithmetic)", …).
@@ -52,7 +67,7 @@ class Session {
   // the formula become assumption sets.
   z3::expr define(const z3::expr& formula, const char* prefix);
   // Asserts `literal` equivalent to `formula` in the current scope.
-  void define(const z3::expr& literal, const z3::expr& formula) { solver_.add(literal == formula); }
+  void define(const z3::expr& literal, const z3::expr& formula) { add(literal == formula); }
   // A fresh literal that implies `formula`: enough to ask whether the formula is satisfiable.
   z3::expr guard(const z3::expr& formula, const char* prefix);
 
@@ -65,7 +80,12 @@ class Session {
  private:
   smt::Encoder& encoder_;
   Statistics& statistics_;
-  smt::Solver solver_;
+  unsigned timeout_ms_;
+  smt::Solver narrow_;
+  std::unique_ptr<smt::Solver> wide_;  // made at the first wide scope
+  smt::Solver* solver_;                // the one questions go to
+  std::vector<z3::expr> base_;         // asserted outside every scope: both solvers hold it
+  std::size_t depth_ = 0;              // scopes open
   std::string reason_;
 };
 

@@ -79,7 +79,7 @@ void check_satisfiable_and_shadowed(Node& node, Session& session) {
       report_unsatisfiable(node, g, false);
       continue;
     }
-    Session::Scope scope(session);
+    Session::Scope scope(session, candidates.size() + 1 > Session::kWideScope);
     define(session, {&g});
     define(session, candidates);
     // First ask whether some state selects g: in the usual case that settles both questions.

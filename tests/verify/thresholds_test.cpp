@@ -1,6 +1,8 @@
 // Numeric and enum guards: thresholds, their edges, and enum partitions.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "verify/mission_builder.hpp"
 
 namespace uabt::testing {
@@ -88,6 +90,34 @@ TEST(Thresholds, RealGapBetweenThresholdsIsAnOpenInterval) {
   const verify::Result r = verify_checked(m);
   ASSERT_EQ(findings_of(r, "guard-gap").size(), 1u);
   EXPECT_EQ(r.coverage.at(0).gap_region, (std::vector<std::string>{"slope in [-10, 0.5)"}));
+}
+
+// Describing an overlap costs the question that finds it, one that shrinks the witness's cube
+// of atoms to what the overlap needs and one per literal of that; when the cube left is made of
+// the two guards' own conjuncts it is the whole overlap, and whether more of it is left needs
+// no question. (2,000 windows, each overlapping the next 5, ask 9,985 questions fewer.)
+TEST(Thresholds, AnOverlapOfTwoWindowsIsDescribedWithoutAskingWhetherMoreIsLeft) {
+  auto verify_windows = [](const std::string& second) {
+    return verify_checked(make_mission(
+        "A: In exploration if battery >= 10 & battery <= 40 Mission shall satisfy selected_alt "
+        "= slow\n"
+        "B: In exploration if " +
+            second +
+            " Mission shall satisfy selected_alt = fast\n"
+            "Safe: In exploration Mission shall satisfy selected_alt = stop\n",
+        "integer battery in [0, 100]\n"));
+  };
+  const verify::Result overlapping = verify_windows("battery >= 30 & battery <= 60");
+  const verify::Result apart = verify_windows("battery >= 50 & battery <= 60");
+  const auto overlaps = findings_of(overlapping, "guard-overlap");
+  ASSERT_EQ(overlaps.size(), 1u);
+  EXPECT_NE(std::find(overlaps[0]->notes.begin(), overlaps[0]->notes.end(),
+                      "both hold: battery in [30, 40]"),
+            overlaps[0]->notes.end());
+  EXPECT_TRUE(findings_of(apart, "guard-overlap").empty());
+  // Whether A and B meet, the witness's cube (all four atoms), one question per atom of it;
+  // apart, the pair is ruled out without the solver. Everything else is asked alike.
+  EXPECT_EQ(overlapping.statistics.solver_queries, apart.statistics.solver_queries + 6);
 }
 
 TEST(Enums, PartitionOfThreeOfFourLiteralsLeavesTheFourthUncovered) {
