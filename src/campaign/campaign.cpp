@@ -404,12 +404,14 @@ std::string campaign_junit(const Campaign& campaign) {
 
 std::string coverage_text(const CoverageReport& report) {
   const Counts c = count(report.targets, report.covered);
-  std::string out = report.mission + ": " + std::to_string(report.runs.size()) + " runs cover " +
+  std::string out = report.mission + ": " + std::to_string(report.runs.size()) +
+                    (report.runs.size() == 1 ? " run covers " : " runs cover ") +
                     std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
                     " reachable targets (" + criteria_text(c) + "; " +
                     std::to_string(c.targets - c.reachable) + " unreachable)\n";
   for (const auto& r : report.runs) {
-    out += "  " + r.source + ": " + std::to_string(r.observations.size()) + " selections in " +
+    out += "  " + r.source + ": " + std::to_string(r.observations.size()) +
+           (r.observations.size() == 1 ? " observation in " : " observations in ") +
            ticks_text(r.ticks) + (r.error.empty() ? "" : ", stopped: " + r.error) + "\n";
   }
   for (std::size_t k = 0; k < report.targets.size(); ++k) {
@@ -438,7 +440,7 @@ std::string coverage_json(const CoverageReport& report) {
     Json e = Json::object();
     e["source"] = r.source;
     e["ticks"] = r.ticks;
-    e["selections"] = r.observations.size();
+    e["observations"] = r.observations.size();
     if (!r.error.empty()) e["error"] = r.error;
     runs.push_back(std::move(e));
   }

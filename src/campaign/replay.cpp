@@ -9,6 +9,7 @@
 #include "campaign/campaign.hpp"
 #include "runtime/blackboard.hpp"
 #include "runtime/runner.hpp"
+#include "runtime/scenario_check.hpp"
 #include "runtime/selection.hpp"
 
 namespace uabt::campaign {
@@ -45,6 +46,7 @@ struct Replayer::Impl {
   const load::Mission& mission;
   bt::Document document;
   std::vector<bt::NodeModel> robot_nodes;
+  runtime::ScenarioVocabulary vocabulary;
 };
 
 Replayer::Replayer(const load::Mission& mission, const compile::Options& options) {
@@ -59,7 +61,8 @@ Replayer::Replayer(const load::Mission& mission, const compile::Options& options
   auto doc = bt::parse_document(xml, "compiled.xml", findings);
   if (!doc)
     throw std::runtime_error("the compiled tree does not read back:\n" + format_text(findings));
-  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}});
+  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}});
+  impl_->vocabulary.add(mission);
   if (mission.nodes) impl_->robot_nodes = *mission.nodes;
 }
 
@@ -70,6 +73,13 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
   RunRecord record;
   record.source = file;
   runtime::Scenario scenario = runtime::parse_scenario(json, file);
+  // Names and values that do not fit the mission are refused, as `uabt run` refuses them.
+  const std::vector<std::string> misfits = runtime::check_scenario(scenario, impl_->vocabulary);
+  if (!misfits.empty()) {
+    std::string text;
+    for (const auto& m : misfits) text += (text.empty() ? "" : "\n") + m;
+    throw runtime::ScenarioError(text);
+  }
   runtime::RunOptions options;
   options.log_conditions = false;
   runtime::Runner runner(impl_->document, std::move(scenario), options, impl_->robot_nodes);
