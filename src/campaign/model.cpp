@@ -11,6 +11,7 @@
 #include "fretish/build_expression.hpp"
 #include "smt/atoms.hpp"
 #include "smt/types.hpp"
+#include "verify/coverage.hpp"
 
 namespace uabt::campaign {
 
@@ -172,23 +173,8 @@ bool Model::Node::build(const load::Mission& mission, std::string& reason) {
         req_atoms[k].push_back(it->second);
     }
   }
-  std::vector<const fretish::Expr*> linked;
-  std::vector<bool> used(assumptions.size(), false);
-  for (bool grew = true; grew;) {
-    grew = false;
-    for (std::size_t k = 0; k < assumptions.size(); ++k) {
-      if (used[k]) continue;
-      std::set<std::string> own;
-      verify::detail::variables_of(*assumptions[k], typing, own);
-      bool touches = own.empty();
-      for (const auto& n : own) touches = touches || names.count(n) > 0;
-      if (!touches) continue;
-      used[k] = grew = true;
-      linked.push_back(assumptions[k]);
-      names.insert(own.begin(), own.end());
-      for (const auto* a : smt::atom_occurrences(*assumptions[k], typing)) atoms.push_back(a);
-    }
-  }
+  const std::vector<const fretish::Expr*> linked =
+      verify::detail::link_assumptions(assumptions, typing, names, atoms);
   space = std::make_unique<verify::detail::Space>(dom, typing);
   try {
     reason = space->plan(names, atoms);
