@@ -92,8 +92,10 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
     o.alternative = alternative;
     for (const auto& alt : impl_->mission.alternatives)
       if (alt.adaptable == adaptable && alt.tree_id == alternative) o.alternative = alt.name;
+    // The domain's variables are what targets are about.
     for (const auto& [name, value] : runner.engine().blackboard().entries())
-      if (value.kind != runtime::ScriptValue::Kind::empty)
+      if (value.kind != runtime::ScriptValue::Kind::empty &&
+          impl_->mission.domain.find(name) != nullptr)
         o.state.emplace_back(name, runtime::to_value(value));
     waiting.erase(adaptable);
     record.observations.push_back(std::move(o));
