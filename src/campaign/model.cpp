@@ -285,6 +285,8 @@ void Model::Node::decision_targets(std::vector<Target>& all) {
       }
     }
     add(all, std::move(t), selected[k]);
+    locals.back().select = true;
+    locals.back().req = k;
   }
   for (std::size_t k = 0; k < reqs.size(); ++k) {
     const auto* r = reqs[k];
@@ -401,14 +403,15 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
       if (dim.sort != smt::Sort::integer) continue;
       // A boundary lies between v and v + 1 where some atom changes its value.
       const std::uint64_t stride = space->stride(d);
+      std::vector<bool> cut(dim.radix, false);
+      for (std::uint64_t s = 0; s < size; ++s) {
+        const std::uint64_t v = space->digit(s, d);
+        if (v + 1 >= dim.radix || cut[v]) continue;
+        cut[v] =
+            !std::equal(&sigs[s * words], &sigs[s * words] + words, &sigs[(s + stride) * words]);
+      }
       for (std::uint64_t v = 0; v + 1 < dim.radix; ++v) {
-        bool cut = false;
-        for (std::uint64_t s = 0; s < size && !cut; ++s) {
-          if (space->digit(s, d) != v) continue;
-          for (std::size_t w = 0; w < words && !cut; ++w)
-            cut = sigs[s * words + w] != sigs[(s + stride) * words + w];
-        }
-        if (!cut) continue;
+        if (!cut[v]) continue;
         const std::string lo = number_text(dim.number(v)), hi = number_text(dim.number(v + 1));
         for (std::uint64_t side : {v, v + 1}) {
           Bits states(size, false);
@@ -560,8 +563,8 @@ std::vector<bool> Model::covered(const std::vector<RunRecord>& runs) const {
             hit = hit || (n.enabled[local.req].test(*s) != n.enabled[local.req].test(u) &&
                           n.sel[*s] != n.sel[u]);
         }
-      } else if (t.id.starts_with(n.adaptable + "/decision/select/")) {
-        hit = alternatives.count(t.id.substr(n.adaptable.size() + 17)) > 0;
+      } else if (local.select) {
+        hit = alternatives.count(n.reqs[local.req]->alternative) > 0;
       } else {
         for (auto s = states.begin(); s != states.end() && !hit; ++s) hit = local.states.test(*s);
       }

@@ -40,7 +40,8 @@ struct Model::Node {
   struct Local {
     std::size_t target = 0;  // index into the model's targets
     verify::detail::Bits states;
-    bool pair = false;
+    bool pair = false;    // MC/DC: reached by a pair of states, `pairs`
+    bool select = false;  // reached by a run that selects the alternative of `req`
     std::size_t req = 0, atom = 0;
     std::vector<std::pair<std::uint64_t, std::uint64_t>> pairs;
   };

@@ -11,6 +11,7 @@
 #include "runtime/runner.hpp"
 #include "runtime/scenario_check.hpp"
 #include "runtime/selection.hpp"
+#include "runtime/source_map.hpp"
 
 namespace uabt::campaign {
 
@@ -47,6 +48,7 @@ struct Replayer::Impl {
   bt::Document document;
   std::vector<bt::NodeModel> robot_nodes;
   runtime::ScenarioVocabulary vocabulary;
+  std::vector<compile::TraceEntry> trace;  // where each compiled node comes from
 };
 
 Replayer::Replayer(const load::Mission& mission, const compile::Options& options) {
@@ -61,8 +63,9 @@ Replayer::Replayer(const load::Mission& mission, const compile::Options& options
   auto doc = bt::parse_document(xml, "compiled.xml", findings);
   if (!doc)
     throw std::runtime_error("the compiled tree does not read back:\n" + format_text(findings));
-  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}});
+  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}, {}});
   impl_->vocabulary.add(mission);
+  impl_->trace = std::move(compiled.trace);
   if (mission.nodes) impl_->robot_nodes = *mission.nodes;
 }
 
@@ -120,7 +123,20 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
   runner.engine().remove_observer(&selections);
   record.ticks = runner.ticks();
   record.verdict = runner.verdict();
-  if (runner.error()) record.error = runner.error()->message;
+  if (runner.error()) {
+    // Named at the line the user wrote (as opened from where uabt runs), not at the compiled
+    // tree held in memory.
+    record.error = runner.error()->message;
+    const runtime::NodeInfo& info = runner.engine().info(runner.error()->node);
+    const std::string compiled_at = info.location.file + ":" + std::to_string(info.location.line) +
+                                    ":" + std::to_string(info.location.column);
+    const auto source = runtime::source_of(runner.engine().tree_path(runner.error()->node),
+                                           impl_->mission, impl_->trace);
+    if (source && record.error.starts_with(compiled_at))
+      record.error = path_prefix_for(impl_->mission.dir) + source->file + ":" +
+                     std::to_string(source->line) + ":" + std::to_string(source->column) +
+                     record.error.substr(compiled_at.size());
+  }
   return record;
 }
 

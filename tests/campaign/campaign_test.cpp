@@ -401,3 +401,23 @@ TEST(CampaignCoverage, AScenarioThatDoesNotFitTheMissionIsRefusedWithItsPosition
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
+  // blackboard_defects reads target_range before anything writes it: no run reaches sampling.
+  TempMission scratch({});
+  const CliRun run = run_uabt_in(
+      (source_dir() / "missions").string(),
+      "tests blackboard_defects --criterion decision --out '" + scratch.dir().string() + "'");
+  EXPECT_NE(run.out.find("unreachable: sampling selects scoop (Sand): no run reaches it: in the 2 "
+                         "states tried for it, sampling is not ticked (1 tick, verdict error: "
+                         "blackboard_defects/mission.xml:14:7: ScriptCondition 'in_reach': "
+                         "undefined blackboard key 'target_range'"),
+            std::string::npos)
+      << run.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
