@@ -17,5 +17,7 @@ void register_run(CLI::App& app, int& exit_code);
 void register_prove(CLI::App& app, int& exit_code);
 void register_monitor(CLI::App& app, int& exit_code);
 void register_schema(CLI::App& app, int& exit_code);
+void register_tests(CLI::App& app, int& exit_code);
+void register_coverage(CLI::App& app, int& exit_code);
 
 }  // namespace uabt::cli

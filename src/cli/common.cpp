@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "base/diagnostics.hpp"
 #include "base/files.hpp"
 
 namespace uabt::cli {
@@ -43,6 +44,38 @@ void apply_selection(const std::string& name, compile::Options& options) {
   if (name.empty()) return;
   options.selection = selection_style(name);
   options.selection_forced = true;
+}
+
+std::set<campaign::Criterion> campaign_criteria(const std::string& name) {
+  using campaign::Criterion;
+  if (name == "decision") return {Criterion::decision};
+  if (name == "mcdc") return {Criterion::mcdc};
+  if (name == "boundary") return {Criterion::boundary};
+  return {Criterion::decision, Criterion::mcdc, Criterion::boundary};
+}
+
+std::optional<load::Mission> load_for_campaign(const std::string& dir,
+                                               const std::vector<std::string>& uplinks,
+                                               int& exit_code) {
+  load::LoadOptions options;
+  for (const auto& u : uplinks) options.uplinks.push_back(u);
+  auto mission = load_or_complain(dir, options);
+  if (!mission) {
+    exit_code = kExitUsage;
+    return std::nullopt;
+  }
+  std::vector<Finding> errors;
+  for (const auto& f : mission->findings)
+    if (f.severity == Severity::error) errors.push_back(f);
+  if (!errors.empty()) {
+    TextOptions text;
+    text.path_prefix = path_prefix_for(mission->dir);
+    std::cerr << format_text(errors, text) << "uabt: " << dir
+              << ": the mission does not load; fix the errors above first\n";
+    exit_code = kExitFail;
+    return std::nullopt;
+  }
+  return mission;
 }
 
 }  // namespace uabt::cli

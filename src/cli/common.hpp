@@ -1,10 +1,12 @@
 #pragma once
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "base/finding.hpp"
+#include "campaign/campaign.hpp"
 #include "compile/compile.hpp"
 #include "load/mission.hpp"
 
@@ -35,6 +37,14 @@ void apply_selection(const std::string& name, compile::Options& options);
 inline constexpr const char* kSelectionHelp =
     "selector style of every adaptable node (default: its own selection attribute, else "
     "sequence); optimized keeps a node's declared reactive (a decision re-checked every tick)";
+
+// --criterion NAME of `uabt tests`: decision, mcdc, boundary, or all of them ("all").
+std::set<campaign::Criterion> campaign_criteria(const std::string& name);
+// The mission (with `uplinks` merged) for `uabt tests` and `uabt coverage`, or nullopt after
+// printing why and setting `exit_code`: 2 when it is no mission, 1 when it has load errors.
+std::optional<load::Mission> load_for_campaign(const std::string& dir,
+                                               const std::vector<std::string>& uplinks,
+                                               int& exit_code);
 
 // Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
 void emit(const std::string& path, const std::string& content);

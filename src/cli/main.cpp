@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   uabt::cli::register_prove(app, exit_code);
   uabt::cli::register_monitor(app, exit_code);
   uabt::cli::register_schema(app, exit_code);
+  uabt::cli::register_tests(app, exit_code);
+  uabt::cli::register_coverage(app, exit_code);
   uabt::cli::register_explain(app, exit_code);
   uabt::cli::register_checks(app, exit_code);
   try {

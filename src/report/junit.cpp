@@ -100,8 +100,32 @@ bool has_error(const TestCase& test) {
 }  // namespace
 
 std::string to_junit(const ReportInput& input) {
-  const std::vector<TestSuite> suites = Builder(input).suites();
+  std::vector<JunitSuite> out;
+  for (const auto& suite : Builder(input).suites()) {
+    JunitSuite s{suite.name, {}};
+    for (const auto& test : suite.cases) {
+      JunitCase c;
+      c.name = test.check;
+      if (has_error(test)) {
+        std::vector<const Finding*> errors;
+        for (const Finding* f : test.findings)
+          if (f->severity == Severity::error) errors.push_back(f);
+        c.failure = errors.front()->message;
+        if (errors.size() > 1) c.failure += " (and " + std::to_string(errors.size() - 1) + " more)";
+        c.failure_type = test.check;
+        c.failure_text = diagnostics(test.findings, true);
+      } else if (test.skipped) {
+        c.skipped = test.skip_reason;
+      }
+      c.system_out = diagnostics(test.findings, false);
+      s.cases.push_back(std::move(c));
+    }
+    out.push_back(std::move(s));
+  }
+  return junit_xml(out);
+}
 
+std::string junit_xml(const std::vector<JunitSuite>& suites) {
   tinyxml2::XMLDocument doc;
   doc.InsertEndChild(doc.NewDeclaration());
   tinyxml2::XMLElement* root = doc.NewElement("testsuites");
@@ -114,8 +138,8 @@ std::string to_junit(const ReportInput& input) {
     root->InsertEndChild(suite_element);
     std::size_t failures = 0, skipped = 0;
     for (const auto& test : suite.cases) {
-      failures += has_error(test) ? 1 : 0;
-      skipped += test.skipped ? 1 : 0;
+      failures += test.failure.empty() ? 0 : 1;
+      skipped += test.failure.empty() && !test.skipped.empty() ? 1 : 0;
     }
     suite_element->SetAttribute("name", detail::clean_text(suite.name).c_str());
     suite_element->SetAttribute("tests", static_cast<std::uint64_t>(suite.cases.size()));
@@ -130,28 +154,22 @@ std::string to_junit(const ReportInput& input) {
       tinyxml2::XMLElement* element = doc.NewElement("testcase");
       suite_element->InsertEndChild(element);
       element->SetAttribute("classname", detail::clean_text(suite.name).c_str());
-      element->SetAttribute("name", detail::clean_text(test.check).c_str());
-      if (has_error(test)) {
-        std::vector<const Finding*> errors;
-        for (const Finding* f : test.findings)
-          if (f->severity == Severity::error) errors.push_back(f);
-        std::string message = errors.front()->message;
-        if (errors.size() > 1) message += " (and " + std::to_string(errors.size() - 1) + " more)";
+      element->SetAttribute("name", detail::clean_text(test.name).c_str());
+      if (!test.failure.empty()) {
         tinyxml2::XMLElement* failure = doc.NewElement("failure");
         element->InsertEndChild(failure);
-        failure->SetAttribute("message", detail::clean_text(message).c_str());
-        failure->SetAttribute("type", detail::clean_text(test.check).c_str());
-        failure->SetText(detail::clean_text(diagnostics(test.findings, true)).c_str());
-      } else if (test.skipped) {
+        failure->SetAttribute("message", detail::clean_text(test.failure).c_str());
+        failure->SetAttribute("type", detail::clean_text(test.failure_type).c_str());
+        failure->SetText(detail::clean_text(test.failure_text).c_str());
+      } else if (!test.skipped.empty()) {
         tinyxml2::XMLElement* skip = doc.NewElement("skipped");
         element->InsertEndChild(skip);
-        skip->SetAttribute("message", test.skip_reason.c_str());
+        skip->SetAttribute("message", test.skipped.c_str());
       }
-      const std::string warnings = diagnostics(test.findings, false);
-      if (!warnings.empty()) {
+      if (!test.system_out.empty()) {
         tinyxml2::XMLElement* out = doc.NewElement("system-out");
         element->InsertEndChild(out);
-        out->SetText(detail::clean_text(warnings).c_str());
+        out->SetText(detail::clean_text(test.system_out).c_str());
       }
     }
   }

@@ -1,6 +1,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "report/model.hpp"
 #include "verify/verify.hpp"
@@ -20,6 +21,21 @@ std::string to_sarif(const ReportInput& input);
 // JUnit XML: a test suite per adaptable node and one for the mission, a test case per check
 // that applies; error findings are failures, warnings go to system-out.
 std::string to_junit(const ReportInput& input);
+
+// One JUnit test case: failed when `failure` (its message) is set, else skipped when
+// `skipped` (the reason) is.
+struct JunitCase {
+  std::string name;
+  std::string failure, failure_type, failure_text;
+  std::string skipped;
+  std::string system_out;
+};
+struct JunitSuite {
+  std::string name;
+  std::vector<JunitCase> cases;
+};
+// The JUnit XML of these suites (the writer behind to_junit): escaped, deterministic.
+std::string junit_xml(const std::vector<JunitSuite>& suites);
 
 // GitHub-flavoured Markdown for a PR comment or a CI step summary.
 std::string to_markdown(const ReportInput& input);

@@ -98,6 +98,29 @@ void give_up(Coverage& cov, const std::string& reason) {
 
 }  // namespace
 
+std::vector<const Expr*> link_assumptions(const std::vector<const Expr*>& assumptions,
+                                          const smt::Typing& typing, std::set<std::string>& names,
+                                          std::vector<const Expr*>& atoms) {
+  std::vector<const Expr*> linked;
+  std::vector<bool> used(assumptions.size(), false);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t k = 0; k < assumptions.size(); ++k) {
+      if (used[k]) continue;
+      std::set<std::string> own;
+      variables_of(*assumptions[k], typing, own);
+      bool touches = own.empty();
+      for (const auto& n : own) touches = touches || names.count(n) > 0;
+      if (!touches) continue;
+      used[k] = grew = true;
+      linked.push_back(assumptions[k]);
+      names.insert(own.begin(), own.end());
+      for (const Expr* a : smt::atom_occurrences(*assumptions[k], typing)) atoms.push_back(a);
+    }
+  }
+  return linked;
+}
+
 Coverage count_coverage(const std::string& adaptable,
                         const std::vector<const fretish::SelectionRequirement*>& requirements,
                         const std::vector<const Expr*>& assumptions, const fretish::Domain& domain,
@@ -119,23 +142,7 @@ Coverage count_coverage(const std::string& adaptable,
     variables_of(*r->guard, typing, names);
     for (const Expr* a : smt::atom_occurrences(*r->guard, typing)) atoms.push_back(a);
   }
-  std::vector<const Expr*> linked;
-  std::vector<bool> used(assumptions.size(), false);
-  for (bool grew = true; grew;) {
-    grew = false;
-    for (std::size_t k = 0; k < assumptions.size(); ++k) {
-      if (used[k]) continue;
-      std::set<std::string> own;
-      variables_of(*assumptions[k], typing, own);
-      bool touches = own.empty();
-      for (const auto& n : own) touches = touches || names.count(n) > 0;
-      if (!touches) continue;
-      used[k] = grew = true;
-      linked.push_back(assumptions[k]);
-      names.insert(own.begin(), own.end());
-      for (const Expr* a : smt::atom_occurrences(*assumptions[k], typing)) atoms.push_back(a);
-    }
-  }
+  const std::vector<const Expr*> linked = link_assumptions(assumptions, typing, names, atoms);
   for (const auto& v : domain.variables)
     if (names.count(v.name)) cov.variables.push_back(v.name);
   for (const auto& n : names)

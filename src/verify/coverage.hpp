@@ -1,4 +1,6 @@
 #pragma once
+#include <set>
+#include <string>
 #include <vector>
 
 #include "fretish/domain.hpp"
@@ -7,6 +9,14 @@
 #include "verify/verify.hpp"
 
 namespace uabt::verify::detail {
+
+// The assumptions that constrain the variables in `names`, transitively (an assumption over
+// a name pulls its other variables in): the guards' space. Adds their variables to `names`
+// and their atoms to `atoms`. Other assumptions only constrain other variables and, the
+// domain being consistent, do not change what the guards select.
+std::vector<const fretish::Expr*> link_assumptions(
+    const std::vector<const fretish::Expr*>& assumptions, const smt::Typing& typing,
+    std::set<std::string>& names, std::vector<const fretish::Expr*>& atoms);
 
 // Exact coverage counts for one adaptable node by enumerating the discrete variables its guards
 // range over (plus those of the assumptions that constrain them, transitively). Each atom is

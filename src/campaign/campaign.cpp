@@ -1,0 +1,506 @@
+// The campaign: minimised scenarios for the targets, each replayed, and its reports.
+#include "campaign/campaign.hpp"
+
+#include <algorithm>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <tuple>
+
+#include "base/number_text.hpp"
+#include "monitor/trace.hpp"
+#include "report/reports.hpp"
+#include "runtime/scenario.hpp"
+
+namespace uabt::campaign {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::set<std::string> names_of(const State& state) {
+  std::set<std::string> out;
+  for (const auto& [name, v] : state) out.insert(name);
+  return out;
+}
+
+void set_missing(State& into, const State& from) {
+  for (const auto& [name, v] : from)
+    if (find_value(into, name) == nullptr) into.emplace_back(name, v);
+}
+
+std::string numbered(const std::string& base, std::size_t n, std::size_t total) {
+  std::string digits = std::to_string(n);
+  const std::size_t width = std::max<std::size_t>(2, std::to_string(total).size());
+  while (digits.size() < width) digits = "0" + digits;
+  return base + "-" + digits;
+}
+
+// The state in the domain's declaration order, as Model::Node::state_values orders it.
+State in_domain_order(const load::Mission& mission, State state) {
+  auto rank = [&](const std::string& name) {
+    for (std::size_t k = 0; k < mission.domain.variables.size(); ++k)
+      if (mission.domain.variables[k].name == name) return k;
+    return mission.domain.variables.size();
+  };
+  std::stable_sort(state.begin(), state.end(), [&](const auto& a, const auto& b) {
+    const auto ra = rank(a.first), rb = rank(b.first);
+    return ra != rb ? ra < rb : (ra == mission.domain.variables.size() && a.first < b.first);
+  });
+  return state;
+}
+
+std::string ticks_text(std::uint64_t ticks) {
+  return std::to_string(ticks) + (ticks == 1 ? " tick" : " ticks");
+}
+
+}  // namespace
+
+bool Campaign::passed() const {
+  for (const auto& s : scenarios)
+    if (!s.problems.empty()) return false;
+  for (std::size_t k = 0; k < targets.size(); ++k)
+    if (targets[k].reachable && !covered[k]) return false;
+  return true;
+}
+
+namespace {
+
+// A value of each declared variable that no node ranges over, so that a script of the tree
+// reading it does not stop the run: the lower bound (else 0), the first literal, false.
+State other_variables(const load::Mission& mission, const std::set<std::string>& covered) {
+  State out;
+  for (const auto& v : mission.domain.variables) {
+    if (!v.declared || covered.count(v.name) || !v.invalid.empty()) continue;
+    switch (v.type) {
+      case fretish::VarType::boolean: out.emplace_back(v.name, Value::of_bool(false)); break;
+      case fretish::VarType::enumeration:
+        if (!v.enum_values.empty()) out.emplace_back(v.name, Value::of_enum(v.enum_values[0]));
+        break;
+      case fretish::VarType::integer: {
+        std::int64_t x = 0;
+        try {
+          if (!v.lower.empty()) x = std::max<std::int64_t>(x, std::stoll(v.lower));
+          if (!v.upper.empty()) x = std::min<std::int64_t>(x, std::stoll(v.upper));
+        } catch (const std::exception&) {
+          continue;
+        }
+        out.emplace_back(v.name, Value::of_int(x));
+        break;
+      }
+      case fretish::VarType::real: {
+        double x = 0;
+        try {
+          if (!v.lower.empty()) x = std::max(x, std::stod(v.lower));
+          if (!v.upper.empty()) x = std::min(x, std::stod(v.upper));
+        } catch (const std::exception&) {
+          continue;
+        }
+        out.emplace_back(v.name, Value::of_real(x, number_text(x)));
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+struct Round {
+  std::vector<Scenario> scenarios;
+  // (node, state index, why) of each planned state whose run did not reach its purpose
+  std::vector<std::tuple<std::size_t, std::uint64_t, std::string>> misses;
+};
+
+// Scenarios for the picks: nodes over disjoint variables share scenarios (a lane); every
+// scenario also gives the other nodes' variables a value of their domain, so that the run
+// gets to its node. Each is replayed and checked against its purpose.
+Round plan_round(const load::Mission& mission, const Model& model, const Replayer& replayer,
+                 const std::vector<Model::Pick>& picks, const std::vector<Target>& targets,
+                 const Options& options) {
+  Round round;
+  const std::size_t n = model.nodes();
+  std::vector<State> defaults(n);
+  std::vector<std::set<std::string>> variables(n);
+  std::vector<std::vector<const Model::Pick*>> by_node(n);
+  std::set<std::string> all_variables;
+  for (std::size_t k = 0; k < n; ++k) {
+    defaults[k] = model.default_state(k);
+    variables[k] = names_of(defaults[k]);
+    all_variables.insert(variables[k].begin(), variables[k].end());
+  }
+  const State others = other_variables(mission, all_variables);
+  for (const auto& p : picks) by_node[p.node].push_back(&p);
+  std::vector<std::vector<std::size_t>> lanes;
+  std::vector<std::set<std::string>> lane_vars;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (by_node[k].empty()) continue;
+    std::size_t lane = 0;
+    for (; lane < lanes.size(); ++lane) {
+      bool disjoint = true;
+      for (const auto& v : variables[k]) disjoint = disjoint && lane_vars[lane].count(v) == 0;
+      if (disjoint) break;
+    }
+    if (lane == lanes.size()) {
+      lanes.emplace_back();
+      lane_vars.emplace_back();
+    }
+    lanes[lane].push_back(k);
+    lane_vars[lane].insert(variables[k].begin(), variables[k].end());
+  }
+  for (const auto& lane : lanes) {
+    std::size_t rounds = 0;
+    for (std::size_t k : lane) rounds = std::max(rounds, by_node[k].size());
+    for (std::size_t j = 0; j < rounds; ++j) {
+      Scenario s;
+      State initial;
+      std::set<std::string> purpose_nodes;
+      std::vector<std::pair<std::size_t, const Model::Pick*>> planned;
+      for (std::size_t k : lane) {
+        if (j >= by_node[k].size()) continue;
+        const Model::Pick* p = by_node[k][j];
+        if (s.name.empty()) s.name = numbered(model.adaptable(k), j + 1, rounds);
+        set_missing(initial, p->state);
+        purpose_nodes.insert(model.adaptable(k));
+        s.purpose.insert(s.purpose.end(), p->purpose.begin(), p->purpose.end());
+        planned.emplace_back(k, p);
+      }
+      for (std::size_t k = 0; k < n; ++k) set_missing(initial, defaults[k]);
+      set_missing(initial, others);
+      initial = in_domain_order(mission, std::move(initial));
+      for (std::size_t t : s.purpose)
+        s.description += (s.description.empty() ? "" : "; ") + targets[t].text;
+      s.description = "Test campaign: " + s.description;
+      Json j_scenario = Json::object();
+      j_scenario["description"] = s.description;
+      j_scenario["max_ticks"] = options.max_ticks;
+      j_scenario["initial"] = Json::parse(state_json(initial));
+      s.json = j_scenario.dump(2) + "\n";
+      try {
+        s.run = replayer.run(s.json, s.name + ".json", purpose_nodes);
+      } catch (const std::exception& e) {
+        s.problems.push_back(std::string("the scenario does not run: ") + e.what());
+      }
+      for (const auto& [k, p] : planned) {
+        const Observation* seen = nullptr;
+        for (const auto& o : s.run.observations)
+          if (o.adaptable == model.adaptable(k)) {
+            seen = &o;
+            break;
+          }
+        const std::string want = model.expected(k, p->state);
+        std::string problem;
+        if (seen == nullptr)
+          problem = model.adaptable(k) + " is not ticked (" + ticks_text(s.run.ticks) +
+                    ", verdict " + s.run.verdict + (s.run.error.empty() ? "" : ": " + s.run.error) +
+                    ")";
+        else if (seen->alternative != want)
+          problem = model.adaptable(k) + " selected " +
+                    (seen->alternative.empty() ? "nothing" : seen->alternative) + " at tick " +
+                    std::to_string(seen->tick) + ", expected " + (want.empty() ? "nothing" : want);
+        else if (model.expected(k, seen->state) != want)
+          problem = model.adaptable(k) + " selected in another state than planned";
+        if (problem.empty()) continue;
+        s.problems.push_back(problem);
+        round.misses.emplace_back(k, p->index, problem);
+      }
+      round.scenarios.push_back(std::move(s));
+    }
+  }
+  return round;
+}
+
+}  // namespace
+
+Campaign build_campaign(const load::Mission& mission, const Options& options) {
+  Campaign c;
+  c.mission = mission.name;
+  Model model(mission, options.criteria);
+  c.targets = model.targets();
+  c.skipped = model.skipped();
+  const Replayer replayer(mission, options.compile);
+  // A state whose run does not get to its node (the tree takes another branch first) is
+  // set aside and the targets planned again, a few times.
+  std::vector<std::set<std::uint64_t>> excluded(model.nodes());
+  std::vector<std::string> first_miss(model.nodes());
+  Round round;
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    round = plan_round(mission, model, replayer, model.minimise(excluded), c.targets, options);
+    bool fresh = false;
+    for (const auto& [k, index, why] : round.misses) {
+      fresh = excluded[k].insert(index).second || fresh;
+      if (first_miss[k].empty()) first_miss[k] = why;
+    }
+    if (!fresh) break;
+  }
+  // What still misses its purpose is no test: left out, its targets said not reached.
+  for (auto& s : round.scenarios)
+    if (s.problems.empty()) c.scenarios.push_back(std::move(s));
+  // Numbered again without the gaps, per node.
+  std::map<std::string, std::size_t> per_base;
+  for (const auto& s : c.scenarios) ++per_base[s.name.substr(0, s.name.rfind('-'))];
+  std::map<std::string, std::size_t> next;
+  for (auto& s : c.scenarios) {
+    const std::string base = s.name.substr(0, s.name.rfind('-'));
+    s.name = numbered(base, ++next[base], per_base[base]);
+    s.run.source = s.name + ".json";
+  }
+  std::vector<RunRecord> runs;
+  for (const auto& s : c.scenarios) runs.push_back(s.run);
+  c.covered = model.covered(runs);
+  for (std::size_t t = 0; t < c.targets.size(); ++t) {
+    Target& target = c.targets[t];
+    if (!target.reachable || c.covered[t]) continue;
+    for (std::size_t k = 0; k < model.nodes(); ++k) {
+      if (model.adaptable(k) != target.adaptable || first_miss[k].empty()) continue;
+      target.reachable = false;
+      target.reason = "no run reaches it: in the " + std::to_string(excluded[k].size()) +
+                      " states tried for it, " + first_miss[k];
+    }
+  }
+  return c;
+}
+
+std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& campaign) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& s : campaign.scenarios) files.emplace_back(s.name + ".json", s.json);
+  files.emplace_back("campaign.json", campaign_json(campaign));
+  files.emplace_back("junit.xml", campaign_junit(campaign));
+  return files;
+}
+
+namespace {
+
+struct Counts {
+  std::size_t targets = 0, reachable = 0, covered = 0;
+  std::map<std::string, std::size_t> by_criterion;
+};
+
+Counts count(const std::vector<Target>& targets, const std::vector<bool>& covered) {
+  Counts c;
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    ++c.targets;
+    ++c.by_criterion[criterion_name(targets[k].criterion)];
+    if (!targets[k].reachable) continue;
+    ++c.reachable;
+    if (covered[k]) ++c.covered;
+  }
+  return c;
+}
+
+std::string criteria_text(const Counts& c) {
+  std::string out;
+  for (const char* name : {"decision", "mcdc", "boundary"}) {
+    auto it = c.by_criterion.find(name);
+    if (it == c.by_criterion.end()) continue;
+    out += (out.empty() ? "" : ", ") + std::string(name == std::string("mcdc") ? "MC/DC" : name) +
+           " " + std::to_string(it->second);
+  }
+  return out;
+}
+
+std::string witness_text(const Target& t) {
+  std::string out;
+  for (const auto& w : t.witness) out += (out.empty() ? "" : " and ") + state_json(w);
+  return out;
+}
+
+Json target_json(const Target& t, bool covered) {
+  Json j = Json::object();
+  j["id"] = t.id;
+  j["adaptable"] = t.adaptable;
+  j["criterion"] = criterion_name(t.criterion);
+  j["text"] = t.text;
+  j["reachable"] = t.reachable;
+  if (!t.reachable) j["reason"] = t.reason;
+  j["covered"] = covered;
+  return j;
+}
+
+Json skipped_json(const std::vector<std::pair<std::string, std::string>>& skipped) {
+  Json j = Json::array();
+  for (const auto& [node, reason] : skipped) j.push_back({{"adaptable", node}, {"reason", reason}});
+  return j;
+}
+
+}  // namespace
+
+std::string campaign_text(const Campaign& campaign) {
+  const Counts c = count(campaign.targets, campaign.covered);
+  std::string out = campaign.mission + ": " + std::to_string(c.targets) + " targets (" +
+                    criteria_text(c) + "), " + std::to_string(c.targets - c.reachable) +
+                    " unreachable; " + std::to_string(campaign.scenarios.size()) +
+                    " scenarios cover " + std::to_string(c.covered) + " of " +
+                    std::to_string(c.reachable) + " reachable targets\n";
+  for (const auto& s : campaign.scenarios) {
+    out += "  " + s.name + ".json: " + std::to_string(s.purpose.size()) +
+           (s.purpose.size() == 1 ? " target, " : " targets, ") +
+           (s.problems.empty() ? "reached at tick " + std::to_string(s.run.ticks) : "not reached") +
+           "\n";
+    for (const auto& p : s.problems) out += "    " + p + "\n";
+  }
+  for (std::size_t k = 0; k < campaign.targets.size(); ++k) {
+    const Target& t = campaign.targets[k];
+    if (!t.reachable)
+      out += "unreachable: " + t.text + ": " + t.reason + "\n";
+    else if (!campaign.covered[k])
+      out += "not covered: " + t.text + "\n";
+  }
+  for (const auto& [node, reason] : campaign.skipped)
+    out += "no targets for " + node + ": " + reason + "\n";
+  return out;
+}
+
+std::string campaign_json(const Campaign& campaign) {
+  const Counts c = count(campaign.targets, campaign.covered);
+  Json j = Json::object();
+  j["mission"] = campaign.mission;
+  j["passed"] = campaign.passed();
+  j["summary"] = {{"targets", c.targets},
+                  {"reachable", c.reachable},
+                  {"unreachable", c.targets - c.reachable},
+                  {"covered", c.covered},
+                  {"scenarios", campaign.scenarios.size()}};
+  std::vector<Json> by(campaign.targets.size(), Json::array());
+  for (const auto& s : campaign.scenarios)
+    for (std::size_t t : s.purpose) by[t].push_back(s.name + ".json");
+  Json targets = Json::array();
+  for (std::size_t k = 0; k < campaign.targets.size(); ++k) {
+    Json t = target_json(campaign.targets[k], campaign.covered[k]);
+    t["scenarios"] = std::move(by[k]);
+    targets.push_back(std::move(t));
+  }
+  j["targets"] = targets;
+  Json scenarios = Json::array();
+  for (const auto& s : campaign.scenarios) {
+    Json e = Json::object();
+    e["file"] = s.name + ".json";
+    Json purpose = Json::array();
+    for (std::size_t t : s.purpose) purpose.push_back(campaign.targets[t].id);
+    e["purpose"] = purpose;
+    e["reached"] = s.problems.empty();
+    e["ticks"] = s.run.ticks;
+    e["problems"] = s.problems;
+    scenarios.push_back(std::move(e));
+  }
+  j["scenarios"] = scenarios;
+  j["skipped"] = skipped_json(campaign.skipped);
+  return j.dump(2) + "\n";
+}
+
+std::string campaign_junit(const Campaign& campaign) {
+  report::JunitSuite suite{campaign.mission + ".tests", {}};
+  for (const auto& s : campaign.scenarios) {
+    report::JunitCase t;
+    t.name = s.name;
+    if (!s.problems.empty()) {
+      t.failure = s.problems.front();
+      t.failure_type = "purpose-not-reached";
+      for (const auto& p : s.problems) t.failure_text += p + "\n";
+    }
+    t.system_out = s.description + "\nreplayed: " + ticks_text(s.run.ticks) + ", " +
+                   (s.run.verdict.empty() ? "not run" : s.run.verdict + " so far") + "\n";
+    suite.cases.push_back(std::move(t));
+  }
+  return report::junit_xml({suite});
+}
+
+std::string coverage_text(const CoverageReport& report) {
+  const Counts c = count(report.targets, report.covered);
+  std::string out = report.mission + ": " + std::to_string(report.runs.size()) +
+                    (report.runs.size() == 1 ? " run covers " : " runs cover ") +
+                    std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
+                    " reachable targets (" + criteria_text(c) + "; " +
+                    std::to_string(c.targets - c.reachable) + " unreachable)\n";
+  for (const auto& r : report.runs) {
+    out += "  " + r.source + ": " + std::to_string(r.observations.size()) +
+           (r.observations.size() == 1 ? " observation in " : " observations in ") +
+           ticks_text(r.ticks) + (r.error.empty() ? "" : ", stopped: " + r.error) + "\n";
+  }
+  for (std::size_t k = 0; k < report.targets.size(); ++k) {
+    const Target& t = report.targets[k];
+    if (!t.reachable || report.covered[k]) continue;
+    out += "missed: " + t.text + "; covered by initial " + witness_text(t) + "\n";
+  }
+  for (const auto& t : report.targets)
+    if (!t.reachable) out += "unreachable: " + t.text + ": " + t.reason + "\n";
+  for (const auto& [node, reason] : report.skipped)
+    out += "no targets for " + node + ": " + reason + "\n";
+  return out;
+}
+
+std::string coverage_json(const CoverageReport& report) {
+  const Counts c = count(report.targets, report.covered);
+  Json j = Json::object();
+  j["mission"] = report.mission;
+  j["summary"] = {{"targets", c.targets},
+                  {"reachable", c.reachable},
+                  {"unreachable", c.targets - c.reachable},
+                  {"covered", c.covered},
+                  {"runs", report.runs.size()}};
+  Json runs = Json::array();
+  for (const auto& r : report.runs) {
+    Json e = Json::object();
+    e["source"] = r.source;
+    e["ticks"] = r.ticks;
+    e["observations"] = r.observations.size();
+    if (!r.error.empty()) e["error"] = r.error;
+    runs.push_back(std::move(e));
+  }
+  j["runs"] = runs;
+  Json targets = Json::array();
+  for (std::size_t k = 0; k < report.targets.size(); ++k) {
+    const Target& t = report.targets[k];
+    Json e = target_json(t, report.covered[k]);
+    if (t.reachable && !report.covered[k]) {
+      Json w = Json::array();
+      for (const auto& s : t.witness) w.push_back(Json::parse(state_json(s)));
+      e["scenario_initial"] = w;
+    }
+    targets.push_back(std::move(e));
+  }
+  j["targets"] = targets;
+  j["skipped"] = skipped_json(report.skipped);
+  return j.dump(2) + "\n";
+}
+
+RunRecord observe_trace(const load::Mission& mission, const std::string& content,
+                        const std::string& file, std::vector<Finding>& findings) {
+  RunRecord record;
+  record.source = file;
+  auto trace = monitor::read_trace(content, file, findings);
+  if (!trace) return record;
+  std::set<std::string> adaptables;
+  for (const auto& site : mission.adaptables) adaptables.insert(site.id);
+  State now;
+  for (const auto& tick : trace->ticks) {
+    for (const auto& [name, v] : tick.state) {
+      Value value;
+      if (v.kind == monitor::TraceValue::Kind::boolean)
+        value = Value::of_bool(v.boolean);
+      else if (v.kind == monitor::TraceValue::Kind::text)
+        value = Value::of_enum(v.text);
+      else if (v.integer && mission.domain.find(name) != nullptr &&
+               mission.domain.find(name)->type == fretish::VarType::integer)
+        value = Value::of_int(static_cast<std::int64_t>(v.number));
+      else
+        value = Value::of_real(v.number, number_text(v.number));
+      bool replaced = false;
+      for (auto& [n, old] : now)
+        if (n == name) {
+          old = value;
+          replaced = true;
+        }
+      if (!replaced) now.emplace_back(name, value);
+    }
+    record.ticks = tick.tick;
+    for (const auto& node : adaptables) {
+      Observation o;
+      o.adaptable = node;
+      o.tick = tick.tick;
+      o.state = now;
+      if (const Value* sel = find_value(now, node + ".selected")) o.alternative = sel->text;
+      record.observations.push_back(std::move(o));
+    }
+  }
+  return record;
+}
+
+}  // namespace uabt::campaign

@@ -1,0 +1,164 @@
+#pragma once
+// The test campaign of a mission (DESIGN §13): the targets a testbed run should exercise
+// (decision, MC/DC, boundary), scenarios in the `uabt run` format that reach them, each
+// replayed on the runtime, and what a set of runs covered.
+#include <cstdint>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "base/value.hpp"
+#include "compile/compile.hpp"
+#include "load/mission.hpp"
+
+namespace uabt::campaign {
+
+enum class Criterion { decision, mcdc, boundary };
+const char* criterion_name(Criterion c);
+
+// One thing a campaign must exercise.
+struct Target {
+  std::string id;  // stable, unique in the mission: "navigation/mcdc/Req1/OnDust"
+  std::string adaptable;
+  Criterion criterion = Criterion::decision;
+  std::string text;  // "navigation selects on_dust (Req1)"
+  // false: no state of the domain reaches it; `reason` says why.
+  bool reachable = true;
+  std::string reason;
+  // A state that reaches it (two for an MC/DC pair), as scenario values; empty when
+  // unreachable.
+  std::vector<State> witness;
+};
+
+// What one run did at an adaptable node: the alternative it selected and the values of the
+// node's variables at that moment.
+struct Observation {
+  std::string adaptable;
+  std::string alternative;  // "" when the run does not say (a monitor trace without .selected)
+  State state;
+  std::uint64_t tick = 0;
+};
+
+struct RunRecord {
+  std::string source;   // the scenario or trace, as displayed
+  std::string verdict;  // the run's verdict so far (runs stop once their purpose is reached)
+  std::string error;    // the tick error that stopped the run, if any
+  std::uint64_t ticks = 0;
+  std::vector<Observation> observations;
+};
+
+// Targets and their witnesses for every adaptable node, enumerated exactly over the cells of
+// the coverage stage (verify/space.hpp). Nodes that cannot be enumerated are listed in
+// `skipped` with the reason, and get no targets.
+class Model {
+ public:
+  Model(const load::Mission& mission, const std::set<Criterion>& criteria);
+  ~Model();
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const std::vector<Target>& targets() const { return targets_; }
+  const std::vector<std::pair<std::string, std::string>>& skipped() const { return skipped_; }
+
+  // The targets a set of runs covered (indices into targets()).
+  std::vector<bool> covered(const std::vector<RunRecord>& runs) const;
+
+  // Minimised: per adaptable node the states (as scenario values) that together reach every
+  // reachable target of it, fewest first found by greedy set cover, with the targets each
+  // was chosen for.
+  struct Pick {
+    std::size_t node = 0;
+    std::uint64_t index = 0;  // the state's index in the node's space
+    State state;
+    std::vector<std::size_t> purpose;  // targets this state is needed for
+  };
+  // States in `excluded` (per node, by index) are not used: runs showed they do not reach
+  // the node.
+  std::vector<Pick> minimise(const std::vector<std::set<std::uint64_t>>& excluded = {}) const;
+  // Per node: its adaptable id, the variables it ranges over, and a state of its domain
+  // (empty when the domain has none).
+  std::size_t nodes() const;
+  const std::string& adaptable(std::size_t node) const;
+  State default_state(std::size_t node) const;
+  // The alternative a state selects at a node ("" outside its space or in a gap).
+  std::string expected(std::size_t node, const State& state) const;
+
+  struct Node;
+
+ private:
+  const load::Mission& mission_;
+  std::vector<std::unique_ptr<Node>> nodes_;
+  std::vector<Target> targets_;
+  std::vector<std::pair<std::string, std::string>> skipped_;  // adaptable, reason
+};
+
+// Runs scenarios on the compiled mission (the runtime `uabt run` uses, without the gate).
+class Replayer {
+ public:
+  // Throws std::runtime_error when the mission does not compile.
+  Replayer(const load::Mission& mission, const compile::Options& options);
+  ~Replayer();
+  // Runs a scenario (JSON text) until every adaptable node of `stop_after` has selected, the
+  // root completes, a tick throws or max_ticks is reached; every selection is observed.
+  // Throws runtime::ScenarioError when the scenario does not parse.
+  RunRecord run(const std::string& json, const std::string& file,
+                const std::set<std::string>& stop_after = {}) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+struct Options {
+  std::set<Criterion> criteria{Criterion::decision, Criterion::mcdc, Criterion::boundary};
+  compile::Options compile;
+  std::int64_t max_ticks = 100;
+};
+
+struct Scenario {
+  std::string name;  // file name without ".json": "navigation-01"
+  std::string description;
+  std::string json;                   // the file
+  std::vector<std::size_t> purpose;   // targets it was written for
+  RunRecord run;                      // its replay
+  std::vector<std::string> problems;  // purposes the replay did not reach, and why
+};
+
+struct Campaign {
+  std::string mission;
+  std::vector<Target> targets;
+  std::vector<bool> covered;  // per target, by the replays
+  std::vector<Scenario> scenarios;
+  std::vector<std::pair<std::string, std::string>> skipped;  // adaptable, reason
+  bool passed() const;  // every scenario reached its purpose, every reachable target covered
+};
+
+// Plans, writes (in memory) and replays the campaign.
+Campaign build_campaign(const load::Mission& mission, const Options& options);
+
+// The files of a campaign: <name>.json per scenario, campaign.json, junit.xml.
+std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& campaign);
+std::string campaign_text(const Campaign& campaign);
+std::string campaign_json(const Campaign& campaign);
+std::string campaign_junit(const Campaign& campaign);
+
+// `uabt coverage`: what runs covered and what they missed, with a scenario for each miss.
+struct CoverageReport {
+  std::string mission;
+  std::vector<Target> targets;
+  std::vector<bool> covered;
+  std::vector<RunRecord> runs;
+  std::vector<std::pair<std::string, std::string>> skipped;
+};
+std::string coverage_text(const CoverageReport& report);
+std::string coverage_json(const CoverageReport& report);
+
+// A monitor trace as observations: every tick whose state holds all of a node's variables.
+RunRecord observe_trace(const load::Mission& mission, const std::string& content,
+                        const std::string& file, std::vector<Finding>& findings);
+
+// A state as the "initial" object of a scenario.
+std::string state_json(const State& state);
+
+}  // namespace uabt::campaign

@@ -1,0 +1,143 @@
+// Replays a scenario on the runtime (what `uabt run` does, without the gate) and observes
+// every selection with the state it was made in.
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "base/diagnostics.hpp"
+#include "bt/xml_io.hpp"
+#include "campaign/campaign.hpp"
+#include "runtime/blackboard.hpp"
+#include "runtime/runner.hpp"
+#include "runtime/scenario_check.hpp"
+#include "runtime/selection.hpp"
+#include "runtime/source_map.hpp"
+
+namespace uabt::campaign {
+
+namespace {
+
+// Reports a selection subtree (the root of the tree named like its adaptable node) that
+// fails without having started an alternative that tick: a state in a gap, where the node
+// is ticked and selects nothing.
+class GapObserver : public runtime::Observer {
+ public:
+  GapObserver(const runtime::Engine& engine, std::set<std::string> adaptables,
+              std::function<void(const std::string&)> on_gap)
+      : engine_(engine), adaptables_(std::move(adaptables)), on_gap_(std::move(on_gap)) {}
+  void on_status_change(runtime::NodeId, runtime::NodeStatus, runtime::NodeStatus) override {}
+  void on_node_ticked(runtime::NodeId node, runtime::NodeStatus result) override {
+    if (result != runtime::NodeStatus::failure) return;
+    const runtime::NodeInfo& info = engine_.info(node);
+    if (!adaptables_.count(info.tree_id)) return;
+    if (info.parent != runtime::kNoNode && engine_.info(info.parent).tree_id == info.tree_id)
+      return;
+    on_gap_(info.tree_id);
+  }
+
+ private:
+  const runtime::Engine& engine_;
+  std::set<std::string> adaptables_;
+  std::function<void(const std::string&)> on_gap_;
+};
+
+}  // namespace
+
+struct Replayer::Impl {
+  const load::Mission& mission;
+  bt::Document document;
+  std::vector<bt::NodeModel> robot_nodes;
+  runtime::ScenarioVocabulary vocabulary;
+  std::vector<compile::TraceEntry> trace;  // where each compiled node comes from
+};
+
+Replayer::Replayer(const load::Mission& mission, const compile::Options& options) {
+  compile::Result compiled = compile::compile_mission(mission, options);
+  if (!compiled.ok)
+    throw std::runtime_error("the mission does not compile:\n" + format_text(compiled.findings));
+  // The tree as `uabt run` holds it: read back from the bytes the compiler writes.
+  bt::WriteOptions write_options;
+  write_options.format = options.bt_format;
+  const std::string xml = bt::write_document(compiled.document, write_options);
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(xml, "compiled.xml", findings);
+  if (!doc)
+    throw std::runtime_error("the compiled tree does not read back:\n" + format_text(findings));
+  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}, {}});
+  impl_->vocabulary.add(mission);
+  impl_->trace = std::move(compiled.trace);
+  if (mission.nodes) impl_->robot_nodes = *mission.nodes;
+}
+
+Replayer::~Replayer() = default;
+
+RunRecord Replayer::run(const std::string& json, const std::string& file,
+                        const std::set<std::string>& stop_after) const {
+  RunRecord record;
+  record.source = file;
+  runtime::Scenario scenario = runtime::parse_scenario(json, file);
+  // Names and values that do not fit the mission are refused, as `uabt run` refuses them.
+  const std::vector<std::string> misfits = runtime::check_scenario(scenario, impl_->vocabulary);
+  if (!misfits.empty()) {
+    std::string text;
+    for (const auto& m : misfits) text += (text.empty() ? "" : "\n") + m;
+    throw runtime::ScenarioError(text);
+  }
+  runtime::RunOptions options;
+  options.log_conditions = false;
+  runtime::Runner runner(impl_->document, std::move(scenario), options, impl_->robot_nodes);
+  std::set<std::string> waiting = stop_after;
+  std::map<std::string, std::uint64_t> selected_at;  // per node: the last tick it selected
+  auto observe = [&](const std::string& adaptable, const std::string& alternative) {
+    Observation o;
+    o.adaptable = adaptable;
+    o.tick = runner.ticks() + 1;  // the tick under way
+    o.alternative = alternative;
+    for (const auto& alt : impl_->mission.alternatives)
+      if (alt.adaptable == adaptable && alt.tree_id == alternative) o.alternative = alt.name;
+    // The domain's variables are what targets are about.
+    for (const auto& [name, value] : runner.engine().blackboard().entries())
+      if (value.kind != runtime::ScriptValue::Kind::empty &&
+          impl_->mission.domain.find(name) != nullptr)
+        o.state.emplace_back(name, runtime::to_value(value));
+    waiting.erase(adaptable);
+    record.observations.push_back(std::move(o));
+  };
+  runtime::SelectionObserver selections(runner.engine(), [&](const runtime::Selection& s) {
+    selected_at[s.adaptable] = runner.ticks() + 1;
+    observe(s.adaptable, s.alternative);
+  });
+  std::set<std::string> adaptables;
+  for (const auto& site : impl_->mission.adaptables) adaptables.insert(site.id);
+  GapObserver gaps(runner.engine(), adaptables, [&](const std::string& adaptable) {
+    if (selected_at[adaptable] != runner.ticks() + 1) observe(adaptable, "");
+  });
+  runner.engine().add_observer(&selections);
+  runner.engine().add_observer(&gaps);
+  while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
+    runner.step();
+    runner.world().clear_log();
+    if (!stop_after.empty() && waiting.empty()) break;
+  }
+  runner.engine().remove_observer(&gaps);
+  runner.engine().remove_observer(&selections);
+  record.ticks = runner.ticks();
+  record.verdict = runner.verdict();
+  if (runner.error()) {
+    // Named at the line the user wrote (as opened from where uabt runs), not at the compiled
+    // tree held in memory.
+    record.error = runner.error()->message;
+    const runtime::NodeInfo& info = runner.engine().info(runner.error()->node);
+    const std::string compiled_at = info.location.file + ":" + std::to_string(info.location.line) +
+                                    ":" + std::to_string(info.location.column);
+    const auto source = runtime::source_of(runner.engine().tree_path(runner.error()->node),
+                                           impl_->mission, impl_->trace);
+    if (source && record.error.starts_with(compiled_at))
+      record.error = path_prefix_for(impl_->mission.dir) + source->file + ":" +
+                     std::to_string(source->line) + ":" + std::to_string(source->column) +
+                     record.error.substr(compiled_at.size());
+  }
+  return record;
+}
+
+}  // namespace uabt::campaign

@@ -1,0 +1,92 @@
+#include <iostream>
+
+#include "base/diagnostics.hpp"
+#include "base/files.hpp"
+#include "campaign/campaign.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "runtime/scenario.hpp"
+
+namespace uabt::cli {
+
+// What scenarios (replayed) or monitor traces covered of the campaign's targets, and a
+// scenario's initial state for each target they missed.
+void register_coverage(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, format = "text", selection;
+    std::vector<std::string> runs;
+    std::int64_t max_ticks = 0;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "coverage", "What scenarios or monitor traces covered of the campaign's targets");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("SCENARIO", args->runs,
+                  "scenario JSON files (replayed) or monitor traces (JSON lines)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--format", args->format, "text | json")->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--selection", args->selection, kSelectionHelp)
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
+  cmd->callback([args, &exit_code] {
+    auto mission = load_for_campaign(args->mission, {}, exit_code);
+    if (!mission) return;
+    try {
+      campaign::Model model(*mission, campaign_criteria("all"));
+      compile::Options compile_options;
+      apply_selection(args->selection, compile_options);
+      const campaign::Replayer replayer(*mission, compile_options);
+      campaign::CoverageReport report;
+      report.mission = mission->name;
+      report.targets = model.targets();
+      report.skipped = model.skipped();
+      std::vector<std::string> errors;
+      for (const auto& file : args->runs) {
+        std::string error;
+        const auto content = read_text_file(file, error);
+        if (!content) {
+          errors.push_back(file + ": error: " + error);
+          continue;
+        }
+        // A scenario is one JSON object; a monitor trace is one object a line.
+        const bool trace = content->find("\"tick\"") != std::string::npos &&
+                           content->find("\"state\"") != std::string::npos &&
+                           content->find("\"initial\"") == std::string::npos;
+        if (trace) {
+          std::vector<Finding> findings;
+          campaign::RunRecord run = campaign::observe_trace(*mission, *content, file, findings);
+          if (!findings.empty()) {
+            errors.push_back(format_text(findings));
+            continue;
+          }
+          report.runs.push_back(std::move(run));
+          continue;
+        }
+        try {
+          report.runs.push_back(replayer.run(*content, file));
+        } catch (const runtime::ScenarioError& e) {
+          errors.push_back(e.what());
+        }
+      }
+      if (!errors.empty()) {
+        for (const auto& e : errors) std::cerr << e << (e.ends_with("\n") ? "" : "\n");
+        exit_code = kExitFail;
+        return;
+      }
+      report.covered = model.covered(report.runs);
+      std::cout << (args->format == "json" ? campaign::coverage_json(report)
+                                           : campaign::coverage_text(report));
+      bool all = true;
+      for (std::size_t k = 0; k < report.targets.size(); ++k)
+        all = all && (!report.targets[k].reachable || report.covered[k]);
+      exit_code = all ? kExitPass : kExitFail;
+    } catch (const std::exception& e) {
+      std::cerr << "uabt: coverage: " << e.what() << "\n";
+      exit_code = kExitFail;
+    }
+  });
+}
+
+}  // namespace uabt::cli

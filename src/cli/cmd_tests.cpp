@@ -1,0 +1,59 @@
+#include <filesystem>
+#include <iostream>
+
+#include "base/diagnostics.hpp"
+#include "base/files.hpp"
+#include "campaign/campaign.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+
+namespace uabt::cli {
+
+// The test campaign: scenarios that select every alternative, decide every guard both ways,
+// show each atom's independent effect (MC/DC) and sit on both sides of every boundary, each
+// replayed on the runtime; OUT/junit.xml reports the replays.
+void register_tests(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, out, criterion = "all", selection;
+    std::vector<std::string> uplinks;
+    std::int64_t max_ticks = 100;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "tests", "Write a test campaign (uabt run scenarios) and replay it; OUT/junit.xml");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--uplink", args->uplinks,
+                  "an uplink package: the campaign of the mission with it merged")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--out", args->out, "directory for the scenarios, campaign.json, junit.xml")
+      ->required();
+  cmd->add_option("--criterion", args->criterion, "decision | mcdc | boundary | all (default)")
+      ->check(CLI::IsMember({"decision", "mcdc", "boundary", "all"}));
+  cmd->add_option("--selection", args->selection, kSelectionHelp)
+      ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
+  cmd->add_option("--max-ticks", args->max_ticks, "max_ticks of each scenario (default 100)")
+      ->check(CLI::PositiveNumber);
+  cmd->callback([args, &exit_code] {
+    auto mission = load_for_campaign(args->mission, args->uplinks, exit_code);
+    if (!mission) return;
+    campaign::Options options;
+    options.criteria = campaign_criteria(args->criterion);
+    options.max_ticks = args->max_ticks;
+    apply_selection(args->selection, options.compile);
+    try {
+      const campaign::Campaign c = campaign::build_campaign(*mission, options);
+      const std::filesystem::path out(args->out);
+      for (const auto& [name, content] : campaign::campaign_files(c))
+        write_file_atomically(out / name, content);
+      std::cout << campaign::campaign_text(c);
+      exit_code = c.passed() ? kExitPass : kExitFail;
+    } catch (const std::exception& e) {
+      std::cerr << "uabt: tests: " << e.what() << "\n";
+      exit_code = kExitFail;
+    }
+  });
+}
+
+}  // namespace uabt::cli

@@ -1,0 +1,423 @@
+// The test campaign (uabt tests) and what runs cover (uabt coverage): random small missions
+// checked against brute force over their domain, and the shipped missions' exact output.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <set>
+
+#include "campaign/campaign.hpp"
+#include "cli/cli_support.hpp"
+#include "fretish/expr.hpp"
+#include "smt/atoms.hpp"
+#include "smt/evaluate.hpp"
+#include "temp_mission.hpp"
+
+namespace uabt::testing {
+namespace {
+
+using campaign::Criterion;
+
+load::Mission load(const std::filesystem::path& dir) {
+  std::string error;
+  auto m = load::load_mission(dir, {}, error);
+  EXPECT_TRUE(m) << error;
+  return std::move(*m);
+}
+
+// A random node over a, b (booleans), x in [0, 5], t in {p, q, r} and a real w in [0, 10]:
+// two to four guarded requirements of one to three atoms, sometimes a default, sometimes an
+// assumption; the tree ticks the node first.
+std::map<std::string, std::string> random_mission(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  auto atom = [&]() -> std::string {
+    switch (pick(8)) {
+      case 0: return "a";
+      case 1: return "!b";
+      case 2: return "x < " + std::to_string(pick(6));
+      case 3: return "x = " + std::to_string(pick(6));
+      case 4: return "x >= " + std::to_string(pick(6));
+      case 5: return std::string("t = ") + "pqr"[pick(3)];
+      case 6: return "w < " + std::to_string(pick(11));
+      default: return "w >= " + std::to_string(pick(11)) + ".5";
+    }
+  };
+  std::map<std::string, std::string> files;
+  files["mission.xml"] =
+      mission_with("    <Sequence>\n      <Adaptable ID=\"node\"/>\n    </Sequence>");
+  files["domain.fret"] =
+      "boolean a, b\ninteger x in [0, 5]\nenum t in {p, q, r}\nreal w in [0, 10]\n";
+  if (pick(3) == 0) files["domain.fret"] += "assume no_ab: !(a & b)\n";
+  std::string reqs;
+  const int k = 2 + pick(3);
+  for (int i = 0; i < k; ++i) {
+    std::string guard = atom();
+    for (int j = pick(3); j > 0; --j) guard += (pick(2) ? " & " : " | ") + atom();
+    const std::string alt = "alt" + std::to_string(i);
+    reqs += "R" + std::to_string(i) + ": In node if " + guard +
+            " Mission shall satisfy selected_alt = " + alt + "\n";
+    files["alternatives/node/" + alt + ".xml"] = alternative_tree(alt, "<AlwaysSuccess/>");
+  }
+  if (pick(2)) {
+    reqs += "Default: In node Mission shall satisfy selected_alt = fallback\n";
+    files["alternatives/node/fallback.xml"] = alternative_tree("fallback", "<AlwaysSuccess/>");
+  }
+  files["requirements.fret"] = reqs;
+  return files;
+}
+
+// Every state of the random domain, the real at points on, between and beside the guards'
+// boundaries (integers and halves cut [0, 10] finer than any guard does).
+std::vector<State> brute_force(const load::Mission& m) {
+  std::vector<State> out;
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b)
+      for (int x = 0; x <= 5; ++x)
+        for (const char* t : {"p", "q", "r"})
+          for (int w4 = 0; w4 <= 40; ++w4) {
+            const double w = w4 / 4.0;
+            State s{{"a", Value::of_bool(a)},
+                    {"b", Value::of_bool(b)},
+                    {"x", Value::of_int(x)},
+                    {"t", Value::of_enum(t)},
+                    {"w", Value::of_real(w, std::to_string(w))}};
+            if (smt::satisfies_domain(m.domain, s)) out.push_back(std::move(s));
+          }
+  return out;
+}
+
+// What a state selects: the first requirement whose guard holds ("" in a gap).
+std::string selects(const load::Mission& m, const State& s) {
+  for (const auto* r : m.selections_for("node"))
+    if (!r->guard || smt::evaluate(*r->guard, m.domain, s)) return r->alternative;
+  return "";
+}
+
+State initial_of(const std::string& scenario) {
+  State s;
+  const auto j = nlohmann::json::parse(scenario);
+  for (const auto& [name, v] : j["initial"].items()) {
+    if (v.is_boolean())
+      s.emplace_back(name, Value::of_bool(v.get<bool>()));
+    else if (v.is_string())
+      s.emplace_back(name, Value::of_enum(v.get<std::string>()));
+    else if (name == "x")
+      s.emplace_back(name, Value::of_int(v.get<std::int64_t>()));
+    else
+      s.emplace_back(name, Value::of_real(v.get<double>(), v.dump()));
+  }
+  return s;
+}
+
+constexpr unsigned kRandomMissions = 40;
+
+campaign::Options only(Criterion criterion) {
+  campaign::Options options;
+  options.criteria = {criterion};
+  return options;
+}
+
+TEST(CampaignRandom, EveryScenarioReachesItsTargetWhenRun) {
+  for (unsigned seed = 1; seed <= kRandomMissions; ++seed) {
+    TempMission dir(random_mission(seed));
+    const load::Mission m = load(dir.dir());
+    const campaign::Campaign c = campaign::build_campaign(m, {});
+    const campaign::Replayer replayer(m, {});
+    for (const auto& s : c.scenarios) {
+      EXPECT_TRUE(s.problems.empty()) << "seed " << seed << " " << s.name;
+      // Run again from its bytes, as `uabt run` reads the file.
+      const campaign::RunRecord run = replayer.run(s.json, s.name + ".json");
+      ASSERT_FALSE(run.observations.empty()) << "seed " << seed << " " << s.name;
+      const State planned = initial_of(s.json);
+      EXPECT_EQ(run.observations.front().alternative, selects(m, planned))
+          << "seed " << seed << " " << s.name << "\n"
+          << s.json;
+    }
+    EXPECT_TRUE(c.passed()) << "seed " << seed << "\n" << campaign::campaign_text(c);
+  }
+}
+
+TEST(CampaignRandom, EveryReachableDecisionTargetIsCoveredAndOnlyThose) {
+  for (unsigned seed = 1; seed <= kRandomMissions; ++seed) {
+    TempMission dir(random_mission(seed));
+    const load::Mission m = load(dir.dir());
+    const campaign::Campaign c = campaign::build_campaign(m, {});
+    std::set<std::string> can;  // decision target ids some state of the domain reaches
+    for (const State& s : brute_force(m)) {
+      const std::string alt = selects(m, s);
+      if (!alt.empty()) can.insert("node/decision/select/" + alt);
+      for (const auto* r : m.selections_for("node"))
+        if (r->guard)
+          can.insert("node/decision/guard/" + r->id + "/" +
+                     (smt::evaluate(*r->guard, m.domain, s) ? "true" : "false"));
+    }
+    for (std::size_t k = 0; k < c.targets.size(); ++k) {
+      const auto& t = c.targets[k];
+      if (t.criterion != Criterion::decision) continue;
+      EXPECT_EQ(t.reachable, can.count(t.id) > 0)
+          << "seed " << seed << " " << t.id << ": " << t.reason;
+      if (t.reachable) {
+        EXPECT_TRUE(c.covered[k]) << "seed " << seed << " " << t.id;
+      }
+    }
+  }
+}
+
+TEST(CampaignRandom, McdcPairsDifferInExactlyOneAtom) {
+  std::size_t pairs = 0;
+  for (unsigned seed = 1; seed <= kRandomMissions; ++seed) {
+    TempMission dir(random_mission(seed));
+    const load::Mission m = load(dir.dir());
+    const campaign::Campaign c = campaign::build_campaign(m, only(Criterion::mcdc));
+    const auto domain = brute_force(m);
+    for (std::size_t k = 0; k < c.targets.size(); ++k) {
+      const auto& t = c.targets[k];
+      if (!t.reachable) continue;
+      ASSERT_TRUE(c.covered[k]) << t.id;
+      // The pair as written: the two scenarios the target was planned in.
+      std::vector<State> states;
+      for (const auto& s : c.scenarios)
+        if (std::find(s.purpose.begin(), s.purpose.end(), k) != s.purpose.end())
+          states.push_back(initial_of(s.json));
+      ASSERT_EQ(states.size(), 2u) << t.id;
+      const std::string requirement = t.id.substr(10, t.id.find('/', 10) - 10);
+      const std::string atom_text = t.id.substr(t.id.find('/', 10) + 1);
+      // Atoms that hold in the same states (or the opposite ones) are one condition.
+      auto same_condition = [&](const fretish::Expr& a, const fretish::Expr& b) {
+        bool equal = true, opposite = true;
+        for (const State& s : domain) {
+          const bool x = smt::evaluate(a, m.domain, s), y = smt::evaluate(b, m.domain, s);
+          equal = equal && x == y;
+          opposite = opposite && x != y;
+        }
+        return equal || opposite;
+      };
+      const fretish::Expr* target_atom = nullptr;
+      std::vector<const fretish::Expr*> atoms;
+      smt::Typing typing;
+      for (const auto* r : m.selections_for("node")) {
+        if (!r->guard) continue;
+        std::vector<Finding> ignored;
+        smt::check_condition(*r->guard, m.domain, r->guard_location, typing, ignored);
+        for (const auto* a : smt::atom_occurrences(*r->guard, typing)) {
+          atoms.push_back(a);
+          if (r->id == requirement && fretish::to_fretish(*a) == atom_text) target_atom = a;
+        }
+      }
+      ASSERT_NE(target_atom, nullptr) << t.id;
+      EXPECT_NE(smt::evaluate(*target_atom, m.domain, states[0]),
+                smt::evaluate(*target_atom, m.domain, states[1]))
+          << t.id;
+      for (const auto* a : atoms) {
+        if (smt::evaluate(*a, m.domain, states[0]) == smt::evaluate(*a, m.domain, states[1]))
+          continue;
+        EXPECT_TRUE(same_condition(*a, *target_atom))
+            << "seed " << seed << " " << t.id << ": " << fretish::to_fretish(*a) << " changes too";
+      }
+      EXPECT_NE(selects(m, states[0]), selects(m, states[1])) << t.id;
+      ++pairs;
+    }
+  }
+  EXPECT_GT(pairs, 20u);  // the random missions do exercise MC/DC
+}
+
+std::string run_tests_command(const std::string& mission, const std::filesystem::path& out,
+                              int& exit_code) {
+  const CliRun run = run_uabt_in((source_dir() / "missions").string(),
+                                 "tests " + mission + " --out '" + out.string() + "'");
+  exit_code = run.exit_code;
+  return run.out;
+}
+
+TEST(CampaignCli, MslCuriosityGolden) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "campaign";
+  int exit_code = -1;
+  const std::string text = run_tests_command("msl_curiosity", out, exit_code);
+  EXPECT_EQ(exit_code, 0) << text;
+  const auto golden = source_dir() / "tests/campaign/golden";
+  EXPECT_EQ(text, read_all(golden / "msl_curiosity.txt"));
+  EXPECT_EQ(read_all(out / "campaign.json"), read_all(golden / "msl_curiosity_campaign.json"));
+  EXPECT_EQ(read_all(out / "navigation-02.json"),
+            read_all(golden / "msl_curiosity_navigation-02.json"));
+  EXPECT_EQ(read_all(out / "junit.xml"), read_all(golden / "msl_curiosity_junit.xml"));
+}
+
+TEST(CampaignCli, SameInputSameBytes) {
+  TempMission scratch({});
+  int code1 = -1, code2 = -1;
+  run_tests_command("planetary_landing", scratch.dir() / "one", code1);
+  run_tests_command("planetary_landing", scratch.dir() / "two", code2);
+  EXPECT_EQ(code1, 0);
+  std::size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(scratch.dir() / "one")) {
+    ++files;
+    EXPECT_EQ(read_all(e.path()), read_all(scratch.dir() / "two" / e.path().filename()))
+        << e.path().filename();
+  }
+  EXPECT_GT(files, 3u);
+}
+
+TEST(CampaignTargets, ComplementaryAtomsAreOneConditionForMcdc) {
+  // `wind < 15` and `wind >= 15` (Nominal, Hover) change together: that is still changing
+  // one condition alone, so every MC/DC target of planetary_landing is testable.
+  const load::Mission m = load(mission_dir("planetary_landing"));
+  const campaign::Campaign c = campaign::build_campaign(m, {});
+  std::size_t mcdc = 0;
+  for (std::size_t k = 0; k < c.targets.size(); ++k) {
+    EXPECT_TRUE(c.targets[k].reachable) << c.targets[k].id << ": " << c.targets[k].reason;
+    EXPECT_TRUE(c.covered[k]) << c.targets[k].id;
+    mcdc += c.targets[k].criterion == Criterion::mcdc ? 1 : 0;
+  }
+  EXPECT_EQ(mcdc, 9u);
+}
+
+TEST(CampaignTargets, BoundariesOfRealsAndIntegers) {
+  const load::Mission m = load(mission_dir("planetary_landing"));
+  const campaign::Model model(m, {Criterion::boundary});
+  std::map<std::string, std::string> witness;
+  for (const auto& t : model.targets())
+    if (t.reachable) witness[t.id] = campaign::state_json(t.witness.front());
+  // wind < 15 / wind >= 15: one scenario on the point boundary, one on each side.
+  EXPECT_EQ(witness.at("landing/boundary/wind/15/at"),
+            R"({"wind":15,"battery":0,"terrain":"flat"})");
+  EXPECT_EQ(witness.at("landing/boundary/wind/15/below"),
+            R"({"wind":1,"battery":0,"terrain":"flat"})");
+  EXPECT_EQ(witness.at("landing/boundary/wind/15/above"),
+            R"({"wind":16,"battery":0,"terrain":"flat"})");
+  // battery > 10 / battery <= 10: the last value on each side.
+  EXPECT_EQ(witness.at("landing/boundary/battery/10|11/below"),
+            R"({"wind":0,"battery":10,"terrain":"flat"})");
+  EXPECT_EQ(witness.at("landing/boundary/battery/10|11/above"),
+            R"({"wind":0,"battery":11,"terrain":"flat"})");
+  EXPECT_EQ(witness.size(), 5u);
+}
+
+TEST(CampaignTargets, StatesTheTreeNeverTicksTheNodeInAreNotReached) {
+  // The node is ticked only when x >= 2, so R1 (x < 1) is selected by no run.
+  TempMission dir({{"mission.xml", mission_with("    <Fallback>\n"
+                                                "      <ScriptCondition code=\"x &lt; 2\"/>\n"
+                                                "      <Adaptable ID=\"node\"/>\n"
+                                                "    </Fallback>")},
+                   {"domain.fret", "integer x in [0, 5]\n"},
+                   {"requirements.fret",
+                    "R1: In node if x < 1 Mission shall satisfy selected_alt = low\n"
+                    "Other: In node Mission shall satisfy selected_alt = other\n"},
+                   {"alternatives/node/low.xml", alternative_tree("low", "<AlwaysSuccess/>")},
+                   {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}});
+  const load::Mission m = load(dir.dir());
+  const campaign::Campaign c = campaign::build_campaign(m, only(Criterion::decision));
+  std::map<std::string, const campaign::Target*> by_id;
+  for (const auto& t : c.targets) by_id[t.id] = &t;
+  const campaign::Target& low = *by_id.at("node/decision/select/low");
+  EXPECT_FALSE(low.reachable);
+  EXPECT_EQ(low.reason,
+            "no run reaches it: in the 2 states tried for it, node is not ticked (1 tick, verdict "
+            "success)");
+  EXPECT_TRUE(by_id.at("node/decision/select/other")->reachable);
+  EXPECT_TRUE(c.passed());
+  for (const auto& s : c.scenarios) EXPECT_TRUE(s.problems.empty()) << s.name;
+}
+
+TEST(CampaignCoverage, ScenariosAndMonitorTraces) {
+  const auto missions = (source_dir() / "missions").string();
+  const CliRun run = run_uabt_in(missions,
+                                 "coverage msl_curiosity "
+                                 "msl_curiosity/scenarios/dusty_start.json");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out,
+            "msl_curiosity: 1 run covers 3 of 9 reachable targets (decision 7, MC/DC 2; 0 "
+            "unreachable)\n"
+            "  msl_curiosity/scenarios/dusty_start.json: 1 observation in 58 ticks\n"
+            "missed: navigation selects on_rocks (Req2); covered by initial "
+            "{\"OnDust\":false,\"OnRocks\":true}\n"
+            "missed: navigation selects hold_position (Safe); covered by initial "
+            "{\"OnDust\":false,\"OnRocks\":false}\n"
+            "missed: the guard of Req1 (OnDust) is false; covered by initial "
+            "{\"OnDust\":false,\"OnRocks\":false}\n"
+            "missed: the guard of Req2 (OnRocks) is true; covered by initial "
+            "{\"OnDust\":false,\"OnRocks\":true}\n"
+            "missed: MC/DC of OnDust in Req1: changing it alone changes the guard and the "
+            "selected alternative; covered by initial {\"OnDust\":false,\"OnRocks\":false} and "
+            "{\"OnDust\":true,\"OnRocks\":false}\n"
+            "missed: MC/DC of OnRocks in Req2: changing it alone changes the guard and the "
+            "selected alternative; covered by initial {\"OnDust\":false,\"OnRocks\":false} and "
+            "{\"OnDust\":false,\"OnRocks\":true}\n");
+  // A monitor trace: every tick's state counts; terrain changes mid-drive.
+  TempMission scratch({});
+  const auto trace = scratch.dir() / "trace.jsonl";
+  const CliRun recorded =
+      run_uabt_in(missions,
+                  "run msl_curiosity --scenario msl_curiosity/scenarios/rocks_mid_drive.json "
+                  "--monitor-trace '" +
+                      trace.string() + "'");
+  ASSERT_TRUE(std::filesystem::exists(trace)) << recorded.out;
+  const CliRun traced =
+      run_uabt_in(missions, "coverage msl_curiosity '" + trace.string() + "' --format json");
+  const auto j = nlohmann::json::parse(traced.out);
+  EXPECT_EQ(j["summary"]["covered"], 6);
+  EXPECT_EQ(j["summary"]["reachable"], 9);
+  for (const auto& t : j["targets"])
+    if (t["id"] == "navigation/decision/select/on_rocks") {
+      EXPECT_EQ(t["covered"], true);
+    }
+}
+
+TEST(CampaignCli, JunitHasOneTestcasePerScenario) {
+  TempMission scratch({});
+  int exit_code = -1;
+  run_tests_command("planetary_landing", scratch.dir(), exit_code);
+  const std::string junit = read_all(scratch.dir() / "junit.xml");
+  std::size_t cases = 0, scenarios = 0;
+  for (std::size_t at = junit.find("<testcase"); at != std::string::npos;
+       at = junit.find("<testcase", at + 1))
+    ++cases;
+  for (const auto& e : std::filesystem::directory_iterator(scratch.dir()))
+    if (e.path().filename().string().starts_with("landing-")) ++scenarios;
+  EXPECT_EQ(cases, scenarios);
+  EXPECT_EQ(scenarios, 9u);
+  EXPECT_NE(junit.find("tests=\"9\" failures=\"0\""), std::string::npos) << junit;
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+TEST(CampaignCoverage, AScenarioThatDoesNotFitTheMissionIsRefusedWithItsPosition) {
+  TempMission scratch(
+      std::map<std::string, std::string>{{"bad.json", "{\"initial\": {\"OnDust\": 3}}\n"}});
+  const CliRun run =
+      run_uabt_in((source_dir() / "missions").string(),
+                  "coverage msl_curiosity '" + (scratch.dir() / "bad.json").string() + "'");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out, (scratch.dir() / "bad.json").string() +
+                         ":1:24: error: OnDust = 3 is not a boolean (true or false) (declared "
+                         "boolean at domain.fret:2:9)\n");
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
+  // blackboard_defects reads target_range before anything writes it: no run reaches sampling.
+  TempMission scratch({});
+  const CliRun run = run_uabt_in(
+      (source_dir() / "missions").string(),
+      "tests blackboard_defects --criterion decision --out '" + scratch.dir().string() + "'");
+  EXPECT_NE(run.out.find("unreachable: sampling selects scoop (Sand): no run reaches it: in the 2 "
+                         "states tried for it, sampling is not ticked (1 tick, verdict error: "
+                         "blackboard_defects/mission.xml:14:7: ScriptCondition 'in_reach': "
+                         "undefined blackboard key 'target_range'"),
+            std::string::npos)
+      << run.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
