@@ -81,7 +81,10 @@ void register_gate(CLI::App& app, int& exit_code) {
           outcome.report.findings, outcome.report.compiled_tree_file,
           relative_path(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
                         outcome.mission->dir));
+    // The test campaign for the testbed, beside the reports (never a finding).
+    gate::add_test_campaign(outcome, options, "tests/");
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
+    gate::write_test_campaign(outcome, std::filesystem::path(args->out) / "tests");
     if (running)
       gate::write_merged_mission(*outcome.mission, std::filesystem::path(args->out) / "merged");
     exit_code = write_findings(outcome.report, args->format, args->output);
