@@ -55,6 +55,28 @@ std::string ticks_text(std::uint64_t ticks) {
 
 }  // namespace
 
+std::string Change::text() const {
+  auto name = [](const std::string& alternative) {
+    return alternative.empty() ? std::string("no alternative") : alternative;
+  };
+  return "node " + adaptable + " moves from " + name(from) + " to " + name(to);
+}
+
+std::vector<Change> behaviour_changes(const verify::Impact& impact) {
+  std::vector<Change> out;
+  for (const auto& node : impact.nodes)
+    for (const auto& change : node.changes)
+      if (!change.example.empty())
+        out.push_back({node.adaptable, change.from, change.to, change.example});
+  return out;
+}
+
+std::size_t Campaign::change_scenarios() const {
+  std::size_t n = 0;
+  for (const auto& s : scenarios) n += !s.change.empty();
+  return n;
+}
+
 bool Campaign::passed() const {
   for (const auto& s : scenarios)
     if (!s.problems.empty()) return false;
@@ -103,6 +125,52 @@ State other_variables(const load::Mission& mission, const std::set<std::string>&
   return out;
 }
 
+// Writes the scenario's file (its description prefixed, `initial` in the domain's order) and
+// replays it until every node of `nodes` has selected.
+void replay(const load::Mission& mission, const Replayer& replayer, const Options& options,
+            State initial, const std::set<std::string>& nodes, Scenario& s) {
+  s.description = "Test campaign: " + s.description;
+  Json j_scenario = Json::object();
+  j_scenario["description"] = s.description;
+  j_scenario["max_ticks"] = options.max_ticks;
+  j_scenario["initial"] = Json::parse(state_json(in_domain_order(mission, std::move(initial))));
+  s.json = j_scenario.dump(2) + "\n";
+  try {
+    s.run = replayer.run(s.json, s.name + ".json", nodes);
+  } catch (const std::exception& e) {
+    s.problems.push_back(std::string("the scenario does not run: ") + e.what());
+  }
+}
+
+// Why a run did not select `want` at `adaptable` ("" when it did; `seen` is then its
+// observation).
+std::string selection_problem(const RunRecord& run, const std::string& adaptable,
+                              const std::string& want, const Observation*& seen) {
+  seen = nullptr;
+  for (const auto& o : run.observations)
+    if (o.adaptable == adaptable) {
+      seen = &o;
+      break;
+    }
+  if (seen == nullptr)
+    return adaptable + " is not ticked (" + ticks_text(run.ticks) + ", verdict " + run.verdict +
+           (run.error.empty() ? "" : ": " + run.error) + ")";
+  if (seen->alternative != want)
+    return adaptable + " selected " + (seen->alternative.empty() ? "nothing" : seen->alternative) +
+           " at tick " + std::to_string(seen->tick) + ", expected " +
+           (want.empty() ? "nothing" : want);
+  return "";
+}
+
+// What a scenario does not set: each node's default state, then a value of every other
+// declared variable.
+State filler_state(const load::Mission& mission, const Model& model) {
+  State filler;
+  for (std::size_t k = 0; k < model.nodes(); ++k) set_missing(filler, model.default_state(k));
+  set_missing(filler, other_variables(mission, names_of(filler)));
+  return filler;
+}
+
 struct Round {
   std::vector<Scenario> scenarios;
   // (node, state index, why) of each planned state whose run did not reach its purpose
@@ -120,13 +188,11 @@ Round plan_round(const load::Mission& mission, const Model& model, const Replaye
   std::vector<State> defaults(n);
   std::vector<std::set<std::string>> variables(n);
   std::vector<std::vector<const Model::Pick*>> by_node(n);
-  std::set<std::string> all_variables;
   for (std::size_t k = 0; k < n; ++k) {
     defaults[k] = model.default_state(k);
     variables[k] = names_of(defaults[k]);
-    all_variables.insert(variables[k].begin(), variables[k].end());
   }
-  const State others = other_variables(mission, all_variables);
+  const State filler = filler_state(mission, model);
   for (const auto& p : picks) by_node[p.node].push_back(&p);
   std::vector<std::vector<std::size_t>> lanes;
   std::vector<std::set<std::string>> lane_vars;
@@ -162,40 +228,15 @@ Round plan_round(const load::Mission& mission, const Model& model, const Replaye
         s.purpose.insert(s.purpose.end(), p->purpose.begin(), p->purpose.end());
         planned.emplace_back(k, p);
       }
-      for (std::size_t k = 0; k < n; ++k) set_missing(initial, defaults[k]);
-      set_missing(initial, others);
-      initial = in_domain_order(mission, std::move(initial));
+      set_missing(initial, filler);
       for (std::size_t t : s.purpose)
         s.description += (s.description.empty() ? "" : "; ") + targets[t].text;
-      s.description = "Test campaign: " + s.description;
-      Json j_scenario = Json::object();
-      j_scenario["description"] = s.description;
-      j_scenario["max_ticks"] = options.max_ticks;
-      j_scenario["initial"] = Json::parse(state_json(initial));
-      s.json = j_scenario.dump(2) + "\n";
-      try {
-        s.run = replayer.run(s.json, s.name + ".json", purpose_nodes);
-      } catch (const std::exception& e) {
-        s.problems.push_back(std::string("the scenario does not run: ") + e.what());
-      }
+      replay(mission, replayer, options, std::move(initial), purpose_nodes, s);
       for (const auto& [k, p] : planned) {
-        const Observation* seen = nullptr;
-        for (const auto& o : s.run.observations)
-          if (o.adaptable == model.adaptable(k)) {
-            seen = &o;
-            break;
-          }
         const std::string want = model.expected(k, p->state);
-        std::string problem;
-        if (seen == nullptr)
-          problem = model.adaptable(k) + " is not ticked (" + ticks_text(s.run.ticks) +
-                    ", verdict " + s.run.verdict + (s.run.error.empty() ? "" : ": " + s.run.error) +
-                    ")";
-        else if (seen->alternative != want)
-          problem = model.adaptable(k) + " selected " +
-                    (seen->alternative.empty() ? "nothing" : seen->alternative) + " at tick " +
-                    std::to_string(seen->tick) + ", expected " + (want.empty() ? "nothing" : want);
-        else if (model.expected(k, seen->state) != want)
+        const Observation* seen = nullptr;
+        std::string problem = selection_problem(s.run, model.adaptable(k), want, seen);
+        if (problem.empty() && model.expected(k, seen->state) != want)
           problem = model.adaptable(k) + " selected in another state than planned";
         if (problem.empty()) continue;
         s.problems.push_back(problem);
@@ -241,6 +282,26 @@ Campaign build_campaign(const load::Mission& mission, const Options& options) {
     const std::string base = s.name.substr(0, s.name.rfind('-'));
     s.name = numbered(base, ++next[base], per_base[base]);
     s.run.source = s.name + ".json";
+  }
+  // The behaviour changes of an uplink, one scenario each, kept even when the run does not
+  // show the change (its problem says what the testbed will see instead).
+  const State filler = filler_state(mission, model);
+  std::map<std::string, std::size_t> changes_per_node;
+  for (const auto& change : options.changes) ++changes_per_node[change.adaptable];
+  std::map<std::string, std::size_t> next_change;
+  for (const auto& change : options.changes) {
+    Scenario s;
+    s.name = numbered(change.adaptable + "-change", ++next_change[change.adaptable],
+                      changes_per_node[change.adaptable]);
+    s.change = change.text();
+    s.description = "behaviour change: " + s.change;
+    State initial = change.state;
+    set_missing(initial, filler);
+    replay(mission, replayer, options, std::move(initial), {change.adaptable}, s);
+    const Observation* seen = nullptr;
+    const std::string problem = selection_problem(s.run, change.adaptable, change.to, seen);
+    if (!problem.empty()) s.problems.push_back(problem);
+    c.scenarios.push_back(std::move(s));
   }
   std::vector<RunRecord> runs;
   for (const auto& s : c.scenarios) runs.push_back(s.run);
@@ -330,8 +391,10 @@ std::string campaign_text(const Campaign& campaign) {
                     " scenarios cover " + std::to_string(c.covered) + " of " +
                     std::to_string(c.reachable) + " reachable targets\n";
   for (const auto& s : campaign.scenarios) {
-    out += "  " + s.name + ".json: " + std::to_string(s.purpose.size()) +
-           (s.purpose.size() == 1 ? " target, " : " targets, ") +
+    out += "  " + s.name + ".json: " +
+           (s.change.empty() ? std::to_string(s.purpose.size()) +
+                                   (s.purpose.size() == 1 ? " target, " : " targets, ")
+                             : "behaviour change: " + s.change + ", ") +
            (s.problems.empty() ? "reached at tick " + std::to_string(s.run.ticks) : "not reached") +
            "\n";
     for (const auto& p : s.problems) out += "    " + p + "\n";
@@ -357,7 +420,8 @@ std::string campaign_json(const Campaign& campaign) {
                   {"reachable", c.reachable},
                   {"unreachable", c.targets - c.reachable},
                   {"covered", c.covered},
-                  {"scenarios", campaign.scenarios.size()}};
+                  {"scenarios", campaign.scenarios.size()},
+                  {"behaviour_change_scenarios", campaign.change_scenarios()}};
   std::vector<Json> by(campaign.targets.size(), Json::array());
   for (const auto& s : campaign.scenarios)
     for (std::size_t t : s.purpose) by[t].push_back(s.name + ".json");
@@ -375,6 +439,7 @@ std::string campaign_json(const Campaign& campaign) {
     Json purpose = Json::array();
     for (std::size_t t : s.purpose) purpose.push_back(campaign.targets[t].id);
     e["purpose"] = purpose;
+    if (!s.change.empty()) e["behaviour_change"] = s.change;
     e["reached"] = s.problems.empty();
     e["ticks"] = s.run.ticks;
     e["problems"] = s.problems;

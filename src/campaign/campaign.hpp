@@ -11,6 +11,7 @@
 #include "base/value.hpp"
 #include "compile/compile.hpp"
 #include "load/mission.hpp"
+#include "verify/impact.hpp"
 
 namespace uabt::campaign {
 
@@ -110,8 +111,20 @@ class Replayer {
   std::unique_ptr<Impl> impl_;
 };
 
+// A state in which an uplink changes what a node selects: the campaign runs one scenario for
+// each, beside its targets, so that a testbed runs exactly what the uplink changes.
+struct Change {
+  std::string adaptable;
+  std::string from, to;      // alternatives before and after the uplink; "" = none (the node fails)
+  State state;               // a state in which the node moves
+  std::string text() const;  // "node navigation moves from on_dust to on_mud"
+};
+// One change per (node, from, to) of an uplink's impact that has an example state.
+std::vector<Change> behaviour_changes(const verify::Impact& impact);
+
 struct Options {
   std::set<Criterion> criteria{Criterion::decision, Criterion::mcdc, Criterion::boundary};
+  std::vector<Change> changes;
   compile::Options compile;
   std::int64_t max_ticks = 100;
 };
@@ -121,6 +134,7 @@ struct Scenario {
   std::string description;
   std::string json;                   // the file
   std::vector<std::size_t> purpose;   // targets it was written for
+  std::string change;                 // the behaviour change it shows (Change::text), or ""
   RunRecord run;                      // its replay
   std::vector<std::string> problems;  // purposes the replay did not reach, and why
 };
@@ -128,9 +142,10 @@ struct Scenario {
 struct Campaign {
   std::string mission;
   std::vector<Target> targets;
-  std::vector<bool> covered;  // per target, by the replays
-  std::vector<Scenario> scenarios;
+  std::vector<bool> covered;        // per target, by the replays
+  std::vector<Scenario> scenarios;  // the targets' scenarios, then the behaviour changes'
   std::vector<std::pair<std::string, std::string>> skipped;  // adaptable, reason
+  std::size_t change_scenarios() const;
   bool passed() const;  // every scenario reached its purpose, every reachable target covered
 };
 

@@ -20,7 +20,8 @@ void register_gate(CLI::App& app, int& exit_code) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
-      "gate", "The pre-uplink gate: verify, compile, conform, and write every report");
+      "gate",
+      "The pre-uplink gate: verify, compile, conform, and write every report and OUT/tests/");
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
       ->check(CLI::ExistingPath);
@@ -35,7 +36,8 @@ void register_gate(CLI::App& app, int& exit_code) {
                   "solver time limit per query (inconclusive fails)");
   cmd->add_option("--uplink", args->uplink,
                   "an uplink package to merge and gate before it is sent; the reports add where "
-                  "each requirement went and the behaviour change, OUT/merged/ the merged mission")
+                  "each requirement went and the behaviour change, OUT/merged/ the merged mission, "
+                  "OUT/tests/ its test campaign with a scenario per behaviour change")
       ->check(CLI::ExistingDirectory);
   add_findings_output_options(*cmd, args->format, args->output);
   add_source_root_option(*cmd, args->source_root);
@@ -81,7 +83,10 @@ void register_gate(CLI::App& app, int& exit_code) {
           outcome.report.findings, outcome.report.compiled_tree_file,
           relative_path(std::filesystem::path(args->out) / outcome.report.compiled_tree_file,
                         outcome.mission->dir));
+    // The test campaign for the testbed, beside the reports (never a finding).
+    gate::add_test_campaign(outcome, options, "tests/");
     report::write_reports(outcome.report, args->out, outcome.compiled_xml);
+    gate::write_test_campaign(outcome, std::filesystem::path(args->out) / "tests");
     if (running)
       gate::write_merged_mission(*outcome.mission, std::filesystem::path(args->out) / "merged");
     exit_code = write_findings(outcome.report, args->format, args->output);

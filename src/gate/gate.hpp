@@ -1,7 +1,10 @@
 #pragma once
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "campaign/campaign.hpp"
 #include "compile/compile.hpp"
 #include "conform/conform.hpp"
 #include "load/mission.hpp"
@@ -39,6 +42,7 @@ struct Outcome {
   std::string compiled_xml;  // "" when the mission did not compile
   conform::Result conformance;
   report::ReportInput report;
+  std::optional<campaign::Campaign> campaign;  // set by add_test_campaign when it built one
 
   bool passed() const { return report.passed(); }
 };
@@ -59,5 +63,16 @@ Outcome check_mission(load::Mission mission, const Options& options,
 // A failing gate keeps the candidate as compiled.rejected.xml: the report and what it says
 // about the tree point there. Call after adding findings; nothing when the outcome passes.
 void keep_rejected_candidate(Outcome& outcome);
+
+// The test campaign of a gated mission (DESIGN §13), for the testbed: built when the gate
+// passed, with one more scenario per behaviour change of an uplink (report.uplink), and
+// summarised in report.campaign with its scenarios under `directory` (as the report names
+// it). Information only: it adds no finding and never changes the verdict.
+void add_test_campaign(Outcome& outcome, const Options& options, const std::string& directory);
+
+// Writes the campaign's files (scenarios, campaign.json, junit.xml) to `dir`; files an earlier
+// run left there and this one did not write are removed, so that the directory always
+// describes one run (and goes when there is no campaign).
+void write_test_campaign(const Outcome& outcome, const std::filesystem::path& dir);
 
 }  // namespace uabt::gate

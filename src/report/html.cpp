@@ -295,6 +295,7 @@ std::string to_html(const ReportInput& input) {
   out += "<nav><a href=\"#findings\">Findings</a>";
   if (input.uplink) out += "<a href=\"#uplink\">Uplink</a>";
   if (input.proofs && !input.proofs->answers.empty()) out += "<a href=\"#proofs\">Proofs</a>";
+  if (input.campaign) out += "<a href=\"#tests\">Test campaign</a>";
   for (std::size_t i = 0; i < shown.size(); ++i)
     out += "<a href=\"#" + anchor(i, shown[i]) + "\">" + html_escape(shown[i]) + "</a>";
   out += "</nav>\n<main>\n";
@@ -302,6 +303,15 @@ std::string to_html(const ReportInput& input) {
   findings_section(input, shown, out);
   if (input.uplink) out += detail::uplink_html(*input.uplink);
   if (input.proofs) out += proofs_html(*input.proofs);
+  if (input.campaign) {
+    out += "<section id=\"tests\">\n<h2>Test campaign</h2>\n<p>" +
+           html_escape(input.campaign->headline()) + "</p>\n";
+    const auto details = input.campaign->details();
+    if (!details.empty()) out += "<ul>\n";
+    for (const auto& line : details) out += "<li>" + html_escape(line) + "</li>\n";
+    if (!details.empty()) out += "</ul>\n";
+    out += "</section>\n";
+  }
   for (std::size_t i = 0; i < shown.size(); ++i) {
     out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " + code(shown[i]) +
            "</h2>\n";

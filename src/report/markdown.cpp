@@ -162,6 +162,12 @@ std::string to_markdown(const ReportInput& input) {
   }
   if (input.uplink) out += detail::uplink_markdown(*input.uplink);
   if (input.proofs) out += proofs_markdown(*input.proofs);
+  if (input.campaign) {
+    out += "\n### Test campaign\n\n" + md(input.campaign->headline()) + "\n";
+    const auto details = input.campaign->details();
+    if (!details.empty()) out += "\n";
+    for (const auto& line : details) out += "- " + md(line) + "\n";
+  }
   for (const auto& coverage : input.coverage) coverage_section(coverage, out);
   return out;
 }

@@ -30,4 +30,28 @@ std::string ReportInput::banner() const {
   return out;
 }
 
+std::string TestCampaign::headline() const {
+  if (!not_built.empty()) return "no test campaign: " + not_built;
+  auto plural = [](std::size_t n, const char* word) {
+    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+  };
+  std::string out = directory + ": " + plural(scenarios, "scenario");
+  if (change_scenarios > 0)
+    out += " (" + std::to_string(change_scenarios) + " for " +
+           (change_scenarios == 1 ? "a behaviour change" : "behaviour changes") + ")";
+  return out + (scenarios == 1 ? " covers " : " cover ") + std::to_string(covered) + " of " +
+         plural(reachable, "reachable target") + "; " + plural(targets, "target") + ", " +
+         std::to_string(targets - reachable) + " unreachable";
+}
+
+std::vector<std::string> TestCampaign::details() const {
+  std::vector<std::string> out;
+  for (const auto& [target, reason] : unreachable)
+    out.push_back("unreachable: " + target + ": " + reason);
+  for (const auto& [node, reason] : skipped)
+    out.push_back("no targets for " + node + ": " + reason);
+  for (const auto& problem : problems) out.push_back("not reached: " + problem);
+  return out;
+}
+
 }  // namespace uabt::report

@@ -36,6 +36,23 @@ struct UplinkChange {
   std::vector<ContractChange> contract;  // added, restated, weakened, removed, in that order
 };
 
+// What the gate says about the test campaign it wrote beside the reports (DESIGN §13):
+// information for the testbed, never part of the verdict.
+struct TestCampaign {
+  std::string directory;  // where the scenarios are, relative to the report ("tests/")
+  std::size_t targets = 0, reachable = 0, covered = 0, scenarios = 0, change_scenarios = 0;
+  std::vector<std::pair<std::string, std::string>> unreachable;  // target, reason
+  std::vector<std::pair<std::string, std::string>> skipped;      // adaptable node, reason
+  std::vector<std::string> problems;  // "scenario.json: why it did not reach its purpose"
+  std::string not_built;              // why there is no campaign ("" when there is one)
+  // "tests/: 12 scenarios (1 for a behaviour change) cover 30 of 30 reachable targets; 32
+  // targets, 2 unreachable", or why there is none: the first line of every format's section.
+  std::string headline() const;
+  // The items under it: "unreachable: TEXT: REASON", "no targets for NODE: REASON",
+  // "not reached: SCENARIO: WHY".
+  std::vector<std::string> details() const;
+};
+
 // Everything a report shows about one mission, gathered by the gate (or by `verify`).
 struct ReportInput {
   std::string tool_version;
@@ -56,8 +73,9 @@ struct ReportInput {
   // The loaded mission (requirements, domain, guards), for pictures and requirement text.
   // May be null when the mission could not be loaded at all.
   const load::Mission* mission = nullptr;
-  std::optional<UplinkChange> uplink;  // set by `gate --uplink`
-  std::optional<Proofs> proofs;        // set when the mission states guarantees
+  std::optional<UplinkChange> uplink;    // set by `gate --uplink`
+  std::optional<Proofs> proofs;          // set when the mission states guarantees
+  std::optional<TestCampaign> campaign;  // set by `gate` when it writes the test campaign
 
   bool passed() const { return !has_errors(findings); }
   // "pass", "fail", or "pass with 1 guarantee retired" (and/or weakened) when an uplink gives
