@@ -322,8 +322,8 @@ Campaign build_campaign(const load::Mission& mission, const Options& options) {
 std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& campaign) {
   std::vector<std::pair<std::string, std::string>> files;
   for (const auto& s : campaign.scenarios) files.emplace_back(s.name + ".json", s.json);
-  files.emplace_back("campaign.json", campaign_json(campaign));
-  files.emplace_back("junit.xml", campaign_junit(campaign));
+  files.emplace_back(kSummaryFile, campaign_json(campaign));
+  files.emplace_back(kJunitFile, campaign_junit(campaign));
   return files;
 }
 

@@ -152,6 +152,10 @@ struct Campaign {
 // Plans, writes (in memory) and replays the campaign.
 Campaign build_campaign(const load::Mission& mission, const Options& options);
 
+// The campaign's summary and its JUnit run, written beside the scenarios.
+inline constexpr const char* kSummaryFile = "campaign.json";
+inline constexpr const char* kJunitFile = "junit.xml";
+
 // The files of a campaign: <name>.json per scenario, campaign.json, junit.xml.
 std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& campaign);
 std::string campaign_text(const Campaign& campaign);

@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 
 #include "base/diagnostics.hpp"
@@ -8,6 +10,39 @@
 #include "runtime/scenario.hpp"
 
 namespace uabt::cli {
+
+namespace {
+
+// The runs a command line names: a file as given; a folder (a campaign `uabt tests` wrote, a
+// testbed's traces) as its .json and .jsonl files in name order, without the campaign's own
+// summary.
+std::vector<std::string> expand_runs(const std::vector<std::string>& arguments,
+                                     std::vector<std::string>& errors) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  for (const auto& argument : arguments) {
+    if (!fs::is_directory(argument)) {
+      files.push_back(argument);
+      continue;
+    }
+    std::vector<std::string> inside;
+    for (const auto& entry : fs::directory_iterator(argument)) {
+      const fs::path& path = entry.path();
+      if (!entry.is_regular_file() || path.filename() == campaign::kSummaryFile) continue;
+      if (path.extension() == ".json" || path.extension() == ".jsonl")
+        inside.push_back(path.generic_string());
+    }
+    std::sort(inside.begin(), inside.end());
+    if (inside.empty())
+      errors.push_back(argument +
+                       ": error: no scenario (.json) or monitor trace (.jsonl) in this "
+                       "folder");
+    files.insert(files.end(), inside.begin(), inside.end());
+  }
+  return files;
+}
+
+}  // namespace
 
 // What scenarios (replayed) or monitor traces covered of the campaign's targets, and a
 // scenario's initial state for each target they missed.
@@ -24,9 +59,10 @@ void register_coverage(CLI::App& app, int& exit_code) {
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("SCENARIO", args->runs,
-                  "scenario JSON files (replayed) or monitor traces (JSON lines)")
+                  "scenario JSON files (replayed), monitor traces (JSON lines), or folders of "
+                  "them (a campaign from uabt tests)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingPath);
   cmd->add_option("--format", args->format, "text | json")->check(CLI::IsMember({"text", "json"}));
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
@@ -43,7 +79,13 @@ void register_coverage(CLI::App& app, int& exit_code) {
       report.targets = model.targets();
       report.skipped = model.skipped();
       std::vector<std::string> errors;
-      for (const auto& file : args->runs) {
+      for (const auto& file : expand_runs(args->runs, errors)) {
+        if (std::filesystem::path(file).filename() == campaign::kSummaryFile) {
+          errors.push_back(file +
+                           ": error: this is the summary `uabt tests` writes beside its "
+                           "scenarios, not a scenario: name the scenarios or their folder");
+          continue;
+        }
         std::string error;
         const auto content = read_text_file(file, error);
         if (!content) {

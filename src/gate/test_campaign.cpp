@@ -53,7 +53,7 @@ void write_test_campaign(const Outcome& outcome, const std::filesystem::path& di
   for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
     const auto name = entry.path().filename().string();
     const auto extension = entry.path().extension();
-    if ((extension == ".json" || name == "junit.xml") && !written.count(name))
+    if ((extension == ".json" || name == campaign::kJunitFile) && !written.count(name))
       std::filesystem::remove(entry.path(), error);
   }
   if (written.empty()) std::filesystem::remove(dir, error);  // only when empty

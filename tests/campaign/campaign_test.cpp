@@ -405,6 +405,34 @@ TEST(CampaignCoverage, AScenarioThatDoesNotFitTheMissionIsRefusedWithItsPosition
 namespace uabt::testing {
 namespace {
 
+TEST(CampaignCoverage, AFolderFromUabtTestsIsReadAsItsScenariosWithoutItsSummary) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "campaign";
+  int exit_code = -1;
+  run_tests_command("msl_curiosity", out, exit_code);
+  ASSERT_EQ(exit_code, 0);
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun folder = run_uabt_in(missions, "coverage msl_curiosity '" + out.string() + "'");
+  EXPECT_EQ(folder.exit_code, 0) << folder.out;
+  EXPECT_NE(folder.out.find("3 runs cover 9 of 9 reachable targets"), std::string::npos)
+      << folder.out;
+  // What a shell glob over the folder gives: the summary is named, not read as a scenario.
+  const CliRun summary =
+      run_uabt_in(missions, "coverage msl_curiosity '" + (out / "navigation-01.json").string() +
+                                "' '" + (out / "campaign.json").string() + "'");
+  EXPECT_EQ(summary.exit_code, 1);
+  EXPECT_EQ(summary.out, (out / "campaign.json").string() +
+                             ": error: this is the summary `uabt tests` writes beside its "
+                             "scenarios, not a scenario: name the scenarios or their folder\n");
+  std::filesystem::create_directories(scratch.dir() / "empty");
+  const CliRun empty =
+      run_uabt_in(missions, "coverage msl_curiosity '" + (scratch.dir() / "empty").string() + "'");
+  EXPECT_EQ(empty.exit_code, 1);
+  EXPECT_NE(empty.out.find("no scenario (.json) or monitor trace (.jsonl) in this folder"),
+            std::string::npos)
+      << empty.out;
+}
+
 TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
   // blackboard_defects reads target_range before anything writes it: no run reaches sampling.
   TempMission scratch({});
