@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "mission_writer.hpp"
+
 namespace uabt::testing {
 
 // A small random mission over the node kinds the symbolic engine models (Repeat at most
@@ -12,9 +14,9 @@ namespace uabt::testing {
 // SubTree, booleans A, B (B written by an action), an environment condition C, an integer x
 // in [0, 3], three actions with random world.json contracts (Act2 without one), and random
 // properties over the observables.
-class RandomMission {
+class RandomMission : public MissionWriter {
  public:
-  explicit RandomMission(unsigned seed) : rng_(seed) {
+  explicit RandomMission(unsigned seed) : MissionWriter(seed) {
     const std::string main = node(0, 3), sub = node(0, 2);
     files["mission.xml"] =
         "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
@@ -28,12 +30,7 @@ class RandomMission {
     files["requirements.fret"] = properties();
   }
 
-  std::map<std::string, std::string> files;
-  std::set<std::string> kinds;  // node kinds used
-
  private:
-  int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
-
   std::string leaf() {
     switch (pick(9)) {
       case 0: return use("AlwaysSuccess", "<AlwaysSuccess/>");
@@ -82,15 +79,6 @@ class RandomMission {
     }
   }
 
-  std::string use(const std::string& kind, std::string xml) {
-    kinds.insert(kind);
-    return xml;
-  }
-  std::string wrap(const std::string& kind, const std::string& attrs, const std::string& body) {
-    kinds.insert(kind);
-    return "<" + kind + attrs + ">" + body + "</" + kind + ">";
-  }
-
   std::string world() {
     static const char* effects[] = {"A = true", "A = false", "B = !B", "x = x &lt; 3 ? x + 1 : x",
                                     "x = 0"};
@@ -132,7 +120,6 @@ class RandomMission {
     return s;
   }
 
-  std::mt19937 rng_;
   std::set<std::string> actions_;
   int names_ = 0;
   bool repeated_ = false;

@@ -7,6 +7,8 @@
 
 #include "compile/compile.hpp"
 
+#include "mission_writer.hpp"
+
 namespace uabt::testing {
 
 // A random mission for the engines' differential sweep, wider than RandomMission: one or two
@@ -17,9 +19,10 @@ namespace uabt::testing {
 // requirements; guarantees with modes, upon/if/whenever conditions and
 // always/never/immediately/within/for/until timings. With `temporal`, the guarantees also read
 // FRET's temporal functions persisted, occurred, prevOcc and FTP (and the random choices differ).
-class SweepMission {
+class SweepMission : public MissionWriter {
  public:
-  explicit SweepMission(unsigned seed, bool temporal = false) : rng_(seed), temporal_(temporal) {
+  explicit SweepMission(unsigned seed, bool temporal = false)
+      : MissionWriter(seed), temporal_(temporal) {
     style = static_cast<compile::SelectionStyle>(pick(3));
     integer_ = pick(2);
     real_ = pick(2);
@@ -41,12 +44,9 @@ class SweepMission {
     files["requirements.fret"] = requirements();
   }
 
-  std::map<std::string, std::string> files;
   compile::SelectionStyle style;  // the gate's style for the nodes that declare none
-  std::set<std::string> kinds;    // node kinds used
 
  private:
-  int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
   template <class T>
   const T& any(const std::vector<T>& v) {
     return v[static_cast<std::size_t>(pick(static_cast<int>(v.size())))];
@@ -56,15 +56,6 @@ class SweepMission {
                               const std::string& more = "") {
     return "<root BTCPP_format=\"4\" main_tree_to_execute=\"" + id + "\">\n<BehaviorTree ID=\"" +
            id + "\">" + body + "</BehaviorTree>\n" + more + "</root>\n";
-  }
-
-  std::string use(const std::string& kind, std::string xml) {
-    kinds.insert(kind);
-    return xml;
-  }
-  std::string wrap(const std::string& kind, const std::string& attrs, const std::string& body) {
-    kinds.insert(kind);
-    return "<" + kind + attrs + ">" + body + "</" + kind + ">";
   }
 
   std::string adaptable() {
@@ -260,7 +251,6 @@ class SweepMission {
     return s;
   }
 
-  std::mt19937 rng_;
   std::set<std::string> actions_;
   std::vector<std::string> adaptable_ids_;
   int names_ = 0, adaptables_ = 1;
