@@ -385,11 +385,12 @@ Json skipped_json(const std::vector<std::pair<std::string, std::string>>& skippe
 
 std::string campaign_text(const Campaign& campaign) {
   const Counts c = count(campaign.targets, campaign.covered);
-  std::string out = campaign.mission + ": " + std::to_string(c.targets) + " targets (" +
-                    criteria_text(c) + "), " + std::to_string(c.targets - c.reachable) +
-                    " unreachable; " + std::to_string(campaign.scenarios.size()) +
-                    " scenarios cover " + std::to_string(c.covered) + " of " +
-                    std::to_string(c.reachable) + " reachable targets\n";
+  std::string out = campaign.mission + ": " + std::to_string(c.targets) + " targets" +
+                    (c.targets == 0 ? "" : " (" + criteria_text(c) + ")") + ", " +
+                    std::to_string(c.targets - c.reachable) + " unreachable; " +
+                    std::to_string(campaign.scenarios.size()) + " scenarios cover " +
+                    std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
+                    " reachable targets\n";
   for (const auto& s : campaign.scenarios) {
     out += "  " + s.name + ".json: " +
            (s.change.empty() ? std::to_string(s.purpose.size()) +
@@ -472,7 +473,7 @@ std::string coverage_text(const CoverageReport& report) {
   std::string out = report.mission + ": " + std::to_string(report.runs.size()) +
                     (report.runs.size() == 1 ? " run covers " : " runs cover ") +
                     std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
-                    " reachable targets (" + criteria_text(c) + "; " +
+                    " reachable targets (" + (c.targets == 0 ? "" : criteria_text(c) + "; ") +
                     std::to_string(c.targets - c.reachable) + " unreachable)\n";
   for (const auto& r : report.runs) {
     out += "  " + r.source + ": " + std::to_string(r.observations.size()) +

@@ -433,6 +433,33 @@ TEST(CampaignCoverage, AFolderFromUabtTestsIsReadAsItsScenariosWithoutItsSummary
       << empty.out;
 }
 
+TEST(CampaignCli, ANodeTooLargeToEnumerateIsNamedAndGetsNoTargets) {
+  // 26 booleans: more states than the campaign enumerates; it says so rather than hanging.
+  std::string domain = "boolean b0";
+  std::string requirements;
+  for (int i = 1; i < 26; ++i) domain += ", b" + std::to_string(i);
+  for (int i = 0; i < 13; ++i)
+    requirements += "R" + std::to_string(i) + ": In node if b" + std::to_string(2 * i) + " & !b" +
+                    std::to_string(2 * i + 1) + " Mission shall satisfy selected_alt = a" +
+                    std::to_string(i) + "\n";
+  requirements += "Default: In node Mission shall satisfy selected_alt = fallback\n";
+  std::map<std::string, std::string> files = {
+      {"mission.xml", mission_with("    <Adaptable ID=\"node\" policy=\"first\"/>")},
+      {"domain.fret", domain + "\n"},
+      {"requirements.fret", requirements},
+      {"alternatives/node/fallback.xml", alternative_tree("fallback", "<AlwaysSuccess/>")}};
+  for (int i = 0; i < 13; ++i)
+    files["alternatives/node/a" + std::to_string(i) + ".xml"] =
+        alternative_tree("a" + std::to_string(i), "<AlwaysSuccess/>");
+  TempMission m(files);
+  const CliRun run = run_uabt_in(m.dir().string(), "tests . --out campaign");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find(": 0 targets, 0 unreachable; 0 scenarios cover 0 of 0 reachable targets\n"
+                         "no targets for node: the guards range over more than 2^24 states\n"),
+            std::string::npos)
+      << run.out;
+}
+
 TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
   // blackboard_defects reads target_range before anything writes it: no run reaches sampling.
   TempMission scratch({});
