@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "base/diagnostics.hpp"
 #include "base/files.hpp"
@@ -40,6 +41,18 @@ std::vector<std::string> expand_runs(const std::vector<std::string>& arguments,
     files.insert(files.end(), inside.begin(), inside.end());
   }
   return files;
+}
+
+// A monitor trace is one JSON object a line, each a tick (or a selection header); a scenario
+// is one object over the whole file, so its first line alone is not a complete object.
+bool is_monitor_trace(const std::string& content) {
+  const std::size_t begin = content.find_first_not_of(" \t\r\n");
+  if (begin == std::string::npos) return false;
+  const std::size_t end = content.find('\n', begin);
+  const auto line = nlohmann::json::parse(
+      content.substr(begin, end == std::string::npos ? std::string::npos : end - begin), nullptr,
+      false);
+  return line.is_object() && (line.contains("tick") || line.contains("selection"));
 }
 
 }  // namespace
@@ -92,11 +105,7 @@ void register_coverage(CLI::App& app, int& exit_code) {
           errors.push_back(file + ": error: " + error);
           continue;
         }
-        // A scenario is one JSON object; a monitor trace is one object a line.
-        const bool trace = content->find("\"tick\"") != std::string::npos &&
-                           content->find("\"state\"") != std::string::npos &&
-                           content->find("\"initial\"") == std::string::npos;
-        if (trace) {
+        if (is_monitor_trace(*content)) {
           std::vector<Finding> findings;
           campaign::RunRecord run = campaign::observe_trace(*mission, *content, file, findings);
           if (!findings.empty()) {
