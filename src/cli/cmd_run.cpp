@@ -140,6 +140,11 @@ void register_run(CLI::App& app, int& exit_code) {
           std::cerr << "  note: script `" << run.error->script << "`\n";
       }
       exit_code = run.verdict == "success" && !run.guarantees_failed ? kExitPass : kExitFail;
+    } catch (const manager::NotAdmitted& e) {
+      TextOptions text_options;
+      text_options.path_prefix = path_prefix_for(args->mission);
+      std::cerr << "uabt: " << e.what() << ":\n" << format_text(e.findings, text_options);
+      exit_code = kExitFail;
     } catch (const runtime::ScenarioError& e) {
       std::cerr << e.what() << "\n";  // file:line:col: error: … lines
       exit_code = kExitFail;

@@ -130,10 +130,7 @@ ManagerRun BehaviorTreeManager::run() {
   // goes through the whole gate below, proofs included.
   Version running =
       admitted(gate::check_mission(load_version(dir_, accepted), options_.gate, "runtime"));
-  if (!running.outcome.passed())
-    throw std::runtime_error(
-        "the mission does not pass the gate's checks; only a verified version runs:\n" +
-        format_text(running.outcome.report.findings));
+  if (!running.outcome.passed()) throw NotAdmitted(running.outcome.report.findings);
 
   check_against_mission(*running.outcome.mission);
 

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,17 +54,27 @@ struct ManagerRun {
 // traced; accepted, only the trees that changed are swapped in between two ticks (a running
 // alternative inside a changed selection tree is halted first), so branches that did not
 // change keep running.
+// The mission a run would start from does not pass the gate's checks: only a verified version
+// runs. Carries the findings (mission-relative), for the caller to print as its user opens them.
+struct NotAdmitted : std::runtime_error {
+  explicit NotAdmitted(std::vector<Finding> why)
+      : std::runtime_error(
+            "the mission does not pass the gate's checks; only a verified version "
+            "runs"),
+        findings(std::move(why)) {}
+  std::vector<Finding> findings;
+};
+
 class BehaviorTreeManager {
  public:
-  // Throws std::runtime_error when the mission itself does not pass the gate: only a
-  // verified version may run.
   BehaviorTreeManager(std::filesystem::path mission_dir, Scenario scenario,
                       ManagerOptions options = {});
 
   // Extra uplinks: (tick, package directory) as given on the command line.
   void add_uplink(std::int64_t tick, const std::string& package);
 
-  // Throws ScenarioError when the scenario does not fit the mission.
+  // Throws NotAdmitted when the mission itself does not pass the gate's checks, ScenarioError
+  // when the scenario does not fit the mission.
   ManagerRun run();
 
  private:

@@ -405,4 +405,17 @@ TEST(Diagnostics, NonAsciiCharacterNamesItselfAndItsAsciiForm) {
       << run.out;
 }
 
+TEST(Diagnostics, ARunRefusedByTheGatesChecksNamesTheFindingsAsTheyOpen) {
+  // From the repository's root, as a person types it: every finding's file opens from here.
+  const UabtRun run = uabt_in(UABT_SOURCE_DIR,
+                              "run missions/msl_curiosity_paper --scenario "
+                              "missions/msl_curiosity/scenarios/dusty_start.json");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.out.find("uabt: the mission does not pass the gate's checks; only a verified "
+                         "version runs:\nmissions/msl_curiosity_paper/requirements.fret:4:7: "
+                         "error: no requirement of navigation holds in some states"),
+            std::string::npos)
+      << run.out;
+}
+
 }  // namespace

@@ -141,6 +141,13 @@ TEST(Manager, RefusesToRunAMissionThatFailsTheGate) {
   Scenario scenario = load_scenario(curiosity() / "scenarios" / "dusty_start.json");
   BehaviorTreeManager manager(uabt::testing::mission_dir("msl_curiosity_paper"), scenario);
   EXPECT_THROW(manager.run(), std::runtime_error);
+  // The refusal carries the findings, mission-relative, for the caller to print.
+  try {
+    manager.run();
+  } catch (const NotAdmitted& e) {
+    ASSERT_FALSE(e.findings.empty());
+    EXPECT_EQ(e.findings.front().location.file, "requirements.fret");
+  }
 }
 
 TEST(Manager, TraceIsJsonLinesWithTheDesignFields) {

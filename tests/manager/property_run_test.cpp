@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "base/diagnostics.hpp"
 #include "manager/manager.hpp"
 #include "style_missions.hpp"
 #include "temp_mission.hpp"
@@ -245,8 +246,8 @@ TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
   try {
     run_in(m.dir(), "s.json", compile::SelectionStyle::sequence);
     FAIL() << "the gate passed";
-  } catch (const std::runtime_error& e) {
-    const std::string text = e.what();
+  } catch (const uabt::manager::NotAdmitted& e) {
+    const std::string text = format_text(e.findings);
     EXPECT_NE(text.find("requirements.fret:2:39: error: 'Dril.running' is not an observable of "
                         "the run"),
               std::string::npos)
