@@ -7,7 +7,10 @@
 #include <tuple>
 
 #include "base/number_text.hpp"
+#include "campaign/guarantee.hpp"
+#include "campaign/world_play.hpp"
 #include "monitor/trace.hpp"
+#include "prove/outcome.hpp"
 #include "report/reports.hpp"
 #include "runtime/scenario.hpp"
 
@@ -133,7 +136,11 @@ void replay(const load::Mission& mission, const Replayer& replayer, const Option
   Json j_scenario = Json::object();
   j_scenario["description"] = s.description;
   j_scenario["max_ticks"] = options.max_ticks;
-  j_scenario["initial"] = Json::parse(state_json(in_domain_order(mission, std::move(initial))));
+  // In world.json's world: an initial state it allows, its actions' contracts.
+  if (options.world != nullptr)
+    initial = world_initial(mission, *options.world, std::move(initial));
+  j_scenario["initial"] = Json::parse(state_json(in_domain_order(mission, initial)));
+  if (options.world != nullptr) j_scenario["actions"] = world_actions(*options.world, initial);
   s.json = j_scenario.dump(2) + "\n";
   try {
     s.run = replayer.run(s.json, s.name + ".json", nodes);
@@ -250,7 +257,11 @@ Round plan_round(const load::Mission& mission, const Model& model, const Replaye
 
 }  // namespace
 
-Campaign build_campaign(const load::Mission& mission, const Options& options) {
+Campaign build_campaign(const load::Mission& mission, const Options& given) {
+  Options options = given;
+  std::optional<prove::WorldModel> world;
+  if (options.world == nullptr && has_world_file(mission))
+    options.world = &world.emplace(prove::mission_world(mission));
   Campaign c;
   c.mission = mission.name;
   Model model(mission, options.criteria);
@@ -316,6 +327,7 @@ Campaign build_campaign(const load::Mission& mission, const Options& options) {
                       " states tried for it, " + first_miss[k];
     }
   }
+  add_guarantee_targets(mission, replayer, options, c);
   return c;
 }
 
@@ -330,7 +342,8 @@ std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& 
 namespace {
 
 struct Counts {
-  std::size_t targets = 0, reachable = 0, covered = 0;
+  std::size_t targets = 0, reachable = 0, covered = 0, undecided = 0;
+  std::size_t unreachable() const { return targets - reachable - undecided; }
   std::map<std::string, std::size_t> by_criterion;
 };
 
@@ -339,6 +352,7 @@ Counts count(const std::vector<Target>& targets, const std::vector<bool>& covere
   for (std::size_t k = 0; k < targets.size(); ++k) {
     ++c.targets;
     ++c.by_criterion[criterion_name(targets[k].criterion)];
+    c.undecided += targets[k].undecided;
     if (!targets[k].reachable) continue;
     ++c.reachable;
     if (covered[k]) ++c.covered;
@@ -348,7 +362,7 @@ Counts count(const std::vector<Target>& targets, const std::vector<bool>& covere
 
 std::string criteria_text(const Counts& c) {
   std::string out;
-  for (const char* name : {"decision", "mcdc", "boundary"}) {
+  for (const char* name : {"decision", "mcdc", "boundary", "guarantee"}) {
     auto it = c.by_criterion.find(name);
     if (it == c.by_criterion.end()) continue;
     out += (out.empty() ? "" : ", ") + std::string(name == std::string("mcdc") ? "MC/DC" : name) +
@@ -370,6 +384,7 @@ Json target_json(const Target& t, bool covered) {
   j["criterion"] = criterion_name(t.criterion);
   j["text"] = t.text;
   j["reachable"] = t.reachable;
+  if (t.undecided) j["undecided"] = true;
   if (!t.reachable) j["reason"] = t.reason;
   j["covered"] = covered;
   return j;
@@ -387,8 +402,9 @@ std::string campaign_text(const Campaign& campaign) {
   const Counts c = count(campaign.targets, campaign.covered);
   std::string out = campaign.mission + ": " + std::to_string(c.targets) + " targets" +
                     (c.targets == 0 ? "" : " (" + criteria_text(c) + ")") + ", " +
-                    std::to_string(c.targets - c.reachable) + " unreachable; " +
-                    std::to_string(campaign.scenarios.size()) + " scenarios cover " +
+                    std::to_string(c.unreachable()) + " unreachable" +
+                    (c.undecided == 0 ? "" : ", " + std::to_string(c.undecided) + " not decided") +
+                    "; " + std::to_string(campaign.scenarios.size()) + " scenarios cover " +
                     std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
                     " reachable targets\n";
   for (const auto& s : campaign.scenarios) {
@@ -402,13 +418,16 @@ std::string campaign_text(const Campaign& campaign) {
   }
   for (std::size_t k = 0; k < campaign.targets.size(); ++k) {
     const Target& t = campaign.targets[k];
-    if (!t.reachable)
+    if (t.undecided)
+      out += "not decided: " + t.text + ": " + t.reason + "\n";
+    else if (!t.reachable)
       out += "unreachable: " + t.text + ": " + t.reason + "\n";
     else if (!campaign.covered[k])
       out += "not covered: " + t.text + "\n";
   }
   for (const auto& [node, reason] : campaign.skipped)
     out += "no targets for " + node + ": " + reason + "\n";
+  for (const auto& note : campaign.notes) out += note + "\n";
   return out;
 }
 
@@ -419,7 +438,8 @@ std::string campaign_json(const Campaign& campaign) {
   j["passed"] = campaign.passed();
   j["summary"] = {{"targets", c.targets},
                   {"reachable", c.reachable},
-                  {"unreachable", c.targets - c.reachable},
+                  {"unreachable", c.unreachable()},
+                  {"undecided", c.undecided},
                   {"covered", c.covered},
                   {"scenarios", campaign.scenarios.size()},
                   {"behaviour_change_scenarios", campaign.change_scenarios()}};
@@ -448,6 +468,7 @@ std::string campaign_json(const Campaign& campaign) {
   }
   j["scenarios"] = scenarios;
   j["skipped"] = skipped_json(campaign.skipped);
+  j["notes"] = campaign.notes;
   return j.dump(2) + "\n";
 }
 

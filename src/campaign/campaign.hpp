@@ -1,6 +1,6 @@
 #pragma once
 // The test campaign of a mission (DESIGN §13): the targets a testbed run should exercise
-// (decision, MC/DC, boundary), scenarios in the `uabt run` format that reach them, each
+// (decision, MC/DC, boundary, guarantee), scenarios in the `uabt run` format that reach them, each
 // replayed on the runtime, and what a set of runs covered.
 #include <cstdint>
 #include <memory>
@@ -11,11 +11,12 @@
 #include "base/value.hpp"
 #include "compile/compile.hpp"
 #include "load/mission.hpp"
+#include "prove/world_model.hpp"
 #include "verify/impact.hpp"
 
 namespace uabt::campaign {
 
-enum class Criterion { decision, mcdc, boundary };
+enum class Criterion { decision, mcdc, boundary, guarantee };
 const char* criterion_name(Criterion c);
 
 // One thing a campaign must exercise.
@@ -27,6 +28,9 @@ struct Target {
   // false: no state of the domain reaches it; `reason` says why.
   bool reachable = true;
   std::string reason;
+  // Not decided: neither reached nor proved unreachable within the depth explored (`reason`
+  // says how deep); `reachable` is false and it is not counted as unreachable.
+  bool undecided = false;
   // A state that reaches it (two for an MC/DC pair), as scenario values; empty when
   // unreachable.
   std::vector<State> witness;
@@ -109,6 +113,10 @@ class Replayer {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+
+ public:
+  // The compiled tree it runs, as `uabt run` reads it back.
+  const bt::Document& document() const;
 };
 
 // A state in which an uplink changes what a node selects: the campaign runs one scenario for
@@ -123,10 +131,17 @@ struct Change {
 std::vector<Change> behaviour_changes(const verify::Impact& impact);
 
 struct Options {
-  std::set<Criterion> criteria{Criterion::decision, Criterion::mcdc, Criterion::boundary};
+  std::set<Criterion> criteria{Criterion::decision, Criterion::mcdc, Criterion::boundary,
+                               Criterion::guarantee};
   std::vector<Change> changes;
   compile::Options compile;
   std::int64_t max_ticks = 100;
+  // The world scenarios play in and guarantee targets are solved over; nullptr: the mission's
+  // world.json, when it has one.
+  const prove::WorldModel* world = nullptr;
+  // Guarantee targets: how deep and how many states the prove engines explore (0: every tick).
+  std::uint64_t prove_depth = 0;
+  std::size_t prove_max_states = 2'000'000;
 };
 
 struct Scenario {
@@ -145,6 +160,7 @@ struct Campaign {
   std::vector<bool> covered;        // per target, by the replays
   std::vector<Scenario> scenarios;  // the targets' scenarios, then the behaviour changes'
   std::vector<std::pair<std::string, std::string>> skipped;  // adaptable, reason
+  std::vector<std::string> notes;  // "guarantee targets not planned: the mission has no world.json"
   std::size_t change_scenarios() const;
   bool passed() const;  // every scenario reached its purpose, every reachable target covered
 };

@@ -25,6 +25,7 @@ const char* criterion_name(Criterion c) {
     case Criterion::decision: return "decision";
     case Criterion::mcdc: return "mcdc";
     case Criterion::boundary: return "boundary";
+    case Criterion::guarantee: return "guarantee";
   }
   return "decision";
 }

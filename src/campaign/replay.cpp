@@ -71,6 +71,10 @@ Replayer::Replayer(const load::Mission& mission, const compile::Options& options
 
 Replayer::~Replayer() = default;
 
+const bt::Document& Replayer::document() const {
+  return impl_->document;
+}
+
 RunRecord Replayer::run(const std::string& json, const std::string& file,
                         const std::set<std::string>& stop_after) const {
   RunRecord record;

@@ -10,7 +10,8 @@
 namespace uabt::cli {
 
 // The test campaign: scenarios that select every alternative, decide every guard both ways,
-// show each atom's independent effect (MC/DC) and sit on both sides of every boundary, each
+// show each atom's independent effect (MC/DC), sit on both sides of every boundary and fire
+// every guarantee's trigger with each of its atoms deciding (prove over world.json), each
 // replayed on the runtime; OUT/junit.xml reports the replays.
 void register_tests(CLI::App& app, int& exit_code) {
   struct Args {
@@ -29,8 +30,9 @@ void register_tests(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--out", args->out, "directory for the scenarios, campaign.json, junit.xml")
       ->required();
-  cmd->add_option("--criterion", args->criterion, "decision | mcdc | boundary | all (default)")
-      ->check(CLI::IsMember({"decision", "mcdc", "boundary", "all"}));
+  cmd->add_option("--criterion", args->criterion,
+                  "decision | mcdc | boundary | guarantee | all (default)")
+      ->check(CLI::IsMember({"decision", "mcdc", "boundary", "guarantee", "all"}));
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--max-ticks", args->max_ticks, "max_ticks of each scenario (default 100)")

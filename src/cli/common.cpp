@@ -51,7 +51,8 @@ std::set<campaign::Criterion> campaign_criteria(const std::string& name) {
   if (name == "decision") return {Criterion::decision};
   if (name == "mcdc") return {Criterion::mcdc};
   if (name == "boundary") return {Criterion::boundary};
-  return {Criterion::decision, Criterion::mcdc, Criterion::boundary};
+  if (name == "guarantee") return {Criterion::guarantee};
+  return {Criterion::decision, Criterion::mcdc, Criterion::boundary, Criterion::guarantee};
 }
 
 std::optional<load::Mission> load_for_campaign(const std::string& dir,

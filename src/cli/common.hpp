@@ -38,7 +38,7 @@ inline constexpr const char* kSelectionHelp =
     "selector style of every adaptable node (default: its own selection attribute, else "
     "sequence); optimized keeps a node's declared reactive (a decision re-checked every tick)";
 
-// --criterion NAME of `uabt tests`: decision, mcdc, boundary, or all of them ("all").
+// --criterion NAME of `uabt tests`: decision, mcdc, boundary, guarantee, or all of them ("all").
 std::set<campaign::Criterion> campaign_criteria(const std::string& name);
 // The mission (with `uplinks` merged) for `uabt tests` and `uabt coverage`, or nullopt after
 // printing why and setting `exit_code`: 2 when it is no mission, 1 when it has load errors.

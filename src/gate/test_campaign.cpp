@@ -30,13 +30,15 @@ void add_test_campaign(Outcome& outcome, const Options& options, const std::stri
   for (std::size_t t = 0; t < c.targets.size(); ++t) {
     const campaign::Target& target = c.targets[t];
     if (!target.reachable) {
-      summary.unreachable.emplace_back(target.text, target.reason);
+      (target.undecided ? summary.undecided : summary.unreachable)
+          .emplace_back(target.text, target.reason);
       continue;
     }
     ++summary.reachable;
     if (c.covered[t]) ++summary.covered;
   }
   summary.skipped = c.skipped;
+  summary.notes = c.notes;
   for (const auto& s : c.scenarios)
     for (const auto& problem : s.problems) summary.problems.push_back(s.name + ".json: " + problem);
 }

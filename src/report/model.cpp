@@ -41,15 +41,19 @@ std::string TestCampaign::headline() const {
            (change_scenarios == 1 ? "a behaviour change" : "behaviour changes") + ")";
   return out + (scenarios == 1 ? " covers " : " cover ") + std::to_string(covered) + " of " +
          plural(reachable, "reachable target") + "; " + plural(targets, "target") + ", " +
-         std::to_string(targets - reachable) + " unreachable";
+         std::to_string(targets - reachable - undecided.size()) + " unreachable" +
+         (undecided.empty() ? "" : ", " + std::to_string(undecided.size()) + " not decided");
 }
 
 std::vector<std::string> TestCampaign::details() const {
   std::vector<std::string> out;
   for (const auto& [target, reason] : unreachable)
     out.push_back("unreachable: " + target + ": " + reason);
+  for (const auto& [target, reason] : undecided)
+    out.push_back("not decided: " + target + ": " + reason);
   for (const auto& [node, reason] : skipped)
     out.push_back("no targets for " + node + ": " + reason);
+  out.insert(out.end(), notes.begin(), notes.end());
   for (const auto& problem : problems) out.push_back("not reached: " + problem);
   return out;
 }

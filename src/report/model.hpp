@@ -42,14 +42,16 @@ struct TestCampaign {
   std::string directory;  // where the scenarios are, relative to the report ("tests/")
   std::size_t targets = 0, reachable = 0, covered = 0, scenarios = 0, change_scenarios = 0;
   std::vector<std::pair<std::string, std::string>> unreachable;  // target, reason
-  std::vector<std::pair<std::string, std::string>> skipped;      // adaptable node, reason
+  std::vector<std::pair<std::string, std::string>> undecided;    // not decided: target, reason
+  std::vector<std::string> notes;  // "guarantee targets not planned: the mission has no world.json"
+  std::vector<std::pair<std::string, std::string>> skipped;  // adaptable node, reason
   std::vector<std::string> problems;  // "scenario.json: why it did not reach its purpose"
   std::string not_built;              // why there is no campaign ("" when there is one)
   // "tests/: 12 scenarios (1 for a behaviour change) cover 30 of 30 reachable targets; 32
   // targets, 2 unreachable", or why there is none: the first line of every format's section.
   std::string headline() const;
-  // The items under it: "unreachable: TEXT: REASON", "no targets for NODE: REASON",
-  // "not reached: SCENARIO: WHY".
+  // The items under it: "unreachable: TEXT: REASON", "not decided: TEXT: REASON", "no targets
+  // for NODE: REASON", the notes, "not reached: SCENARIO: WHY".
   std::vector<std::string> details() const;
 };
 
