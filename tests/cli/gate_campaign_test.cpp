@@ -51,13 +51,13 @@ TEST(GateCampaign, UplinkGateWritesTheCampaignWithTheBehaviourChangeScenario) {
   EXPECT_NE(run.out.find("tick 1: navigation selects on_mud (Req3)"), std::string::npos) << run.out;
 
   const std::string summary = read(out / "summary.md");
-  EXPECT_NE(summary.find("### Test campaign\n\ntests/: 5 scenarios (1 for a behaviour change) "
-                         "cover 13 of 13 reachable targets; 13 targets, 0 unreachable\n"),
+  EXPECT_NE(summary.find("### Test campaign\n\ntests/: 9 scenarios (1 for a behaviour change) "
+                         "cover 25 of 25 reachable targets; 27 targets, 2 unreachable\n"),
             std::string::npos)
       << summary;
   EXPECT_NE(read(out / "report.html")
-                .find("<h2>Test campaign</h2>\n<p>tests/: 5 scenarios (1 for a behaviour change) "
-                      "cover 13 of 13 reachable targets"),
+                .find("<h2>Test campaign</h2>\n<p>tests/: 9 scenarios (1 for a behaviour change) "
+                      "cover 25 of 25 reachable targets"),
             std::string::npos);
 }
 
