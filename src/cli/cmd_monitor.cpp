@@ -34,9 +34,11 @@ void register_monitor(CLI::App& app, int& exit_code) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("monitor", "Check a recorded trace against FRET requirements");
-  cmd->add_option("REQUIREMENTS", args->requirements, "a .fret file or a FRET export (.json)")
+  cmd->add_option("REQUIREMENTS", args->requirements,
+                  "a .fret file, a FRET export (.json), or a mission folder (its "
+                  "requirements.fret and domain.fret)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(CLI::ExistingPath);
   cmd->add_option("TRACE", args->trace, "JSON lines: {\"tick\": t, \"state\": {...}}")
       ->required()
       ->check(CLI::ExistingFile);
@@ -49,7 +51,14 @@ void register_monitor(CLI::App& app, int& exit_code) {
     std::vector<Finding> findings;
     fretish::Domain domain;
     std::vector<fretish::Requirement> requirements;
-    const fs::path requirements_path(args->requirements);
+    fs::path requirements_path(args->requirements);
+    std::error_code ec;
+    if (fs::is_directory(requirements_path, ec)) {
+      // A mission folder: its requirements, and its domain unless --domain names one.
+      if (args->domain.empty() && fs::is_regular_file(requirements_path / "domain.fret", ec))
+        args->domain = (requirements_path / "domain.fret").generic_string();
+      requirements_path /= "requirements.fret";
+    }
     const std::string requirements_file = requirements_path.generic_string();
     if (auto text = read_or_finding(requirements_path, findings)) {
       fretish::ParseResult parsed =

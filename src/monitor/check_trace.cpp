@@ -88,7 +88,12 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
   TraceReport report;
   std::vector<Val> frame(variables.size());
   for (const TraceTick& tick : trace.ticks) {
-    for (const TraceAdaptable& a : tick.adaptables) judge.set_order(a.id, a.requirements);
+    for (const TraceAdaptable& a : tick.adaptables) {
+      // The run's own statement of a requirement these do not state (an uplink's) is judged
+      // from here on; one they state keeps theirs, as the run keeps judging the first.
+      judge.add(a.stated, vocabulary.literals);
+      judge.set_order(a.id, a.requirements);
+    }
     for (const auto& [name, value] : tick.state)
       if (const auto val = to_frame_value(name, value, tick))
         frame[static_cast<std::size_t>(*variables.find(name))] = *val;
@@ -109,6 +114,10 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
   for (const fretish::Requirement& r : requirements)
     report.properties.push_back(is_selection(r) ? judged[next_selection++]
                                                 : monitored[next_property++]);
+  // Then the selection requirements only the trace states, as they came.
+  report.properties.insert(report.properties.end(),
+                           judged.begin() + static_cast<std::ptrdiff_t>(next_selection),
+                           judged.end());
   report.properties.insert(report.properties.end(),
                            monitored.begin() + static_cast<std::ptrdiff_t>(next_property),
                            monitored.end());

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/json_input.hpp"
+#include "fretish/parse.hpp"
 
 namespace uabt::monitor {
 
@@ -63,7 +64,46 @@ bool string_list(const json& j, std::vector<std::string>& out) {
   return true;
 }
 
-// {"<adaptable>": {"alternatives": [names], "requirements": [ids]}}
+// "sentences": {"<id>": {"text": FRETISH, "file": f, "line": l, "column": c}}: the selection
+// requirements of adaptable `a` as the run stated them, parsed at the place they came from.
+bool read_sentences(const json& j, int line, LineReader& reader, TraceAdaptable& a) {
+  const auto shape = [&](const std::string& id) {
+    reader.error(line, 1,
+                 "\"sentences\" of '" + a.id +
+                     "' is {\"<id>\": {\"text\": sentence, \"file\": "
+                     "name, \"line\": N, \"column\": N}}" +
+                     (id.empty() ? std::string() : " ('" + id + "' is not)"));
+    return false;
+  };
+  if (!j.is_object()) return shape("");
+  for (const auto& [id, s] : j.items()) {
+    if (!s.is_object() || !s.contains("text") || !s["text"].is_string() || !s.contains("file") ||
+        !s["file"].is_string() || !s.contains("line") || !s["line"].is_number_unsigned() ||
+        !s.contains("column") || !s["column"].is_number_unsigned())
+      return shape(id);
+    const fretish::TextOrigin origin{s["file"].get<std::string>(),
+                                     static_cast<int>(s["line"].get<std::uint32_t>()),
+                                     static_cast<int>(s["column"].get<std::uint32_t>())};
+    std::vector<Finding> problems;
+    std::optional<fretish::Requirement> parsed =
+        fretish::parse_requirement(s["text"].get<std::string>(), origin, problems);
+    std::vector<fretish::SelectionRequirement> selection;
+    if (parsed) {
+      parsed->id = id;
+      selection = fretish::classify_selection({*parsed}, problems);
+    }
+    if (selection.size() != 1 || selection.front().adaptable != a.id) {
+      std::string why = problems.empty() ? "it is not a selection requirement of '" + a.id + "'"
+                                         : problems.front().message;
+      reader.error(line, 1, "requirement '" + id + "' of '" + a.id + "': " + why);
+      return false;
+    }
+    a.stated.push_back(std::move(selection.front()));
+  }
+  return true;
+}
+
+// {"<adaptable>": {"alternatives": [names], "requirements": [ids], "sentences": {…}}}
 bool read_adaptables(const json& j, int line, LineReader& reader,
                      std::vector<TraceAdaptable>& out) {
   static const char* kShape =
@@ -82,6 +122,8 @@ bool read_adaptables(const json& j, int line, LineReader& reader,
       reader.error(line, 1, kShape + std::string(" ('") + id + "' is not)");
       return false;
     }
+    if (node.contains("sentences") && !read_sentences(node["sentences"], line, reader, a))
+      return false;
     out.push_back(std::move(a));
   }
   return true;

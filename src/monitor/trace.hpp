@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "base/finding.hpp"
+#include "fretish/selection.hpp"
 
 namespace uabt::monitor {
 
@@ -26,10 +27,12 @@ struct TraceSelection {
 };
 
 // An adaptable node as a "selection" line describes it: its alternatives and its selection
-// requirements in priority order, from the next tick on.
+// requirements in priority order, from the next tick on, and those requirements as the run
+// stated them (`sentences`; none in a trace written before they were recorded).
 struct TraceAdaptable {
   std::string id;
   std::vector<std::string> alternatives, requirements;
+  std::vector<fretish::SelectionRequirement> stated;
 };
 
 struct TraceTick {
@@ -51,8 +54,10 @@ struct Trace {
 // tick, ticks consecutive. A line sets the values it lists; the others keep their value. A
 // line may also carry "select": {"<adaptable>": [{"alternative": "a", "read": {…}, "after":
 // "Req1"}]}, the selections made in that tick; a line {"selection": {"<adaptable>":
-// {"alternatives": […], "requirements": […]}}} describes the adaptable nodes from the next
-// tick on. Problems are `trace-invalid` findings naming file, line and column.
+// {"alternatives": […], "requirements": […], "sentences": {"<id>": {"text": FRETISH, "file":
+// f, "line": l, "column": c}}}}} describes the adaptable nodes from the next tick on
+// ("sentences" is optional: each requirement as written, and where). Problems are
+// `trace-invalid` findings naming file, line and column.
 std::optional<Trace> read_trace(const std::string& content, const std::string& file,
                                 std::vector<Finding>& findings);
 

@@ -13,61 +13,113 @@ using runtime::ScriptValue;
 using verify::detail::Fraction;
 namespace script = runtime::script;
 
-namespace {
+namespace detail {
 
-// a·x + b over one variable x (a may be 0: a constant).
+// Σ a_v·v + b over variables of the cut or of the mission's own state.
 struct Affine {
-  std::string variable;  // "" for a constant
-  Fraction a, b;
+  std::map<std::string, Fraction, std::less<>> terms;  // no zero coefficient
+  Fraction b;
+  bool constant() const { return terms.empty(); }
 };
 
+}  // namespace detail
+
+namespace {
+
+using detail::Affine;
+
+Affine variable(const std::string& name) {
+  Affine out;
+  out.terms[name] = Fraction(1);
+  return out;
+}
+
+Affine constant(const Fraction& f) {
+  Affine out;
+  out.b = f;
+  return out;
+}
+
 std::optional<Affine> combine(const Affine& l, const Affine& r, int sign) {
-  if (!l.variable.empty() && !r.variable.empty() && l.variable != r.variable) return std::nullopt;
-  Affine out{l.variable.empty() ? r.variable : l.variable, l.a, l.b};
-  out.a += sign > 0 ? r.a : -r.a;
+  Affine out = l;
+  for (const auto& [name, a] : r.terms) {
+    Fraction& t = out.terms[name];
+    t += sign > 0 ? a : -a;
+    if (t.is_zero()) out.terms.erase(name);
+  }
   out.b += sign > 0 ? r.b : -r.b;
   return out;
 }
 
 std::optional<Affine> scale(const Affine& x, const Fraction& k) {
-  return Affine{x.variable, x.a * k, x.b * k};
+  if (k.is_zero()) return constant(Fraction(0));
+  Affine out{{}, x.b * k};
+  for (const auto& [name, a] : x.terms) out.terms[name] = a * k;
+  return out;
 }
 
 std::optional<Affine> product(const std::optional<Affine>& l, const std::optional<Affine>& r) {
   if (!l || !r) return std::nullopt;
-  if (l->variable.empty() || l->a.is_zero()) return scale(*r, l->b);
-  if (r->variable.empty() || r->a.is_zero()) return scale(*l, r->b);
+  if (l->constant()) return scale(*r, l->b);
+  if (r->constant()) return scale(*l, r->b);
   return std::nullopt;
 }
 
 std::optional<Affine> quotient(const std::optional<Affine>& l, const std::optional<Affine>& r) {
-  if (!l || !r || !(r->variable.empty() || r->a.is_zero()) || r->b.is_zero()) return std::nullopt;
+  if (!l || !r || !r->constant() || r->b.is_zero()) return std::nullopt;
   return scale(*l, Fraction(1) / r->b);
 }
 
-// The breakpoint of `lhs op rhs` when it is an atom over one variable.
-std::optional<std::pair<std::string, Fraction>> breakpoint(const std::optional<Affine>& l,
-                                                           const std::optional<Affine>& r) {
+}  // namespace
+
+// `lhs op rhs` as an atom over one variable x of the cut, the others (if any) of the mission's
+// state: x's coefficient and the rest (Σ a_m·m + b), so that the breakpoint is -rest / a.
+struct detail::Atom {
+  std::string variable;
+  Fraction a;
+  Affine rest;
+};
+
+namespace {
+
+using detail::Atom;
+
+std::optional<Atom> atom_of(const std::optional<Affine>& l, const std::optional<Affine>& r,
+                            const std::set<std::string, std::less<>>& numeric) {
   if (!l || !r) return std::nullopt;
   const auto d = combine(*l, *r, -1);
-  if (!d || d->variable.empty() || d->a.is_zero()) return std::nullopt;
-  return std::make_pair(d->variable, -d->b / d->a);
+  if (!d) return std::nullopt;
+  Atom out;
+  out.rest.b = d->b;
+  for (const auto& [name, a] : d->terms) {
+    if (numeric.contains(name)) {
+      if (!out.variable.empty()) return std::nullopt;  // two variables of the cut
+      out.variable = name;
+      out.a = a;
+    } else {
+      out.rest.terms[name] = a;
+    }
+  }
+  if (out.variable.empty()) return std::nullopt;
+  return out;
 }
 
 class FretishAffine {
  public:
-  explicit FretishAffine(const std::set<std::string, std::less<>>& numeric) : numeric_(numeric) {}
+  FretishAffine(const std::set<std::string, std::less<>>& numeric,
+                const std::set<std::string, std::less<>>& mission)
+      : numeric_(numeric), mission_(mission) {}
   std::optional<Affine> of(const Expr& e) const {
     try {
       switch (e.kind) {
         case ExprKind::number: {
           const auto f = Fraction::parse(e.text);
           if (!f) return std::nullopt;
-          return Affine{"", Fraction(0), *f};
+          return constant(*f);
         }
         case ExprKind::identifier:
-          if (!numeric_.contains(e.text)) return std::nullopt;
-          return Affine{e.text, Fraction(1), Fraction(0)};
+          if (!numeric_.contains(e.text) && !mission_.contains(e.text)) return std::nullopt;
+          return variable(e.text);
         case ExprKind::negate: {
           const auto x = of(*e.args[0]);
           return x ? scale(*x, Fraction(-1)) : std::nullopt;
@@ -92,12 +144,14 @@ class FretishAffine {
 
  private:
   const std::set<std::string, std::less<>>& numeric_;
+  const std::set<std::string, std::less<>>& mission_;
 };
 
 class ScriptAffine {
  public:
-  ScriptAffine(const script::Program& p, const std::set<std::string, std::less<>>& numeric)
-      : p_(p), numeric_(numeric) {}
+  ScriptAffine(const script::Program& p, const std::set<std::string, std::less<>>& numeric,
+               const std::set<std::string, std::less<>>& mission)
+      : p_(p), numeric_(numeric), mission_(mission) {}
   std::optional<Affine> of(std::uint32_t index) const {
     const script::Expr& e = p_.nodes()[index];
     try {
@@ -108,11 +162,13 @@ class ScriptAffine {
             return std::nullopt;
           const auto f = Fraction::parse(e.literal.to_string());
           if (!f) return std::nullopt;
-          return Affine{"", Fraction(0), *f};
+          return constant(*f);
         }
-        case script::Op::name:
-          if (!numeric_.contains(bare(e.name))) return std::nullopt;
-          return Affine{bare(e.name), Fraction(1), Fraction(0)};
+        case script::Op::name: {
+          const std::string name = bare(e.name);
+          if (!numeric_.contains(name) && !mission_.contains(name)) return std::nullopt;
+          return variable(name);
+        }
         case script::Op::negate: {
           const auto x = of(e.a);
           return x ? scale(*x, Fraction(-1)) : std::nullopt;
@@ -138,26 +194,49 @@ class ScriptAffine {
  private:
   const script::Program& p_;
   const std::set<std::string, std::less<>>& numeric_;
+  const std::set<std::string, std::less<>>& mission_;
 };
 
 }  // namespace
 
-void Cuts::add(const Expr& e, const std::string& where) {
-  walk(e, where, nullptr);
+void Cuts::add(const Expr& e, const std::string& where, bool at_tick_start) {
+  walk(e, where, nullptr, at_tick_start);
 }
 
-void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom) {
-  if (fretish::is_relation(e.kind) && e.args.size() == 2) {
-    const FretishAffine affine(numeric_);
-    if (const auto b = breakpoint(affine.of(*e.args[0]), affine.of(*e.args[1]))) {
-      breaks_[b->first].insert(b->second);
-      return;
+bool Cuts::cut(const std::optional<Atom>& atom, const std::string& where, bool at_tick_start) {
+  if (!atom) return false;
+  try {
+    if (atom->rest.terms.empty()) {
+      breaks_[atom->variable].insert(-atom->rest.b / atom->a);
+      return true;
     }
+    MixedAtom mixed;
+    for (const auto& [name, a] : atom->rest.terms) mixed.terms.emplace_back(name, a / atom->a);
+    mixed.b = atom->rest.b / atom->a;
+    mixed.at_tick_start = at_tick_start;
+    mixed.where = where;
+    mixed_[atom->variable].push_back(std::move(mixed));
+    return true;
+  } catch (const verify::detail::FractionOverflow&) {
+    return false;
+  }
+}
+
+void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool at_tick_start) {
+  if (fretish::is_relation(e.kind) && e.args.size() == 2) {
+    const FretishAffine affine(numeric_, mission_);
+    std::optional<Atom> a;
+    try {
+      a = atom_of(affine.of(*e.args[0]), affine.of(*e.args[1]), numeric_);
+    } catch (const verify::detail::FractionOverflow&) {
+    }
+    if (cut(a, "the atom `" + fretish::to_fretish(e) + "` (" + where + ")", at_tick_start)) return;
     atom = &e;
   }
   if (e.kind == ExprKind::identifier && numeric_.contains(e.text)) {
     add_uncut(e.text, atom ? "the atom `" + fretish::to_fretish(*atom) + "` (" + where +
-                                 ") does not compare it with a constant"
+                                 ") does not compare it with a constant or with the mission's "
+                                 "own state"
                            : "`" + e.text +
                                  "` is read outside an atom that compares it with a "
                                  "constant (" +
@@ -165,12 +244,12 @@ void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom) {
     return;
   }
   for (const auto& a : e.args)
-    if (a) walk(*a, where, atom);
+    if (a) walk(*a, where, atom, at_tick_start);
 }
 
 void Cuts::add(const script::Program& program, const std::string& where) {
   const auto& nodes = program.nodes();
-  const ScriptAffine affine(program, numeric_);
+  const ScriptAffine affine(program, numeric_, mission_);
   // Operands inside a cut comparison are accounted for; any other read of a numeric name is not.
   std::vector<char> covered(nodes.size(), 0);
   std::function<void(std::uint32_t)> cover = [&](std::uint32_t i) {
@@ -186,8 +265,12 @@ void Cuts::add(const script::Program& program, const std::string& where) {
     if (e.op != script::Op::compare || e.list_size != 2) continue;
     const std::uint32_t l = program.compare_operands()[e.list_begin];
     const std::uint32_t r = program.compare_operands()[e.list_begin + 1];
-    if (const auto b = breakpoint(affine.of(l), affine.of(r))) {
-      breaks_[b->first].insert(b->second);
+    std::optional<Atom> a;
+    try {
+      a = atom_of(affine.of(l), affine.of(r), numeric_);
+    } catch (const verify::detail::FractionOverflow&) {
+    }
+    if (cut(a, "the script `" + program.code() + "` (" + where + ")", false)) {
       cover(l);
       cover(r);
     }
@@ -198,7 +281,8 @@ void Cuts::add(const script::Program& program, const std::string& where) {
     const std::string name = ScriptAffine::bare(e.name);
     if (numeric_.contains(name))
       add_uncut(name, "the script `" + program.code() + "` (" + where +
-                          ") reads it outside a comparison with a constant");
+                          ") reads it outside a comparison with a constant or with the "
+                          "mission's own state");
   }
 }
 
@@ -215,6 +299,12 @@ const std::set<Fraction>& Cuts::breaks(const std::string& variable) const {
   static const std::set<Fraction> kNone;
   const auto it = breaks_.find(variable);
   return it == breaks_.end() ? kNone : it->second;
+}
+
+const std::vector<MixedAtom>& Cuts::mixed(const std::string& variable) const {
+  static const std::vector<MixedAtom> kNone;
+  const auto it = mixed_.find(variable);
+  return it == mixed_.end() ? kNone : it->second;
 }
 
 std::string Cuts::uncut(const std::string& variable) const {

@@ -1,5 +1,6 @@
 #pragma once
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -12,18 +13,40 @@
 
 namespace uabt::prove {
 
+namespace detail {
+struct Atom;
+}
+
+// An atom that compares a variable x of the cut with the mission's own state (variables the
+// mission writes, whose value is known in every state): `x op -(Σ terms·m + b)`, up to the
+// direction of `op`. Its breakpoint depends on the state, so it is computed there (DESIGN
+// §10.1): when the environment chooses x, from the values the mission's variables have then.
+struct MixedAtom {
+  std::vector<std::pair<std::string, verify::detail::Fraction>> terms;
+  verify::detail::Fraction b;
+  // An assumption's or the initial condition's: it is read with the tick's starting state.
+  bool at_tick_start = false;
+  std::string where;  // "the atom `battery >= reserve` (requirements.fret:4:1)"
+};
+
 // Where the atoms that read a numeric environment variable cut its range (DESIGN §10.1).
 // Inside one cell (a breakpoint, or an open interval between two) every atom `a·x + b op c`
 // has one truth value, so the explicit engine branches over one value per cell instead of
-// every value. A variable read in any other way (an effect copies it, an atom relates it to
-// another variable) cannot be cut: `uncut` says where.
+// every value. An atom `a·x + Σ b·m op c` whose other variables m are the mission's own state
+// cuts x in each state at hand (`mixed`). A variable read in any other way (an effect copies
+// it, an atom relates it to another variable of the cut, or is not linear in it) cannot be
+// cut: `uncut` says where.
 class Cuts {
  public:
   // `numeric`: the numeric environment variables (integers and reals no action writes).
-  explicit Cuts(std::set<std::string, std::less<>> numeric) : numeric_(std::move(numeric)) {}
+  // `mission`: the numeric variables of the mission's own state (a value in every state).
+  explicit Cuts(std::set<std::string, std::less<>> numeric,
+                std::set<std::string, std::less<>> mission = {})
+      : numeric_(std::move(numeric)), mission_(std::move(mission)) {}
 
   // `where` names the expression for a reason ("requirements.fret:4:1", "a script `x > 2`").
-  void add(const fretish::Expr& e, const std::string& where);
+  // `at_tick_start`: an assumption or the initial condition (read with the tick's first state).
+  void add(const fretish::Expr& e, const std::string& where, bool at_tick_start = false);
   // `name_of(slot)`: the root blackboard key a script name resolves to ("" when unknown).
   void add(const runtime::script::Program& program, const std::string& where);
   // A condition leaf or a port that reads the variable as it is.
@@ -31,14 +54,19 @@ class Cuts {
   void add_uncut(const std::string& variable, const std::string& why);
 
   const std::set<verify::detail::Fraction>& breaks(const std::string& variable) const;
+  const std::vector<MixedAtom>& mixed(const std::string& variable) const;
   // Why `variable` cannot be cut ("" when it can).
   std::string uncut(const std::string& variable) const;
 
  private:
   // `atom`: the innermost relation around `e` that could not be cut, for the reason.
-  void walk(const fretish::Expr& e, const std::string& where, const fretish::Expr* atom);
-  std::set<std::string, std::less<>> numeric_;
+  void walk(const fretish::Expr& e, const std::string& where, const fretish::Expr* atom,
+            bool at_tick_start);
+  // Records `atom` (a breakpoint, or a mixed atom); false when there is none.
+  bool cut(const std::optional<detail::Atom>& atom, const std::string& where, bool at_tick_start);
+  std::set<std::string, std::less<>> numeric_, mission_;
   std::map<std::string, std::set<verify::detail::Fraction>, std::less<>> breaks_;
+  std::map<std::string, std::vector<MixedAtom>, std::less<>> mixed_;
   std::map<std::string, std::string, std::less<>> uncut_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "prove/cells.hpp"
 #include "prove/model.hpp"
 #include "prove/prove.hpp"
 
@@ -18,6 +19,21 @@ void append_val(std::string& key, const monitor::Val& v) {
   key += static_cast<char>(v.kind);
   key.append(reinterpret_cast<const char*>(&v.number), sizeof v.number);
   key.append(reinterpret_cast<const char*>(&v.symbol), sizeof v.symbol);
+}
+
+using verify::detail::Fraction;
+
+// A number of the mission's state as the atoms read it (reals by their shortest text, as
+// written); nullopt when it is no number (an entry not written yet) or does not fit.
+std::optional<Fraction> fraction_of(const runtime::ScriptValue& v) {
+  if (v.kind == runtime::ScriptValue::Kind::integer)
+    return Fraction(static_cast<long long>(v.integer));
+  if (v.kind != runtime::ScriptValue::Kind::real) return std::nullopt;
+  try {
+    return Fraction::parse(v.to_string());
+  } catch (const verify::detail::FractionOverflow&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -71,7 +87,92 @@ Environment::Environment(Model& m) : m_(m) {
     live_[i] = !m.vars[i].read_once || !constraints_of_[i].empty() ||
                std::binary_search(monitor_reads_.begin(), monitor_reads_.end(), i);
   frame_.resize(m.variables.size());
+  for (const auto& [var, cut] : m.state_cuts)
+    for (const StateCut::Atom& atom : cut.atoms)
+      if (atom.at_tick_start)
+        for (const auto& term : atom.terms) start_reads_.push_back(term.first);
+  std::sort(start_reads_.begin(), start_reads_.end());
+  start_reads_.erase(std::unique(start_reads_.begin(), start_reads_.end()), start_reads_.end());
   m.engine->blackboard().set_resolver(this);
+}
+
+std::optional<Fraction> Environment::breakpoint(const StateCut::Atom& atom, bool start) const {
+  try {
+    Fraction sum = atom.b;
+    for (const auto& [var, factor] : atom.terms) {
+      std::optional<Fraction> value;
+      if (start) {
+        const auto it = start_.find(var);
+        if (it != start_.end()) value = fraction_of(it->second);
+      } else {
+        value = fraction_of(m_.engine->blackboard().value(m_.vars[var].slot));
+      }
+      if (!value) return std::nullopt;
+      sum += factor * *value;
+    }
+    return -sum;
+  } catch (const verify::detail::FractionOverflow&) {
+    return std::nullopt;  // no cut this precise: its evaluation is what it is
+  }
+}
+
+void Environment::fill(std::size_t var, Cells& c) {
+  c.values = cell_values(*m_.state_cuts.at(var).declaration, c.breaks);
+  if (c.values.empty()) c.values.push_back(runtime::ScriptValue{});
+  c.vals.clear();
+  for (const auto& value : c.values) c.vals.push_back(Observables::value_of(value, m_.symbols));
+}
+
+Environment::Cells& Environment::cells(std::size_t var, bool completion, std::string& key) {
+  const StateCut& cut = m_.state_cuts.at(var);
+  key.assign(reinterpret_cast<const char*>(&var), sizeof var);
+  key += completion ? 'c' : 'x';
+  std::vector<std::optional<Fraction>> points;
+  for (const StateCut::Atom& atom : cut.atoms) {
+    if (completion && !atom.at_tick_start) continue;
+    points.push_back(breakpoint(atom, atom.at_tick_start));
+    key += points.back() ? points.back()->text() : std::string("-");
+    key += ',';
+  }
+  const auto [it, fresh] = cells_.try_emplace(key);
+  if (fresh) {
+    it->second.breaks = cut.breaks;
+    for (const auto& p : points)
+      if (p) it->second.breaks.insert(*p);
+    fill(var, it->second);
+  }
+  return it->second;
+}
+
+void Environment::check(std::size_t k) {
+  const Watch& w = watches_[k];
+  Cells& c = cells_.at(w.key);
+  const std::optional<Fraction> value = fraction_of(w.value);
+  if (!value || c.breaks.contains(*value)) return;  // a breakpoint: a cell of its own
+  const StateCut& cut = m_.state_cuts.at(w.var);
+  std::optional<Fraction> lo, hi;  // the chosen cell
+  if (!cut.declaration->lower.empty()) lo = Fraction::parse(cut.declaration->lower);
+  if (!cut.declaration->upper.empty()) hi = Fraction::parse(cut.declaration->upper);
+  if ((lo && *lo == *value) || (hi && *hi == *value)) return;
+  if (auto above = c.breaks.upper_bound(*value); above != c.breaks.end() && (!hi || *above < *hi))
+    hi = *above;
+  if (auto below = c.breaks.lower_bound(*value); below != c.breaks.begin())
+    if (--below; !lo || *below > *lo) lo = *below;
+  bool split = false;
+  for (const StateCut::Atom& atom : cut.atoms) {
+    if (atom.at_tick_start) continue;  // read with the values the cells were cut with
+    const auto p = breakpoint(atom, false);
+    if (p && (!lo || *lo < *p) && (!hi || *p < *hi) && c.breaks.insert(*p).second) split = true;
+  }
+  if (!split) return;
+  fill(w.var, c);
+  refined_ = true;
+}
+
+void Environment::watched(runtime::SlotId slot) {
+  const std::size_t i = slot < var_of_slot_.size() ? var_of_slot_[slot] : SIZE_MAX;
+  for (std::size_t k = 0; k < watches_.size(); ++k)
+    if (watches_[k].var == i) check(k);
 }
 
 void Environment::start_tick(bool first) {
@@ -87,6 +188,8 @@ void Environment::start_tick(bool first) {
     assigned_[i] = 0;
     bb.set_pending(m_.vars[i].slot, true);
   }
+  watches_.clear();
+  for (std::size_t i : start_reads_) start_[i] = bb.value(m_.vars[i].slot);
 }
 
 bool Environment::satisfiable() {
@@ -148,23 +251,30 @@ bool Environment::component_satisfiable(std::vector<std::size_t> group) {
   }
   if (const auto it = cache_.find(key); it != cache_.end()) return it->second;
 
-  std::uint64_t combinations = 1;
+  // A variable cut in the state at hand: its cells in this tick's starting state.
+  std::vector<const std::vector<monitor::Val>*> choices;
   for (std::size_t v : free) {
-    if (choices_[v].empty()) return cache_[key] = false;
-    if (combinations > kMaxCompletions / choices_[v].size())
+    std::string cells_key;
+    choices.push_back(m_.state_cuts.contains(v) ? &cells(v, true, cells_key).vals : &choices_[v]);
+  }
+  std::uint64_t combinations = 1;
+  for (const auto* values : choices) {
+    if (values->empty()) return cache_[key] = false;
+    if (combinations > kMaxCompletions / values->size())
       throw ProveError(
           "the explicit-state engine cannot decide the assumptions: they relate "
           "more than 2^20 combinations of environment values");
-    combinations *= choices_[v].size();
+    combinations *= values->size();
   }
   std::vector<monitor::Val> saved;
   for (std::size_t v : free) saved.push_back(frame_[static_cast<std::size_t>(m_.vars[v].frame)]);
   bool any = false;
   for (std::uint64_t n = 0; n < combinations && !any; ++n) {
     std::uint64_t index = n;
-    for (std::size_t v : free) {
-      frame_[static_cast<std::size_t>(m_.vars[v].frame)] = choices_[v][index % choices_[v].size()];
-      index /= choices_[v].size();
+    for (std::size_t k = 0; k < free.size(); ++k) {
+      const std::vector<monitor::Val>& values = *choices[k];
+      frame_[static_cast<std::size_t>(m_.vars[free[k]].frame)] = values[index % values.size()];
+      index /= values.size();
     }
     any = std::all_of(group.begin(), group.end(),
                       [&](std::size_t c) { return holds(constraints_[c]); });
@@ -186,8 +296,12 @@ void Environment::resolve(runtime::SlotId slot) {
   seeds_.clear();
   for (std::size_t c : constraints_of_[i])
     if (active(constraints_[c])) seeds_.push_back(c);
-  for (std::uint32_t k = 0; k < choices_[i].size(); ++k) {
-    frame_[frame] = choices_[i][k];
+  // A variable cut in the state at hand: its cells now.
+  std::string key;
+  Cells* cut = m_.state_cuts.contains(i) ? &cells(i, false, key) : nullptr;
+  const std::vector<monitor::Val>& choices = cut ? cut->vals : choices_[i];
+  for (std::uint32_t k = 0; k < choices.size(); ++k) {
+    frame_[frame] = choices[k];
     if (seeds_.empty() || component_satisfiable(seeds_)) options.push_back(k);
   }
   if (options.empty())
@@ -197,19 +311,27 @@ void Environment::resolve(runtime::SlotId slot) {
                                  ? options[0]
                                  : options[m_.choice->chooser.choose(
                                        static_cast<std::uint32_t>(options.size()), 2 * slot + 1)];
-  frame_[frame] = choices_[i][pick];
-  m_.engine->blackboard().value(slot) = v.values[pick];
+  frame_[frame] = choices[pick];
+  m_.engine->blackboard().value(slot) = cut ? cut->values[pick] : v.values[pick];
   chosen_.push_back(i);
+  if (cut) {
+    // Read again after an effect changed the mission's state, its cell may need cutting.
+    watches_.push_back({i, std::move(key), cut->values[pick]});
+    m_.engine->blackboard().set_watched(slot);
+  }
 }
 
 void Environment::resolve_monitor_reads() {
   const runtime::Blackboard& bb = m_.engine->blackboard();
   for (std::size_t v : monitor_reads_) bb.read(m_.vars[v].slot);
+  // The monitors read every value as it is after the tick.
+  for (std::size_t k = 0; k < watches_.size(); ++k) check(k);
 }
 
 void Environment::end_tick() {
   runtime::Blackboard& bb = m_.engine->blackboard();
   bb.clear_pending();
+  watches_.clear();
   for (std::size_t i : env_) {
     bb.value(m_.vars[i].slot) = m_.vars[i].values.front();
     assigned_[i] = 1;

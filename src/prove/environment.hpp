@@ -1,12 +1,15 @@
 #pragma once
 #include <cstddef>
 #include <memory>
+#include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "monitor/expression.hpp"
+#include "prove/model.hpp"
 #include "runtime/blackboard.hpp"
 
 namespace uabt::prove {
@@ -39,6 +42,15 @@ class Environment : public runtime::PendingResolver {
   const std::vector<std::size_t>& chosen() const { return chosen_; }
 
   void resolve(runtime::SlotId slot) override;
+  // A variable cut in the state at hand (Model::state_cuts) is read again after its choice.
+  void watched(runtime::SlotId slot) override;
+
+  // Whether a variable cut in the state at hand was read, after its choice in a tick, with the
+  // mission's state changed so that its cell was no longer one truth value for every atom (an
+  // effect wrote a variable of the atom in between). The cells of that state are refined, and
+  // the search must start over: what it found with the coarser cells may miss runs.
+  bool refined() const { return refined_; }
+  void clear_refined() { refined_ = false; }
 
   // Whether the variable's value may still be read once the tick has chosen it: false for a
   // variable only one place of the tree reads (StateVar::read_once) and that neither a monitor
@@ -56,7 +68,33 @@ class Environment : public runtime::PendingResolver {
   bool component_satisfiable(std::vector<std::size_t> seeds);
   bool holds(Constraint& c);
 
+  // The cells of a variable cut in the state at hand: the breakpoints and one value per cell.
+  struct Cells {
+    std::set<verify::detail::Fraction> breaks;
+    std::vector<runtime::ScriptValue> values;
+    std::vector<monitor::Val> vals;
+  };
+  // The cells of variable `var` in the state at hand, cached per the values its atoms read:
+  // `completion` (an unchosen value the assumptions' check enumerates): only the atoms read with
+  // the tick's starting state.
+  Cells& cells(std::size_t var, bool completion, std::string& key);
+  void fill(std::size_t var, Cells& cells);
+  // The atom's breakpoint with the mission's values now (or at the tick's start).
+  std::optional<verify::detail::Fraction> breakpoint(const StateCut::Atom& atom, bool start) const;
+  // Refines the cells the choice `k` of this tick was made from when an atom now cuts its cell.
+  void check(std::size_t k);
+
   Model& m_;
+  std::unordered_map<std::string, Cells> cells_;
+  struct Watch {
+    std::size_t var;
+    std::string key;
+    runtime::ScriptValue value;
+  };
+  std::vector<Watch> watches_;                                   // this tick's cut choices
+  std::unordered_map<std::size_t, runtime::ScriptValue> start_;  // mission values at the start
+  std::vector<std::size_t> start_reads_;  // the mission variables the cuts read
+  bool refined_ = false;
   std::vector<Constraint> constraints_;
   std::vector<std::vector<std::size_t>> constraints_of_;  // per variable
   std::vector<std::vector<monitor::Val>> choices_;        // per variable: its values as read

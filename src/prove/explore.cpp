@@ -167,7 +167,8 @@ class Search {
     } unset{m_};
     expand(base_, UINT32_MAX, true);
     std::uint64_t depth = 1;
-    while (!frontier_.empty() && !all_violated() && !result_.vacuous) {
+    while (!frontier_.empty() && !all_violated() && !result_.vacuous &&
+           !m_.environment->refined()) {
       if (o_.depth != 0 && depth >= o_.depth) break;
       if (nodes_.size() >= o_.max_states) break;
       std::vector<std::uint32_t> next;
@@ -452,7 +453,13 @@ Vacuity vacuity_of(const Model& m, Stuck kind, std::uint64_t tick,
 
 SearchResult explore(Model& model, const Options& options) {
   if (!model.explicit_refusal.empty()) throw ProveError(model.explicit_refusal);
-  return Search(model, options).run();
+  // Cells cut in the state at hand may be refined as the search goes (Environment::refined):
+  // then it starts over with them, until a search needs no finer cell.
+  for (;;) {
+    model.environment->clear_refined();
+    SearchResult result = Search(model, options).run();
+    if (!model.environment->refined()) return result;
+  }
 }
 
 void replay_path(Model& m, const std::vector<Step>& path,

@@ -409,7 +409,16 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
         (d->type == fretish::VarType::integer || d->type == fretish::VarType::real))
       numeric.insert(v.name);
   }
-  Cuts cuts(numeric);
+  // The mission's own numeric variables: an atom that compares an environment variable with
+  // them is cut in each state, with the values they have there.
+  std::set<std::string, std::less<>> mission_numbers;
+  for (const StateVar& v : vars) {
+    const fretish::Variable* d = declaration(v.name);
+    if (v.relevant && !numeric.contains(v.name) && !v.env && d &&
+        (d->type == fretish::VarType::integer || d->type == fretish::VarType::real))
+      mission_numbers.insert(v.name);
+  }
+  Cuts cuts(numeric, mission_numbers);
   if (!numeric.empty()) {
     auto where = [](const SourceLocation& l) {
       return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
@@ -418,8 +427,8 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
       for (const auto& e : p.exprs)
         if (e) cuts.add(*e, where(p.requirement->location));
     for (const auto& a : mission.domain.assumptions)
-      if (a.expr) cuts.add(*a.expr, where(a.location));
-    if (world.initial) cuts.add(*world.initial, world.file + ": initial");
+      if (a.expr) cuts.add(*a.expr, where(a.location), true);
+    if (world.initial) cuts.add(*world.initial, world.file + ": initial", true);
     for (const auto& [program, what] : tree_scripts) cuts.add(program, what);
     for (const auto& leaf : choice->leaves()) {
       if (leaf.condition) cuts.add_truth_read(leaf.label, "condition " + leaf.name);
@@ -429,16 +438,31 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
     for (const std::string& key : port_reads)
       cuts.add_uncut(key, "a port of the tree reads {" + key + "}");
   }
-  for (StateVar& v : vars) {
+  for (std::size_t index = 0; index < vars.size(); ++index) {
+    StateVar& v = vars[index];
     if (!v.relevant) continue;
     const fretish::Variable* d = declaration(v.name);
     const auto why = unenumerable.find(v.name);
     if (numeric.contains(v.name)) {
       const std::string uncut = cuts.uncut(v.name);
-      if (uncut.empty()) {
+      const std::vector<MixedAtom>& mixed = cuts.mixed(v.name);
+      // Cut in each state only where it would otherwise be left to the symbolic engine: a
+      // variable with few values is enumerated, as it is without such an atom.
+      if (uncut.empty() && (mixed.empty() || why != unenumerable.end())) {
         v.values = cell_values(*d, cuts.breaks(v.name));
         v.cells = true;
         if (v.values.empty()) v.values.push_back(ScriptValue{});
+        if (mixed.empty()) continue;
+        StateCut& cut = state_cuts[index];
+        cut.declaration = d;
+        cut.breaks = cuts.breaks(v.name);
+        for (const MixedAtom& a : mixed) {
+          StateCut::Atom atom{{}, a.b, a.at_tick_start, a.where};
+          for (const auto& [name, factor] : a.terms)
+            for (std::size_t k = 0; k < vars.size(); ++k)
+              if (vars[k].name == name) atom.terms.emplace_back(k, factor);
+          cut.atoms.push_back(std::move(atom));
+        }
         continue;
       }
       if (why == unenumerable.end()) continue;  // few enough values to take each one

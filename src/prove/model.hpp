@@ -10,6 +10,7 @@
 #include "load/mission.hpp"
 #include "monitor/expression.hpp"
 #include "monitor/templates.hpp"
+#include "prove/cells.hpp"
 #include "prove/choice_world.hpp"
 #include "prove/observables.hpp"
 #include "prove/past_time.hpp"
@@ -38,6 +39,22 @@ struct StateVar {
   bool port_written = false;
   bool script_written = false;  // an effect or a script of the tree assigns it
   bool unset_first = false;
+};
+
+// A numeric environment variable whose cells depend on the mission's own state (DESIGN §10.1):
+// some atom compares it with variables the mission writes (`battery >= reserve`). The
+// environment cuts it when it chooses it, at `breaks` and at each atom's breakpoint in the
+// state at hand.
+struct StateCut {
+  const fretish::Variable* declaration = nullptr;
+  std::set<verify::detail::Fraction> breaks;  // the constant ones
+  struct Atom {
+    std::vector<std::pair<std::size_t, verify::detail::Fraction>> terms;  // Model::vars, factor
+    verify::detail::Fraction b;  // the breakpoint is -(Σ factor·value + b)
+    bool at_tick_start = false;
+    std::string where;
+  };
+  std::vector<Atom> atoms;
 };
 
 // A mission property compiled for model checking.
@@ -92,6 +109,8 @@ struct Model {
   // Why the explicit-state engine cannot enumerate this world ("" when it can): a relevant
   // real or unbounded/wide integer (such a variable has one placeholder value, empty).
   std::string explicit_refusal;
+  // Per variable (Model::vars), the variables cut in each state: their cuts.
+  std::map<std::size_t, StateCut> state_cuts;
 
   ~Model();
 

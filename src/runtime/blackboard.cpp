@@ -125,8 +125,15 @@ void Blackboard::set_pending(SlotId slot, bool pending) {
     pending_.resize(values_.size(), 0);
   }
   if (pending_[slot] == static_cast<char>(pending)) return;
+  const bool was = pending_[slot] != 0;  // pending or watched
   pending_[slot] = static_cast<char>(pending);
-  pending ? ++pending_count_ : --pending_count_;
+  if (was != pending) pending ? ++pending_count_ : --pending_count_;
+}
+
+void Blackboard::set_watched(SlotId slot) {
+  if (slot >= pending_.size()) pending_.resize(values_.size(), 0);
+  if (pending_[slot] == 0) ++pending_count_;
+  pending_[slot] = 2;
 }
 
 void Blackboard::clear_pending() {
@@ -135,6 +142,10 @@ void Blackboard::clear_pending() {
 }
 
 void Blackboard::resolve_pending(SlotId slot) const {
+  if (pending_[slot] == 2) {
+    if (resolver_ != nullptr) resolver_->watched(slot);
+    return;
+  }
   pending_[slot] = 0;
   --pending_count_;
   if (resolver_ != nullptr) resolver_->resolve(slot);

@@ -20,6 +20,8 @@ class PendingResolver {
  public:
   virtual ~PendingResolver() = default;
   virtual void resolve(SlotId slot) = 0;
+  // A watched slot (Blackboard::set_watched) is read.
+  virtual void watched(SlotId slot) { (void)slot; }
 };
 
 // The blackboards of one engine: one scope per tree instance (the main tree's is the root,
@@ -65,7 +67,9 @@ class Blackboard {
   // are never enumerated. With no slot pending, read() is value().
   void set_resolver(PendingResolver* resolver) { resolver_ = resolver; }
   void set_pending(SlotId slot, bool pending);
-  bool pending(SlotId slot) const { return slot < pending_.size() && pending_[slot]; }
+  bool pending(SlotId slot) const { return slot < pending_.size() && pending_[slot] == 1; }
+  // The resolver hears of every read of `slot` (its value stays) until clear_pending().
+  void set_watched(SlotId slot);
   void clear_pending();
   const std::string& key(SlotId slot) const { return keys_[slot]; }
   ScopeId owner(SlotId slot) const { return owners_[slot]; }

@@ -47,6 +47,17 @@ void PropertyMonitor::bind_selections(const load::Mission& mission,
   for (const fretish::SelectionRequirement& r : mission.selections) {
     Selecting& s = selecting_[r.adaptable];
     s.requirements.push_back(r.id);
+    for (const fretish::Requirement& written : mission.requirements)
+      if (written.id == r.id && written.location.file == r.location.file &&
+          written.location.line == r.location.line &&
+          written.location.column == r.location.column) {
+        fretish::Requirement sentence;
+        sentence.id = written.id;
+        sentence.text = written.text;
+        sentence.location = written.location;
+        s.sentences.push_back(std::move(sentence));
+        break;
+      }
     if (r.guard)
       for (const std::string& name : fretish::identifiers_of(*r.guard))
         if ((literals.count(name) == 0 || mission.domain.find(name) != nullptr) &&
@@ -255,8 +266,17 @@ std::string PropertyMonitor::monitor_trace_line(std::uint64_t tick) {
   std::string out;
   if (header_due_ && !selecting_.empty()) {
     Json nodes = Json::object();
-    for (const auto& [id, s] : selecting_)
-      nodes[id] = {{"alternatives", s.alternatives}, {"requirements", s.requirements}};
+    for (const auto& [id, s] : selecting_) {
+      Json sentences = Json::object();
+      for (const fretish::Requirement& r : s.sentences)
+        sentences[r.id] = {{"text", r.text},
+                           {"file", r.location.file},
+                           {"line", r.location.line},
+                           {"column", r.location.column}};
+      nodes[id] = {{"alternatives", s.alternatives},
+                   {"requirements", s.requirements},
+                   {"sentences", std::move(sentences)}};
+    }
     out += Json{{"selection", std::move(nodes)}}.dump() + "\n";
   }
   header_due_ = false;

@@ -56,7 +56,9 @@ class PropertyMonitor : public Observer {
   // it had (booleans, numbers and names as JSON booleans, numbers and strings), then "\n".
   // Its tick's selections ride along ("select", with the values their guards read), and
   // before the first line and after an uplink, a {"selection": {…}} line gives each adaptable
-  // node's alternatives and requirements in priority order.
+  // node's alternatives, its requirements in priority order and each requirement as written
+  // ("sentences": text and place), so that `uabt monitor` judges them without the version
+  // that ran.
   std::string monitor_trace_line(std::uint64_t tick);
 
   // The selection requirements' verdicts, then the properties'.
@@ -79,7 +81,8 @@ class PropertyMonitor : public Observer {
   };
   // An adaptable node with selection requirements, for judging them.
   struct Selecting {
-    std::vector<std::string> requirements;  // priority order
+    std::vector<std::string> requirements;        // priority order
+    std::vector<fretish::Requirement> sentences;  // each as written (text, location)
     std::vector<std::string> alternatives;
     std::vector<std::string> reads;  // what its guards read
     std::string running;             // requirement of the branch still running

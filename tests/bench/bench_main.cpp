@@ -12,10 +12,10 @@
 //                                                     (min, median, max), CPU, peak memory
 //   uabt_bench selection                              --selection optimized against Fig. 4:
 //                                                     condition ticks per selection, compile time
-//   uabt_bench prove-family binary|checklist|preflight|lunar SIZE DIR [--counters V]
+//   uabt_bench prove-family binary|checklist|preflight|lunar|lunar_reserve SIZE DIR [--counters V]
 //                                                     write a mission of a model-checking
 //                                                     family (prove_families.hpp) to DIR
-//                                                     (lunar has one size: 1)
+//                                                     (lunar, lunar_reserve: one size, 1)
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -58,7 +58,8 @@ int usage() {
                "       uabt_bench scale [--quick]\n"
                "       uabt_bench process RUNS COMMAND [ARGS...]\n"
                "       uabt_bench selection\n"
-               "       uabt_bench prove-family binary|checklist|preflight|lunar SIZE DIR "
+               "       uabt_bench prove-family binary|checklist|preflight|lunar|lunar_reserve SIZE "
+               "DIR "
                "[--counters V]\n");
   return 2;
 }
@@ -82,7 +83,7 @@ int prove_family(int argc, char** argv) {
     if (std::string(argv[5]) != "--counters" || !v) return usage();
     counters = *v;
   }
-  if (!size || (family == "lunar" && *size != 1)) return usage();
+  if (!size || ((family == "lunar" || family == "lunar_reserve") && *size != 1)) return usage();
   FamilyMission m;
   if (family == "binary")
     m = generate_binary_tree(argv[4], *size, counters);
@@ -92,6 +93,8 @@ int prove_family(int argc, char** argv) {
     m = generate_preflight(argv[4], *size);
   else if (family == "lunar")
     m = generate_lunar(argv[4]);
+  else if (family == "lunar_reserve")
+    m = generate_lunar_reserve(argv[4]);
   else
     return usage();
   std::printf("%d", m.tree_nodes);

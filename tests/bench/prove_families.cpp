@@ -184,7 +184,15 @@ std::string alternative(const std::string& id, const std::string& body) {
 
 }  // namespace
 
-FamilyMission generate_lunar(const std::filesystem::path& dir) {
+namespace {
+
+// The lunar sortie; with `reserve`, its battery thresholds stand above a reserve the samples
+// raise (lunar_reserve).
+FamilyMission lunar(const std::filesystem::path& dir, bool reserve) {
+  // The charge a guard asks for: `k` percent, or the reserve (20 at first) plus k - 20.
+  const auto charge = [&](int k) {
+    return reserve ? "reserve + " + std::to_string(k - 20) : std::to_string(k);
+  };
   write(dir / "mission.xml",
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
         "<!-- A lunar sampling sortie, over and over: reach the site, take a sample, stow it.\n"
@@ -234,36 +242,53 @@ FamilyMission generate_lunar(const std::filesystem::path& dir) {
         "# The light at the rover: full sun, a crater's shadow, or lunar night.\n"
         "enum illumination in {sun, shadow, night}\n"
         "# The mission's own state, written by its actions.\n"
-        "boolean AtSite, HasSample\n");
-  write(dir / "requirements.fret",
-        "# How to reach the site, in priority order; together the guards cover every state once.\n"
-        "Direct: In traverse if battery >= 40 & slope < 10 & illumination = sun Mission shall "
-        "satisfy selected_alt = drive_direct\n"
-        "Cautious: In traverse if battery >= 40 & slope < 25 & (slope >= 10 | illumination != sun) "
-        "Mission shall satisfy selected_alt = drive_cautious\n"
-        "Hold: In traverse if battery < 40 | slope >= 25 Mission shall satisfy selected_alt = "
-        "hold_position\n"
-        "# How to take the sample: a core needs charge and light; otherwise scoop.\n"
-        "Core: In sample if battery >= 60 & illumination != night Mission shall satisfy "
-        "selected_alt = drill_core\n"
-        "Scoop: In sample if battery < 60 | illumination = night Mission shall satisfy "
-        "selected_alt = scoop_regolith\n"
-        "\n"
-        "# Guarantees. The direct drive runs only on flat, sunlit ground (proved: the traverse\n"
-        "# guards are re-checked every tick).\n"
-        "DirectOnFlat: Mission shall always satisfy traverse.selected = drive_direct -> slope < 10 "
-        "& illumination = sun\n"
-        "# On a steep slope the rover holds its position (proved).\n"
-        "HoldWhenSteep: Mission shall always satisfy traverse & slope >= 25 -> traverse.selected = "
-        "hold_position\n"
-        "# Samples are taken at the site only (proved).\n"
-        "SampleAtSite: Mission shall always satisfy DrillCore.running | ScoopRegolith.running -> "
-        "AtSite\n"
-        "# The drill runs only on a charged battery (violated at tick 2: the sample selection is\n"
-        "# made once, and the battery may drop while the drill runs).\n"
-        "DrillOnCharge: Mission shall always satisfy DrillCore.running -> battery >= 60\n");
-  write(dir / "world.json",
-        R"({
+        "boolean AtSite, HasSample\n" +
+            std::string(reserve ? "# The charge kept for the way back (percent): each sample "
+                                  "raises it.\ninteger reserve in [20, 60]\n"
+                                : ""));
+  write(
+      dir / "requirements.fret",
+      "# How to reach the site, in priority order; together the guards cover every state once.\n"
+      "Direct: In traverse if battery >= " +
+          charge(40) +
+          " & slope < 10 & illumination = sun Mission shall satisfy selected_alt = "
+          "drive_direct\n"
+          "Cautious: In traverse if battery >= " +
+          charge(40) +
+          " & slope < 25 & (slope >= 10 | illumination != sun) Mission shall satisfy "
+          "selected_alt = drive_cautious\n"
+          "Hold: In traverse if battery < " +
+          charge(40) +
+          " | slope >= 25 Mission shall satisfy selected_alt = hold_position\n"
+          "# How to take the sample: a core needs charge and light; otherwise scoop.\n"
+          "Core: In sample if battery >= " +
+          charge(60) +
+          " & illumination != night Mission shall satisfy selected_alt = drill_core\n"
+          "Scoop: In sample if battery < " +
+          charge(60) +
+          " | illumination = night Mission shall satisfy selected_alt = scoop_regolith\n"
+          "\n"
+          "# Guarantees. The direct drive runs only on flat, sunlit ground (proved: the traverse\n"
+          "# guards are re-checked every tick).\n"
+          "DirectOnFlat: Mission shall always satisfy traverse.selected = drive_direct -> slope < "
+          "10 "
+          "& illumination = sun\n"
+          "# On a steep slope the rover holds its position (proved).\n"
+          "HoldWhenSteep: Mission shall always satisfy traverse & slope >= 25 -> traverse.selected "
+          "= "
+          "hold_position\n"
+          "# Samples are taken at the site only (proved).\n"
+          "SampleAtSite: Mission shall always satisfy DrillCore.running | ScoopRegolith.running -> "
+          "AtSite\n"
+          "# The drill runs only on a charged battery (violated at tick 2: the sample selection "
+          "is\n"
+          "# made once, and the battery may drop while the drill runs).\n"
+          "DrillOnCharge: Mission shall always satisfy DrillCore.running -> battery >= " +
+          charge(60) + "\n");
+  // A sample raises the reserve by 10, up to 60.
+  const std::string sampled =
+      reserve ? "HasSample = true; reserve = reserve < 60 ? reserve + 10 : 60" : "HasSample = true";
+  std::string world = R"({
   "description": "Drives reach the site; holding fails so that the sortie starts over; the drill may fail; stowing the sample sends the rover on to the next site.",
   "initial": "!AtSite & !HasSample",
   "actions": {
@@ -277,7 +302,12 @@ FamilyMission generate_lunar(const std::filesystem::path& dir) {
     "StowSample": {"ticks": 1, "results": ["success"], "on_success": "AtSite = false; HasSample = false"}
   }
 }
-)");
+)";
+  for (std::size_t at = 0; (at = world.find("\"HasSample = true\"", at)) != std::string::npos;
+       at += sampled.size() + 2)
+    world.replace(at, 18, "\"" + sampled + "\"");
+  if (reserve) world.replace(world.find("!HasSample\""), 11, "!HasSample & reserve = 20\"");
+  write(dir / "world.json", world);
   FamilyMission m;
   m.dir = dir;
   // MainTree 10, the selection trees 20 (traverse) and 11 (sample), the alternatives 11.
@@ -288,6 +318,16 @@ FamilyMission generate_lunar(const std::filesystem::path& dir) {
                 {"DrillOnCharge", "violated"}};
   m.violation_ticks = {{"DrillOnCharge", 2}};
   return m;
+}
+
+}  // namespace
+
+FamilyMission generate_lunar(const std::filesystem::path& dir) {
+  return lunar(dir, false);
+}
+
+FamilyMission generate_lunar_reserve(const std::filesystem::path& dir) {
+  return lunar(dir, true);
 }
 
 }  // namespace uabt::bench

@@ -100,4 +100,12 @@ FamilyMission generate_preflight(const std::filesystem::path& dir, int flags);
 //   very tick.
 FamilyMission generate_lunar(const std::filesystem::path& dir);
 
+// The lunar sortie with a reserve (lunar_reserve): the mission's own `integer reserve in [20,
+// 60]`, 20 at first, which each sample raises by 10 (DrillCore's and ScoopRegolith's
+// on_success); every battery threshold stands above it (40 becomes reserve + 20, 60 reserve +
+// 40), so the guards and DrillOnCharge compare the environment's battery with the mission's
+// state (`battery >= reserve + 40`). Same verdicts as the lunar sortie, DrillOnCharge violated
+// at tick 2 for the same reason.
+FamilyMission generate_lunar_reserve(const std::filesystem::path& dir);
+
 }  // namespace uabt::bench

@@ -15,7 +15,7 @@ quick=${1:-}
 dir=${UABT_BENCH_BUILD_DIR:-build-bench}
 engines=${UABT_PROVE_ENGINES:-explicit symbolic}
 counters=${UABT_PROVE_COUNTERS:-2 3}
-families=${UABT_PROVE_FAMILIES:-binary checklist preflight lunar}
+families=${UABT_PROVE_FAMILIES:-binary checklist preflight lunar lunar_reserve}
 limit=${UABT_PROVE_TIMEOUT:-600}
 if [ "$quick" = "--quick" ]; then
   tree_sizes="23 71 263"
@@ -99,4 +99,8 @@ fi
 if has lunar; then
   m="$out/lunar"
   measure "lunar sortie" "1" "$m" "$("$bench" prove-family lunar 1 "$m")"
+fi
+if has lunar_reserve; then
+  m="$out/lunar_reserve"
+  measure "lunar sortie, reserve" "1" "$m" "$("$bench" prove-family lunar_reserve 1 "$m")"
 fi

@@ -2,6 +2,7 @@
 // not-monitored with its reason, exit codes, and errors that name file and line.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -461,15 +462,55 @@ TEST(MonitorCli, RunThenMonitorJudgeSelectionRequirementsAlike) {
       EXPECT_EQ(ran.at(id), "held") << id;
     EXPECT_EQ(monitor.exit_code, run.exit_code) << run.out << monitor.out;
   }
-  // An accepted uplink adds Req3, which the mission's own requirements do not state: the
-  // selections from then on cannot be judged with them, and monitor says why.
-  uabt_in(dir, "run msl --scenario msl/scenarios/mud_uplink.json --monitor-trace t.jsonl");
-  const CliRun monitor =
+}
+
+// An accepted uplink adds Req3, which the mission's own requirements do not state: the trace's
+// selection lines carry each requirement as the run stated it, so that monitor, given the
+// mission, judges every selection requirement as the run did, Req3 too (at the uplink's line).
+// A trace without those sentences (written before they were recorded) still reads, and
+// monitor says which requirement it lacks.
+TEST(MonitorCli, RunThenMonitorJudgeAnUplinksSelectionRequirements) {
+  TempMission m(mission_files("msl_curiosity"), "msl");
+  const std::string dir = m.dir().parent_path().string();
+  const CliRun run =
+      uabt_in(dir, "run msl --scenario msl/scenarios/mud_uplink.json --monitor-trace t.jsonl");
+  ASSERT_NE(run.out.find("tick 30: navigation selects on_mud (Req3)"), std::string::npos)
+      << run.out;
+  const auto ran = run_verdicts(run.out);
+  const CliRun monitor = uabt_in(dir, "monitor msl t.jsonl --format json");
+  const auto judged = monitor_verdicts(monitor.out);
+  for (const char* id : {"Req1", "Req2", "Req3", "Safe"}) {
+    ASSERT_EQ(ran.count(id), 1u) << id << run.out;
+    ASSERT_EQ(judged.count(id), 1u) << id << monitor.out;
+    EXPECT_EQ(judged.at(id), ran.at(id)) << id << monitor.out;
+  }
+  EXPECT_EQ(monitor.exit_code, 0) << monitor.out;
+  const CliRun text =
       uabt_in(dir, "monitor msl/requirements.fret t.jsonl --domain msl/domain.fret");
-  EXPECT_NE(monitor.out.find("Req1 (selection): not-monitored: the run selected by requirement "
-                             "'Req3' of 'navigation', which these requirements do not state"),
+  EXPECT_NE(text.out.find("msl/requirements.fret:3:7: Req1 (selection): held\n"), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("uplinks/on_mud/requirements.fret:2:7: Req3 (selection): held\n"),
             std::string::npos)
-      << monitor.out;
+      << text.out;
+
+  // The same trace without the sentences.
+  std::ifstream in(m.dir().parent_path() / "t.jsonl");
+  std::string old_trace;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("{\"selection\"", 0) == 0) {
+      auto header = nlohmann::json::parse(line);
+      for (auto& [id, node] : header["selection"].items()) node.erase("sentences");
+      line = header.dump();
+    }
+    old_trace += line + "\n";
+  }
+  std::ofstream(m.dir().parent_path() / "old.jsonl", std::ios::binary) << old_trace;
+  const CliRun old = uabt_in(dir, "monitor msl old.jsonl");
+  EXPECT_NE(old.out.find("Req1 (selection): not-monitored: the run selected by requirement "
+                         "'Req3' of 'navigation', which these requirements do not state"),
+            std::string::npos)
+      << old.out;
+  EXPECT_EQ(old.out.find("Req3 (selection)"), std::string::npos) << old.out;
 }
 
 // The judgement itself, on a hand-written trace: a selection must start the alternative of the

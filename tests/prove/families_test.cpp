@@ -156,6 +156,31 @@ TEST(ProveFamilies, LunarSortieInTheSequenceStyle) {
   check_answers(prove_dir(family.dir), family);
 }
 
+// The lunar sortie with a reserve the samples raise: every guard and DrillOnCharge compare the
+// environment's battery with the mission's own state (`battery >= reserve + 40`). The explicit
+// engine cuts the battery in each state it explores (it left the mission to the symbolic engine
+// before: "cannot cut real 'battery' into cells"), and gives the sortie's verdicts.
+TEST(ProveFamilies, LunarSortieWithAReserve) {
+  TempMission scratch({});
+  const auto family = bench::generate_lunar_reserve(scratch.dir() / "lunar_reserve");
+  EXPECT_NE(read_all(family.dir / "requirements.fret").find("battery >= reserve + 40"),
+            std::string::npos);
+  EXPECT_NE(read_all(family.dir / "world.json")
+                .find("HasSample = true; reserve = reserve < 60 ? reserve + 10 : 60"),
+            std::string::npos);
+  const gate::Outcome outcome = gated(family.dir);
+  EXPECT_TRUE(outcome.passed()) << format_text(outcome.report.findings);
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  expect_answers(family, outcome, explicit_engine);
+  // auto takes the explicit engine.
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+  ASSERT_TRUE(doc);
+  EXPECT_EQ(prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), {}).engine,
+            "explicit");
+}
+
 TEST(ProveFamilies, BadSizesAreRefused) {
   TempMission scratch({});
   EXPECT_THROW(bench::generate_binary_tree(scratch.dir() / "b", 24), std::invalid_argument);

@@ -98,6 +98,140 @@ TEST(Cuts, ScriptComparisonsWithConstantsGiveBreakpoints) {
   EXPECT_EQ(cuts.uncut("wind"), "");
 }
 
+// An atom that compares an environment variable with the mission's own state is cut in each
+// state at hand: the Cuts keep it whole, to be cut when the variable is chosen.
+TEST(Cuts, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
+  prove::Cuts cuts({"battery", "slope"}, {"reserve", "level"});
+  cuts.add(*expression("battery >= reserve + 20 & 2 * battery < 3 * level - 1 & slope < 10"),
+           "requirements.fret:4:1");
+  cuts.add(runtime::script::Program::parse("battery > @reserve"), "a guard");
+  EXPECT_EQ(cuts.uncut("battery"), "");
+  EXPECT_EQ(cuts.breaks("slope"), (std::set<Fraction>{Fraction(10)}));
+  const auto& mixed = cuts.mixed("battery");
+  ASSERT_EQ(mixed.size(), 3u);
+  // battery - reserve - 20 >= 0: the breakpoint is reserve + 20.
+  EXPECT_EQ(mixed[0].terms, (std::vector<std::pair<std::string, Fraction>>{{"reserve", -1}}));
+  EXPECT_EQ(mixed[0].b, Fraction(-20));
+  EXPECT_EQ(mixed[0].where, "the atom `battery >= reserve + 20` (requirements.fret:4:1)");
+  // 2 battery - 3 level + 1 < 0: battery - 3/2 level + 1/2, the breakpoint 3/2 level - 1/2.
+  EXPECT_EQ(mixed[1].terms,
+            (std::vector<std::pair<std::string, Fraction>>{{"level", Fraction::of(-3, 2)}}));
+  EXPECT_EQ(mixed[1].b, Fraction::of(1, 2));
+  EXPECT_EQ(mixed[2].terms, (std::vector<std::pair<std::string, Fraction>>{{"reserve", -1}}));
+  // An assumption's atom is read with the tick's starting state.
+  cuts.add(*expression("battery <= reserve + 70"), "domain.fret:3:8", true);
+  EXPECT_TRUE(cuts.mixed("battery").back().at_tick_start);
+}
+
+TEST(Cuts, WhatTheStateAtHandCannotCutStaysUncut) {
+  const auto uncut = [](const std::string& atom) {
+    prove::Cuts cuts({"battery", "slope"}, {"reserve"});
+    cuts.add(*expression(atom), "requirements.fret:2:5");
+    return cuts.uncut("battery");
+  };
+  // Not linear in the variable, or related to another variable of the environment.
+  EXPECT_EQ(uncut("battery * reserve > 30"),
+            "the atom `battery * reserve > 30` (requirements.fret:2:5) does not compare it with "
+            "a constant or with the mission's own state");
+  EXPECT_NE(uncut("battery > slope + reserve"), "");
+  // An effect that copies the variable into the mission's state.
+  prove::Cuts cuts({"battery"}, {"reserve"});
+  cuts.add(runtime::script::Program::parse("reserve = battery - 5"), "an effect");
+  EXPECT_NE(cuts.uncut("battery").find("reserve = battery - 5"), std::string::npos)
+      << cuts.uncut("battery");
+}
+
+// A guard compares the battery with a reserve the mission's effects raise; the guarantee reads
+// both after the tick. The breakpoint is where the reserve is when the guard reads the battery
+// (10), and again where the effect leaves it before the monitor reads them (30): a battery in
+// (10, 30) passes the guard and violates the guarantee. The explicit engine, which left such a
+// mission to the symbolic engine, now proves it, with the symbolic engine's verdict.
+std::map<std::string, std::string> reserve_mission(const std::string& guard) {
+  std::map<std::string, std::string> files;
+  files["mission.xml"] = mission_with("<Sequence><ScriptCondition code=\"" + guard +
+                                      "\"/><Adaptable ID=\"work\"/></Sequence>");
+  files["alternatives/work/bump.xml"] = alternative_tree("bump", "<Bump/>");
+  files["alternatives/work/rest.xml"] = alternative_tree("rest", "<Rest/>");
+  files["domain.fret"] =
+      "real battery in [0, 100]\n"
+      "integer reserve in [0, 50]\n"
+      "integer load in [-1000000, 1000000]\n"
+      "assume spare: battery <= reserve + 80\n";
+  files["requirements.fret"] =
+      "Bump: In work if load > 100 * reserve - 500 Mission shall satisfy selected_alt = bump\n"
+      "Rest: In work Mission shall satisfy selected_alt = rest\n"
+      "Charged: Mission shall always satisfy Bump.success -> battery >= reserve\n"
+      "Light: Mission shall always satisfy Rest.success -> load <= 100 * reserve - 500\n";
+  files["world.json"] =
+      R"({"initial": "reserve = 10", "actions": {"Bump": {"ticks": 1, "results": ["success"],)"
+      R"( "on_success": "reserve = reserve < 30 ? 30 : 10"}, "Rest": {"ticks": 1, "results":)"
+      R"( ["success"]}}})";
+  return files;
+}
+
+TEST(OnDemand, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
+  TempMission m(reserve_mission("battery &gt; reserve"));
+  prove::Options explicit_engine, symbolic_engine;
+  explicit_engine.engine = "explicit";
+  symbolic_engine.engine = "symbolic";
+  const prove::Result e = prove_dir(m.dir(), explicit_engine);
+  EXPECT_TRUE(e.complete);
+  const prove::Answer& charged = answer(e, "Charged");
+  ASSERT_EQ(charged.verdict, Verdict::violated);
+  EXPECT_EQ(charged.depth, 1u);
+  ASSERT_TRUE(charged.counterexample);
+  // A value inside the cell (10, 30), written as people write it; the replay (prove's own)
+  // violates it too.
+  const auto scenario = nlohmann::json::parse(charged.counterexample->scenario);
+  const double battery = scenario["initial"]["battery"].get<double>();
+  EXPECT_GT(battery, 10.0) << charged.counterexample->scenario;
+  EXPECT_LT(battery, 30.0) << charged.counterexample->scenario;
+  EXPECT_EQ(scenario["initial"]["battery"].dump(), "20.0") << charged.counterexample->scenario;
+  // The wide integer compared with 100 reserve - 500: at most 500 (reserve 10) or 2500.
+  EXPECT_EQ(answer(e, "Light").verdict, Verdict::proved);
+  // auto takes the explicit engine now.
+  EXPECT_EQ(prove_dir(m.dir()).engine, "explicit");
+  const prove::Result s = prove_dir(m.dir(), symbolic_engine);
+  ASSERT_EQ(e.answers.size(), s.answers.size());
+  for (std::size_t i = 0; i < e.answers.size(); ++i) {
+    EXPECT_EQ(e.answers[i].verdict, s.answers[i].verdict) << e.answers[i].requirement;
+    if (e.answers[i].verdict == Verdict::violated) {
+      EXPECT_EQ(e.answers[i].depth, s.answers[i].depth) << e.answers[i].requirement;
+    }
+  }
+  // With `>=` the guard's breakpoint itself (10) passes it and violates the guarantee.
+  TempMission at(reserve_mission("battery &gt;= reserve"));
+  const prove::Result at_result = prove_dir(at.dir(), explicit_engine);
+  const prove::Answer& at_breakpoint = answer(at_result, "Charged");
+  ASSERT_EQ(at_breakpoint.verdict, Verdict::violated);
+  ASSERT_TRUE(at_breakpoint.counterexample);
+  EXPECT_EQ(
+      nlohmann::json::parse(at_breakpoint.counterexample->scenario)["initial"]["battery"].dump(),
+      "10.0");
+}
+
+// An atom that relates the variable to another of the environment still goes to the symbolic
+// engine, and the reason names it.
+TEST(OnDemand, AnAtomWithAnotherEnvironmentVariableStillGoesToTheSymbolicEngine) {
+  auto files = reserve_mission("battery &gt; reserve");
+  files["domain.fret"] += "real solar in [0, 100]\n";
+  files["requirements.fret"] +=
+      "Sun: Mission shall always satisfy solar < battery + reserve | Bump.success\n";
+  TempMission m(files);
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  try {
+    prove_dir(m.dir(), explicit_engine);
+    ADD_FAILURE() << "the explicit engine cut an atom over two reals";
+  } catch (const prove::ProveError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("cannot cut real"), std::string::npos) << why;
+    EXPECT_NE(why.find("the atom `solar < battery + reserve` (requirements.fret:5:"),
+              std::string::npos)
+        << why;
+  }
+}
+
 TEST(Numbers, PrintAsPeopleWriteThem) {
   // What counterexample tables, the HTML timeline and run's violation lines show.
   monitor::Symbols symbols;

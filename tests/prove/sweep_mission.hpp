@@ -21,11 +21,14 @@ namespace uabt::testing {
 // FRET's temporal functions persisted, occurred, prevOcc and FTP (and the random choices differ).
 class SweepMission : public MissionWriter {
  public:
-  explicit SweepMission(unsigned seed, bool temporal = false)
-      : MissionWriter(seed), temporal_(temporal) {
+  // With `mixed`, atoms also compare the environment's real r and wide integer w with the
+  // mission's own x (guards, scripts, effects, an assumption, guarantees): the explicit engine
+  // cuts them in each state it explores.
+  explicit SweepMission(unsigned seed, bool temporal = false, bool mixed = false)
+      : MissionWriter(seed), temporal_(temporal), mixed_(mixed) {
     style = static_cast<compile::SelectionStyle>(pick(3));
     integer_ = pick(2);
-    real_ = pick(2);
+    real_ = mixed || pick(2);
     enum_ = pick(2);
     adaptables_ = 1 + pick(2);
     wide_ = pick(3) == 0;
@@ -71,6 +74,10 @@ class SweepMission : public MissionWriter {
     std::vector<std::string> checks = {"<E/>", "<C/>"};
     if (integer_) checks.push_back("<ScriptCondition code=\"n &gt;= 2\"/>");
     if (real_) checks.push_back("<ScriptCondition code=\"r &lt; 4.5\"/>");
+    if (mixed_) {
+      checks.push_back("<ScriptCondition code=\"r &gt; x + 1.5\"/>");
+      checks.push_back("<ScriptCondition code=\"w &lt; 300000 * x\"/>");
+    }
     return any(checks);
   }
 
@@ -142,6 +149,7 @@ class SweepMission : public MissionWriter {
     if (integer_) s += "integer n in [0, 4]\n";
     if (real_) s += "real r in [0, 10]\n";
     if (enum_) s += "enum t in {p, q, s}\n";
+    if (mixed_) s += "integer w in [0, 1000000]\nassume a1: r <= x + 8\n";
     const auto groups = env_groups();
     if (groups.size() > 1 && pick(2))
       s += "assume a0: !(E & " +
@@ -154,7 +162,9 @@ class SweepMission : public MissionWriter {
   std::vector<std::vector<std::string>> env_groups() {
     std::vector<std::vector<std::string>> groups = {{"E", "!E"}};
     if (integer_) groups.push_back({"n >= 3", "n < 1", "n = 2"});
-    if (real_) groups.push_back({"r < 4.5", "r >= 7", "r > 2.5"});
+    if (real_ && mixed_) groups.push_back({"r < 4.5", "r >= x + 2", "r < 2 * x + 1"});
+    if (real_ && !mixed_) groups.push_back({"r < 4.5", "r >= 7", "r > 2.5"});
+    if (mixed_) groups.push_back({"w > 250000 * x", "w - 100000 * x <= 50000", "w < 500000"});
     if (enum_) groups.push_back({"t = p", "t != q", "t = s"});
     return groups;
   }
@@ -169,6 +179,7 @@ class SweepMission : public MissionWriter {
                                         "x = 0",    "A = E"};
     if (integer_) effects.push_back("x = n < 3 ? n : 3");
     if (real_) effects.push_back("B = r < 4.5");
+    if (mixed_) effects.push_back("B = w >= 200000 * x + 100000");
     std::string s = "{\"initial\": \"x = 0 & !A\", \"actions\": {";
     for (int i = 0; i < 2; ++i) {
       const int lo = 1 + pick(2), hi = lo + pick(2);
@@ -254,7 +265,7 @@ class SweepMission : public MissionWriter {
   std::set<std::string> actions_;
   std::vector<std::string> adaptable_ids_;
   int names_ = 0, adaptables_ = 1;
-  bool temporal_ = false;
+  bool temporal_ = false, mixed_ = false;
   bool repeated_ = false, wide_ = false, integer_ = false, real_ = false, enum_ = false;
 };
 
