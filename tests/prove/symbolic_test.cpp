@@ -49,6 +49,18 @@ TEST(SymbolicAgreement, CuriositySequenceAndReactive) {
   }
 }
 
+// IC3/PDR takes over after 2-induction: deeper induction and BMC only for what is still open
+// (with 6 depths first, msl_curiosity took 3-4 times as long).
+TEST(SymbolicAgreement, CuriosityIsProvedAfterTwoInductionDepths) {
+  const Gated g(mission_dir("msl_curiosity"), compile::SelectionStyle::reactive);
+  ASSERT_TRUE(g.ok());
+  const prove::Result s = g.prove("symbolic");
+  ASSERT_EQ(s.answers.size(), 4u);
+  for (const auto& a : s.answers) EXPECT_EQ(a.verdict, Verdict::proved) << a.requirement;
+  EXPECT_EQ(s.induction_k, 2u);
+  EXPECT_EQ(s.depth, 2u);
+}
+
 // The missions of prove_test.cpp: sample_drilling (Repeat, wake-up re-ticks) and its
 // variants, as shipped and with one drilling cycle instead of the Repeat.
 TEST(SymbolicAgreement, DrillingMissions) {
