@@ -16,12 +16,20 @@ void Chooser::start(const std::vector<std::uint32_t>& prefix) {
   forced_ = prefix.size();
 }
 
+void Chooser::resume(const std::vector<std::uint32_t>& prefix, std::size_t at) {
+  taken_ = prefix;
+  arity_.resize(prefix.size(), 0);
+  pos_ = at;
+  forced_ = prefix.size();
+}
+
 std::uint32_t Chooser::choose(std::uint32_t options, std::uint32_t site) {
   if (pos_ >= forced_ && seen && seen(site)) {
     taken_.resize(pos_);
     arity_.resize(pos_);
     throw ChoicePruned{};
   }
+  if (reached) reached(site, pos_);
   if (pos_ < taken_.size()) {
     arity_[pos_] = options;
     taken_[pos_] %= options;  // a prefix from elsewhere (a random walk) may exceed it

@@ -26,8 +26,17 @@ struct ChoicePruned {};
 class Chooser {
  public:
   void start(const std::vector<std::uint32_t>& prefix);
-  // `site` names the choice point (an action, an environment variable) for `seen`.
+  // As start(), for a tick resumed at its choice number `at` (within `prefix`): the choices
+  // before it were made as in the last sequence.
+  void resume(const std::vector<std::uint32_t>& prefix, std::size_t at);
+  // `site` names the choice point (an action, an environment variable) for `seen`: 2 * leaf
+  // for an action's outcome (asked before the action changes anything), odd for an
+  // environment variable, from 2^31 on for an output port's value.
   std::uint32_t choose(std::uint32_t options, std::uint32_t site = 0);
+  static bool outcome_site(std::uint32_t site) { return site < (1u << 31) && site % 2 == 0; }
+  // When set, told of every choice point (its site and its number in the tick) before it
+  // chooses.
+  std::function<void(std::uint32_t site, std::size_t at)> reached;
   // When set, asked at every choice point past the forced prefix: true when the tick has
   // reached this point before in the same state (in an earlier sequence of choices). Then
   // the sequences below it were all explored already, and choose() throws ChoicePruned;

@@ -321,6 +321,14 @@ void Environment::resolve(runtime::SlotId slot) {
   }
 }
 
+void Environment::undo(std::size_t count) {
+  chosen_.resize(count);
+  for (std::size_t i : env_) assigned_[i] = 0;
+  for (std::size_t i : chosen_) assigned_[i] = 1;
+  runtime::Blackboard& bb = m_.engine->blackboard();
+  for (std::size_t i : env_) bb.set_pending(m_.vars[i].slot, !assigned_[i]);
+}
+
 void Environment::resolve_monitor_reads() {
   const runtime::Blackboard& bb = m_.engine->blackboard();
   for (std::size_t v : monitor_reads_) bb.read(m_.vars[v].slot);

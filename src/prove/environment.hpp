@@ -40,6 +40,10 @@ class Environment : public runtime::PendingResolver {
 
   // The variables (indices into Model::vars) chosen in this tick, in order.
   const std::vector<std::size_t>& chosen() const { return chosen_; }
+  // Back to the tick as it was when chosen() had `count` variables (a checkpoint within the
+  // tick, taken outside resolve()): the variables chosen since are pending again. The
+  // blackboard's values are the caller's to restore.
+  void undo(std::size_t count);
 
   void resolve(runtime::SlotId slot) override;
   // A variable cut in the state at hand (Model::state_cuts) is read again after its choice.

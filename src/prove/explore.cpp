@@ -6,6 +6,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <unordered_set>
 
 namespace uabt::prove {
@@ -81,7 +82,13 @@ Product initial_product(const Model& m) {
 // The actions' progress as bytes: only the actions that run (index and ticks), as most do not
 // between two ticks.
 void append_elapsed(std::string& key, const std::vector<std::int64_t>& elapsed) {
-  for (std::uint32_t i = 0; i < elapsed.size(); ++i) {
+  const std::uint32_t n = static_cast<std::uint32_t>(elapsed.size());
+  for (std::uint32_t i = 0; i < n; ++i) {
+    // Four at a time past the idle ones.
+    if (i + 4 <= n && (elapsed[i] | elapsed[i + 1] | elapsed[i + 2] | elapsed[i + 3]) == 0) {
+      i += 3;
+      continue;
+    }
     if (elapsed[i] == 0) continue;
     key.append(reinterpret_cast<const char*>(&i), sizeof i);
     key.append(reinterpret_cast<const char*>(&elapsed[i]), sizeof elapsed[i]);
@@ -90,10 +97,10 @@ void append_elapsed(std::string& key, const std::vector<std::int64_t>& elapsed) 
   key.append(reinterpret_cast<const char*>(&end), sizeof end);
 }
 
-void key_of(const runtime::Engine& engine, const std::vector<std::int64_t>& elapsed,
+void key_of(const runtime::TickTrail& trail, const std::vector<std::int64_t>& elapsed,
             const std::vector<std::uint64_t>& monitors, bool completed, std::string& key) {
   key.clear();
-  EngineState::append_key(engine, key);
+  trail.append_key(key);  // the engine's bytes
   append_elapsed(key, elapsed);
   key.append(reinterpret_cast<const char*>(monitors.data()),
              monitors.size() * sizeof(std::uint64_t));
@@ -158,13 +165,20 @@ class Search {
     // has nothing new below it.
     m_.choice->chooser.seen = [this](std::uint32_t site) { return seen_mid_tick(site); };
     m_.observables->track_open(true);
+    // A tick is resumed at the choice it changes, not ticked again from its start.
+    trail_ = std::make_unique<runtime::TickTrail>(*m_.engine);
+    m_.choice->chooser.reached = [this](std::uint32_t site, std::size_t at) {
+      take_checkpoint(site, at);
+    };
     struct Unset {
-      Model& m;
+      Search& s;
       ~Unset() {
-        m.choice->chooser.seen = nullptr;
-        m.observables->track_open(false);
+        s.m_.choice->chooser.seen = nullptr;
+        s.m_.choice->chooser.reached = nullptr;
+        s.m_.observables->track_open(false);
+        s.trail_.reset();
       }
-    } unset{m_};
+    } unset{*this};
     expand(base_, UINT32_MAX, true);
     std::uint64_t depth = 1;
     while (!frontier_.empty() && !all_violated() && !result_.vacuous &&
@@ -224,7 +238,7 @@ class Search {
         std::swap(bb.value(v.slot), hidden_.back().second);
       }
     }
-    EngineState::append_key(*m_.engine, key);
+    trail_->append_key(key);
     for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
     append_elapsed(key, m_.choice->elapsed());
     m_.observables->append_tick_key(key);
@@ -265,15 +279,34 @@ class Search {
     mid_monitors_ = &from.monitors;
     for (std::uint64_t e = 0; e < start.size; ++e) {
       if (!possible_start(from, start, e, first)) continue;
-      const EngineState before = EngineState::save(*m_.engine);
+      // The first checkpoint is the state before the tick.
       std::vector<std::uint32_t> prefix;
+      checkpoints_in_use_ = 0;
+      trail_->begin();
+      trail_->push();
       do {
-        before.restore(*m_.engine);
-        m_.choice->set_elapsed(from.elapsed);
-        m_.choice->chooser.start(prefix);
-        m_.environment->start_tick(first);
+        // A checkpoint taken at or past the choice that changes is of another sequence.
+        while (checkpoints_in_use_ > 0 &&
+               checkpoints_[checkpoints_in_use_ - 1].at >= prefix.size()) {
+          --checkpoints_in_use_;
+          trail_->pop();
+        }
+        const bool resume = checkpoints_in_use_ > 0;
+        trail_->restore();
+        if (resume) {
+          const Checkpoint& c = checkpoints_[checkpoints_in_use_ - 1];
+          m_.choice->set_elapsed(c.elapsed);
+          m_.environment->undo(c.chosen);
+          m_.observables->undo(c.observables);
+          m_.choice->chooser.resume(prefix, c.at);
+        } else {
+          m_.choice->set_elapsed(from.elapsed);
+          m_.choice->chooser.start(prefix);
+          m_.environment->start_tick(first);
+          m_.observables->begin_tick();
+        }
         try {
-          successor(from, from_index, Step{e, {}, {}, {}, {}}, outcomes);
+          successor(from, from_index, Step{e, {}, {}, {}, {}}, outcomes, resume);
         } catch (const ChoicePruned&) {
         }
         m_.environment->end_tick();
@@ -318,11 +351,26 @@ class Search {
     return possible;
   }
 
-  void successor(const Node& from, std::uint32_t from_index, Step step, Outcomes& outcomes) {
-    m_.observables->begin_tick();
+  // A checkpoint where the tick can be resumed (an action about to choose its outcome), when
+  // none is taken at this choice yet.
+  void take_checkpoint(std::uint32_t site, std::size_t at) {
+    if (checkpoints_in_use_ > 0 && checkpoints_[checkpoints_in_use_ - 1].at >= at) return;
+    if (!Chooser::outcome_site(site) || !trail_->resumable()) return;
+    trail_->push();
+    if (checkpoints_in_use_ == checkpoints_.size()) checkpoints_.emplace_back();
+    Checkpoint& c = checkpoints_[checkpoints_in_use_++];
+    c.at = at;
+    c.elapsed = m_.choice->elapsed();
+    c.chosen = m_.environment->chosen().size();
+    m_.observables->mark(c.observables);
+  }
+
+  // `resume`: the tick goes on from the last checkpoint (restored), else it starts.
+  void successor(const Node& from, std::uint32_t from_index, Step step, Outcomes& outcomes,
+                 bool resume) {
     NodeStatus root;
     try {
-      root = m_.engine->tick();
+      root = resume ? m_.engine->resume_tick() : m_.engine->tick();
       m_.environment->resolve_monitor_reads();
       ++result_.transitions;
     } catch (const runtime::TickException& e) {
@@ -379,7 +427,7 @@ class Search {
     // The environment's values are chosen afresh in every tick: once the monitors have read
     // them they do not matter, and states that differ only in them are one state.
     m_.environment->end_tick();
-    key_of(*m_.engine, m_.choice->elapsed(), next.monitors, done, key_);
+    key_of(*trail_, m_.choice->elapsed(), next.monitors, done, key_);
     if (!seen_.insert(key_).second) return;
     next.engine = EngineState::save(*m_.engine);
     next.elapsed = m_.choice->elapsed();
@@ -414,6 +462,17 @@ class Search {
   std::vector<monitor::Val> frame_;
   std::vector<char> scratch_;
   SearchResult result_;
+  // The checkpoints of the tick being explored, by the choice they were taken at (trail_
+  // keeps the engine's part of each); the first checkpoints_in_use_ are.
+  struct Checkpoint {
+    std::size_t at = 0;
+    std::vector<std::int64_t> elapsed;
+    std::size_t chosen = 0;  // Environment::chosen()
+    Observables::Mark observables;
+  };
+  std::vector<Checkpoint> checkpoints_;
+  std::size_t checkpoints_in_use_ = 0;
+  std::unique_ptr<runtime::TickTrail> trail_;
 };
 
 }  // namespace

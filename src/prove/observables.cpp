@@ -119,12 +119,29 @@ monitor::Resolved Observables::resolve(const std::string& name) {
 void Observables::begin_tick() {
   for (NodeId n : touched_) last_[n] = NodeStatus::idle;
   touched_.clear();
+  before_.clear();
   open_.clear();
   std::fill(last_alternative_.begin(), last_alternative_.end(), -1);
 }
 
+void Observables::mark(Mark& out) const {
+  out.touched = touched_.size();
+  out.open = open_;
+  out.alternatives = last_alternative_;
+}
+
+void Observables::undo(const Mark& mark) {
+  for (std::size_t k = touched_.size(); k > mark.touched; --k)
+    last_[touched_[k - 1]] = before_[k - 1];
+  touched_.resize(mark.touched);
+  before_.resize(mark.touched);
+  open_ = mark.open;
+  last_alternative_ = mark.alternatives;
+}
+
 void Observables::on_node_ticked(NodeId node, NodeStatus result) {
   if (node >= last_.size()) last_.resize(node + 1, NodeStatus::idle);
+  before_.push_back(last_[node]);
   last_[node] = result;
   touched_.push_back(node);
   for (std::size_t i = 0; i < selected_.size(); ++i)

@@ -46,6 +46,14 @@ class Observables : public runtime::Observer {
   // returned, and the alternatives selected. With the engine's state it decides how the rest
   // of the tick goes and what the monitors see (a model checker's mid-tick state).
   void append_tick_key(std::string& out) const;
+  // What the tick has recorded up to a point within it, and going back there.
+  struct Mark {
+    std::size_t touched = 0;
+    std::vector<runtime::NodeId> open;
+    std::vector<int> alternatives;
+  };
+  void mark(Mark& out) const;
+  void undo(const Mark& mark);
   // Whether to keep what append_tick_key needs (off: nobody asks, and it costs per node tick).
   void track_open(bool on) { track_open_ = on; }
 
@@ -80,8 +88,9 @@ class Observables : public runtime::Observer {
   std::vector<ModeObs> modes_;
   std::vector<runtime::NodeStatus> last_;  // per node, this tick (idle: not ticked)
   std::vector<runtime::NodeId> touched_;
-  std::vector<runtime::NodeId> open_;    // ticked, and their parent has not returned since
-  std::vector<runtime::NodeId> parent_;  // per node
+  std::vector<runtime::NodeStatus> before_;  // per touched_: what last_ had before
+  std::vector<runtime::NodeId> open_;        // ticked, and their parent has not returned since
+  std::vector<runtime::NodeId> parent_;      // per node
   bool track_open_ = false;
   std::vector<runtime::NodeId> observed_;  // nodes whose returns a property reads
   std::vector<int> last_alternative_;      // per SelectedObs: symbol, -1 for none

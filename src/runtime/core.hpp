@@ -95,6 +95,29 @@ struct Instance {
 
 struct SmartSelection;
 
+// A model checker's undo log inside a tick (TickTrail, engine_state.hpp): each node's state
+// as it was before its first change since the last checkpoint, and the execute_tick frames
+// now open. Every change of a node's state happens in its own execute_tick or halt_node, or
+// in set_status: those log it.
+struct Trail {
+  struct Entry {
+    NodeId id;
+    NodeStatus status;
+    std::int32_t a, b, c;
+  };
+  std::vector<Entry> entries;
+  std::vector<std::uint32_t> stamp;  // per node: the epoch it was last logged in
+  std::uint32_t epoch = 1;           // a new one at every checkpoint and every restore
+  std::vector<NodeId> path;          // root first
+
+  void log(const std::vector<RtNode>& nodes, NodeId id) {
+    if (stamp[id] == epoch) return;
+    stamp[id] = epoch;
+    const RtNode& n = nodes[id];
+    entries.push_back({id, n.status, n.a, n.b, n.c});
+  }
+};
+
 struct Core {
   World* world = nullptr;
   EngineOptions options;
@@ -134,6 +157,8 @@ struct Core {
   // into the next tick (as in BT.CPP).
   bool wake_up = false;
   NodeId wake_up_node = kNoNode;  // the node that emitted it last (for the loop guard)
+  bool in_wake_up_loop = false;   // the root is being ticked again within the tick
+  Trail* trail = nullptr;         // TickTrail's log, when one is attached
   void emit_wake_up(NodeId id) {
     wake_up = true;
     wake_up_node = id;
@@ -146,6 +171,7 @@ struct Core {
   void set_status(NodeId id, NodeStatus s) {
     NodeStatus& current = nodes[id].status;
     if (current == s) return;
+    if (trail != nullptr) trail->log(nodes, id);
     const NodeStatus previous = current;
     current = s;
     if (!observers.empty()) notify(id, previous, s);

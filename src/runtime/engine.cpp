@@ -21,6 +21,10 @@ void Core::notify_ticked(NodeId id, NodeStatus result) {
 
 NodeStatus Core::execute_tick(NodeId id) {
   ++stats.node_ticks;
+  if (trail != nullptr) {
+    trail->log(nodes, id);
+    trail->path.push_back(id);
+  }
   NodeStatus s = NodeStatus::idle;
   if (nodes[id].conditions == RtNode::kNoConditions) {
     s = tick_kind(id);
@@ -35,6 +39,7 @@ NodeStatus Core::execute_tick(NodeId id) {
   // A skipped node stays IDLE; only its parent hears SKIPPED (BT.CPP's executeTick).
   if (s != NodeStatus::skipped) set_status(id, s);
   if (!observers.empty()) notify_ticked(id, s);
+  if (trail != nullptr) trail->path.pop_back();
   return s;
 }
 
@@ -125,6 +130,7 @@ NodeStatus Core::run_postconditions(NodeId id, NodeStatus status) {
 }
 
 void Core::halt_node(NodeId id) {
+  if (trail != nullptr) trail->log(nodes, id);
   RtNode& n = nodes[id];
   switch (n.kind) {
     case Kind::sequence:
@@ -258,6 +264,17 @@ NodeStatus Engine::tick() {
   detail::Core& c = *core_;
   ++c.tick;
   ++c.stats.root_ticks;
+  return tick_root();
+}
+
+NodeStatus Engine::resume_tick() {
+  return tick_root();
+}
+
+NodeStatus Engine::tick_root() {
+  detail::Core& c = *core_;
+  c.in_wake_up_loop = false;
+  if (c.trail != nullptr) c.trail->path.clear();
   NodeStatus s = c.execute_tick(c.root);
   if (s == NodeStatus::running && c.wake_up) s = wake_up_loop();
   c.last_result = s;
@@ -272,6 +289,7 @@ NodeStatus Engine::wake_up_loop() {
   detail::Core& c = *core_;
   NodeStatus s = NodeStatus::running;
   std::uint32_t reticks = 0;
+  c.in_wake_up_loop = true;
   while (s == NodeStatus::running && c.wake_up) {
     c.wake_up = false;
     if (reticks++ == c.options.max_wakeup_reticks)
@@ -281,6 +299,7 @@ NodeStatus Engine::wake_up_loop() {
     ++c.stats.wakeup_reticks;
     s = c.execute_tick(c.root);
   }
+  c.in_wake_up_loop = false;
   return s;
 }
 

@@ -143,6 +143,12 @@ class Engine {
   // is reset to IDLE. Deferred swaps whose instance is no longer RUNNING are applied at the
   // end of the tick. Throws TickException where BT.CPP's tick throws (see TickError).
   NodeStatus tick();
+  // Goes on with the tick a TickTrail (engine_state.hpp) restored to a checkpoint: the root
+  // is ticked again, without counting a new tick, and goes down its running nodes to the
+  // leaf the checkpoint stopped at, which is ticked again; the tick then ends as tick() ends.
+  // Only where TickTrail::resumable() said so, which is where BT.CPP's nodes go on with the
+  // very child they were ticking.
+  NodeStatus resume_tick();
   // Halts the whole tree as BT.CPP's Tree::haltTree: the root, then every node (each one's
   // _onHalted runs; robot leaves hear halt only while RUNNING); every node is IDLE afterwards.
   // An _onHalted script that fails throws TickException, as in BT.CPP.
@@ -196,7 +202,9 @@ class Engine {
 
  private:
   friend struct EngineState;  // saves and restores the state between ticks (engine_state.hpp)
+  friend class TickTrail;     // and within a tick
   explicit Engine(std::unique_ptr<detail::Core> core);
+  NodeStatus tick_root();  // the root ticked, and the end of the tick: tick(), resume_tick()
   NodeStatus wake_up_loop();
   std::unique_ptr<detail::Core> core_;
 };
