@@ -319,6 +319,12 @@ Campaign build_campaign(const load::Mission& mission, const Options& options) {
   return c;
 }
 
+Campaign build_uplink_campaign(const load::Mission& merged, const verify::Impact& impact,
+                               Options options) {
+  options.changes = behaviour_changes(impact);
+  return build_campaign(merged, options);
+}
+
 std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& campaign) {
   std::vector<std::pair<std::string, std::string>> files;
   for (const auto& s : campaign.scenarios) files.emplace_back(s.name + ".json", s.json);

@@ -151,6 +151,12 @@ struct Campaign {
 
 // Plans, writes (in memory) and replays the campaign.
 Campaign build_campaign(const load::Mission& mission, const Options& options);
+// The campaign of a mission an uplink was merged into: its targets' scenarios, then one per
+// behaviour change of the uplink (`impact`, the diff of the mission before and after it), so
+// that a testbed runs exactly what the uplink changes. `uabt tests --uplink` and `uabt gate
+// --uplink` both build theirs here.
+Campaign build_uplink_campaign(const load::Mission& merged, const verify::Impact& impact,
+                               Options options);
 
 // The campaign's summary and its JUnit run, written beside the scenarios.
 inline constexpr const char* kSummaryFile = "campaign.json";

@@ -476,3 +476,46 @@ TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+TEST(CampaignCli, AnUplinkGetsAScenarioPerBehaviourChangeAsTheGateWritesIt) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "d";
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun tests =
+      run_uabt_in(missions, "tests msl_curiosity --uplink msl_curiosity/uplinks/on_mud --out '" +
+                                out.string() + "'");
+  EXPECT_EQ(tests.exit_code, 0) << tests.out;
+  EXPECT_NE(tests.out.find("  navigation-change-01.json: behaviour change: node navigation moves "
+                           "from hold_position to on_mud, reached at tick 1\n"),
+            std::string::npos)
+      << tests.out;
+  const std::string change = read_all(out / "navigation-change-01.json");
+  EXPECT_NE(change.find("\"description\": \"Test campaign: behaviour change: node navigation "
+                        "moves from hold_position to on_mud\""),
+            std::string::npos)
+      << change;
+  EXPECT_NE(read_all(out / "campaign.json").find("\"behaviour_change_scenarios\": 1"),
+            std::string::npos);
+  // The gate's campaign of the same uplink is the same, file for file.
+  const auto gated = scratch.dir() / "g";
+  const CliRun gate =
+      run_uabt_in(missions, "gate msl_curiosity --uplink msl_curiosity/uplinks/on_mud --out '" +
+                                gated.string() + "'");
+  ASSERT_EQ(gate.exit_code, 0) << gate.out;
+  for (const auto& e : std::filesystem::directory_iterator(gated / "tests"))
+    EXPECT_EQ(read_all(e.path()), read_all(out / e.path().filename())) << e.path().filename();
+  // Replayed on the merged mission, the scenario selects the uplink's new alternative.
+  const CliRun run =
+      run_uabt_in(missions, "run '" + (gated / "merged").string() + "' --scenario '" +
+                                (out / "navigation-change-01.json").string() + "'");
+  EXPECT_EQ(run.out.find("tick 1: navigation selects "),
+            run.out.find("tick 1: navigation selects on_mud (Req3)"))
+      << run.out;
+  EXPECT_NE(run.out.find("tick 1: navigation selects on_mud (Req3)"), std::string::npos) << run.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
