@@ -519,3 +519,49 @@ TEST(CampaignCli, AnUplinkGetsAScenarioPerBehaviourChangeAsTheGateWritesIt) {
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+std::string record_text(const campaign::RunRecord& r) {
+  std::string out =
+      r.source + " | " + r.verdict + " | " + r.error + " | " + std::to_string(r.ticks) + "\n";
+  for (const auto& o : r.observations)
+    out += "  " + o.adaptable + " " + o.alternative + " at " + std::to_string(o.tick) + " in " +
+           campaign::state_json(o.state) + "\n";
+  return out;
+}
+
+TEST(CampaignReplay, OneTreeResetBetweenRunsRunsExactlyAsAFreshTree) {
+  const load::Mission m = load(mission_dir("msl_curiosity"));
+  const campaign::Campaign c = campaign::build_campaign(m, {});
+  const auto scenarios = mission_dir("msl_curiosity") / "scenarios";
+  struct Run {
+    std::string json, file;
+    std::set<std::string> stop_after;
+  };
+  std::vector<Run> runs;
+  // Stopped once navigation selected, with its drive still RUNNING: the next run must not see
+  // the actions, counters or blackboard it left.
+  runs.push_back({read_all(scenarios / "dusty_start.json"), "dusty_start.json", {"navigation"}});
+  for (const auto& s : c.scenarios) runs.push_back({s.json, s.name + ".json", {}});
+  for (const char* name : {"rocks_mid_drive.json", "short_drive.json", "dusty_start.json"})
+    runs.push_back({read_all(scenarios / name), name, {}});
+  runs.push_back({read_all(scenarios / "rocks_mid_drive.json"), "again.json", {"navigation"}});
+  runs.push_back({c.scenarios.front().json, "first-again.json", {}});
+
+  const campaign::Replayer shared(m, {});
+  std::size_t left_running = 0;
+  for (const auto& r : runs) {
+    const campaign::RunRecord reused = shared.run(r.json, r.file, r.stop_after);
+    const campaign::Replayer fresh_tree(m, {});
+    const campaign::RunRecord fresh = fresh_tree.run(r.json, r.file, r.stop_after);
+    EXPECT_EQ(record_text(reused), record_text(fresh));
+    EXPECT_FALSE(fresh.observations.empty()) << r.file;
+    left_running += fresh.verdict == "timeout" ? 1 : 0;
+  }
+  EXPECT_EQ(left_running, 2u);  // the two runs stopped mid-drive
+}
+
+}  // namespace
+}  // namespace uabt::testing
