@@ -4,6 +4,7 @@
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -331,6 +332,7 @@ TEST(CampaignCoverage, ScenariosAndMonitorTraces) {
             "msl_curiosity: 1 run covers 3 of 9 reachable targets (decision 7, MC/DC 2; 0 "
             "unreachable)\n"
             "  msl_curiosity/scenarios/dusty_start.json: 1 observation in 58 ticks\n"
+            "  navigation: 1 of 3 states visited, 33.3% (1/3) of the space\n"
             "missed: navigation selects on_rocks (Req2); covered by initial "
             "{\"OnDust\":false,\"OnRocks\":true}\n"
             "missed: navigation selects hold_position (Safe); covered by initial "
@@ -561,6 +563,69 @@ TEST(CampaignReplay, OneTreeResetBetweenRunsRunsExactlyAsAFreshTree) {
     left_running += fresh.verdict == "timeout" ? 1 : 0;
   }
   EXPECT_EQ(left_running, 2u);  // the two runs stopped mid-drive
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+std::string landing_scenario(const std::string& wind) {
+  return "{\"max_ticks\": 5, \"initial\": {\"wind\": " + wind +
+         ", \"battery\": 50, \"terrain\": \"flat\"}}\n";
+}
+
+TEST(CampaignCoverage, VisitedCellsHoldTheirExactShareOfTheSpace) {
+  // planetary_landing: wind real in [0, 40] cut at 15, battery integer in [0, 100], terrain one
+  // of 4. Runs at wind 5, 15 and 20 (battery 50, flat) visit the cells (0, 15) and (15, 40),
+  // of lengths 15 and 25, and the point 15, of measure 0.
+  TempMission scratch({{"below.json", landing_scenario("5")},
+                       {"at.json", landing_scenario("15")},
+                       {"above.json", landing_scenario("20")}});
+  const long long whole = 40 * 101 * 4, visited = 15 + 25;
+  const long long g = std::gcd(visited, whole);
+  const std::string share = std::to_string(visited / g) + "/" + std::to_string(whole / g);
+  EXPECT_EQ(share, "1/404");
+  const std::string runs = "'" + (scratch.dir() / "below.json").string() + "' '" +
+                           (scratch.dir() / "at.json").string() + "' '" +
+                           (scratch.dir() / "above.json").string() + "'";
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun json =
+      run_uabt_in(missions, "coverage planetary_landing " + runs + " --format json");
+  const auto j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["visits"].size(), 1u) << json.out;
+  const auto& v = j["visits"][0];
+  EXPECT_EQ(v["adaptable"], "landing");
+  EXPECT_EQ(v["counted"], false);
+  EXPECT_EQ(v["cells"], 5 * 101 * 4);  // wind: 0, (0, 15), 15, (15, 40), 40
+  EXPECT_EQ(v["visited_cells"], 3);
+  EXPECT_EQ(v["visited_share_exact"], share);
+  EXPECT_EQ(v["visited_boundary_cells"], 1);
+  EXPECT_EQ(v["visited_boundary"], "a boundary point");
+  std::map<std::string, nlohmann::json> targets;
+  for (const auto& t : j["targets"]) targets[t["id"]] = t;
+  // Every state with wind in (0, 15): 15 of the 40 of wind; the runs visited 15 of 16160.
+  EXPECT_EQ(targets["landing/boundary/wind/15/below"]["share_exact"], "3/8");
+  EXPECT_EQ(targets["landing/boundary/wind/15/below"]["visited_share_exact"], "3/3232");
+  EXPECT_EQ(targets["landing/boundary/wind/15/at"]["share_exact"], "0");
+  EXPECT_EQ(targets["landing/boundary/wind/15/at"]["visited_cells"], 1);
+  EXPECT_EQ(targets["landing/boundary/wind/15/at"]["visited_boundary_cells"], 1);
+  EXPECT_FALSE(targets["landing/mcdc/Nominal/wind < 15"].contains("share"));
+
+  const CliRun text = run_uabt_in(missions, "coverage planetary_landing " + runs);
+  EXPECT_NE(text.out.find("  landing: 3 of 2020 cells visited, 0.2% (1/404) of the space; 1 of "
+                          "the cells on a boundary: 0% of the space (a boundary point)\n"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("visited: wind = 15, on the boundary: 0% of the space (a boundary "
+                          "point)\n"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("visited: wind in (0, 15), just below the boundary 15: 0.1% (3/3232) "
+                          "of the space\n"),
+            std::string::npos)
+      << text.out;
 }
 
 }  // namespace
