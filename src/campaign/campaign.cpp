@@ -11,6 +11,7 @@
 #include "campaign/world_play.hpp"
 #include "monitor/trace.hpp"
 #include "prove/outcome.hpp"
+#include "report/coverage_view.hpp"
 #include "report/reports.hpp"
 #include "runtime/scenario.hpp"
 
@@ -331,6 +332,12 @@ Campaign build_campaign(const load::Mission& mission, const Options& given) {
   return c;
 }
 
+Campaign build_uplink_campaign(const load::Mission& merged, const verify::Impact& impact,
+                               Options options) {
+  options.changes = behaviour_changes(impact);
+  return build_campaign(merged, options);
+}
+
 std::vector<std::pair<std::string, std::string>> campaign_files(const Campaign& campaign) {
   std::vector<std::pair<std::string, std::string>> files;
   for (const auto& s : campaign.scenarios) files.emplace_back(s.name + ".json", s.json);
@@ -388,6 +395,15 @@ Json target_json(const Target& t, bool covered) {
   if (!t.reachable) j["reason"] = t.reason;
   j["covered"] = covered;
   return j;
+}
+
+// The visited cells of a node or a target: how many, their exact share, those of measure zero.
+void visited_json(Json& out, const Visited& v) {
+  out["visited_cells"] = v.cells;
+  out["visited_share"] = number_json(v.share.value);
+  out["visited_share_exact"] = v.share.exact;
+  out["visited_boundary_cells"] = v.boundary;
+  if (v.boundary > 0) out["visited_boundary"] = v.boundary_kind;
 }
 
 Json skipped_json(const std::vector<std::pair<std::string, std::string>>& skipped) {
@@ -501,6 +517,16 @@ std::string coverage_text(const CoverageReport& report) {
            (r.observations.size() == 1 ? " observation in " : " observations in ") +
            ticks_text(r.ticks) + (r.error.empty() ? "" : ", stopped: " + r.error) + "\n";
   }
+  for (const auto& v : report.visits)
+    out += "  " + v.adaptable + ": " + std::to_string(v.visited.cells) + " of " +
+           std::to_string(v.cells) + (v.counted ? " states" : " cells") + " visited, " +
+           visited_text(v.visited) + "\n";
+  for (const auto& v : report.visits)
+    for (const auto& t : v.targets) {
+      const Target& target = report.targets[t.target];
+      if (target.criterion == Criterion::boundary && t.visited.cells > 0)
+        out += "visited: " + target.text + ": " + visited_text(t.visited) + "\n";
+    }
   for (std::size_t k = 0; k < report.targets.size(); ++k) {
     const Target& t = report.targets[k];
     if (!t.reachable || report.covered[k]) continue;
@@ -543,9 +569,35 @@ std::string coverage_json(const CoverageReport& report) {
     }
     targets.push_back(std::move(e));
   }
+  for (const auto& v : report.visits)
+    for (const auto& t : v.targets) {
+      Json& e = targets[t.target];
+      e["share"] = number_json(t.share.value);
+      e["share_exact"] = t.share.exact;
+      visited_json(e, t.visited);
+    }
   j["targets"] = targets;
+  Json visits = Json::array();
+  for (const auto& v : report.visits) {
+    Json e = Json::object();
+    e["adaptable"] = v.adaptable;
+    e["counted"] = v.counted;
+    e["cells"] = v.cells;
+    visited_json(e, v.visited);
+    visits.push_back(std::move(e));
+  }
+  j["visits"] = visits;
   j["skipped"] = skipped_json(report.skipped);
   return j.dump(2) + "\n";
+}
+
+std::string visited_text(const Visited& v) {
+  const std::string zero = "0% of the space (" + v.boundary_kind + ")";
+  if (v.cells == v.boundary) return v.boundary == 0 ? "0% of the space" : zero;
+  std::string out = report::detail::share_text({v.share.value, v.share.exact}) + " of the space";
+  if (v.boundary > 0)
+    out += "; " + std::to_string(v.boundary) + " of the cells on a boundary: " + zero;
+  return out;
 }
 
 RunRecord observe_trace(const load::Mission& mission, const std::string& content,

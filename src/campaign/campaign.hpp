@@ -53,6 +53,37 @@ struct RunRecord {
   std::vector<Observation> observations;
 };
 
+// A share of a node's domain (the states that satisfy its assumptions), as the coverage stage
+// measures it: states counted, real variables measured (length, area), exact.
+struct Share {
+  std::string exact = "0";  // "1/404"
+  double value = 0;
+};
+
+// A set of a node's cells the runs visited: how many, the share of the domain they hold, and
+// those of measure zero (a point or line on a boundary) counted apart.
+struct Visited {
+  std::uint64_t cells = 0;     // boundary cells included
+  std::uint64_t boundary = 0;  // cells of measure zero
+  Share share;
+  std::string boundary_kind;  // "a boundary point", "a boundary line", "boundary points and lines"
+};
+
+// What runs visited of one adaptable node's space, and of each of its targets' states.
+struct NodeVisit {
+  std::string adaptable;
+  bool counted = true;      // every variable discrete: a cell is a state
+  std::uint64_t cells = 0;  // cells of the domain
+  Visited visited;
+  std::vector<std::uint64_t> states;  // the visited cells, by index in the node's space
+  struct TargetShare {
+    std::size_t target = 0;  // into Model::targets()
+    Share share;             // what its states hold of the domain
+    Visited visited;         // of its states, those the runs visited
+  };
+  std::vector<TargetShare> targets;  // every target reached by single states (not MC/DC pairs)
+};
+
 // Targets and their witnesses for every adaptable node, enumerated exactly over the cells of
 // the coverage stage (verify/space.hpp). Nodes that cannot be enumerated are listed in
 // `skipped` with the reason, and get no targets.
@@ -68,6 +99,8 @@ class Model {
 
   // The targets a set of runs covered (indices into targets()).
   std::vector<bool> covered(const std::vector<RunRecord>& runs) const;
+  // What a set of runs visited of each node's space, measured exactly (visits.cpp).
+  std::vector<NodeVisit> visits(const std::vector<RunRecord>& runs) const;
 
   // Minimised: per adaptable node the states (as scenario values) that together reach every
   // reachable target of it, fewest first found by greedy set cover, with the targets each
@@ -106,7 +139,8 @@ class Replayer {
   ~Replayer();
   // Runs a scenario (JSON text) until every adaptable node of `stop_after` has selected, the
   // root completes, a tick throws or max_ticks is reached; every selection is observed.
-  // Throws runtime::ScenarioError when the scenario does not parse.
+  // Throws runtime::ScenarioError when the scenario does not parse. Each run is on the same
+  // tree, reset to exactly its fresh state: a Replayer runs one scenario at a time.
   RunRecord run(const std::string& json, const std::string& file,
                 const std::set<std::string>& stop_after = {}) const;
 
@@ -167,6 +201,12 @@ struct Campaign {
 
 // Plans, writes (in memory) and replays the campaign.
 Campaign build_campaign(const load::Mission& mission, const Options& options);
+// The campaign of a mission an uplink was merged into: its targets' scenarios, then one per
+// behaviour change of the uplink (`impact`, the diff of the mission before and after it), so
+// that a testbed runs exactly what the uplink changes. `uabt tests --uplink` and `uabt gate
+// --uplink` both build theirs here.
+Campaign build_uplink_campaign(const load::Mission& merged, const verify::Impact& impact,
+                               Options options);
 
 // The campaign's summary and its JUnit run, written beside the scenarios.
 inline constexpr const char* kSummaryFile = "campaign.json";
@@ -185,9 +225,12 @@ struct CoverageReport {
   std::vector<bool> covered;
   std::vector<RunRecord> runs;
   std::vector<std::pair<std::string, std::string>> skipped;
+  std::vector<NodeVisit> visits;  // per node: the cells the runs visited (Model::visits)
 };
 std::string coverage_text(const CoverageReport& report);
 std::string coverage_json(const CoverageReport& report);
+// "25% (1/4) of the space", "0% of the space (a boundary point)", both when both are there.
+std::string visited_text(const Visited& visited);
 
 // A monitor trace as observations: every tick whose state holds all of a node's variables.
 RunRecord observe_trace(const load::Mission& mission, const std::string& content,

@@ -41,6 +41,22 @@ class GapObserver : public runtime::Observer {
   std::function<void(const std::string&)> on_gap_;
 };
 
+// Registers an observer for one run; gone however the run ends.
+class Observing {
+ public:
+  Observing(runtime::Engine& engine, runtime::Observer& observer)
+      : engine_(engine), observer_(observer) {
+    engine_.add_observer(&observer_);
+  }
+  ~Observing() { engine_.remove_observer(&observer_); }
+  Observing(const Observing&) = delete;
+  Observing& operator=(const Observing&) = delete;
+
+ private:
+  runtime::Engine& engine_;
+  runtime::Observer& observer_;
+};
+
 }  // namespace
 
 struct Replayer::Impl {
@@ -49,6 +65,9 @@ struct Replayer::Impl {
   std::vector<bt::NodeModel> robot_nodes;
   runtime::ScenarioVocabulary vocabulary;
   std::vector<compile::TraceEntry> trace;  // where each compiled node comes from
+  // The tree, built for the first run and reset for each next one (Runner::restart: exactly a
+  // fresh tree, without instantiating it again).
+  std::unique_ptr<runtime::Runner> runner;
 };
 
 Replayer::Replayer(const load::Mission& mission, const compile::Options& options) {
@@ -63,7 +82,7 @@ Replayer::Replayer(const load::Mission& mission, const compile::Options& options
   auto doc = bt::parse_document(xml, "compiled.xml", findings);
   if (!doc)
     throw std::runtime_error("the compiled tree does not read back:\n" + format_text(findings));
-  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}, {}});
+  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}, {}, {}});
   impl_->vocabulary.add(mission);
   impl_->trace = std::move(compiled.trace);
   if (mission.nodes) impl_->robot_nodes = *mission.nodes;
@@ -89,7 +108,12 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
   }
   runtime::RunOptions options;
   options.log_conditions = false;
-  runtime::Runner runner(impl_->document, std::move(scenario), options, impl_->robot_nodes);
+  if (impl_->runner)
+    impl_->runner->restart(std::move(scenario));
+  else
+    impl_->runner = std::make_unique<runtime::Runner>(impl_->document, std::move(scenario), options,
+                                                      impl_->robot_nodes);
+  runtime::Runner& runner = *impl_->runner;
   std::set<std::string> waiting = stop_after;
   std::map<std::string, std::uint64_t> selected_at;  // per node: the last tick it selected
   auto observe = [&](const std::string& adaptable, const std::string& alternative) {
@@ -116,15 +140,15 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
   GapObserver gaps(runner.engine(), adaptables, [&](const std::string& adaptable) {
     if (selected_at[adaptable] != runner.ticks() + 1) observe(adaptable, "");
   });
-  runner.engine().add_observer(&selections);
-  runner.engine().add_observer(&gaps);
-  while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
-    runner.step();
-    runner.world().clear_log();
-    if (!stop_after.empty() && waiting.empty()) break;
+  {
+    const Observing observing_selections(runner.engine(), selections);
+    const Observing observing_gaps(runner.engine(), gaps);
+    while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
+      runner.step();
+      runner.world().clear_log();
+      if (!stop_after.empty() && waiting.empty()) break;
+    }
   }
-  runner.engine().remove_observer(&gaps);
-  runner.engine().remove_observer(&selections);
   record.ticks = runner.ticks();
   record.verdict = runner.verdict();
   if (runner.error()) {

@@ -127,6 +127,7 @@ void register_coverage(CLI::App& app, int& exit_code) {
         return;
       }
       report.covered = model.covered(report.runs);
+      report.visits = model.visits(report.runs);
       std::cout << (args->format == "json" ? campaign::coverage_json(report)
                                            : campaign::coverage_text(report));
       bool all = true;

@@ -1,11 +1,13 @@
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "base/diagnostics.hpp"
 #include "base/files.hpp"
 #include "campaign/campaign.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
+#include "verify/impact.hpp"
 
 namespace uabt::cli {
 
@@ -21,7 +23,9 @@ void register_tests(CLI::App& app, int& exit_code) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
-      "tests", "Write a test campaign (uabt run scenarios) and replay it; OUT/junit.xml");
+      "tests",
+      "Write a test campaign (uabt run scenarios) and replay it; OUT/junit.xml; with --uplink, "
+      "one more scenario per behaviour change of the last package");
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
       ->check(CLI::ExistingDirectory);
@@ -40,12 +44,23 @@ void register_tests(CLI::App& app, int& exit_code) {
   cmd->callback([args, &exit_code] {
     auto mission = load_for_campaign(args->mission, args->uplinks, exit_code);
     if (!mission) return;
+    // The last package is the one tested, as `gate --uplink` gates it: its behaviour changes
+    // are those from the mission with the packages before it.
+    std::optional<load::Mission> running;
+    if (!args->uplinks.empty()) {
+      running = load_for_campaign(args->mission, {args->uplinks.begin(), args->uplinks.end() - 1},
+                                  exit_code);
+      if (!running) return;
+    }
     campaign::Options options;
     options.criteria = campaign_criteria(args->criterion);
     options.max_ticks = args->max_ticks;
     apply_selection(args->selection, options.compile);
     try {
-      const campaign::Campaign c = campaign::build_campaign(*mission, options);
+      const campaign::Campaign c =
+          running ? campaign::build_uplink_campaign(
+                        *mission, verify::selection_impact(*running, *mission, {}), options)
+                  : campaign::build_campaign(*mission, options);
       const std::filesystem::path out(args->out);
       for (const auto& [name, content] : campaign::campaign_files(c))
         write_file_atomically(out / name, content);

@@ -15,10 +15,11 @@ void add_test_campaign(Outcome& outcome, const Options& options, const std::stri
   }
   campaign::Options campaign_options;
   campaign_options.compile = options.compile;
-  if (outcome.report.uplink)
-    campaign_options.changes = campaign::behaviour_changes(outcome.report.uplink->impact);
   try {
-    outcome.campaign = campaign::build_campaign(*outcome.mission, campaign_options);
+    outcome.campaign = outcome.report.uplink
+                           ? campaign::build_uplink_campaign(
+                                 *outcome.mission, outcome.report.uplink->impact, campaign_options)
+                           : campaign::build_campaign(*outcome.mission, campaign_options);
   } catch (const std::exception& e) {
     summary.not_built = e.what();
     return;

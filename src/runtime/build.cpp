@@ -304,15 +304,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
         core.leaf_ports.push_back(std::move(port));
       }
       p.ports_count = static_cast<std::uint32_t>(core.leaf_ports.size()) - p.ports_begin;
-      if (bind_world) {
-        const std::string family =
-            xml.tag == "Action" || xml.tag == "Condition" ? xml.tag : std::string();
-        const std::span<const LeafPort> ports(core.leaf_ports.data() + p.ports_begin,
-                                              p.ports_count);
-        const std::uint32_t handle = core.world->bind_leaf(
-            LeafBinding{id, core.info[id].kind, family, ports, core.info[id], bb});
-        core.params[core.nodes[id].params].world_handle = handle;
-      }
+      if (bind_world) core.bind_world_leaf(id);
       break;
     }
     case Kind::subtree: {
@@ -411,6 +403,14 @@ void rollback(Core& core, const CoreMark& m) {
 }
 
 }  // namespace detail
+
+void detail::Core::bind_world_leaf(NodeId id) {
+  const NodeInfo& i = info[id];
+  const std::string family = i.tag == "Action" || i.tag == "Condition" ? i.tag : std::string();
+  detail::NodeParams& p = params[nodes[id].params];
+  const std::span<const LeafPort> ports(leaf_ports.data() + p.ports_begin, p.ports_count);
+  p.world_handle = world->bind_leaf(LeafBinding{id, i.kind, family, ports, i, bb});
+}
 
 Engine Engine::build(const bt::Document& doc, World& world, EngineOptions options) {
   return build(doc, std::string(), world, std::move(options));

@@ -210,6 +210,9 @@ struct Core {
   bool try_read_int(const Input& input, std::int64_t& out) const;
   bool try_read_bool(const Input& input, bool& out) const;
 
+  // Binds a robot leaf to `world` (World::bind_leaf) and keeps its handle.
+  void bind_world_leaf(NodeId id);
+
   LeafContext leaf_context(NodeId id) {
     const NodeParams& p = params[nodes[id].params];
     return LeafContext{id, p.world_handle, tick,

@@ -19,6 +19,7 @@ using NodeId = std::uint32_t;
 inline constexpr NodeId kNoNode = UINT32_MAX;
 
 class World;
+struct EngineState;
 namespace detail {
 struct Core;
 }
@@ -188,6 +189,13 @@ class Engine {
   std::uint64_t tick_count() const;  // root ticks so far
   const Stats& stats() const;
   const std::vector<TickError>& errors() const;
+
+  // Puts the engine back as Engine::build left it, over `world`: the node statuses, counters
+  // and blackboard of `built` (EngineState::save right after build; values written since go
+  // back to empty), no errors, no statistics, and every robot leaf bound again to `world` in
+  // the order build bound them. What follows runs exactly as on a freshly built engine, without
+  // instantiating the tree again. Observers stay. Not after a hot swap.
+  void reset(World& world, const EngineState& built);
 
   // Hot swap (DESIGN §8), between two ticks.
   // Registers or replaces the definition of `def.id` for later instantiations only.

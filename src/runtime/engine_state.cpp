@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "runtime/core.hpp"
+#include "runtime/smart_selection.hpp"
 
 namespace uabt::runtime {
 
@@ -43,6 +44,17 @@ void EngineState::restore(Engine& engine) const {
   c.wake_up_node = wake_up_node;
   c.tick = tick;
   c.last_result = last_result;
+}
+
+void Engine::reset(World& world, const EngineState& built) {
+  detail::Core& c = *core_;
+  built.restore(*this);
+  c.errors.clear();
+  c.stats = {};
+  if (c.options.smart_selection) c.smart = std::make_shared<detail::SmartSelection>();
+  c.world = &world;
+  for (NodeId id = 0; id < c.nodes.size(); ++id)
+    if (c.nodes[id].kind == detail::Kind::world_leaf && c.nodes[id].alive) c.bind_world_leaf(id);
 }
 
 namespace {

@@ -3,15 +3,38 @@
 namespace uabt::runtime {
 
 Runner::Runner(const bt::Document& doc, Scenario scenario, RunOptions options,
-               std::vector<bt::NodeModel> robot_nodes) {
-  max_ticks_ = options.max_ticks > 0 ? options.max_ticks : scenario.max_ticks;
+               std::vector<bt::NodeModel> robot_nodes)
+    : options_(std::move(options)) {
   // The document's own models first, then what the robot declares (nodes.xml).
-  std::vector<bt::NodeModel> models = doc.node_models;
-  models.insert(models.end(), robot_nodes.begin(), robot_nodes.end());
-  world_ = std::make_unique<SimWorld>(std::move(scenario), std::move(models));
-  world_->log_conditions(options.log_conditions);
+  models_ = doc.node_models;
+  models_.insert(models_.end(), robot_nodes.begin(), robot_nodes.end());
+  world_ = new_world(std::move(scenario));
   engine_ =
-      std::make_unique<Engine>(Engine::build(doc, options.main_tree, *world_, options.engine));
+      std::make_unique<Engine>(Engine::build(doc, options_.main_tree, *world_, options_.engine));
+  built_ = EngineState::save(*engine_);
+  start();
+}
+
+void Runner::restart(Scenario scenario) {
+  // The old world goes only once the engine no longer points at it.
+  auto world = new_world(std::move(scenario));
+  engine_->reset(*world, built_);
+  world_ = std::move(world);
+  next_event_ = 0;
+  last_ = NodeStatus::idle;
+  error_.reset();
+  unhandled_.clear();
+  start();
+}
+
+std::unique_ptr<SimWorld> Runner::new_world(Scenario scenario) const {
+  auto world = std::make_unique<SimWorld>(std::move(scenario), models_);
+  world->log_conditions(options_.log_conditions);
+  return world;
+}
+
+void Runner::start() {
+  max_ticks_ = options_.max_ticks > 0 ? options_.max_ticks : world_->scenario().max_ticks;
   world_->apply_initial(engine_->blackboard());
 }
 

@@ -8,6 +8,7 @@
 
 #include "bt/tree.hpp"
 #include "runtime/engine.hpp"
+#include "runtime/engine_state.hpp"
 #include "runtime/scenario.hpp"
 #include "runtime/world.hpp"
 
@@ -64,10 +65,20 @@ class Runner {
   std::int64_t max_ticks() const { return max_ticks_; }
   // Steps until done() or max_ticks, then reports.
   RunResult run();
+  // Starts over in another scenario on the same tree: exactly as a Runner constructed afresh
+  // from the same document, options and robot nodes (Engine::reset), without instantiating the
+  // tree again. For running many scenarios on one tree; not after a hot swap.
+  void restart(Scenario scenario);
 
  private:
-  std::unique_ptr<SimWorld> world_;  // before engine_: the engine calls it until destroyed
+  std::unique_ptr<SimWorld> new_world(Scenario scenario) const;
+  void start();  // the scenario's max_ticks and initial state
+
+  RunOptions options_;
+  std::vector<bt::NodeModel> models_;  // the document's, then the robot's
+  std::unique_ptr<SimWorld> world_;    // before engine_: the engine calls it until destroyed
   std::unique_ptr<Engine> engine_;
+  EngineState built_;  // the engine as built, for restart()
   std::int64_t max_ticks_ = 0;
   std::size_t next_event_ = 0;
   NodeStatus last_ = NodeStatus::idle;

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -331,6 +332,7 @@ TEST(CampaignCoverage, ScenariosAndMonitorTraces) {
             "msl_curiosity: 1 run covers 3 of 9 reachable targets (decision 7, MC/DC 2; 0 "
             "unreachable)\n"
             "  msl_curiosity/scenarios/dusty_start.json: 1 observation in 58 ticks\n"
+            "  navigation: 1 of 3 states visited, 33.3% (1/3) of the space\n"
             "missed: navigation selects on_rocks (Req2); covered by initial "
             "{\"OnDust\":false,\"OnRocks\":true}\n"
             "missed: navigation selects hold_position (Safe); covered by initial "
@@ -472,6 +474,158 @@ TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
                          "undefined blackboard key 'target_range'"),
             std::string::npos)
       << run.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+TEST(CampaignCli, AnUplinkGetsAScenarioPerBehaviourChangeAsTheGateWritesIt) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "d";
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun tests =
+      run_uabt_in(missions, "tests msl_curiosity --uplink msl_curiosity/uplinks/on_mud --out '" +
+                                out.string() + "'");
+  EXPECT_EQ(tests.exit_code, 0) << tests.out;
+  EXPECT_NE(tests.out.find("  navigation-change-01.json: behaviour change: node navigation moves "
+                           "from hold_position to on_mud, reached at tick 1\n"),
+            std::string::npos)
+      << tests.out;
+  const std::string change = read_all(out / "navigation-change-01.json");
+  EXPECT_NE(change.find("\"description\": \"Test campaign: behaviour change: node navigation "
+                        "moves from hold_position to on_mud\""),
+            std::string::npos)
+      << change;
+  EXPECT_NE(read_all(out / "campaign.json").find("\"behaviour_change_scenarios\": 1"),
+            std::string::npos);
+  // The gate's campaign of the same uplink is the same, file for file.
+  const auto gated = scratch.dir() / "g";
+  const CliRun gate =
+      run_uabt_in(missions, "gate msl_curiosity --uplink msl_curiosity/uplinks/on_mud --out '" +
+                                gated.string() + "'");
+  ASSERT_EQ(gate.exit_code, 0) << gate.out;
+  for (const auto& e : std::filesystem::directory_iterator(gated / "tests"))
+    EXPECT_EQ(read_all(e.path()), read_all(out / e.path().filename())) << e.path().filename();
+  // Replayed on the merged mission, the scenario selects the uplink's new alternative.
+  const CliRun run =
+      run_uabt_in(missions, "run '" + (gated / "merged").string() + "' --scenario '" +
+                                (out / "navigation-change-01.json").string() + "'");
+  EXPECT_EQ(run.out.find("tick 1: navigation selects "),
+            run.out.find("tick 1: navigation selects on_mud (Req3)"))
+      << run.out;
+  EXPECT_NE(run.out.find("tick 1: navigation selects on_mud (Req3)"), std::string::npos) << run.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+std::string record_text(const campaign::RunRecord& r) {
+  std::string out =
+      r.source + " | " + r.verdict + " | " + r.error + " | " + std::to_string(r.ticks) + "\n";
+  for (const auto& o : r.observations)
+    out += "  " + o.adaptable + " " + o.alternative + " at " + std::to_string(o.tick) + " in " +
+           campaign::state_json(o.state) + "\n";
+  return out;
+}
+
+TEST(CampaignReplay, OneTreeResetBetweenRunsRunsExactlyAsAFreshTree) {
+  const load::Mission m = load(mission_dir("msl_curiosity"));
+  const campaign::Campaign c = campaign::build_campaign(m, {});
+  const auto scenarios = mission_dir("msl_curiosity") / "scenarios";
+  struct Run {
+    std::string json, file;
+    std::set<std::string> stop_after;
+  };
+  std::vector<Run> runs;
+  // Stopped once navigation selected, with its drive still RUNNING: the next run must not see
+  // the actions, counters or blackboard it left.
+  runs.push_back({read_all(scenarios / "dusty_start.json"), "dusty_start.json", {"navigation"}});
+  for (const auto& s : c.scenarios) runs.push_back({s.json, s.name + ".json", {}});
+  for (const char* name : {"rocks_mid_drive.json", "short_drive.json", "dusty_start.json"})
+    runs.push_back({read_all(scenarios / name), name, {}});
+  runs.push_back({read_all(scenarios / "rocks_mid_drive.json"), "again.json", {"navigation"}});
+  runs.push_back({c.scenarios.front().json, "first-again.json", {}});
+
+  const campaign::Replayer shared(m, {});
+  std::size_t left_running = 0;
+  for (const auto& r : runs) {
+    const campaign::RunRecord reused = shared.run(r.json, r.file, r.stop_after);
+    const campaign::Replayer fresh_tree(m, {});
+    const campaign::RunRecord fresh = fresh_tree.run(r.json, r.file, r.stop_after);
+    EXPECT_EQ(record_text(reused), record_text(fresh));
+    EXPECT_FALSE(fresh.observations.empty()) << r.file;
+    left_running += fresh.verdict == "timeout" ? 1 : 0;
+  }
+  EXPECT_EQ(left_running, 2u);  // the two runs stopped mid-drive
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+std::string landing_scenario(const std::string& wind) {
+  return "{\"max_ticks\": 5, \"initial\": {\"wind\": " + wind +
+         ", \"battery\": 50, \"terrain\": \"flat\"}}\n";
+}
+
+TEST(CampaignCoverage, VisitedCellsHoldTheirExactShareOfTheSpace) {
+  // planetary_landing: wind real in [0, 40] cut at 15, battery integer in [0, 100], terrain one
+  // of 4. Runs at wind 5, 15 and 20 (battery 50, flat) visit the cells (0, 15) and (15, 40),
+  // of lengths 15 and 25, and the point 15, of measure 0.
+  TempMission scratch({{"below.json", landing_scenario("5")},
+                       {"at.json", landing_scenario("15")},
+                       {"above.json", landing_scenario("20")}});
+  const long long whole = 40 * 101 * 4, visited = 15 + 25;
+  const long long g = std::gcd(visited, whole);
+  const std::string share = std::to_string(visited / g) + "/" + std::to_string(whole / g);
+  EXPECT_EQ(share, "1/404");
+  const std::string runs = "'" + (scratch.dir() / "below.json").string() + "' '" +
+                           (scratch.dir() / "at.json").string() + "' '" +
+                           (scratch.dir() / "above.json").string() + "'";
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun json =
+      run_uabt_in(missions, "coverage planetary_landing " + runs + " --format json");
+  const auto j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["visits"].size(), 1u) << json.out;
+  const auto& v = j["visits"][0];
+  EXPECT_EQ(v["adaptable"], "landing");
+  EXPECT_EQ(v["counted"], false);
+  EXPECT_EQ(v["cells"], 5 * 101 * 4);  // wind: 0, (0, 15), 15, (15, 40), 40
+  EXPECT_EQ(v["visited_cells"], 3);
+  EXPECT_EQ(v["visited_share_exact"], share);
+  EXPECT_EQ(v["visited_boundary_cells"], 1);
+  EXPECT_EQ(v["visited_boundary"], "a boundary point");
+  std::map<std::string, nlohmann::json> targets;
+  for (const auto& t : j["targets"]) targets[t["id"]] = t;
+  // Every state with wind in (0, 15): 15 of the 40 of wind; the runs visited 15 of 16160.
+  EXPECT_EQ(targets["landing/boundary/wind/15/below"]["share_exact"], "3/8");
+  EXPECT_EQ(targets["landing/boundary/wind/15/below"]["visited_share_exact"], "3/3232");
+  EXPECT_EQ(targets["landing/boundary/wind/15/at"]["share_exact"], "0");
+  EXPECT_EQ(targets["landing/boundary/wind/15/at"]["visited_cells"], 1);
+  EXPECT_EQ(targets["landing/boundary/wind/15/at"]["visited_boundary_cells"], 1);
+  EXPECT_FALSE(targets["landing/mcdc/Nominal/wind < 15"].contains("share"));
+
+  const CliRun text = run_uabt_in(missions, "coverage planetary_landing " + runs);
+  EXPECT_NE(text.out.find("  landing: 3 of 2020 cells visited, 0.2% (1/404) of the space; 1 of "
+                          "the cells on a boundary: 0% of the space (a boundary point)\n"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("visited: wind = 15, on the boundary: 0% of the space (a boundary "
+                          "point)\n"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("visited: wind in (0, 15), just below the boundary 15: 0.1% (3/3232) "
+                          "of the space\n"),
+            std::string::npos)
+      << text.out;
 }
 
 }  // namespace

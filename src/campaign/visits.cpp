@@ -1,0 +1,89 @@
+// What a set of runs visited of each node's space: the cells, and the exact share of the
+// domain they hold, measured as the coverage stage measures shares (DESIGN §5).
+#include <map>
+#include <set>
+
+#include "campaign/campaign.hpp"
+#include "campaign/node.hpp"
+
+namespace uabt::campaign {
+
+namespace {
+
+using verify::detail::Bits;
+using verify::detail::Fraction;
+using verify::detail::RealAxis;
+
+// The dimension of a state's cell: 0 for a point, 1 for a line, ... over its real variables.
+std::size_t real_dimension(const verify::detail::Space& space, std::uint64_t state) {
+  std::size_t out = 0;
+  const auto& dims = space.dimensions();
+  for (std::size_t d = 0; d < dims.size(); ++d) {
+    if (dims[d].component < 0) continue;
+    const auto& comp = space.components()[static_cast<std::size_t>(dims[d].component)];
+    const auto& cell = comp.cells[space.digit(state, d)];
+    if (comp.axes.size() == 1)
+      out += RealAxis::is_point(cell.axis_cell[0]) ? 0 : 1;
+    else
+      out += cell.shape.size() >= 3 ? 2 : cell.shape.size() - 1;
+  }
+  return out;
+}
+
+Share share_of(const Fraction& part, const Fraction& whole) {
+  const Fraction f = whole.is_zero() ? Fraction(0) : part / whole;
+  return {f.text(), f.to_double()};
+}
+
+Visited measure(const Model::Node& n, const std::set<std::uint64_t>& states, const Bits* within,
+                const Fraction& whole) {
+  Visited v;
+  Bits set(n.space->size(), false);
+  std::set<std::string> kinds;
+  for (std::uint64_t s : states) {
+    if (within != nullptr && !within->test(s)) continue;
+    set.set(s);
+    ++v.cells;
+    if (!n.space->weight(s).is_zero()) continue;
+    ++v.boundary;
+    kinds.insert(real_dimension(*n.space, s) == 0 ? "a boundary point" : "a boundary line");
+  }
+  v.share = share_of(n.space->measure(set), whole);
+  if (kinds.size() == 1) v.boundary_kind = *kinds.begin();
+  if (kinds.size() > 1) v.boundary_kind = "boundary points and lines";
+  return v;
+}
+
+}  // namespace
+
+std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
+  std::map<std::string, std::vector<const Observation*>> by_node;
+  for (const auto& run : runs)
+    for (const auto& o : run.observations) by_node[o.adaptable].push_back(&o);
+  std::vector<NodeVisit> out;
+  for (const auto& node : nodes_) {
+    const Node& n = *node;
+    NodeVisit visit;
+    visit.adaptable = n.adaptable;
+    visit.counted = !n.space->has_reals();
+    visit.cells = n.domain.count();
+    std::set<std::uint64_t> states;
+    for (const Observation* seen : by_node[n.adaptable])
+      if (const auto s = n.state_index(seen->state)) states.insert(*s);
+    const Fraction whole = n.space->measure(n.domain);
+    visit.visited = measure(n, states, nullptr, whole);
+    visit.states.assign(states.begin(), states.end());
+    for (const auto& local : n.locals) {
+      if (local.pair) continue;
+      NodeVisit::TargetShare t;
+      t.target = local.target;
+      t.share = share_of(n.space->measure(local.states), whole);
+      t.visited = measure(n, states, &local.states, whole);
+      visit.targets.push_back(std::move(t));
+    }
+    out.push_back(std::move(visit));
+  }
+  return out;
+}
+
+}  // namespace uabt::campaign
