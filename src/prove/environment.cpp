@@ -325,8 +325,12 @@ void Environment::undo(std::size_t count) {
   chosen_.resize(count);
   for (std::size_t i : env_) assigned_[i] = 0;
   for (std::size_t i : chosen_) assigned_[i] = 1;
+  // The watches of choices made after the checkpoint go with them; those made before it are
+  // watched again, as they were when the checkpoint was taken.
+  std::erase_if(watches_, [&](const Watch& w) { return !assigned_[w.var]; });
   runtime::Blackboard& bb = m_.engine->blackboard();
   for (std::size_t i : env_) bb.set_pending(m_.vars[i].slot, !assigned_[i]);
+  for (const Watch& w : watches_) bb.set_watched(m_.vars[w.var].slot);
 }
 
 void Environment::resolve_monitor_reads() {
@@ -339,7 +343,8 @@ void Environment::resolve_monitor_reads() {
 void Environment::end_tick() {
   runtime::Blackboard& bb = m_.engine->blackboard();
   bb.clear_pending();
-  watches_.clear();
+  // watches_ stay until the next tick starts: a tick resumed at a checkpoint (undo) watches
+  // again the choices made before it.
   for (std::size_t i : env_) {
     bb.value(m_.vars[i].slot) = m_.vars[i].values.front();
     assigned_[i] = 1;

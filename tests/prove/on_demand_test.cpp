@@ -210,6 +210,30 @@ TEST(OnDemand, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
       "10.0");
 }
 
+// The same mission where Bump may fail, and its failure is explored first: the battery's cell
+// is cut again only on the second outcome, success, whose tick the engine resumes at Bump's
+// outcome instead of ticking it again from its start. The resumed tick must still watch the
+// battery chosen before that point, or the cell (10, 90) is never cut at 30 and the violation
+// is missed.
+TEST(OnDemand, ACellIsCutAgainInATickResumedAtAnActionsOutcome) {
+  auto files = reserve_mission("battery &gt; reserve");
+  files["world.json"] =
+      R"({"initial": "reserve = 10", "actions": {"Bump": {"ticks": 1, "results": ["failure",)"
+      R"( "success"], "on_success": "reserve = reserve < 30 ? 30 : 10"}, "Rest": {"ticks": 1,)"
+      R"( "results": ["success"]}}})";
+  TempMission m(files);
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  const prove::Result e = prove_dir(m.dir(), explicit_engine);
+  const prove::Answer& charged = answer(e, "Charged");
+  ASSERT_EQ(charged.verdict, Verdict::violated);
+  EXPECT_EQ(charged.depth, 1u);
+  ASSERT_TRUE(charged.counterexample);
+  EXPECT_EQ(nlohmann::json::parse(charged.counterexample->scenario)["initial"]["battery"].dump(),
+            "20.0")
+      << charged.counterexample->scenario;
+}
+
 // An atom that relates the variable to another of the environment still goes to the symbolic
 // engine, and the reason names it.
 TEST(OnDemand, AnAtomWithAnotherEnvironmentVariableStillGoesToTheSymbolicEngine) {
