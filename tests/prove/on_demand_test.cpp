@@ -141,6 +141,19 @@ TEST(Cuts, WhatTheStateAtHandCannotCutStaysUncut) {
       << cuts.uncut("battery");
 }
 
+// Why the explicit engine refuses the mission in `dir` ("" and a failure when it does not).
+std::string explicit_refusal(const std::filesystem::path& dir) {
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  try {
+    prove_dir(dir, explicit_engine);
+  } catch (const prove::ProveError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the explicit engine cut an atom over two variables of the environment";
+  return "";
+}
+
 // A guard compares the battery with a reserve the mission's effects raise; the guarantee reads
 // both after the tick. The breakpoint is where the reserve is when the guard reads the battery
 // (10), and again where the effect leaves it before the monitor reads them (30): a battery in
@@ -242,18 +255,11 @@ TEST(OnDemand, AnAtomWithAnotherEnvironmentVariableStillGoesToTheSymbolicEngine)
   files["requirements.fret"] +=
       "Sun: Mission shall always satisfy solar < battery + reserve | Bump.success\n";
   TempMission m(files);
-  prove::Options explicit_engine;
-  explicit_engine.engine = "explicit";
-  try {
-    prove_dir(m.dir(), explicit_engine);
-    ADD_FAILURE() << "the explicit engine cut an atom over two reals";
-  } catch (const prove::ProveError& e) {
-    const std::string why = e.what();
-    EXPECT_NE(why.find("cannot cut real"), std::string::npos) << why;
-    EXPECT_NE(why.find("the atom `solar < battery + reserve` (requirements.fret:5:"),
-              std::string::npos)
-        << why;
-  }
+  const std::string why = explicit_refusal(m.dir());
+  EXPECT_NE(why.find("cannot cut real"), std::string::npos) << why;
+  EXPECT_NE(why.find("the atom `solar < battery + reserve` (requirements.fret:5:"),
+            std::string::npos)
+      << why;
 }
 
 TEST(Numbers, PrintAsPeopleWriteThem) {
@@ -337,16 +343,9 @@ TEST(OnDemand, AnAtomRelatingTwoRealsGoesToTheSymbolicEngineAndSaysWhy) {
   files["domain.fret"] += "real gust in [0, 40]\n";
   files["requirements.fret"] += "Gusty: Mission shall always satisfy gust >= wind | gust < wind\n";
   TempMission m(files);
-  prove::Options explicit_engine;
-  explicit_engine.engine = "explicit";
-  try {
-    prove_dir(m.dir(), explicit_engine);
-    ADD_FAILURE() << "the explicit engine cut an atom over two reals";
-  } catch (const prove::ProveError& e) {
-    const std::string why = e.what();
-    EXPECT_NE(why.find("cannot cut real"), std::string::npos) << why;
-    EXPECT_NE(why.find("requirements.fret:13:"), std::string::npos) << why;
-  }
+  const std::string why = explicit_refusal(m.dir());
+  EXPECT_NE(why.find("cannot cut real"), std::string::npos) << why;
+  EXPECT_NE(why.find("requirements.fret:13:"), std::string::npos) << why;
 }
 
 // A pre-flight checklist whose N sensor flags the environment may flip before every tick: the
