@@ -384,6 +384,13 @@ std::string witness_text(const Target& t) {
   return out;
 }
 
+// A guarantee target's scenario on one line, without its description (which names the targets).
+std::string scenario_text(const Target& t) {
+  Json j = Json::parse(t.scenario);
+  j.erase("description");
+  return j.dump();
+}
+
 Json target_json(const Target& t, bool covered) {
   Json j = Json::object();
   j["id"] = t.id;
@@ -511,7 +518,11 @@ std::string coverage_text(const CoverageReport& report) {
                     (report.runs.size() == 1 ? " run covers " : " runs cover ") +
                     std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
                     " reachable targets (" + (c.targets == 0 ? "" : criteria_text(c) + "; ") +
-                    std::to_string(c.targets - c.reachable) + " unreachable)\n";
+                    std::to_string(c.targets - c.reachable) + " unreachable" +
+                    (report.not_judged.empty()
+                         ? ""
+                         : ", " + std::to_string(report.not_judged.size()) + " not judged") +
+                    ")\n";
   for (const auto& r : report.runs) {
     out += "  " + r.source + ": " + std::to_string(r.observations.size()) +
            (r.observations.size() == 1 ? " observation in " : " observations in ") +
@@ -529,13 +540,19 @@ std::string coverage_text(const CoverageReport& report) {
     }
   for (std::size_t k = 0; k < report.targets.size(); ++k) {
     const Target& t = report.targets[k];
-    if (!t.reachable || report.covered[k]) continue;
-    out += "missed: " + t.text + "; covered by initial " + witness_text(t) + "\n";
+    if (!t.reachable || report.covered[k] || report.not_judged.count(k)) continue;
+    out +=
+        "missed: " + t.text + "; covered by " +
+        (t.scenario.empty() ? "initial " + witness_text(t) : "the scenario " + scenario_text(t)) +
+        "\n";
   }
+  for (const auto& [k, why] : report.not_judged)
+    out += "not judged: " + report.targets[k].text + ": " + why + "\n";
   for (const auto& t : report.targets)
     if (!t.reachable) out += "unreachable: " + t.text + ": " + t.reason + "\n";
   for (const auto& [node, reason] : report.skipped)
     out += "no targets for " + node + ": " + reason + "\n";
+  for (const auto& note : report.notes) out += note + "\n";
   return out;
 }
 
@@ -547,6 +564,7 @@ std::string coverage_json(const CoverageReport& report) {
                   {"reachable", c.reachable},
                   {"unreachable", c.targets - c.reachable},
                   {"covered", c.covered},
+                  {"not_judged", report.not_judged.size()},
                   {"runs", report.runs.size()}};
   Json runs = Json::array();
   for (const auto& r : report.runs) {
@@ -562,7 +580,11 @@ std::string coverage_json(const CoverageReport& report) {
   for (std::size_t k = 0; k < report.targets.size(); ++k) {
     const Target& t = report.targets[k];
     Json e = target_json(t, report.covered[k]);
-    if (t.reachable && !report.covered[k]) {
+    if (const auto why = report.not_judged.find(k); why != report.not_judged.end())
+      e["not_judged"] = why->second;
+    else if (t.reachable && !report.covered[k] && !t.scenario.empty())
+      e["scenario"] = Json::parse(t.scenario);
+    else if (t.reachable && !report.covered[k]) {
       Json w = Json::array();
       for (const auto& s : t.witness) w.push_back(Json::parse(state_json(s)));
       e["scenario_initial"] = w;
@@ -588,6 +610,7 @@ std::string coverage_json(const CoverageReport& report) {
   }
   j["visits"] = visits;
   j["skipped"] = skipped_json(report.skipped);
+  j["notes"] = report.notes;
   return j.dump(2) + "\n";
 }
 

@@ -3,6 +3,7 @@
 // (decision, MC/DC, boundary, guarantee), scenarios in the `uabt run` format that reach them, each
 // replayed on the runtime, and what a set of runs covered.
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -34,6 +35,8 @@ struct Target {
   // A state that reaches it (two for an MC/DC pair), as scenario values; empty when
   // unreachable.
   std::vector<State> witness;
+  // A guarantee target's: the campaign's scenario (JSON) that reaches it; "" when none.
+  std::string scenario;
 };
 
 // What one run did at an adaptable node: the alternative it selected and the values of the
@@ -226,6 +229,10 @@ struct CoverageReport {
   std::vector<RunRecord> runs;
   std::vector<std::pair<std::string, std::string>> skipped;
   std::vector<NodeVisit> visits;  // per node: the cells the runs visited (Model::visits)
+  // Targets no run could judge (a monitor trace without the values its trap reads), with
+  // "<trace>: the trace lacks X": not counted as missed.
+  std::map<std::size_t, std::string> not_judged;
+  std::vector<std::string> notes;  // "guarantee targets not planned: …"
 };
 std::string coverage_text(const CoverageReport& report);
 std::string coverage_json(const CoverageReport& report);

@@ -11,7 +11,9 @@
 
 #include "base/diagnostics.hpp"
 #include "campaign/guarantee.hpp"
+#include "monitor/check_trace.hpp"
 #include "monitor/property_set.hpp"
+#include "monitor/trace.hpp"
 #include "prove/reach.hpp"
 #include "runtime/property_monitor.hpp"
 #include "runtime/runner.hpp"
@@ -171,6 +173,15 @@ std::string numbered(const std::string& base, std::size_t n, std::size_t total) 
   return base + "-" + digits;
 }
 
+// Why the monitor cannot judge a trap on a trace: "the trace lacks OnMud", else its own words.
+std::string lacking(const std::string& reason) {
+  const std::string marker = "the trace has no variable '";
+  const std::size_t at = reason.find(marker);
+  if (at == std::string::npos) return reason;
+  const std::size_t begin = at + marker.size();
+  return "the trace lacks " + reason.substr(begin, reason.find('\'', begin) - begin);
+}
+
 }  // namespace
 
 std::vector<prove::Goal> guarantee_goals(const load::Mission& mission) {
@@ -184,14 +195,17 @@ bool has_world_file(const load::Mission& mission) {
   return std::filesystem::exists(mission.dir / "world.json", ec);
 }
 
-void add_guarantee_targets(const load::Mission& mission, const Replayer& replayer,
-                           const Options& options, Campaign& c) {
-  if (!options.criteria.count(Criterion::guarantee)) return;
+GuaranteePlan plan_guarantee_targets(const load::Mission& mission, const Replayer& replayer,
+                                     const Options& options) {
+  GuaranteePlan out;
+  out.traps = mission;
+  out.traps.properties.clear();
+  if (!options.criteria.count(Criterion::guarantee)) return out;
   std::vector<Planned> planned = plan(mission);
-  if (planned.empty()) return;
+  if (planned.empty()) return out;
   if (options.world == nullptr) {
-    c.notes.push_back("guarantee targets not planned: the mission has no world.json");
-    return;
+    out.notes.push_back("guarantee targets not planned: the mission has no world.json");
+    return out;
   }
   std::vector<prove::Goal> goals;
   for (const auto& p : planned) goals.push_back(p.goal);
@@ -202,14 +216,11 @@ void add_guarantee_targets(const load::Mission& mission, const Replayer& replaye
     prove_options.max_states = options.prove_max_states;
     answers = prove::reach(mission, replayer.document(), *options.world, goals, prove_options);
   } catch (const std::exception& e) {
-    c.notes.push_back(std::string("guarantee targets not planned: ") + e.what());
-    return;
+    out.notes.push_back(std::string("guarantee targets not planned: ") + e.what());
+    return out;
   }
-  load::Mission traps = mission;
-  traps.properties.clear();
-  for (const auto& g : goals) traps.properties.push_back(prove::trap_requirement(g));
+  for (const auto& g : goals) out.traps.properties.push_back(prove::trap_requirement(g));
 
-  const std::size_t first = c.targets.size();
   std::vector<std::size_t> reached;  // planned indices whose trap is violated
   for (std::size_t k = 0; k < planned.size(); ++k) {
     Target t = planned[k].target;
@@ -238,8 +249,8 @@ void add_guarantee_targets(const load::Mission& mission, const Replayer& replaye
         t.reason = "not decided: prove cannot read it: " + a.reason;
         break;
     }
-    c.targets.push_back(std::move(t));
-    c.covered.push_back(false);
+    out.targets.push_back(std::move(t));
+    out.covered.push_back(false);
   }
 
   // Each reached goal's witness, replayed: the goals it reaches, its own at the planned tick.
@@ -257,7 +268,7 @@ void add_guarantee_targets(const load::Mission& mission, const Replayer& replaye
     Json j = Json::parse(answers[k].witness->scenario);
     j["description"] = "";
     cand.json = j.dump(2) + "\n";
-    cand.play = play(traps, replayer, cand.json, "guarantee.json");
+    cand.play = play(out.traps, replayer, cand.json, "guarantee.json");
     const std::uint64_t tick = answers[k].witness->tick;
     for (std::size_t g = 0; g < goals.size(); ++g) {
       const auto it = cand.play.reached.find(goals[g].id);
@@ -301,7 +312,6 @@ void add_guarantee_targets(const load::Mission& mission, const Replayer& replaye
     return "guarantee-" + planned[candidates[i].goal].goal.scope_of->id;
   };
   for (const auto& [i, purposes] : chosen) ++per_guarantee[base_of(i)];
-  std::vector<Scenario> scenarios;
   for (auto& [i, purposes] : chosen) {
     Candidate& cand = candidates[i];
     Scenario s;
@@ -310,9 +320,9 @@ void add_guarantee_targets(const load::Mission& mission, const Replayer& replaye
     if (purposes.empty()) purposes.push_back(cand.goal);
     std::sort(purposes.begin(), purposes.end());
     for (std::size_t g : purposes) {
-      s.purpose.push_back(first + g);
+      s.purpose.push_back(g);
       s.description += (s.description.empty() ? "" : "; ") + planned[g].target.text;
-      if (cand.problem.empty()) c.covered[first + g] = true;
+      if (cand.problem.empty()) out.covered[g] = true;
     }
     s.description = "Test campaign: " + s.description;
     Json j = Json::parse(cand.json);
@@ -321,13 +331,55 @@ void add_guarantee_targets(const load::Mission& mission, const Replayer& replaye
     s.run = cand.play.run;
     s.run.source = s.name + ".json";
     if (!cand.problem.empty()) s.problems.push_back(cand.problem);
-    scenarios.push_back(std::move(s));
+    out.scenarios.push_back(std::move(s));
   }
+  return out;
+}
+
+void add_guarantee_targets(const load::Mission& mission, const Replayer& replayer,
+                           const Options& options, Campaign& c) {
+  GuaranteePlan plan = plan_guarantee_targets(mission, replayer, options);
+  const std::size_t first = c.targets.size();
+  c.targets.insert(c.targets.end(), plan.targets.begin(), plan.targets.end());
+  c.covered.insert(c.covered.end(), plan.covered.begin(), plan.covered.end());
+  c.notes.insert(c.notes.end(), plan.notes.begin(), plan.notes.end());
+  for (auto& s : plan.scenarios)
+    for (auto& t : s.purpose) t += first;
   // Before the behaviour changes' scenarios.
   auto at = std::find_if(c.scenarios.begin(), c.scenarios.end(),
                          [](const Scenario& s) { return !s.change.empty(); });
-  c.scenarios.insert(at, std::make_move_iterator(scenarios.begin()),
-                     std::make_move_iterator(scenarios.end()));
+  c.scenarios.insert(at, std::make_move_iterator(plan.scenarios.begin()),
+                     std::make_move_iterator(plan.scenarios.end()));
+}
+
+std::set<std::size_t> guarantees_reached(const GuaranteePlan& plan, const Replayer& replayer,
+                                         const std::string& json, const std::string& file) {
+  std::set<std::size_t> out;
+  if (plan.targets.empty()) return out;
+  const Play p = play(plan.traps, replayer, json, file);
+  for (std::size_t k = 0; k < plan.traps.properties.size(); ++k)
+    if (p.reached.count(plan.traps.properties[k].id)) out.insert(k);
+  return out;
+}
+
+std::set<std::size_t> guarantees_reached(const GuaranteePlan& plan, const std::string& content,
+                                         const std::string& file,
+                                         std::map<std::size_t, std::string>& not_judged) {
+  std::set<std::size_t> out;
+  if (plan.targets.empty()) return out;
+  std::vector<Finding> findings;  // observe_trace reported them: the trace was read once already
+  const auto trace = monitor::read_trace(content, file, findings);
+  if (!trace) return out;
+  const monitor::TraceReport report =
+      monitor::check_trace(plan.traps.properties, plan.traps.domain, *trace, file, findings);
+  for (std::size_t k = 0; k < plan.traps.properties.size(); ++k) {
+    const monitor::PropertyResult& r = report.properties[k];
+    if (r.verdict == monitor::Verdict::violated)
+      out.insert(k);
+    else if (r.verdict == monitor::Verdict::not_monitored)
+      not_judged.emplace(k, lacking(r.reason));
+  }
+  return out;
 }
 
 }  // namespace uabt::campaign

@@ -1,13 +1,18 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
 
 #include "base/diagnostics.hpp"
 #include "base/files.hpp"
 #include "campaign/campaign.hpp"
+#include "campaign/guarantee.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
+#include "prove/outcome.hpp"
 #include "runtime/scenario.hpp"
 
 namespace uabt::cli {
@@ -62,14 +67,17 @@ bool is_monitor_trace(const std::string& content) {
 void register_coverage(CLI::App& app, int& exit_code) {
   struct Args {
     std::string mission, format = "text", selection;
-    std::vector<std::string> runs;
-    std::int64_t max_ticks = 0;
+    std::vector<std::string> runs, uplinks;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "coverage", "What scenarios or monitor traces covered of the campaign's targets");
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--uplink", args->uplinks,
+                  "an uplink package: the targets of the mission with it merged, as uabt tests "
+                  "--uplink plans them")
       ->check(CLI::ExistingDirectory);
   cmd->add_option("SCENARIO", args->runs,
                   "scenario JSON files (replayed), monitor traces (JSON lines), or folders of "
@@ -80,17 +88,35 @@ void register_coverage(CLI::App& app, int& exit_code) {
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->callback([args, &exit_code] {
-    auto mission = load_for_campaign(args->mission, {}, exit_code);
+    auto mission = load_for_campaign(args->mission, args->uplinks, exit_code);
     if (!mission) return;
     try {
-      campaign::Model model(*mission, campaign_criteria("all"));
-      compile::Options compile_options;
-      apply_selection(args->selection, compile_options);
-      const campaign::Replayer replayer(*mission, compile_options);
+      campaign::Options options;
+      options.criteria = campaign_criteria("all");
+      campaign::Model model(*mission, options.criteria);
+      apply_selection(args->selection, options.compile);
+      const campaign::Replayer replayer(*mission, options.compile);
+      // The guarantee targets, solved in world.json's world as `uabt tests` solves them.
+      std::optional<prove::WorldModel> world;
+      if (campaign::has_world_file(*mission))
+        options.world = &world.emplace(prove::mission_world(*mission));
+      const campaign::GuaranteePlan guarantees =
+          campaign::plan_guarantee_targets(*mission, replayer, options);
       campaign::CoverageReport report;
       report.mission = mission->name;
       report.targets = model.targets();
       report.skipped = model.skipped();
+      report.notes = guarantees.notes;
+      const std::size_t first = report.targets.size();
+      report.targets.insert(report.targets.end(), guarantees.targets.begin(),
+                            guarantees.targets.end());
+      // A missed guarantee target gets the campaign's scenario that reaches it.
+      for (const auto& s : guarantees.scenarios)
+        for (std::size_t t : s.purpose)
+          if (s.problems.empty()) report.targets[first + t].scenario = s.json;
+      std::set<std::size_t> reached;                  // guarantee targets, by the runs
+      std::map<std::size_t, std::string> not_judged;  // guarantee targets a trace cannot judge
+      std::set<std::size_t> judged;
       std::vector<std::string> errors;
       for (const auto& file : expand_runs(args->runs, errors)) {
         if (std::filesystem::path(file).filename() == campaign::kSummaryFile) {
@@ -113,10 +139,23 @@ void register_coverage(CLI::App& app, int& exit_code) {
             continue;
           }
           report.runs.push_back(std::move(run));
+          std::map<std::size_t, std::string> lacks;
+          for (std::size_t t : campaign::guarantees_reached(guarantees, *content, file, lacks))
+            reached.insert(t);
+          for (std::size_t t = 0; t < guarantees.targets.size(); ++t) {
+            const auto it = lacks.find(t);
+            if (it == lacks.end())
+              judged.insert(t);
+            else
+              not_judged.emplace(t, file + ": " + it->second);
+          }
           continue;
         }
         try {
           report.runs.push_back(replayer.run(*content, file));
+          for (std::size_t t : campaign::guarantees_reached(guarantees, replayer, *content, file))
+            reached.insert(t);
+          for (std::size_t t = 0; t < guarantees.targets.size(); ++t) judged.insert(t);
         } catch (const runtime::ScenarioError& e) {
           errors.push_back(e.what());
         }
@@ -127,12 +166,20 @@ void register_coverage(CLI::App& app, int& exit_code) {
         return;
       }
       report.covered = model.covered(report.runs);
+      for (std::size_t t = 0; t < guarantees.targets.size(); ++t) {
+        report.covered.push_back(reached.count(t) > 0);
+        // Not judged by any run: not counted as missed.
+        const auto why = not_judged.find(t);
+        if (!judged.count(t) && why != not_judged.end() && guarantees.targets[t].reachable)
+          report.not_judged.emplace(first + t, why->second);
+      }
       report.visits = model.visits(report.runs);
       std::cout << (args->format == "json" ? campaign::coverage_json(report)
                                            : campaign::coverage_text(report));
       bool all = true;
       for (std::size_t k = 0; k < report.targets.size(); ++k)
-        all = all && (!report.targets[k].reachable || report.covered[k]);
+        all = all &&
+              (!report.targets[k].reachable || report.covered[k] || report.not_judged.count(k));
       exit_code = all ? kExitPass : kExitFail;
     } catch (const std::exception& e) {
       std::cerr << "uabt: coverage: " << e.what() << "\n";

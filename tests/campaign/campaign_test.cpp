@@ -7,7 +7,9 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <sstream>
 
+#include "base/files.hpp"
 #include "campaign/campaign.hpp"
 #include "cli/cli_support.hpp"
 #include "fretish/expr.hpp"
@@ -232,6 +234,13 @@ std::string run_tests_command(const std::string& mission, const std::filesystem:
   return run.out;
 }
 
+// `uabt tests` of msl_curiosity with the on_mud uplink merged, written to `out`.
+CliRun run_on_mud_tests(const std::filesystem::path& out) {
+  return run_uabt_in(
+      (source_dir() / "missions").string(),
+      "tests msl_curiosity --uplink msl_curiosity/uplinks/on_mud --out '" + out.string() + "'");
+}
+
 TEST(CampaignCli, MslCuriosityGolden) {
   TempMission scratch({});
   const auto out = scratch.dir() / "campaign";
@@ -328,9 +337,11 @@ TEST(CampaignCoverage, ScenariosAndMonitorTraces) {
                                  "coverage msl_curiosity "
                                  "msl_curiosity/scenarios/dusty_start.json");
   EXPECT_EQ(run.exit_code, 1);
-  EXPECT_EQ(run.out,
-            "msl_curiosity: 1 run covers 3 of 9 reachable targets (decision 7, MC/DC 2; 0 "
-            "unreachable)\n"
+  // The decision and MC/DC targets; the guarantee targets' lines follow
+  // (CampaignCoverage.GuaranteeTargetsMissedEachGetTheCampaignsScenario).
+  EXPECT_EQ(run.out.substr(0, run.out.find("missed: the trigger of HoldOnUnknown")),
+            "msl_curiosity: 1 run covers 8 of 19 reachable targets (decision 7, MC/DC 2, "
+            "guarantee 12; 2 unreachable)\n"
             "  msl_curiosity/scenarios/dusty_start.json: 1 observation in 58 ticks\n"
             "  navigation: 1 of 3 states visited, 33.3% (1/3) of the space\n"
             "missed: navigation selects on_rocks (Req2); covered by initial "
@@ -359,8 +370,8 @@ TEST(CampaignCoverage, ScenariosAndMonitorTraces) {
   const CliRun traced =
       run_uabt_in(missions, "coverage msl_curiosity '" + trace.string() + "' --format json");
   const auto j = nlohmann::json::parse(traced.out);
-  EXPECT_EQ(j["summary"]["covered"], 6);
-  EXPECT_EQ(j["summary"]["reachable"], 9);
+  EXPECT_EQ(j["summary"]["covered"], 12);
+  EXPECT_EQ(j["summary"]["reachable"], 19);
   for (const auto& t : j["targets"])
     if (t["id"] == "navigation/decision/select/on_rocks") {
       EXPECT_EQ(t["covered"], true);
@@ -416,7 +427,9 @@ TEST(CampaignCoverage, AFolderFromUabtTestsIsReadAsItsScenariosWithoutItsSummary
   const std::string missions = (source_dir() / "missions").string();
   const CliRun folder = run_uabt_in(missions, "coverage msl_curiosity '" + out.string() + "'");
   EXPECT_EQ(folder.exit_code, 0) << folder.out;
-  EXPECT_NE(folder.out.find("6 runs cover 9 of 9 reachable targets"), std::string::npos)
+  EXPECT_NE(folder.out.find("6 runs cover 19 of 19 reachable targets (decision 7, MC/DC 2, "
+                            "guarantee 12; 2 unreachable)"),
+            std::string::npos)
       << folder.out;
   // What a shell glob over the folder gives: the summary is named, not read as a scenario.
   const CliRun summary =
@@ -486,9 +499,7 @@ TEST(CampaignCli, AnUplinkGetsAScenarioPerBehaviourChangeAsTheGateWritesIt) {
   TempMission scratch({});
   const auto out = scratch.dir() / "d";
   const std::string missions = (source_dir() / "missions").string();
-  const CliRun tests =
-      run_uabt_in(missions, "tests msl_curiosity --uplink msl_curiosity/uplinks/on_mud --out '" +
-                                out.string() + "'");
+  const CliRun tests = run_on_mud_tests(out);
   EXPECT_EQ(tests.exit_code, 0) << tests.out;
   EXPECT_NE(tests.out.find("  navigation-change-01.json: behaviour change: node navigation moves "
                            "from hold_position to on_mud, reached at tick 1\n"),
@@ -626,6 +637,132 @@ TEST(CampaignCoverage, VisitedCellsHoldTheirExactShareOfTheSpace) {
                           "of the space\n"),
             std::string::npos)
       << text.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// The guarantee targets (and their ids) that `uabt coverage --format json` reports missed.
+std::vector<std::string> missed_guarantees(const nlohmann::json& report) {
+  std::vector<std::string> out;
+  for (const auto& t : report["targets"])
+    if (t["criterion"] == "guarantee" && t["reachable"] == true && t["covered"] == false)
+      out.push_back(t["id"]);
+  return out;
+}
+
+TEST(CampaignCoverage, AnUplinkCampaignIsReadBackWithTheSameUplink) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "campaign";
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun tests = run_on_mud_tests(out);
+  ASSERT_EQ(tests.exit_code, 0) << tests.out;
+  const CliRun run =
+      run_uabt_in(missions, "coverage msl_curiosity --uplink msl_curiosity/uplinks/on_mud '" +
+                                out.string() + "'");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_EQ(run.out.substr(0, run.out.find('\n')),
+            "msl_curiosity: 9 runs cover 25 of 25 reachable targets (decision 10, MC/DC 3, "
+            "guarantee 14; 2 unreachable)")
+      << run.out;
+}
+
+TEST(CampaignCoverage, TheCampaignFolderCoversEveryReachableGuaranteeTarget) {
+  TempMission scratch({});
+  const auto out = scratch.dir() / "campaign";
+  int exit_code = -1;
+  run_tests_command("msl_curiosity", out, exit_code);
+  ASSERT_EQ(exit_code, 0);
+  const CliRun run = run_uabt_in((source_dir() / "missions").string(),
+                                 "coverage msl_curiosity '" + out.string() + "' --format json");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  const auto j = nlohmann::json::parse(run.out);
+  std::size_t guarantee = 0, reachable = 0, covered = 0;
+  for (const auto& t : j["targets"]) {
+    if (t["criterion"] != "guarantee") continue;
+    ++guarantee;
+    reachable += t["reachable"] == true;
+    covered += t["covered"] == true;
+  }
+  EXPECT_EQ(guarantee, 12u);
+  EXPECT_EQ(reachable, 10u);
+  EXPECT_EQ(covered, 10u);
+  EXPECT_EQ(j["summary"]["covered"], 19);
+  EXPECT_EQ(j["summary"]["not_judged"], 0);
+}
+
+TEST(CampaignCoverage, GuaranteeTargetsMissedEachGetTheCampaignsScenario) {
+  const std::string missions = (source_dir() / "missions").string();
+  const CliRun run = run_uabt_in(
+      missions, "coverage msl_curiosity msl_curiosity/scenarios/dusty_start.json --format json");
+  EXPECT_EQ(run.exit_code, 1);
+  const auto j = nlohmann::json::parse(run.out);
+  EXPECT_EQ(missed_guarantees(j),
+            (std::vector<std::string>{
+                "guarantee/HoldOnUnknown/trigger", "guarantee/HoldOnUnknown/condition/OnDust/false",
+                "guarantee/HoldOnUnknown/condition/OnRocks/true",
+                "guarantee/HoldOnUnknown/condition/OnRocks/false",
+                "guarantee/HoldOnUnknown/response/navigation.selected = hold_position/true"}));
+  // Each with the scenario that covers it; given to coverage, that scenario does.
+  TempMission scratch({});
+  for (const auto& t : j["targets"]) {
+    if (t["criterion"] != "guarantee" || t["covered"] == true || t["reachable"] == false) continue;
+    ASSERT_TRUE(t.contains("scenario")) << t.dump();
+    const auto file = scratch.dir() / "suggested.json";
+    write_file_atomically(file, t["scenario"].dump(2) + "\n");
+    const CliRun again =
+        run_uabt_in(missions, "coverage msl_curiosity '" + file.string() + "' --format json");
+    bool covers = false;
+    const auto report = nlohmann::json::parse(again.out);
+    for (const auto& u : report["targets"])
+      if (u["id"] == t["id"]) covers = u["covered"] == true;
+    EXPECT_TRUE(covers) << t["id"];
+  }
+  // In text: the scenario on one line, without its description.
+  const CliRun text =
+      run_uabt_in(missions, "coverage msl_curiosity msl_curiosity/scenarios/dusty_start.json");
+  EXPECT_NE(
+      text.out.find(
+          "missed: the trigger of HoldOnUnknown fires (in navigation, upon !OnDust & "
+          "!OnRocks); covered by the scenario {\"max_ticks\":1,\"initial\":{\"IsInLocation\":"
+          "false,\"IsDug\":false,\"IsPictureTaken\":false,\"OnDust\":false,\"OnRocks\":false},"
+          "\"actions\":{"),
+      std::string::npos)
+      << text.out;
+}
+
+TEST(CampaignCoverage, AMonitorTraceWithoutWhatATrapReadsDoesNotJudgeIt) {
+  TempMission scratch({});
+  const std::string missions = (source_dir() / "missions").string();
+  const auto trace = scratch.dir() / "trace.jsonl";
+  run_uabt_in(missions,
+              "run msl_curiosity --scenario msl_curiosity/scenarios/rocks_mid_drive.json "
+              "--monitor-trace '" +
+                  trace.string() + "'");
+  ASSERT_TRUE(std::filesystem::exists(trace));
+  // The same trace without drive.running, which ArmClosed's response reads.
+  std::string lines, line;
+  std::istringstream in(read_all(trace));
+  while (std::getline(in, line)) {
+    auto j = nlohmann::ordered_json::parse(line);
+    if (j.contains("state")) j["state"].erase("drive.running");
+    lines += j.dump() + "\n";
+  }
+  const auto lacking = scratch.dir() / "lacking.jsonl";
+  write_file_atomically(lacking, lines);
+  const CliRun run = run_uabt_in(missions, "coverage msl_curiosity '" + lacking.string() + "'");
+  EXPECT_EQ(run.out.substr(0, run.out.find('\n')),
+            "msl_curiosity: 1 run covers 11 of 19 reachable targets (decision 7, MC/DC 2, "
+            "guarantee 12; 2 unreachable, 1 not judged)");
+  EXPECT_NE(run.out.find("not judged: drive.running is false and decides the response of "
+                         "ArmClosed (at a tick its trigger holds): " +
+                         lacking.string() + ": the trace lacks drive.running\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("missed: drive.running"), std::string::npos) << run.out;
 }
 
 }  // namespace
