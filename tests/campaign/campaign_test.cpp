@@ -13,6 +13,7 @@
 #include "campaign/campaign.hpp"
 #include "cli/cli_support.hpp"
 #include "fretish/expr.hpp"
+#include "load/load_test_support.hpp"
 #include "smt/atoms.hpp"
 #include "smt/evaluate.hpp"
 #include "temp_mission.hpp"
@@ -23,10 +24,7 @@ namespace {
 using campaign::Criterion;
 
 load::Mission load(const std::filesystem::path& dir) {
-  std::string error;
-  auto m = load::load_mission(dir, {}, error);
-  EXPECT_TRUE(m) << error;
-  return std::move(*m);
+  return load_dir(dir);
 }
 
 // A random node over a, b (booleans), x in [0, 5], t in {p, q, r} and a real w in [0, 10]:

@@ -10,6 +10,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/guarantee.hpp"
 #include "cli/cli_support.hpp"
+#include "load/load_test_support.hpp"
 #include "prove/outcome.hpp"
 #include "prove/reach.hpp"
 #include "temp_mission.hpp"
@@ -20,10 +21,7 @@ namespace {
 using campaign::Criterion;
 
 load::Mission load(const std::filesystem::path& dir) {
-  std::string error;
-  auto m = load::load_mission(dir, {}, error);
-  EXPECT_TRUE(m) << error;
-  return std::move(*m);
+  return load_dir(dir);
 }
 
 campaign::Options guarantees_only() {
