@@ -10,7 +10,6 @@
 #include "campaign/guarantee.hpp"
 #include "campaign/world_play.hpp"
 #include "monitor/trace.hpp"
-#include "prove/outcome.hpp"
 #include "report/coverage_view.hpp"
 #include "report/reports.hpp"
 #include "runtime/scenario.hpp"
@@ -261,8 +260,7 @@ Round plan_round(const load::Mission& mission, const Model& model, const Replaye
 Campaign build_campaign(const load::Mission& mission, const Options& given) {
   Options options = given;
   std::optional<prove::WorldModel> world;
-  if (options.world == nullptr && has_world_file(mission))
-    options.world = &world.emplace(prove::mission_world(mission));
+  if (options.world == nullptr) options.world = load_world(mission, world);
   Campaign c;
   c.mission = mission.name;
   Model model(mission, options.criteria);

@@ -2,6 +2,7 @@
 // Guarantee targets of a campaign (DESIGN §13): FLIP-style obligations of every guarantee with
 // a trigger, solved by the prove engines over world.json and checked by the runtime monitor.
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -10,8 +11,10 @@
 
 namespace uabt::campaign {
 
-// The mission directory holds a world.json.
-bool has_world_file(const load::Mission& mission);
+// world.json's model, kept in `storage`, when the mission directory holds one; else nullptr
+// (the campaign then plans no guarantee targets and its scenarios carry no action contracts).
+const prove::WorldModel* load_world(const load::Mission& mission,
+                                    std::optional<prove::WorldModel>& storage);
 
 // The goals of the guarantee targets, in target order (a goal's id is its target's id): per
 // guarantee with a trigger, the trigger firing, then each atom of its condition and of its

@@ -14,6 +14,7 @@
 #include "monitor/check_trace.hpp"
 #include "monitor/property_set.hpp"
 #include "monitor/trace.hpp"
+#include "prove/outcome.hpp"
 #include "prove/reach.hpp"
 #include "runtime/property_monitor.hpp"
 #include "runtime/runner.hpp"
@@ -190,9 +191,11 @@ std::vector<prove::Goal> guarantee_goals(const load::Mission& mission) {
   return out;
 }
 
-bool has_world_file(const load::Mission& mission) {
+const prove::WorldModel* load_world(const load::Mission& mission,
+                                    std::optional<prove::WorldModel>& storage) {
   std::error_code ec;
-  return std::filesystem::exists(mission.dir / "world.json", ec);
+  if (!std::filesystem::exists(mission.dir / "world.json", ec)) return nullptr;
+  return &storage.emplace(prove::mission_world(mission));
 }
 
 GuaranteePlan plan_guarantee_targets(const load::Mission& mission, const Replayer& replayer,

@@ -12,7 +12,6 @@
 #include "campaign/guarantee.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
-#include "prove/outcome.hpp"
 #include "runtime/scenario.hpp"
 
 namespace uabt::cli {
@@ -98,8 +97,7 @@ void register_coverage(CLI::App& app, int& exit_code) {
       const campaign::Replayer replayer(*mission, options.compile);
       // The guarantee targets, solved in world.json's world as `uabt tests` solves them.
       std::optional<prove::WorldModel> world;
-      if (campaign::has_world_file(*mission))
-        options.world = &world.emplace(prove::mission_world(*mission));
+      options.world = campaign::load_world(*mission, world);
       const campaign::GuaranteePlan guarantees =
           campaign::plan_guarantee_targets(*mission, replayer, options);
       campaign::CoverageReport report;
