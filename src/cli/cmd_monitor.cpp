@@ -86,6 +86,13 @@ void register_monitor(CLI::App& app, int& exit_code) {
       exit_code = kExitFail;
       return;
     }
+    // The run names the requirements it states relative to its mission folder (an uplink's
+    // too): the folder that holds the requirements file makes them open from here.
+    const std::string prefix = path_prefix_for(requirements_path.parent_path());
+    for (monitor::TraceTick& tick : trace->ticks)
+      for (monitor::TraceAdaptable& a : tick.adaptables)
+        for (fretish::SelectionRequirement& r : a.stated)
+          r.location.file = user_path(r.location.file, prefix);
     // A verdict over no requirement would read as a pass that checked nothing.
     if (requirements.empty()) {
       std::cerr << requirements_file

@@ -489,9 +489,13 @@ TEST(MonitorCli, RunThenMonitorJudgeAnUplinksSelectionRequirements) {
       uabt_in(dir, "monitor msl/requirements.fret t.jsonl --domain msl/domain.fret");
   EXPECT_NE(text.out.find("msl/requirements.fret:3:7: Req1 (selection): held\n"), std::string::npos)
       << text.out;
-  EXPECT_NE(text.out.find("uplinks/on_mud/requirements.fret:2:7: Req3 (selection): held\n"),
+  // Named so that it opens from where the command ran, like the mission's own requirements.
+  EXPECT_NE(text.out.find("\nmsl/uplinks/on_mud/requirements.fret:2:7: Req3 (selection): held\n"),
             std::string::npos)
       << text.out;
+  std::error_code ec;
+  EXPECT_TRUE(std::filesystem::is_regular_file(
+      m.dir().parent_path() / "msl/uplinks/on_mud/requirements.fret", ec));
 
   // The same trace without the sentences.
   std::ifstream in(m.dir().parent_path() / "t.jsonl");
