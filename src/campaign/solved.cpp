@@ -22,6 +22,9 @@ using Goal = Model::Node::Goal;
 namespace {
 
 constexpr unsigned kTimeoutMs = 10000;
+// Each atom costs a few questions, its MC/DC one over all the others: beyond this many the
+// node is not solved (no hang).
+constexpr std::size_t kMaxAtoms = 2048;
 
 enum class Answer { sat, unsat, unknown };
 
@@ -292,10 +295,35 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
       if (q.ask({}, &w) == Answer::sat) solved->first = solved->states[w.front()];
     }
     // Atoms that hold exactly where another does (or does not) are one column, as enumerated.
+    // Only atoms whose variables the assumptions tie together can be one condition, or two
+    // atoms that never change: each is compared with those, not with every other.
+    if (atom_expr.size() > kMaxAtoms)
+      throw std::runtime_error(std::to_string(atom_expr.size()) + " atoms, more than " +
+                               std::to_string(kMaxAtoms) + " to solve one by one");
+    std::map<std::string, std::string> group;  // variable -> the first of its group
+    auto find = [&](std::string v) {
+      while (group.count(v) && group[v] != v) v = group[v];
+      return v;
+    };
+    for (const auto* a : linked) {
+      std::set<std::string> vars;
+      verify::detail::variables_of(*a, typing, vars);
+      for (const auto& v : vars) group[find(v)] = find(*vars.begin());
+    }
+    std::vector<std::set<std::string>> kinds;  // per atom: its variables' groups, or constant
+    for (std::size_t a = 0; a < atom_expr.size(); ++a) {
+      std::set<std::string> vars, groups;
+      verify::detail::variables_of(*atom_expr[a], typing, vars);
+      for (const auto& v : vars) groups.insert(find(v));
+      if (q.ask({q.atom(a)}) != Answer::sat || q.ask({!q.atom(a)}) != Answer::sat)
+        groups = {"\n"};  // no variable name: the atoms that never change
+      kinds.push_back(std::move(groups));
+    }
     for (std::size_t a = 0; a < atom_expr.size(); ++a) {
       std::size_t c = 0;
       bool flip = false;
       for (; c < solved->column_atom.size(); ++c) {
+        if (kinds[solved->column_atom[c]] != kinds[a]) continue;
         const z3::expr& other = q.atom(solved->column_atom[c]);
         if (q.ask({q.atom(a) != other}) == Answer::unsat) break;
         if (q.ask({q.atom(a) == other}) == Answer::unsat) {
