@@ -654,10 +654,12 @@ void solved_picks(const Model::Node& n, std::size_t ni, const std::set<std::uint
                   const std::vector<Target>& targets, std::vector<Model::Pick>& picks) {
   using Kind = Model::Node::Goal::Kind;
   std::map<std::uint64_t, std::vector<std::size_t>> chosen;
+  // A goal whose witness did not reach the node is solved again away from such states.
   auto usable = [&](const Model::Node::Goal& g) {
     if (!targets[g.target].reachable || g.witness.empty()) return false;
     for (std::size_t w : g.witness)
-      if (excluded.count(w)) return false;
+      if (excluded.count(w))
+        return n.solved_retry(static_cast<std::size_t>(&g - n.solved->goals.data()), excluded);
     return true;
   };
   for (const auto& g : n.solved->goals)

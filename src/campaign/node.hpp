@@ -19,6 +19,8 @@
 
 namespace uabt::campaign {
 
+class SolvedQuestions;  // solved.cpp
+
 struct Model::Node {
   std::string adaptable;
   std::vector<const fretish::SelectionRequirement*> reqs;  // priority order
@@ -76,6 +78,7 @@ struct Model::Node {
     std::optional<State> first;            // a state of the domain
     std::vector<std::size_t> column_atom;  // per column: the atom that stands for it
     std::vector<Goal> goals;
+    std::shared_ptr<SolvedQuestions> questions;  // the solver, to solve a goal again
   };
   std::unique_ptr<Solved> solved;
 
@@ -109,6 +112,9 @@ struct Model::Node {
   bool solved_holds(const fretish::Expr& condition, const State& state) const;
   // A solved node: whether a state of the domain reaches a single-state goal.
   bool solved_reaches(const Goal& goal, const State& state) const;
+  // A solved node: solves goal `goal` again away from the excluded states (its witness is
+  // replaced); false when no other state reaches it.
+  bool solved_retry(std::size_t goal, const std::set<std::uint64_t>& excluded) const;
   // A solved node: two states of the domain are an MC/DC pair of the goal's atom.
   bool solved_pair(const Goal& goal, const State& s, const State& u) const;
 };

@@ -26,8 +26,6 @@ constexpr unsigned kTimeoutMs = 10000;
 // node is not solved (no hang).
 constexpr std::size_t kMaxAtoms = 2048;
 
-enum class Answer { sat, unsat, unknown };
-
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
   std::string out;
   for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
@@ -69,11 +67,15 @@ std::optional<double> number_of(const Value& v) {
   return std::nullopt;
 }
 
+}  // namespace
+
 // One node's questions: the node's variables, a primed copy of them (MC/DC pairs), the domain,
-// the guards and the atoms, lowered once.
-class Questions {
+// the guards and the atoms, lowered once; kept with the node to solve a goal again.
+class SolvedQuestions {
  public:
-  Questions(Model::Node& node, const fretish::Domain& dom)
+  enum class Answer { sat, unsat, unknown };
+
+  SolvedQuestions(Model::Node& node, const fretish::Domain& dom)
       : node_(node),
         dom_(dom),
         enc_(dom),
@@ -233,6 +235,58 @@ class Questions {
     return node_.solved->states.size() - 1;
   }
 
+  // A state's values as a formula over the variables (primed: over their copy).
+  z3::expr same_as(const State& state, const std::string& name, bool primed_copy) {
+    const smt::Encoder::Slot* slot = enc_.find_slot(name);
+    const Value* v = find_value(state, name);
+    if (slot == nullptr || v == nullptr) return ctx().bool_val(false);
+    z3::expr var = primed_copy ? primed(slot->constant) : slot->constant;
+    switch (slot->sort) {
+      case smt::Sort::boolean: return var == ctx().bool_val(v->boolean);
+      case smt::Sort::integer: return var == ctx().int_val(v->integer);
+      case smt::Sort::real: return var == ctx().real_val(v->text.c_str());
+      case smt::Sort::enumeration: {
+        const auto& values = slot->declaration->enum_values;
+        const auto it = std::find(values.begin(), values.end(), v->text);
+        return var == ctx().int_val(static_cast<int>(it - values.begin()));
+      }
+      case smt::Sort::invalid: break;
+    }
+    return ctx().bool_val(false);
+  }
+
+ public:
+  // Per goal: the formulas its witness satisfies, and whether it is a pair.
+  std::vector<std::pair<std::vector<z3::expr>, bool>> goal_questions;
+
+  // Solves goal `k` again away from the excluded states: differing from each in every variable
+  // if it can (a state that did not reach the node may fail for any of its values), else in
+  // one. False when no other state reaches it.
+  bool retry(std::size_t k, const std::set<std::uint64_t>& excluded) {
+    Goal& goal = node_.solved->goals[k];
+    const auto& [formulas, pair] = goal_questions[k];
+    for (bool every : {true, false}) {
+      std::vector<z3::expr> away = formulas;
+      for (std::uint64_t e : excluded) {
+        const State avoid = node_.solved->states[e];
+        for (bool primed_copy : {false, true}) {
+          if (primed_copy && !pair) continue;
+          z3::expr_vector differ(ctx());
+          for (const auto& name : order()) differ.push_back(!same_as(avoid, name, primed_copy));
+          if (differ.empty()) continue;
+          away.push_back(every ? z3::mk_and(differ) : z3::mk_or(differ));
+        }
+      }
+      std::vector<std::size_t> witness;
+      if (ask(away, &witness, pair) == Answer::sat) {
+        goal.witness = witness;
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
   Model::Node& node_;
   const fretish::Domain& dom_;
   smt::Encoder enc_;
@@ -243,6 +297,11 @@ class Questions {
   z3::expr sel_, sel2_;
   std::string unknown_;
 };
+
+using Answer = SolvedQuestions::Answer;
+using Questions = SolvedQuestions;
+
+namespace {
 
 Target make_target(const Model::Node& n, Criterion criterion, const std::string& id,
                    const std::string& text) {
@@ -273,11 +332,13 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
   selected.clear();
   column.clear();
   inverted.clear();
-  Questions q(*this, mission.domain);
+  solved->questions = std::make_shared<SolvedQuestions>(*this, mission.domain);
+  Questions& q = *solved->questions;
   std::string reason;
   std::vector<Goal> goals;
   std::vector<Target> targets;
-  auto add = [&](Target t, Goal g, Answer answer) {
+  auto add = [&](Target t, Goal g, Answer answer, std::vector<z3::expr> formulas, bool pair) {
+    q.goal_questions.emplace_back(std::move(formulas), pair);
     if (answer == Answer::unknown) undecided(t, q);
     if (answer != Answer::sat) {
       t.reachable = false;
@@ -343,7 +404,8 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
         Goal g;
         g.kind = Goal::Kind::select;
         g.req = k;
-        const Answer answer = q.ask({q.sel() == q.ctx().int_val(static_cast<int>(k))}, &g.witness);
+        const std::vector<z3::expr> selects{q.sel() == q.ctx().int_val(static_cast<int>(k))};
+        const Answer answer = q.ask(selects, &g.witness);
         if (answer == Answer::unsat) {
           if (q.ask({q.guard(k)}) == Answer::unsat) {
             t.reason = r->guard ? "the guard of " + r->id + " holds in no state of the domain"
@@ -356,7 +418,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
                        join(earlier, ", ") + ") holds too and is selected first";
           }
         }
-        add(std::move(t), std::move(g), answer);
+        add(std::move(t), std::move(g), answer, selects, false);
       }
       for (std::size_t k = 0; k < reqs.size(); ++k) {
         const auto* r = reqs[k];
@@ -370,11 +432,12 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
           g.kind = Goal::Kind::guard;
           g.req = k;
           g.value = value;
-          const Answer answer = q.ask({value ? q.guard(k) : !q.guard(k)}, &g.witness);
+          const std::vector<z3::expr> decides{value ? q.guard(k) : !q.guard(k)};
+          const Answer answer = q.ask(decides, &g.witness);
           if (answer == Answer::unsat)
             t.reason = value ? "the guard holds in no state of the domain"
                              : "the guard holds in every state of the domain";
-          add(std::move(t), std::move(g), answer);
+          add(std::move(t), std::move(g), answer, decides, false);
         }
       }
     }
@@ -435,7 +498,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
                                    ") holds either way and is selected";
             }
           }
-          add(std::move(t), std::move(g), answer);
+          add(std::move(t), std::move(g), answer, differs, true);
         }
       }
     }
@@ -488,7 +551,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
         const Answer answer = q.ask_real(where, var, nice, g.witness);
         if (answer == Answer::unsat)
           t.reason = "no state of the domain lies there (the assumptions rule it out)";
-        add(std::move(t), std::move(g), answer);
+        add(std::move(t), std::move(g), answer, where, false);
       };
       std::vector<std::string> reals;
       for (const auto& name : q.order()) {
@@ -626,6 +689,14 @@ bool Model::Node::solved_pair(const Goal& goal, const State& s, const State& u) 
   const auto* guard = reqs[goal.req]->guard.get();
   if (guard == nullptr || solved_holds(*guard, s) == solved_holds(*guard, u)) return false;
   return solved_selection(s) != solved_selection(u);
+}
+
+bool Model::Node::solved_retry(std::size_t goal, const std::set<std::uint64_t>& excluded) const {
+  try {
+    return solved->questions->retry(goal, excluded);
+  } catch (const std::exception&) {
+    return false;  // a value a scenario cannot carry: no other state
+  }
 }
 
 }  // namespace uabt::campaign

@@ -387,6 +387,33 @@ TEST(CampaignSolved, WideIntegersGetBoundaryTargetsAndNoShare) {
       << campaign::coverage_text(report);
 }
 
+TEST(CampaignSolved, AStateTheTreeNeverTicksTheNodeInIsSolvedAgainElsewhere) {
+  // The node is ticked only when x >= 2; x and y are too wide to enumerate.
+  TempMission dir({{"mission.xml", mission_with("    <Fallback>\n"
+                                                "      <ScriptCondition code=\"x &lt; 2\"/>\n"
+                                                "      <Adaptable ID=\"node\"/>\n"
+                                                "    </Fallback>")},
+                   {"domain.fret", "integer x in [0, 5000000000]\ninteger y in [0, 5000000000]\n"},
+                   {"requirements.fret",
+                    "R1: In node if x < 1000000000 & y > 10 Mission shall satisfy selected_alt = "
+                    "low\n"
+                    "Other: In node Mission shall satisfy selected_alt = other\n"},
+                   {"alternatives/node/low.xml", alternative_tree("low", "<AlwaysSuccess/>")},
+                   {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}});
+  const load::Mission m = load(dir.dir());
+  const campaign::Campaign c = campaign::build_campaign(m, {});
+  EXPECT_TRUE(c.skipped.empty());
+  EXPECT_FALSE(c.targets.empty());
+  for (std::size_t k = 0; k < c.targets.size(); ++k) {
+    EXPECT_TRUE(c.targets[k].reachable) << c.targets[k].id << ": " << c.targets[k].reason;
+    EXPECT_TRUE(c.covered[k]) << c.targets[k].id;
+  }
+  for (const auto& s : c.scenarios) {
+    EXPECT_TRUE(s.problems.empty()) << s.name;
+    EXPECT_GE(find_value(initial_of(s.json), "x")->integer, 2) << s.json;
+  }
+}
+
 TEST(CampaignSolved, SolvingAgreesWithEnumerationOnRandomMissions) {
   for (unsigned seed = 1; seed <= kRandomMissions; ++seed) {
     TempMission dir(random_mission(seed));
