@@ -69,6 +69,11 @@ struct Model::Node {
     std::string variable;
     bool point = false;
     std::optional<verify::detail::Fraction> lo, hi;
+    // a line of two real variables: sign(variable + slope·variable2 + offset) = `sign`
+    bool line = false;
+    std::string variable2;
+    verify::detail::Fraction slope, offset;
+    int sign = 0;
     std::vector<std::size_t> witness;  // indices into `states`
   };
   struct Solved {

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
+#include <tuple>
 
 #include "base/number_text.hpp"
 #include "campaign/campaign.hpp"
@@ -68,6 +70,14 @@ std::optional<double> number_of(const Value& v) {
 }
 
 }  // namespace
+
+// A number's exact value: an integer, or a real's decimal text.
+std::optional<Fraction> exact(const Value* v) {
+  if (v == nullptr) return std::nullopt;
+  if (v->kind == Value::Kind::integer) return Fraction(v->integer);
+  if (v->kind == Value::Kind::real) return Fraction::parse(v->text);
+  return std::nullopt;
+}
 
 // One node's questions: the node's variables, a primed copy of them (MC/DC pairs), the domain,
 // the guards and the atoms, lowered once; kept with the node to solve a goal again.
@@ -235,6 +245,42 @@ class SolvedQuestions {
     return node_.solved->states.size() - 1;
   }
 
+  // The n-th try's value of a variable: a bounded number at the n-th point of the van der
+  // Corput sequence over its range (1/2, 1/4, 3/4, 1/8, ...), a truth value or a literal other
+  // than the last try's.
+  std::optional<z3::expr> spread(const std::string& name, const State& last, std::size_t n,
+                                 bool primed_copy) {
+    const smt::Encoder::Slot* slot = enc_.find_slot(name);
+    const Value* before = find_value(last, name);
+    if (slot == nullptr || before == nullptr) return std::nullopt;
+    const z3::expr var = primed_copy ? primed(slot->constant) : slot->constant;
+    if (slot->sort == smt::Sort::boolean) return var == ctx().bool_val(!before->boolean);
+    if (slot->sort == smt::Sort::enumeration) {
+      const auto& values = slot->declaration->enum_values;
+      const auto it = std::find(values.begin(), values.end(), before->text);
+      const auto next = (static_cast<std::size_t>(it - values.begin()) + 1) % values.size();
+      return var == ctx().int_val(static_cast<int>(next));
+    }
+    const auto lo = bound(slot->declaration->lower), hi = bound(slot->declaration->upper);
+    if (!lo || !hi) return std::nullopt;
+    __int128 num = 0, den = 1;
+    for (std::size_t m = n; m > 0 && den < (__int128{1} << 60); m /= 2) {
+      num = 2 * num + static_cast<__int128>(m % 2);
+      den *= 2;
+    }
+    try {
+      const Fraction x = *lo + (*hi - *lo) * Fraction::of(num, den);
+      if (slot->sort == smt::Sort::integer) {
+        const __int128 i = floor_of(x);
+        if (i < INT64_MIN || i > INT64_MAX) return std::nullopt;
+        return var == ctx().int_val(static_cast<std::int64_t>(i));
+      }
+      return var == fraction(x);
+    } catch (const verify::detail::FractionOverflow&) {
+      return std::nullopt;
+    }
+  }
+
   // A state's values as a formula over the variables (primed: over their copy).
   z3::expr same_as(const State& state, const std::string& name, bool primed_copy) {
     const smt::Encoder::Slot* slot = enc_.find_slot(name);
@@ -259,31 +305,36 @@ class SolvedQuestions {
   // Per goal: the formulas its witness satisfies, and whether it is a pair.
   std::vector<std::pair<std::vector<z3::expr>, bool>> goal_questions;
 
-  // Solves goal `k` again away from the excluded states: differing from each in every variable
-  // if it can (a state that did not reach the node may fail for any of its values), else in
-  // one. False when no other state reaches it.
+  // Solves goal `k` again away from the excluded states: another state (each side of a pair),
+  // spread over the ranges where the goal allows it (a state that did not reach the node may
+  // fail for any of its values): each variable at a value the tries have not had, the middle
+  // of its range first, then the quarters, ... False when no other state reaches it.
   bool retry(std::size_t k, const std::set<std::uint64_t>& excluded) {
     Goal& goal = node_.solved->goals[k];
     const auto& [formulas, pair] = goal_questions[k];
-    for (bool every : {true, false}) {
-      std::vector<z3::expr> away = formulas;
-      for (std::uint64_t e : excluded) {
-        const State avoid = node_.solved->states[e];
-        for (bool primed_copy : {false, true}) {
-          if (primed_copy && !pair) continue;
-          z3::expr_vector differ(ctx());
-          for (const auto& name : order()) differ.push_back(!same_as(avoid, name, primed_copy));
-          if (differ.empty()) continue;
-          away.push_back(every ? z3::mk_and(differ) : z3::mk_or(differ));
-        }
-      }
-      std::vector<std::size_t> witness;
-      if (ask(away, &witness, pair) == Answer::sat) {
-        goal.witness = witness;
-        return true;
+    std::vector<z3::expr> away = formulas;
+    for (std::uint64_t e : excluded) {
+      const State avoid = node_.solved->states[e];
+      for (bool primed_copy : {false, true}) {
+        if (primed_copy && !pair) continue;
+        z3::expr_vector differ(ctx());
+        for (const auto& name : order()) differ.push_back(!same_as(avoid, name, primed_copy));
+        if (!differ.empty()) away.push_back(z3::mk_or(differ));
       }
     }
-    return false;
+    const State last = excluded.empty() ? State{} : node_.solved->states[*excluded.rbegin()];
+    for (const auto& name : order())
+      for (bool primed_copy : {false, true}) {
+        if (primed_copy && !pair) continue;
+        const auto pin = spread(name, last, excluded.size(), primed_copy);
+        if (!pin) continue;
+        away.push_back(*pin);
+        if (ask(away) != Answer::sat) away.pop_back();
+      }
+    std::vector<std::size_t> witness;
+    if (ask(away, &witness, pair) != Answer::sat) return false;
+    goal.witness = witness;
+    return true;
   }
 
  private:
@@ -617,6 +668,63 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
                                  : std::optional<Fraction>(Fraction::of(floor_of(at) + 1, 1)));
         }
       }
+      // Two real variables a linear atom relates: x + b·y + c = 0 (x declared first), the
+      // line and each side of it.
+      const std::vector<std::string> declared = q.order();
+      auto rank = [&](const std::string& name) {
+        return std::find(declared.begin(), declared.end(), name) - declared.begin();
+      };
+      std::set<std::tuple<std::string, std::string, Fraction, Fraction>> lines;
+      for (const auto* e : atom_expr) {
+        const auto linear = verify::detail::linear_atom(*e, typing);
+        if (!linear || linear->coefficients.size() != 2) continue;
+        std::pair<std::string, Fraction> x = *linear->coefficients.begin();
+        std::pair<std::string, Fraction> y = *std::next(linear->coefficients.begin());
+        const fretish::Variable* vx = mission.domain.find(x.first);
+        const fretish::Variable* vy = mission.domain.find(y.first);
+        if (vx == nullptr || vy == nullptr || vx->type != fretish::VarType::real ||
+            vy->type != fretish::VarType::real)
+          continue;
+        if (rank(y.first) < rank(x.first)) std::swap(x, y);
+        try {
+          lines.emplace(x.first, y.first, y.second / x.second, linear->constant / x.second);
+        } catch (const verify::detail::FractionOverflow&) {
+          continue;
+        }
+      }
+      for (const auto& [x, y, b, c] : lines) {
+        std::string text = x;
+        if (!b.is_zero())
+          text +=
+              (b.sign() < 0 ? " - " : " + ") +
+              (b == Fraction(1) || b == Fraction(-1) ? ""
+                                                     : (b.sign() < 0 ? -b : b).decimal() + "*") +
+              y;
+        const std::string rhs = (-c).decimal();
+        const z3::expr lhs =
+            q.slot(x)->constant + q.fraction(b) * q.slot(y)->constant + q.fraction(c);
+        const char* names[] = {"below", "at", "above"};
+        const char* words[] = {" < ", " = ", " > "};
+        for (int sign = -1; sign <= 1; ++sign) {
+          Target t = make_target(*this, Criterion::boundary,
+                                 "line/" + text + " = " + rhs + "/" + names[sign + 1],
+                                 text + words[sign + 1] + rhs +
+                                     (sign == 0 ? ", on the boundary" : ", beside the boundary"));
+          Goal g;
+          g.kind = Goal::Kind::boundary;
+          g.line = true;
+          g.variable = x;
+          g.variable2 = y;
+          g.slope = b;
+          g.offset = c;
+          g.sign = sign;
+          const std::vector<z3::expr> where{sign < 0 ? lhs < 0 : sign == 0 ? lhs == 0 : lhs > 0};
+          const Answer answer = q.ask(where, &g.witness);
+          if (answer == Answer::unsat)
+            t.reason = "no state of the domain lies there (the assumptions rule it out)";
+          add(std::move(t), std::move(g), answer, where, false);
+        }
+      }
     }
   } catch (const std::exception& e) {
     // A value a scenario cannot carry, arithmetic beyond 128 bits: no targets rather than some.
@@ -668,6 +776,16 @@ bool Model::Node::solved_reaches(const Goal& goal, const State& state) const {
       return reqs[goal.req]->guard && solved_holds(*reqs[goal.req]->guard, state) == goal.value;
     case Goal::Kind::pair: return false;
     case Goal::Kind::boundary: {
+      if (goal.line) {
+        const auto x = exact(find_value(state, goal.variable));
+        const auto y = exact(find_value(state, goal.variable2));
+        if (!x || !y) return false;
+        try {
+          return (*x + goal.slope * *y + goal.offset).sign() == goal.sign;
+        } catch (const verify::detail::FractionOverflow&) {
+          return false;
+        }
+      }
       const Value* v = find_value(state, goal.variable);
       const auto x = v == nullptr ? std::nullopt : number_of(*v);
       if (!x) return false;
