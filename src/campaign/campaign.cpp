@@ -263,9 +263,11 @@ Campaign build_campaign(const load::Mission& mission, const Options& given) {
   if (options.world == nullptr) options.world = load_world(mission, world);
   Campaign c;
   c.mission = mission.name;
-  Model model(mission, options.criteria);
+  Model model(mission, options.criteria, options.solve_every_node);
   c.targets = model.targets();
   c.skipped = model.skipped();
+  for (const auto& [node, why] : model.solved())
+    c.notes.push_back("targets of " + node + " solved one by one, not enumerated: " + why);
   const Replayer replayer(mission, options.compile);
   // A state whose run does not get to its node (the tree takes another branch first) is
   // set aside and the targets planned again, a few times.
@@ -527,9 +529,13 @@ std::string coverage_text(const CoverageReport& report) {
            ticks_text(r.ticks) + (r.error.empty() ? "" : ", stopped: " + r.error) + "\n";
   }
   for (const auto& v : report.visits)
-    out += "  " + v.adaptable + ": " + std::to_string(v.visited.cells) + " of " +
-           std::to_string(v.cells) + (v.counted ? " states" : " cells") + " visited, " +
-           visited_text(v.visited) + "\n";
+    out += "  " + v.adaptable + ": " +
+           (v.share_not_computed.empty()
+                ? std::to_string(v.visited.cells) + " of " + std::to_string(v.cells) +
+                      (v.counted ? " states" : " cells") + " visited, " + visited_text(v.visited)
+                : std::to_string(v.visited.cells) +
+                      " states visited, share not computed: " + v.share_not_computed) +
+           "\n";
   for (const auto& v : report.visits)
     for (const auto& t : v.targets) {
       const Target& target = report.targets[t.target];
@@ -601,6 +607,12 @@ std::string coverage_json(const CoverageReport& report) {
   for (const auto& v : report.visits) {
     Json e = Json::object();
     e["adaptable"] = v.adaptable;
+    if (!v.share_not_computed.empty()) {
+      e["visited_states"] = v.visited.cells;
+      e["share_not_computed"] = v.share_not_computed;
+      visits.push_back(std::move(e));
+      continue;
+    }
     e["counted"] = v.counted;
     e["cells"] = v.cells;
     visited_json(e, v.visited);

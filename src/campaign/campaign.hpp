@@ -79,6 +79,8 @@ struct NodeVisit {
   std::uint64_t cells = 0;  // cells of the domain
   Visited visited;
   std::vector<std::uint64_t> states;  // the visited cells, by index in the node's space
+  // A node whose space is not enumerated: why, and no share is measured ("" otherwise).
+  std::string share_not_computed;
   struct TargetShare {
     std::size_t target = 0;  // into Model::targets()
     Share share;             // what its states hold of the domain
@@ -88,17 +90,24 @@ struct NodeVisit {
 };
 
 // Targets and their witnesses for every adaptable node, enumerated exactly over the cells of
-// the coverage stage (verify/space.hpp). Nodes that cannot be enumerated are listed in
-// `skipped` with the reason, and get no targets.
+// the coverage stage (verify/space.hpp). A node whose space cannot be enumerated (too many
+// states, conditions the cells cannot decide) has each target solved with Z3 instead: the same
+// targets, witnesses from the solver, no share. Nodes whose guards do not type-check are listed
+// in `skipped` with the reason, and get no targets.
 class Model {
  public:
-  Model(const load::Mission& mission, const std::set<Criterion>& criteria);
+  // `solve_every_node`: solve every node's targets with Z3, as for a space too large to
+  // enumerate (tests compare the two).
+  Model(const load::Mission& mission, const std::set<Criterion>& criteria,
+        bool solve_every_node = false);
   ~Model();
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
   const std::vector<Target>& targets() const { return targets_; }
   const std::vector<std::pair<std::string, std::string>>& skipped() const { return skipped_; }
+  // The nodes whose targets were solved rather than enumerated: adaptable, why.
+  std::vector<std::pair<std::string, std::string>> solved() const;
 
   // The targets a set of runs covered (indices into targets()).
   std::vector<bool> covered(const std::vector<RunRecord>& runs) const;
@@ -179,6 +188,8 @@ struct Options {
   // Guarantee targets: how deep and how many states the prove engines explore (0: every tick).
   std::uint64_t prove_depth = 0;
   std::size_t prove_max_states = 2'000'000;
+  // Solve every node's targets with Z3, even where its space can be enumerated (tests).
+  bool solve_every_node = false;
 };
 
 struct Scenario {

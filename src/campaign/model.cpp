@@ -155,7 +155,6 @@ bool Model::Node::build(const load::Mission& mission, std::string& reason) {
     if (t != nullptr && t->sort == smt::Sort::boolean) assumptions.push_back(a.expr.get());
   }
   // The guards' variables, closed under "an assumption links them", as coverage counts them.
-  std::set<std::string> names;
   std::vector<const fretish::Expr*> atoms;
   std::map<std::string, std::size_t> atom_index;
   for (std::size_t k = 0; k < reqs.size(); ++k) {
@@ -174,8 +173,8 @@ bool Model::Node::build(const load::Mission& mission, std::string& reason) {
         req_atoms[k].push_back(it->second);
     }
   }
-  const std::vector<const fretish::Expr*> linked =
-      verify::detail::link_assumptions(assumptions, typing, names, atoms);
+  linked = verify::detail::link_assumptions(assumptions, typing, names, atoms);
+  prepared = true;
   space = std::make_unique<verify::detail::Space>(dom, typing);
   try {
     reason = space->plan(names, atoms);
@@ -476,7 +475,8 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
   }
 }
 
-Model::Model(const load::Mission& mission, const std::set<Criterion>& criteria)
+Model::Model(const load::Mission& mission, const std::set<Criterion>& criteria,
+             bool solve_every_node)
     : mission_(mission) {
   std::set<std::string> seen;
   for (const auto& site : mission.adaptables) {
@@ -493,8 +493,20 @@ Model::Model(const load::Mission& mission, const std::set<Criterion>& criteria)
       continue;
     }
     std::string reason;
-    if (!node->build(mission, reason)) {
+    const bool enumerated = node->build(mission, reason) && !solve_every_node;
+    if (!node->prepared) {
       skipped_.emplace_back(site.id, reason);
+      continue;
+    }
+    if (!enumerated) {
+      // Too many states, or conditions the cells cannot decide: each target is solved.
+      std::string failure;
+      if (!node->solve(mission, criteria, solve_every_node ? "every node solved" : reason, targets_,
+                       failure)) {
+        skipped_.emplace_back(site.id, reason + "; solving its targets failed: " + failure);
+        continue;
+      }
+      nodes_.push_back(std::move(node));
       continue;
     }
     if (criteria.count(Criterion::decision)) node->decision_targets(targets_);
@@ -506,6 +518,13 @@ Model::Model(const load::Mission& mission, const std::set<Criterion>& criteria)
 
 Model::~Model() = default;
 
+std::vector<std::pair<std::string, std::string>> Model::solved() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& n : nodes_)
+    if (n->solved) out.emplace_back(n->adaptable, n->solved->why);
+  return out;
+}
+
 std::size_t Model::nodes() const {
   return nodes_.size();
 }
@@ -515,6 +534,7 @@ const std::string& Model::adaptable(std::size_t node) const {
 
 State Model::default_state(std::size_t node) const {
   const Node& n = *nodes_[node];
+  if (n.solved) return n.solved->first.value_or(State{});
   for (std::uint64_t s = 0; s < n.domain.size(); ++s)
     if (n.domain.test(s)) return n.state_values(s);
   return {};
@@ -522,10 +542,57 @@ State Model::default_state(std::size_t node) const {
 
 std::string Model::expected(std::size_t node, const State& state) const {
   const Node& n = *nodes_[node];
+  if (n.solved) {
+    const auto s = n.solved_state(state);
+    const int k = s ? n.solved_selection(*s) : -1;
+    return k < 0 ? "" : n.reqs[static_cast<std::size_t>(k)]->alternative;
+  }
   const auto s = n.state_index(state);
   if (!s || n.sel[*s] < 0) return "";
   return n.reqs[static_cast<std::size_t>(n.sel[*s])]->alternative;
 }
+
+namespace {
+
+// The visited states of a solved node (restricted to its variables, each once) and the
+// alternatives the runs selected there.
+std::vector<State> solved_visits(const Model::Node& n, const std::vector<const Observation*>& seen,
+                                 std::set<std::string>* alternatives = nullptr) {
+  std::vector<State> states;
+  std::set<std::string> keys;
+  for (const Observation* o : seen) {
+    const auto s = n.solved_state(o->state);
+    std::string alt = o->alternative;
+    if (s) {
+      if (alt.empty() && n.solved_selection(*s) >= 0)
+        alt = n.reqs[static_cast<std::size_t>(n.solved_selection(*s))]->alternative;
+      if (keys.insert(state_json(*s)).second) states.push_back(*s);
+    }
+    if (!alt.empty() && alternatives != nullptr) alternatives->insert(alt);
+  }
+  return states;
+}
+
+void solved_covered(const Model::Node& n, const std::vector<const Observation*>& seen,
+                    std::vector<bool>& out) {
+  std::set<std::string> alternatives;
+  const std::vector<State> states = solved_visits(n, seen, &alternatives);
+  for (const auto& goal : n.solved->goals) {
+    bool hit = false;
+    if (goal.kind == Model::Node::Goal::Kind::select)
+      hit = alternatives.count(n.reqs[goal.req]->alternative) > 0;
+    else if (goal.kind == Model::Node::Goal::Kind::pair)
+      for (std::size_t i = 0; i < states.size() && !hit; ++i)
+        for (std::size_t j = i + 1; j < states.size() && !hit; ++j)
+          hit = n.solved_pair(goal, states[i], states[j]);
+    else
+      for (std::size_t i = 0; i < states.size() && !hit; ++i)
+        hit = n.solved_reaches(goal, states[i]);
+    out[goal.target] = hit;
+  }
+}
+
+}  // namespace
 
 std::vector<bool> Model::covered(const std::vector<RunRecord>& runs) const {
   std::vector<bool> out(targets_.size(), false);
@@ -534,6 +601,10 @@ std::vector<bool> Model::covered(const std::vector<RunRecord>& runs) const {
     for (const auto& o : run.observations) by_node[o.adaptable].push_back(&o);
   for (const auto& node : nodes_) {
     const Node& n = *node;
+    if (n.solved) {
+      solved_covered(n, by_node[n.adaptable], out);
+      continue;
+    }
     std::set<std::uint64_t> states;
     std::set<std::string> alternatives;
     for (const Observation* seen : by_node[n.adaptable]) {
@@ -575,6 +646,45 @@ std::vector<bool> Model::covered(const std::vector<RunRecord>& runs) const {
   return out;
 }
 
+namespace {
+
+// A solved node's picks: each MC/DC pair's witnesses, then for each other target a state
+// already chosen that reaches it, else its witness. Witnesses in `excluded` are not used.
+void solved_picks(const Model::Node& n, std::size_t ni, const std::set<std::uint64_t>& excluded,
+                  const std::vector<Target>& targets, std::vector<Model::Pick>& picks) {
+  using Kind = Model::Node::Goal::Kind;
+  std::map<std::uint64_t, std::vector<std::size_t>> chosen;
+  // A goal whose witness did not reach the node is solved again away from such states.
+  auto usable = [&](const Model::Node::Goal& g) {
+    if (!targets[g.target].reachable || g.witness.empty()) return false;
+    for (std::size_t w : g.witness)
+      if (excluded.count(w))
+        return n.solved_retry(static_cast<std::size_t>(&g - n.solved->goals.data()), excluded);
+    return true;
+  };
+  for (const auto& g : n.solved->goals)
+    if (g.kind == Kind::pair && usable(g))
+      for (std::size_t w : g.witness) chosen[w].push_back(g.target);
+  for (const auto& g : n.solved->goals) {
+    if (g.kind == Kind::pair || !usable(g)) continue;
+    bool done = false;
+    for (auto& [s, purposes] : chosen)
+      if (n.solved_reaches(g, n.solved->states[s])) {
+        purposes.push_back(g.target);
+        done = true;
+        break;
+      }
+    if (!done) chosen[g.witness.front()].push_back(g.target);
+  }
+  for (auto& [s, purposes] : chosen) {
+    std::sort(purposes.begin(), purposes.end());
+    purposes.erase(std::unique(purposes.begin(), purposes.end()), purposes.end());
+    picks.push_back({ni, s, n.solved->states[s], std::move(purposes)});
+  }
+}
+
+}  // namespace
+
 std::vector<Model::Pick> Model::minimise(
     const std::vector<std::set<std::uint64_t>>& excluded) const {
   std::vector<Pick> picks;
@@ -582,6 +692,10 @@ std::vector<Model::Pick> Model::minimise(
     const Node& n = *nodes_[ni];
     static const std::set<std::uint64_t> none;
     const std::set<std::uint64_t>& out = ni < excluded.size() ? excluded[ni] : none;
+    if (n.solved) {
+      solved_picks(n, ni, out, targets_, picks);
+      continue;
+    }
     std::map<std::uint64_t, std::vector<std::size_t>> chosen;  // state -> purposes
     // MC/DC first: a pair whose states are already chosen costs nothing.
     for (const auto& local : n.locals) {

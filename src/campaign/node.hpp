@@ -1,6 +1,7 @@
 #pragma once
 // One adaptable node of a campaign model: its enumerated space (the coverage stage's cells),
-// where each guard holds, what each state selects, and its targets as sets of states.
+// where each guard holds, what each state selects, and its targets as sets of states; or, when
+// the space cannot be enumerated, its targets solved with Z3 one by one (solved.cpp).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -13,9 +14,12 @@
 #include "fretish/selection.hpp"
 #include "smt/evaluate.hpp"
 #include "verify/bits.hpp"
+#include "verify/fraction.hpp"
 #include "verify/space.hpp"
 
 namespace uabt::campaign {
+
+class SolvedQuestions;  // solved.cpp
 
 struct Model::Node {
   std::string adaptable;
@@ -47,6 +51,42 @@ struct Model::Node {
   };
   std::vector<Local> locals;
 
+  // The guards' variables (closed under the assumptions that link them) and those assumptions:
+  // set by build() once the guards type-check (`prepared`).
+  bool prepared = false;
+  std::set<std::string> names;
+  std::vector<const fretish::Expr*> linked;
+
+  // A node whose space is not enumerated: each target solved with Z3, its witnesses the only
+  // states known; membership is decided by evaluating the conditions on a state.
+  struct Goal {
+    enum class Kind { select, guard, pair, boundary } kind = Kind::select;
+    std::size_t target = 0;  // index into the model's targets
+    std::size_t req = 0, atom = 0;
+    bool value = false;  // guard: the value it must take
+    // boundary: the variable lies in (lo, hi), or equals lo when `point`; a missing end is
+    // infinite
+    std::string variable;
+    bool point = false;
+    std::optional<verify::detail::Fraction> lo, hi;
+    // a line of two real variables: sign(variable + slope·variable2 + offset) = `sign`
+    bool line = false;
+    std::string variable2;
+    verify::detail::Fraction slope, offset;
+    int sign = 0;
+    std::vector<std::size_t> witness;  // indices into `states`
+  };
+  struct Solved {
+    std::string why;  // why the space is not enumerated
+    const fretish::Domain* domain = nullptr;
+    std::vector<State> states;             // every witness
+    std::optional<State> first;            // a state of the domain
+    std::vector<std::size_t> column_atom;  // per column: the atom that stands for it
+    std::vector<Goal> goals;
+    std::shared_ptr<SolvedQuestions> questions;  // the solver, to solve a goal again
+  };
+  std::unique_ptr<Solved> solved;
+
   bool build(const load::Mission& mission, std::string& reason);
   void decision_targets(std::vector<Target>& all);
   void mcdc_targets(std::vector<Target>& all);
@@ -63,6 +103,25 @@ struct Model::Node {
                                           const std::set<std::uint64_t>& excluded) const;
   // The state (in the domain) an assignment lies in.
   std::optional<std::uint64_t> state_index(const State& state) const;
+
+  // Solves the targets of `criteria` with Z3 (solved.cpp); `why` says why the space is not
+  // enumerated. False (with `failure`, and no target added) when a condition does not lower or
+  // a witness does not fit a scenario.
+  bool solve(const load::Mission& mission, const std::set<Criterion>& criteria,
+             const std::string& why, std::vector<Target>& all, std::string& failure);
+  // A solved node: the state restricted to the node's variables when it assigns them all
+  // within their ranges and satisfies the assumptions; nullopt otherwise.
+  std::optional<State> solved_state(const State& state) const;
+  // A solved node: the requirement a state of the domain selects (-1: none).
+  int solved_selection(const State& state) const;
+  bool solved_holds(const fretish::Expr& condition, const State& state) const;
+  // A solved node: whether a state of the domain reaches a single-state goal.
+  bool solved_reaches(const Goal& goal, const State& state) const;
+  // A solved node: solves goal `goal` again away from the excluded states (its witness is
+  // replaced); false when no other state reaches it.
+  bool solved_retry(std::size_t goal, const std::set<std::uint64_t>& excluded) const;
+  // A solved node: two states of the domain are an MC/DC pair of the goal's atom.
+  bool solved_pair(const Goal& goal, const State& s, const State& u) const;
 };
 
 }  // namespace uabt::campaign

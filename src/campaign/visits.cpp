@@ -65,6 +65,16 @@ std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
     const Node& n = *node;
     NodeVisit visit;
     visit.adaptable = n.adaptable;
+    if (n.solved) {
+      // No enumeration, no measure: the distinct states the runs visited, counted.
+      std::set<std::string> seen;
+      for (const Observation* o : by_node[n.adaptable])
+        if (const auto s = n.solved_state(o->state)) seen.insert(state_json(*s));
+      visit.visited.cells = seen.size();
+      visit.share_not_computed = n.solved->why;
+      out.push_back(std::move(visit));
+      continue;
+    }
     visit.counted = !n.space->has_reals();
     visit.cells = n.domain.count();
     std::set<std::uint64_t> states;
