@@ -787,8 +787,8 @@ std::vector<DrawnMark> visited_marks_of(const std::string& svg) {
   DrawnMark frame;
   const std::regex element(R"re(<(\w+)((?:\s+[\w:-]+="[^"]*")*)\s*/?>)re");
   const std::regex attribute(R"re(([\w:-]+)="([^"]*)")re");
-      for (auto it = std::sregex_iterator(svg.begin(), svg.end(), element);
-           it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), element);
+       it != std::sregex_iterator(); ++it) {
     std::map<std::string, std::string> a;
     const std::string attrs = (*it)[2];
     for (auto at = std::sregex_iterator(attrs.begin(), attrs.end(), attribute);
