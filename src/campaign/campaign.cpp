@@ -512,17 +512,25 @@ std::string campaign_junit(const Campaign& campaign) {
   return report::junit_xml({suite});
 }
 
-std::string coverage_text(const CoverageReport& report) {
+std::string coverage_headline(const CoverageReport& report) {
   const Counts c = count(report.targets, report.covered);
-  std::string out = report.mission + ": " + std::to_string(report.runs.size()) +
-                    (report.runs.size() == 1 ? " run covers " : " runs cover ") +
-                    std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
-                    " reachable targets (" + (c.targets == 0 ? "" : criteria_text(c) + "; ") +
-                    std::to_string(c.targets - c.reachable) + " unreachable" +
-                    (report.not_judged.empty()
-                         ? ""
-                         : ", " + std::to_string(report.not_judged.size()) + " not judged") +
-                    ")\n";
+  return report.mission + ": " + std::to_string(report.runs.size()) +
+         (report.runs.size() == 1 ? " run covers " : " runs cover ") + std::to_string(c.covered) +
+         " of " + std::to_string(c.reachable) + " reachable targets (" +
+         (c.targets == 0 ? "" : criteria_text(c) + "; ") + std::to_string(c.targets - c.reachable) +
+         " unreachable" +
+         (report.not_judged.empty()
+              ? ""
+              : ", " + std::to_string(report.not_judged.size()) + " not judged") +
+         ")";
+}
+
+std::string covering_text(const Target& t) {
+  return t.scenario.empty() ? "initial " + witness_text(t) : "the scenario " + scenario_text(t);
+}
+
+std::string coverage_text(const CoverageReport& report) {
+  std::string out = coverage_headline(report) + "\n";
   for (const auto& r : report.runs) {
     out += "  " + r.source + ": " + std::to_string(r.observations.size()) +
            (r.observations.size() == 1 ? " observation in " : " observations in ") +
@@ -545,10 +553,7 @@ std::string coverage_text(const CoverageReport& report) {
   for (std::size_t k = 0; k < report.targets.size(); ++k) {
     const Target& t = report.targets[k];
     if (!t.reachable || report.covered[k] || report.not_judged.count(k)) continue;
-    out +=
-        "missed: " + t.text + "; covered by " +
-        (t.scenario.empty() ? "initial " + witness_text(t) : "the scenario " + scenario_text(t)) +
-        "\n";
+    out += "missed: " + t.text + "; covered by " + covering_text(t) + "\n";
   }
   for (const auto& [k, why] : report.not_judged)
     out += "not judged: " + report.targets[k].text + ": " + why + "\n";

@@ -14,6 +14,7 @@
 #include "load/mission.hpp"
 #include "prove/world_model.hpp"
 #include "verify/impact.hpp"
+#include "verify/verify.hpp"
 
 namespace uabt::campaign {
 
@@ -87,6 +88,11 @@ struct NodeVisit {
     Visited visited;         // of its states, those the runs visited
   };
   std::vector<TargetShare> targets;  // every target reached by single states (not MC/DC pairs)
+  // The visited cells placed on the node's coverage map (one mark per cell of the map, with the
+  // runs that visited it, in the order of the first state visited); `no_map` says why the node
+  // has no map ("" when it has one).
+  std::vector<verify::MapMark> marks;
+  std::string no_map;
 };
 
 // Targets and their witnesses for every adaptable node, enumerated exactly over the cells of
@@ -247,6 +253,18 @@ struct CoverageReport {
 };
 std::string coverage_text(const CoverageReport& report);
 std::string coverage_json(const CoverageReport& report);
+// One self-contained HTML page (inline CSS and SVG, no script): per adaptable node the cells the
+// runs visited drawn over its coverage map (`maps`: verify's coverage of the mission, one per
+// node) and its targets, covered or missed, each miss with what covers it; then the guarantee
+// targets, the runs and the notes. The same facts as coverage_text.
+std::string coverage_html(const CoverageReport& report, const load::Mission& mission,
+                          const std::vector<verify::Coverage>& maps,
+                          const std::string& tool_version);
+// The first line of coverage_text: "msl_curiosity: 1 run covers 8 of 19 reachable targets (…)".
+std::string coverage_headline(const CoverageReport& report);
+// What covers a missed target: "initial {…}" (" and {…}" for a pair), or for a guarantee target
+// "the scenario {…}", the campaign's, on one line without its description.
+std::string covering_text(const Target& t);
 // "25% (1/4) of the space", "0% of the space (a boundary point)", both when both are there.
 std::string visited_text(const Visited& visited);
 

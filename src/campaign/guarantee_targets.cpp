@@ -205,7 +205,12 @@ GuaranteePlan plan_guarantee_targets(const load::Mission& mission, const Replaye
   out.traps.properties.clear();
   if (!options.criteria.count(Criterion::guarantee)) return out;
   std::vector<Planned> planned = plan(mission);
-  if (planned.empty()) return out;
+  if (planned.empty()) {
+    out.notes.push_back(
+        "guarantee targets not planned: no guarantee of this mission has a trigger (a mode, an "
+        "upon/if/when condition)");
+    return out;
+  }
   if (options.world == nullptr) {
     out.notes.push_back("guarantee targets not planned: the mission has no world.json");
     return out;

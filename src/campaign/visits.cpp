@@ -1,10 +1,12 @@
 // What a set of runs visited of each node's space: the cells, and the exact share of the
 // domain they hold, measured as the coverage stage measures shares (DESIGN §5).
+#include <algorithm>
 #include <map>
 #include <set>
 
 #include "campaign/campaign.hpp"
 #include "campaign/node.hpp"
+#include "verify/coverage_parts.hpp"
 
 namespace uabt::campaign {
 
@@ -54,12 +56,29 @@ Visited measure(const Model::Node& n, const std::set<std::uint64_t>& states, con
   return v;
 }
 
+// The visited states on the node's coverage map: one mark per cell of the map (the states that
+// differ only off the map share one), with the runs that visited it.
+void place_on_map(const Model::Node& n,
+                  const std::map<std::uint64_t, std::vector<std::string>>& runs, NodeVisit& visit) {
+  const auto layout = verify::detail::map_layout(*n.space, n.reqs.size(), visit.no_map);
+  if (!layout) return;
+  std::map<std::pair<std::size_t, std::string>, std::size_t> at;  // panel, where → mark
+  for (const auto& [state, sources] : runs) {
+    verify::MapMark mark = verify::detail::map_mark(*n.space, n.space->domain(), *layout, state);
+    const auto [it, fresh] = at.emplace(std::make_pair(mark.panel, mark.where), visit.marks.size());
+    if (fresh) visit.marks.push_back(std::move(mark));
+    auto& named = visit.marks[it->second].runs;
+    for (const auto& source : sources)
+      if (std::find(named.begin(), named.end(), source) == named.end()) named.push_back(source);
+  }
+}
+
 }  // namespace
 
 std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
-  std::map<std::string, std::vector<const Observation*>> by_node;
+  std::map<std::string, std::vector<std::pair<const Observation*, const RunRecord*>>> by_node;
   for (const auto& run : runs)
-    for (const auto& o : run.observations) by_node[o.adaptable].push_back(&o);
+    for (const auto& o : run.observations) by_node[o.adaptable].emplace_back(&o, &run);
   std::vector<NodeVisit> out;
   for (const auto& node : nodes_) {
     const Node& n = *node;
@@ -78,8 +97,13 @@ std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
     visit.counted = !n.space->has_reals();
     visit.cells = n.domain.count();
     std::set<std::uint64_t> states;
-    for (const Observation* seen : by_node[n.adaptable])
-      if (const auto s = n.state_index(seen->state)) states.insert(*s);
+    std::map<std::uint64_t, std::vector<std::string>> sources;  // state → the runs, in order
+    for (const auto& [seen, run] : by_node[n.adaptable])
+      if (const auto s = n.state_index(seen->state)) {
+        states.insert(*s);
+        auto& named = sources[*s];
+        if (named.empty() || named.back() != run->source) named.push_back(run->source);
+      }
     const Fraction whole = n.space->measure(n.domain);
     visit.visited = measure(n, states, nullptr, whole);
     visit.states.assign(states.begin(), states.end());
@@ -91,6 +115,7 @@ std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
       t.visited = measure(n, states, &local.states, whole);
       visit.targets.push_back(std::move(t));
     }
+    place_on_map(n, sources, visit);
     out.push_back(std::move(visit));
   }
   return out;

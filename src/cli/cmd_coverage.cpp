@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "runtime/scenario.hpp"
+#include "verify/verify.hpp"
 
 namespace uabt::cli {
 
@@ -65,7 +66,7 @@ bool is_monitor_trace(const std::string& content) {
 // scenario's initial state for each target they missed.
 void register_coverage(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, format = "text", selection;
+    std::string mission, format = "text", selection, output;
     std::vector<std::string> runs, uplinks;
   };
   auto args = std::make_shared<Args>();
@@ -83,7 +84,11 @@ void register_coverage(CLI::App& app, int& exit_code) {
                   "them (a campaign from uabt tests)")
       ->required()
       ->check(CLI::ExistingPath);
-  cmd->add_option("--format", args->format, "text | json")->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--format", args->format,
+                  "text | json | html (a page with the visited cells drawn over each node's "
+                  "coverage map)")
+      ->check(CLI::IsMember({"text", "json", "html"}));
+  cmd->add_option("-o,--output", args->output, "write the output to FILE");
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->callback([args, &exit_code] {
@@ -172,8 +177,15 @@ void register_coverage(CLI::App& app, int& exit_code) {
           report.not_judged.emplace(first + t, why->second);
       }
       report.visits = model.visits(report.runs);
-      std::cout << (args->format == "json" ? campaign::coverage_json(report)
-                                           : campaign::coverage_text(report));
+      if (args->format == "html") {
+        // The coverage maps, as `uabt report` draws them.
+        const verify::Result verified = verify::verify_mission(*mission, {});
+        emit(args->output,
+             campaign::coverage_html(report, *mission, verified.coverage, tool_version()));
+      } else {
+        emit(args->output, args->format == "json" ? campaign::coverage_json(report)
+                                                  : campaign::coverage_text(report));
+      }
       bool all = true;
       for (std::size_t k = 0; k < report.targets.size(); ++k)
         all = all &&

@@ -130,6 +130,23 @@ std::string html_escape(std::string_view text) {
   return out;
 }
 
+std::string inline_svg(std::string svg) {
+  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
+  const auto at = svg.find(xmlns);
+  if (at != std::string::npos) svg.erase(at, xmlns.size());
+  return svg;
+}
+
+std::string anchor(std::size_t index, std::string_view id) {
+  std::string out = "node-" + std::to_string(index) + "-";
+  for (char c : id) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '_';
+    out += keep ? c : '_';
+  }
+  return out;
+}
+
 std::string pipeline_stage(std::string_view check_stage) {
   if (check_stage == "fretish" || check_stage == "bt" || check_stage == "load") return "load";
   return std::string(check_stage);

@@ -38,6 +38,14 @@ std::string clean_text(std::string_view text);
 // Escapes & < > " ' for HTML/XML text and attribute values (after clean_text).
 std::string html_escape(std::string_view text);
 
+// An SVG picture as inline HTML: without its namespace declaration, which HTML needs not, so
+// that a page holds no URL.
+std::string inline_svg(std::string svg);
+
+// An element id from an id that may hold any character: "node-INDEX-ID" with every character
+// but letters, digits, '-' and '_' as '_'; the index keeps two ids apart.
+std::string anchor(std::size_t index, std::string_view id);
+
 // The pipeline stage ("load", "verify", "compile", "conform", "runtime") that runs a check of
 // the catalogue's stage (fretish and bt checks run while loading).
 std::string pipeline_stage(std::string_view check_stage);

@@ -12,13 +12,6 @@ std::string code(std::string_view text) {
   return "<code>" + html_escape(text) + "</code>";
 }
 
-std::string inline_svg(std::string svg) {
-  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
-  const auto at = svg.find(xmlns);
-  if (at != std::string::npos) svg.erase(at, xmlns.size());
-  return svg;
-}
-
 // One row of the decision table.
 struct Row {
   std::string kind;   // "rule", "gap", "overlap"

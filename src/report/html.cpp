@@ -12,7 +12,9 @@ namespace uabt::report {
 
 namespace {
 
+using detail::anchor;
 using detail::html_escape;
+using detail::inline_svg;
 
 constexpr const char* kStyle = R"css(
 :root { color-scheme: light; }
@@ -83,26 +85,6 @@ std::string state_words(const State& state) {
     out += code(name) + " = " + code(value.to_string());
   }
   return out;
-}
-
-// Anchors from ids that may hold any character; the index keeps two ids apart.
-std::string anchor(std::size_t index, std::string_view id) {
-  std::string out = "node-" + std::to_string(index) + "-";
-  for (char c : id) {
-    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                      c == '-' || c == '_';
-    out += keep ? c : '_';
-  }
-  return out;
-}
-
-// Inline SVG in HTML needs no namespace declaration: leaving it out keeps the page free of
-// any URL.
-std::string inline_svg(std::string svg) {
-  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
-  const auto at = svg.find(xmlns);
-  if (at != std::string::npos) svg.erase(at, xmlns.size());
-  return svg;
 }
 
 void finding_html(const Finding& finding, std::string& out) {

@@ -51,8 +51,10 @@ std::string coverage_svg(const verify::Coverage& coverage);
 // guards read (booleans, enums, bounded numbers; numbers in at most 32 cells evaluated at their
 // centre), computed with smt::evaluate; other variables are tried at a few values and a cell
 // whose outcome depends on them is striped. Two or more guards holding are dotted. "" when the
-// guards read fewer than two drawable variables.
-std::string coverage_map_svg(const load::Mission& mission, const verify::Coverage& coverage);
+// guards read fewer than two drawable variables. `visited`: cells runs visited, outlined over
+// the map with the runs in their tooltip (none: the map alone, byte for byte).
+std::string coverage_map_svg(const load::Mission& mission, const verify::Coverage& coverage,
+                             const std::vector<verify::MapMark>& visited = {});
 
 // The compiled tree's file in a report directory: the tree to uplink (a passing gate), or the
 // candidate a failing gate rejected.

@@ -273,6 +273,14 @@ struct Frame {
   }
 };
 
+// An extent [lo, hi] in pixels too thin to see, widened to the minimum around its centre.
+void widen(double& lo, double& hi) {
+  if (hi - lo >= kMinVisible) return;
+  const double c = (lo + hi) / 2;
+  lo = c - kMinVisible / 2;
+  hi = c + kMinVisible / 2;
+}
+
 std::string fill_of(int outcome, const std::string& prefix) {
   return outcome < 0 ? "url(#" + prefix + "-gap)"
                      : detail::alternative_colour(static_cast<std::size_t>(outcome));
@@ -325,16 +333,8 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
       const bool tiny = (gap || shape.overlap) && (x1 - x0 < kMinVisible || y1 - y0 < kMinVisible);
       if (rect || tiny) {
         // Too thin to see: widened to the minimum around its centre, its share written beside.
-        if (x1 - x0 < kMinVisible) {
-          const double c = (x0 + x1) / 2;
-          x0 = c - kMinVisible / 2;
-          x1 = c + kMinVisible / 2;
-        }
-        if (y1 - y0 < kMinVisible) {
-          const double c = (y0 + y1) / 2;
-          y0 = c - kMinVisible / 2;
-          y1 = c + kMinVisible / 2;
-        }
+        widen(x0, x1);
+        widen(y0, y1);
         const double band = (y1 - y0) / static_cast<double>(shape.outcomes.size());
         std::string g = "<g>" + title;
         for (std::size_t k = 0; k < shape.outcomes.size(); ++k)
@@ -434,9 +434,52 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
                     " text-anchor=\"middle\" font-weight=\"600\"");
 }
 
+// The cells runs visited in one panel, outlined over the map; a boundary cell (a segment or a
+// point) is drawn thick. Too thin to see: widened to the minimum around its centre.
+std::string visited_marks(const std::vector<verify::MapMark>& visited, std::size_t panel,
+                          const Frame& f) {
+  std::string out;
+  for (const verify::MapMark& mark : visited) {
+    if (mark.panel != panel || mark.points.empty()) continue;
+    std::string runs;
+    for (const auto& run : mark.runs) runs += (runs.empty() ? "" : ", ") + run;
+    const std::string title =
+        "<title>" + detail::html_escape("visited by " + runs + ": " + mark.where) + "</title>";
+    const char* style =
+        "\" fill=\"#000\" fill-opacity=\"0.12\" stroke=\"#000\" stroke-width=\"2\">";
+    const auto& p = mark.points;
+    if (p.size() == 4 && p[0].second == p[1].second && p[1].first == p[2].first) {
+      double x0 = std::min(f.px(p[0].first), f.px(p[2].first));
+      double x1 = std::max(f.px(p[0].first), f.px(p[2].first));
+      double y0 = std::min(f.py(p[0].second), f.py(p[2].second));
+      double y1 = std::max(f.py(p[0].second), f.py(p[2].second));
+      widen(x0, x1);
+      widen(y0, y1);
+      out += "<rect class=\"visited\" x=\"" + num(x0) + "\" y=\"" + num(y0) + "\" width=\"" +
+             num(x1 - x0) + "\" height=\"" + num(y1 - y0) + style + title + "</rect>";
+    } else if (p.size() >= 3) {
+      std::string pts;
+      for (const auto& [x, y] : p)
+        pts += (pts.empty() ? "" : " ") + num(f.px(x)) + "," + num(f.py(y));
+      out += "<polygon class=\"visited\" points=\"" + pts + style + title + "</polygon>";
+    } else if (p.size() == 2) {
+      out += "<line class=\"visited\" x1=\"" + num(f.px(p[0].first)) + "\" y1=\"" +
+             num(f.py(p[0].second)) + "\" x2=\"" + num(f.px(p[1].first)) + "\" y2=\"" +
+             num(f.py(p[1].second)) +
+             "\" stroke=\"#000\" stroke-width=\"4\" stroke-linecap=\"round\">" + title + "</line>";
+    } else {
+      out += "<circle class=\"visited\" cx=\"" + num(f.px(p[0].first)) + "\" cy=\"" +
+             num(f.py(p[0].second)) +
+             "\" r=\"4\" fill=\"none\" stroke=\"#000\" stroke-width=\"2\">" + title + "</circle>";
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
-std::string coverage_map_svg(const load::Mission&, const verify::Coverage& coverage) {
+std::string coverage_map_svg(const load::Mission&, const verify::Coverage& coverage,
+                             const std::vector<verify::MapMark>& visited) {
   if (!coverage.map || coverage.map->panels.empty()) return {};
   const verify::CoverageMap& map = *coverage.map;
   const std::string prefix = id_prefix(coverage.adaptable, "map");
@@ -453,6 +496,7 @@ std::string coverage_map_svg(const load::Mission&, const verify::Coverage& cover
     const double y = top + static_cast<double>(k / columns) * (ph + gap_y);
     Frame f{x, y, pw, ph, &map.x, map.y ? &*map.y : nullptr};
     draw_panel(map, map.panels[k], f, coverage, prefix, seen, body);
+    body += visited_marks(visited, k, f);
     body += text_at(x + pw / 2, y + ph + 30, map.x.variable,
                     " text-anchor=\"middle\" font-size=\"12\" font-weight=\"600\"");
     if (map.y && k % columns == 0)
@@ -476,6 +520,14 @@ std::string coverage_map_svg(const load::Mission&, const verify::Coverage& cover
                     "striped: the alternative depends on variables off the map"});
   if (seen.uncertain)
     rows.push_back({"#f4f4f4", "not measured exactly: a nonlinear atom decides inside"});
+  if (!visited.empty()) {
+    const bool boundary = std::any_of(visited.begin(), visited.end(),
+                                      [](const verify::MapMark& m) { return m.points.size() < 3; });
+    rows.push_back(
+        {"#e0e0e0", std::string("outlined: a cell the runs visited (its tooltip names "
+                                "them)") +
+                        (boundary ? "; thick black: a boundary cell they visited" : "")});
+  }
   const double legend_top = top + static_cast<double>(rows_of_panels) * (ph + gap_y) - 14;
   const double width = std::max(kWidth, left + static_cast<double>(columns) * (pw + gap_x));
   const double height = legend_top + kLegendRow * static_cast<double>(rows.size()) + 4;

@@ -14,11 +14,7 @@ namespace {
 constexpr std::uint64_t kMaxMapWork = std::uint64_t{1} << 22;
 constexpr std::uint64_t kMaxPanels = 12;
 
-// Where a variable of the map lives in the space.
-struct Place {
-  std::size_t dim = 0;
-  int axis = -1;  // within a real component: 0 or 1; -1 for a discrete dimension
-};
+using Place = MapPlace;
 
 struct Aggregate {
   std::set<int> outcomes;
@@ -29,13 +25,78 @@ struct Aggregate {
 // One key of the map: panel digit, x key, y key.
 using Key = std::tuple<std::uint64_t, std::uint64_t, std::uint64_t>;
 
+// The position of a state along one axis: its value's digit, or its cell along a real axis.
+std::uint64_t key_digit(const Space& space, std::uint64_t s, const Place& p) {
+  const std::uint64_t digit = space.digit(s, p.dim);
+  if (p.axis < 0) return digit;
+  const auto& comp = space.components()[space.dimensions()[p.dim].component];
+  return comp.cells[digit].axis_cell[static_cast<std::size_t>(p.axis)];
+}
+
+// Geometry of one axis position: [from, to] in the variable's own units.
+struct Extent {
+  double from, to;
+  RegionConstraint where;
+};
+Extent extent(const Space& space, const fretish::Domain& domain, const Place& p, std::uint64_t k) {
+  const Dimension& d = space.dimensions()[p.dim];
+  if (p.axis >= 0) {
+    const auto& axis = space.components()[d.component].axes[static_cast<std::size_t>(p.axis)];
+    Extent e{axis.from(k).to_double(), axis.to(k).to_double(), {}};
+    const Fraction& a = axis.from(k);
+    const Fraction& b = axis.to(k);
+    e.where.text = RealAxis::is_point(k)
+                       ? axis.variable + " = " + a.decimal()
+                       : axis.variable + " in (" + a.decimal() + ", " + b.decimal() + ")";
+    return e;
+  }
+  if (d.sort == smt::Sort::integer) {
+    const double v = static_cast<double>(d.number(k));
+    return {v - 0.5, v + 0.5, describe_range(space, p.dim, k, k, domain)};
+  }
+  return {static_cast<double>(k), static_cast<double>(k + 1),
+          describe_range(space, p.dim, k, k, domain)};
+}
+
+// Where one cell of a two-variable component lies: "r in (0, 30) & s = 20 & on a boundary line".
+std::string joint_where(const RealComponent& comp, const RealCell& cell) {
+  std::string where;
+  for (std::size_t a = 0; a < 2; ++a) {
+    const auto& axis = comp.axes[a];
+    const std::uint64_t c = cell.axis_cell[a];
+    where += (a ? " & " : "") + (RealAxis::is_point(c)
+                                     ? axis.variable + " = " + axis.from(c).decimal()
+                                     : axis.variable + " in (" + axis.from(c).decimal() + ", " +
+                                           axis.to(c).decimal() + ")");
+  }
+  for (std::size_t l = 0; l < comp.lines.size(); ++l)
+    if (cell.signs[l] == 0) where += " & on a boundary line";
+  return where;
+}
+
+// A box [x0, x1] x [y0, y1] as a shape: a point, a segment or a rectangle.
+std::vector<std::pair<double, double>> box_points(double x0, double x1, double y0, double y1) {
+  if (x0 == x1 && y0 == y1) return {{x0, y0}};
+  if (x0 == x1) return {{x0, y0}, {x0, y1}};
+  if (y0 == y1) return {{x0, y0}, {x1, y0}};
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
 }  // namespace
 
-void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruths& truths,
-              std::size_t alternatives, Coverage& coverage) {
+std::optional<MapLayout> map_layout(const Space& space, std::size_t alternatives,
+                                    std::string& why) {
   const auto& dims = space.dimensions();
-  if (space.size() == 0 || space.size() * std::max<std::size_t>(alternatives, 1) > kMaxMapWork)
-    return;
+  if (space.size() == 0) {
+    why = "the node's space has no state";
+    return std::nullopt;
+  }
+  if (space.size() * std::max<std::size_t>(alternatives, 1) > kMaxMapWork) {
+    why = "too many cells to draw (" + std::to_string(space.size()) + " cells, " +
+          std::to_string(alternatives) + " alternatives; the map draws at most " +
+          std::to_string(kMaxMapWork) + " cells times alternatives)";
+    return std::nullopt;
+  }
   // Axes: real variables first (a related pair together), then integers, then the rest.
   std::vector<Place> numeric, other;
   for (std::size_t d = 0; d < dims.size(); ++d) {
@@ -57,31 +118,70 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     if (dims[d].component < 0 && dims[d].sort != smt::Sort::integer) other.push_back({d, -1});
   std::vector<Place> axes = numeric;
   for (const auto& p : other) axes.push_back(p);
-  if (axes.empty()) return;
-  const Place px = axes[0];
-  std::optional<Place> py;
-  if (axes.size() > 1) py = axes[1];
-  std::optional<std::size_t> panel;
-  for (std::size_t k = py ? 2 : 1; k < axes.size(); ++k)
+  if (axes.empty()) {
+    why = "its guards read no variable that varies";
+    return std::nullopt;
+  }
+  MapLayout layout;
+  layout.x = axes[0];
+  if (axes.size() > 1) layout.y = axes[1];
+  for (std::size_t k = layout.y ? 2 : 1; k < axes.size(); ++k)
     if (axes[k].axis < 0 && dims[axes[k].dim].sort != smt::Sort::integer &&
         dims[axes[k].dim].radix <= kMaxPanels) {
-      panel = axes[k].dim;
+      layout.panel = axes[k].dim;
       break;
     }
-  const bool joint = py && py->dim == px.dim;  // both axes from one two-variable component
+  layout.joint = layout.y && layout.y->dim == layout.x.dim;
+  return layout;
+}
 
-  auto key_digit = [&](std::uint64_t s, const Place& p) -> std::uint64_t {
-    const std::uint64_t digit = space.digit(s, p.dim);
-    if (p.axis < 0) return digit;
-    const auto& comp = space.components()[dims[p.dim].component];
-    return comp.cells[digit].axis_cell[static_cast<std::size_t>(p.axis)];
-  };
+MapMark map_mark(const Space& space, const fretish::Domain& domain, const MapLayout& layout,
+                 std::uint64_t state) {
+  MapMark mark;
+  const auto& dims = space.dimensions();
+  if (layout.panel) mark.panel = space.digit(state, *layout.panel);
+  if (layout.joint) {
+    const auto& comp = space.components()[dims[layout.x.dim].component];
+    const auto& cell = comp.cells[space.digit(state, layout.x.dim)];
+    mark.points = cell.shape;
+    mark.where = joint_where(comp, cell);
+  } else {
+    const Extent ex = extent(space, domain, layout.x, key_digit(space, state, layout.x));
+    double y0 = 0, y1 = 1;
+    mark.where = ex.where.text;
+    if (layout.y) {
+      const Extent ey = extent(space, domain, *layout.y, key_digit(space, state, *layout.y));
+      y0 = ey.from;
+      y1 = ey.to;
+      if (!ey.where.text.empty()) mark.where += (mark.where.empty() ? "" : " & ") + ey.where.text;
+    }
+    mark.points = box_points(ex.from, ex.to, y0, y1);
+  }
+  if (layout.panel) {
+    const std::string label =
+        describe_range(space, *layout.panel, mark.panel, mark.panel, domain).text;
+    if (!label.empty()) mark.where += (mark.where.empty() ? "" : " & ") + label;
+  }
+  return mark;
+}
+
+void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruths& truths,
+              std::size_t alternatives, Coverage& coverage) {
+  const auto& dims = space.dimensions();
+  std::string why;
+  const std::optional<MapLayout> layout = map_layout(space, alternatives, why);
+  if (!layout) return;
+  const Place px = layout->x;
+  const std::optional<Place> py = layout->y;
+  const std::optional<std::size_t> panel = layout->panel;
+  const bool joint = layout->joint;
+
   std::map<Key, Aggregate> cells;
   for (std::uint64_t s = 0; s < space.size(); ++s) {
     if (!truths.domain.maybe.test(s)) continue;
-    Key key{panel ? space.digit(s, *panel) : 0, joint ? space.digit(s, px.dim) : key_digit(s, px),
-            0};
-    if (py && !joint) std::get<2>(key) = key_digit(s, *py);
+    Key key{panel ? space.digit(s, *panel) : 0,
+            joint ? space.digit(s, px.dim) : key_digit(space, s, px), 0};
+    if (py && !joint) std::get<2>(key) = key_digit(space, s, *py);
     Aggregate& a = cells[key];
     int outcome = -1;
     for (std::size_t k = 0; k < truths.enabled.size(); ++k) {
@@ -96,30 +196,6 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
   }
   const Fraction total = space.measure(truths.domain.sure);
 
-  // Geometry of one axis position: [from, to] in the variable's own units.
-  struct Extent {
-    double from, to;
-    RegionConstraint where;
-  };
-  auto extent = [&](const Place& p, std::uint64_t k) -> Extent {
-    const Dimension& d = dims[p.dim];
-    if (p.axis >= 0) {
-      const auto& axis = space.components()[d.component].axes[static_cast<std::size_t>(p.axis)];
-      Extent e{axis.from(k).to_double(), axis.to(k).to_double(), {}};
-      const Fraction& a = axis.from(k);
-      const Fraction& b = axis.to(k);
-      e.where.text = RealAxis::is_point(k)
-                         ? axis.variable + " = " + a.decimal()
-                         : axis.variable + " in (" + a.decimal() + ", " + b.decimal() + ")";
-      return e;
-    }
-    if (d.sort == smt::Sort::integer) {
-      const double v = static_cast<double>(d.number(k));
-      return {v - 0.5, v + 0.5, describe_range(space, p.dim, k, k, domain)};
-    }
-    return {static_cast<double>(k), static_cast<double>(k + 1),
-            describe_range(space, p.dim, k, k, domain)};
-  };
   auto make_axis = [&](const Place& p) {
     MapAxis a;
     const Dimension& d = dims[p.dim];
@@ -219,28 +295,16 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     shape.uncertain = agg.uncertain;
     shape.gap_share = exact_of(total.is_zero() ? Fraction(0) : agg.gap / total);
     if (joint) {
-      const auto& cell = space.components()[dims[px.dim].component].cells[xk];
-      shape.points = cell.shape;
       const auto& comp = space.components()[dims[px.dim].component];
-      std::string where;
-      for (std::size_t a = 0; a < 2; ++a) {
-        const auto& axis = comp.axes[a];
-        const std::uint64_t c = cell.axis_cell[a];
-        where += (a ? " & " : "") + (RealAxis::is_point(c)
-                                         ? axis.variable + " = " + axis.from(c).decimal()
-                                         : axis.variable + " in (" + axis.from(c).decimal() + ", " +
-                                               axis.to(c).decimal() + ")");
-      }
-      for (std::size_t l = 0; l < comp.lines.size(); ++l)
-        if (cell.signs[l] == 0) where += " & on a boundary line";
-      shape.where = where;
+      shape.points = comp.cells[xk].shape;
+      shape.where = joint_where(comp, comp.cells[xk]);
     } else {
-      const Extent ex0 = extent(px, xk), ex1 = extent(px, x_end);
+      const Extent ex0 = extent(space, domain, px, xk), ex1 = extent(space, domain, px, x_end);
       double y0 = 0, y1 = 1;
       std::string where = ex0.where.text;
       if (x_end != xk) where = describe_range(space, px.dim, xk, x_end, domain).text;
       if (py) {
-        const Extent ey0 = extent(*py, yk), ey1 = extent(*py, y_end);
+        const Extent ey0 = extent(space, domain, *py, yk), ey1 = extent(space, domain, *py, y_end);
         y0 = ey0.from;
         y1 = ey1.to;
         const std::string yw =
@@ -250,14 +314,7 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
       y_starts.insert(yk);
       x_starts.insert(xk);
       const double x0 = ex0.from, x1 = ex1.to;
-      if (x0 == x1 && y0 == y1)
-        shape.points = {{x0, y0}};
-      else if (x0 == x1)
-        shape.points = {{x0, y0}, {x0, y1}};
-      else if (y0 == y1)
-        shape.points = {{x0, y0}, {x1, y0}};
-      else
-        shape.points = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+      shape.points = box_points(x0, x1, y0, y1);
       shape.where = where;
     }
     if (panel && !map.panels[pk].label.empty())

@@ -1,5 +1,7 @@
 #pragma once
 // The pieces of count_coverage that work on the enumerated space: regions and the map.
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "fretish/selection.hpp"
@@ -24,6 +26,29 @@ void fill_regions(const Space& space,
                   const std::vector<const fretish::SelectionRequirement*>& requirements,
                   const NodeTruths& truths, const std::vector<Finding>& findings,
                   Coverage& coverage);
+
+// Where a variable of the map lives in the space: a discrete dimension, or one axis of a real
+// component.
+struct MapPlace {
+  std::size_t dim = 0;
+  int axis = -1;  // within a real component: 0 or 1; -1 for a discrete dimension
+};
+// The map's axes and panels, chosen from the space alone: real variables first (a related pair
+// together), then integers, then the rest; one panel per value of the next small enumerated or
+// boolean variable.
+struct MapLayout {
+  MapPlace x;
+  std::optional<MapPlace> y;
+  std::optional<std::size_t> panel;  // the dimension drawn as one panel per value
+  bool joint = false;                // both axes from one two-variable component
+};
+// The layout of a node's map, or nullopt with `why` it has none (no state, too many cells to
+// draw, no variable that varies).
+std::optional<MapLayout> map_layout(const Space& space, std::size_t alternatives, std::string& why);
+// The cell of the map that a state of the space lies in: its panel, its shape in the map's
+// coordinates and where it is, as fill_map draws one cell.
+MapMark map_mark(const Space& space, const fretish::Domain& domain, const MapLayout& layout,
+                 std::uint64_t state);
 
 // The map over the two most telling variables, one panel per value of a third.
 void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruths& truths,

@@ -62,6 +62,14 @@ struct MapPanel {
   std::string label;  // "terrain = slope"; "" when there is one panel
   std::vector<MapShape> shapes;
 };
+// A cell of the map that runs visited (`uabt coverage --format html`), drawn over the map: the
+// cell a state lies in, over the map's variables (a state's other variables are off the map).
+struct MapMark {
+  std::size_t panel = 0;                          // index into CoverageMap::panels
+  std::vector<std::pair<double, double>> points;  // as MapShape: polygon, segment or point
+  std::string where;                              // "wind in (0, 15) & battery = 50"
+  std::vector<std::string> runs;                  // the runs that visited it, as displayed
+};
 struct CoverageMap {
   MapAxis x;
   std::optional<MapAxis> y;  // none: a strip over x alone

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <random>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -14,9 +15,11 @@
 #include "cli/cli_support.hpp"
 #include "fretish/expr.hpp"
 #include "load/load_test_support.hpp"
+#include "report/reports.hpp"
 #include "smt/atoms.hpp"
 #include "smt/evaluate.hpp"
 #include "temp_mission.hpp"
+#include "verify/verify.hpp"
 
 namespace uabt::testing {
 namespace {
@@ -1003,6 +1006,204 @@ TEST(CampaignCoverage, AMonitorTraceWithoutWhatATrapReadsDoesNotJudgeIt) {
             std::string::npos)
       << run.out;
   EXPECT_EQ(run.out.find("missed: drive.running"), std::string::npos) << run.out;
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// One element of a coverage map's SVG that marks a visited cell, with the panel it is drawn in:
+// the panel's frame (its background rectangle) and its label.
+struct DrawnMark {
+  std::string tag;
+  std::map<std::string, std::string> attributes;
+  std::string title;
+  double left = 0, top = 0, width = 0, height = 0;
+  std::string panel;
+};
+
+std::vector<DrawnMark> visited_marks_of(const std::string& svg) {
+  std::vector<DrawnMark> out;
+  DrawnMark frame;
+  const std::regex element(R"re(<(\w+)((?:\s+[\w:-]+="[^"]*")*)\s*/?>)re");
+  const std::regex attribute(R"re(([\w:-]+)="([^"]*)")re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), element);
+       it != std::sregex_iterator(); ++it) {
+    std::map<std::string, std::string> a;
+    const std::string attrs = (*it)[2];
+    for (auto at = std::sregex_iterator(attrs.begin(), attrs.end(), attribute);
+         at != std::sregex_iterator(); ++at)
+      a[(*at)[1]] = (*at)[2];
+    const std::string tag = (*it)[1];
+    const std::size_t end = static_cast<std::size_t>(it->position() + it->length());
+    const std::string content = svg.substr(end, svg.find('<', end) - end);
+    if (tag == "rect" && a["fill"] == "#f4f4f4" && !a.count("class")) {
+      frame.left = std::stod(a["x"]);
+      frame.top = std::stod(a["y"]);
+      frame.width = std::stod(a["width"]);
+      frame.height = std::stod(a["height"]);
+      frame.panel.clear();
+    } else if (tag == "text" && a["font-weight"] == "600" && a["text-anchor"] == "middle" &&
+               !a.count("font-size")) {
+      frame.panel = content;
+    } else if (a["class"] == "visited") {
+      DrawnMark m = frame;
+      m.tag = tag;
+      m.attributes = a;
+      const std::size_t title = svg.find("<title>", end) + 7;
+      m.title = svg.substr(title, svg.find("</title>", title) - title);
+      out.push_back(std::move(m));
+    }
+  }
+  return out;
+}
+
+// The map's coordinates of a pixel of a mark's panel.
+std::pair<double, double> to_map(const verify::CoverageMap& map, const DrawnMark& m, double px,
+                                 double py) {
+  const double x = map.x.lower + (px - m.left) / m.width * (map.x.upper - map.x.lower);
+  const double y =
+      map.y->lower + (m.top + m.height - py) / m.height * (map.y->upper - map.y->lower);
+  return {x, y};
+}
+
+// A run that observed `states` at `node`, as `uabt coverage` reads one.
+campaign::RunRecord observed(const std::string& source, const std::string& node,
+                             const std::vector<State>& states) {
+  campaign::RunRecord run;
+  run.source = source;
+  for (const State& s : states) run.observations.push_back({node, "", s, 1});
+  return run;
+}
+
+const verify::Coverage& coverage_of(const verify::Result& result, const std::string& node) {
+  for (const auto& c : result.coverage)
+    if (c.adaptable == node) return c;
+  throw std::runtime_error("no coverage of " + node);
+}
+
+TEST(CampaignCoverageMap, AVisitedCellIsDrawnWhereTheStateLies) {
+  // planetary_landing's map: wind (real, cut at 15) across, battery (integer) up, one panel per
+  // terrain. A state inside a cell, one on the boundary wind = 15, one at the corner.
+  const load::Mission m = load(mission_dir("planetary_landing"));
+  const campaign::Model model(m, {Criterion::decision});
+  auto landing = [](double wind, std::int64_t battery, const char* terrain) {
+    return State{{"wind", Value::of_real(wind, std::to_string(wind))},
+                 {"battery", Value::of_int(battery)},
+                 {"terrain", Value::of_enum(terrain)}};
+  };
+  const std::vector<campaign::RunRecord> runs = {
+      observed("calm.json", "landing", {landing(5, 50, "flat")}),
+      observed("edge.json", "landing", {landing(15, 7, "rocks"), landing(40, 100, "crater")}),
+      observed("again.json", "landing", {landing(6, 50, "flat")})};
+  const auto visits = model.visits(runs);
+  ASSERT_EQ(visits.size(), 1u);
+  ASSERT_EQ(visits[0].no_map, "");
+  const verify::Result verified = verify::verify_mission(m, {});
+  const verify::Coverage& coverage = coverage_of(verified, "landing");
+  ASSERT_TRUE(coverage.map && coverage.map->y);
+  const std::string svg = report::coverage_map_svg(m, coverage, visits[0].marks);
+  const auto marks = visited_marks_of(svg);
+  ASSERT_EQ(marks.size(), 3u) << svg;  // wind 5 and 6 lie in one cell
+
+  // wind in (0, 15), battery 50, flat: a rectangle around (5, 50) and (6, 50), on the flat panel.
+  EXPECT_EQ(marks[0].tag, "rect");
+  EXPECT_EQ(marks[0].panel, "terrain = flat");
+  EXPECT_EQ(marks[0].title,
+            "visited by calm.json, again.json: wind in (0, 15) &amp; battery = 50 &amp; terrain "
+            "= flat");
+  const double x = std::stod(marks[0].attributes.at("x")),
+               y = std::stod(marks[0].attributes.at("y"));
+  const auto [x0, y1] = to_map(*coverage.map, marks[0], x, y);
+  const auto [x1, y0] =
+      to_map(*coverage.map, marks[0], x + std::stod(marks[0].attributes.at("width")),
+             y + std::stod(marks[0].attributes.at("height")));
+  EXPECT_LE(x0, 5);
+  EXPECT_GE(x1, 6);
+  EXPECT_NEAR(x0, 0, 0.01);
+  EXPECT_NEAR(x1, 15, 0.01);
+  EXPECT_LT(y0, 50);
+  EXPECT_GT(y1, 50);
+  EXPECT_GT(y0, 49);  // the row of 50 alone (widened to 3 px, about 1.8 values)
+  EXPECT_LT(y1, 51);
+
+  // wind = 15 is a boundary: a segment at x = 15 through battery 7, on the rocks panel.
+  EXPECT_EQ(marks[1].tag, "line");
+  EXPECT_EQ(marks[1].panel, "terrain = rocks");
+  const auto [lx, ly0] = to_map(*coverage.map, marks[1], std::stod(marks[1].attributes.at("x1")),
+                                std::stod(marks[1].attributes.at("y1")));
+  const auto [lx2, ly1] = to_map(*coverage.map, marks[1], std::stod(marks[1].attributes.at("x2")),
+                                 std::stod(marks[1].attributes.at("y2")));
+  EXPECT_NEAR(lx, 15, 0.01);
+  EXPECT_NEAR(lx2, 15, 0.01);
+  EXPECT_LT(std::min(ly0, ly1), 7);
+  EXPECT_GT(std::max(ly0, ly1), 7);
+
+  // wind = 40 is the end of the range (a point cell): at x = 40, battery 100, on crater's panel.
+  EXPECT_EQ(marks[2].panel, "terrain = crater");
+  EXPECT_NE(marks[2].title.find("edge.json: wind = 40 &amp; battery = 100"), std::string::npos)
+      << marks[2].title;
+}
+
+TEST(CampaignCoverageMap, AVisitedCellOfTwoRelatedRealsIsThePolygonTheStateLiesIn) {
+  // r + s > 60 cuts the square [0, 50]² along a line: the map's cells are polygons.
+  TempMission dir({{"mission.xml", mission_with("    <Adaptable ID=\"node\"/>")},
+                   {"domain.fret", "real r in [0, 50]\nreal s in [0, 50]\n"},
+                   {"requirements.fret",
+                    "Far: In node if r + s > 60 Mission shall satisfy selected_alt = far\n"
+                    "Near: In node Mission shall satisfy selected_alt = near\n"},
+                   {"alternatives/node/far.xml", alternative_tree("far", "<AlwaysSuccess/>")},
+                   {"alternatives/node/near.xml", alternative_tree("near", "<AlwaysSuccess/>")}});
+  const load::Mission m = load(dir.dir());
+  const campaign::Model model(m, {Criterion::decision});
+  auto at = [](double r, double s) {
+    return State{{"r", Value::of_real(r, std::to_string(r))},
+                 {"s", Value::of_real(s, std::to_string(s))}};
+  };
+  const auto visits = model.visits({observed("far.json", "node", {at(40, 30)})});
+  ASSERT_EQ(visits.size(), 1u);
+  const verify::Result verified = verify::verify_mission(m, {});
+  const verify::Coverage& coverage = coverage_of(verified, "node");
+  ASSERT_TRUE(coverage.map && coverage.map->y);
+  const std::string svg = report::coverage_map_svg(m, coverage, visits[0].marks);
+  const auto marks = visited_marks_of(svg);
+  ASSERT_EQ(marks.size(), 1u) << svg;
+  ASSERT_EQ(marks[0].tag, "polygon");
+  // The state lies inside the polygon (ray casting), and the polygon lies above the line.
+  std::vector<std::pair<double, double>> polygon;
+  std::istringstream points(marks[0].attributes.at("points"));
+  for (std::string pair; points >> pair;) {
+    const auto comma = pair.find(',');
+    polygon.push_back(to_map(*coverage.map, marks[0], std::stod(pair.substr(0, comma)),
+                             std::stod(pair.substr(comma + 1))));
+  }
+  ASSERT_GE(polygon.size(), 3u);
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const auto [xi, yi] = polygon[i];
+    const auto [xj, yj] = polygon[j];
+    if ((yi > 30) != (yj > 30) && 40 < (xj - xi) * (30 - yi) / (yj - yi) + xi) inside = !inside;
+  }
+  EXPECT_TRUE(inside) << marks[0].attributes.at("points");
+  for (const auto& [r, s] : polygon) EXPECT_GE(r + s, 60 - 0.1) << r << ", " << s;
+}
+
+TEST(CampaignCoverageMap, WithoutVisitedCellsTheMapIsTheReportsOwn) {
+  // The map `uabt gate` wrote into reports/planetary_landing/report.html, byte for byte.
+  const load::Mission m = load(mission_dir("planetary_landing"));
+  const verify::Result verified = verify::verify_mission(m, {});
+  std::string svg = report::coverage_map_svg(m, coverage_of(verified, "landing"), {});
+  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
+  svg.erase(svg.find(xmlns), xmlns.size());
+  const std::string page = read_all(source_dir() / "reports/planetary_landing/report.html");
+  const std::size_t title = page.find("<title>Selected alternative of landing");
+  ASSERT_NE(title, std::string::npos);
+  const std::size_t begin = page.rfind("<svg", title);
+  const std::size_t end = page.find("</svg>", title) + 6;
+  EXPECT_EQ(page.substr(begin, end - begin), svg);
+  EXPECT_EQ(svg.find("visited"), std::string::npos);
 }
 
 }  // namespace

@@ -193,6 +193,37 @@ TEST(CampaignGuarantees, WithoutWorldJsonOneLineSaysTheyAreNotPlanned) {
   EXPECT_EQ(run.out.find("guarantee-"), std::string::npos) << run.out;
 }
 
+TEST(CampaignGuarantees, AMissionWithoutATriggeredGuaranteeSaysWhyThereAreNoGuaranteeTargets) {
+  // The paper's replication package states selection requirements only.
+  const auto mission = replication_dir();
+  if (!std::filesystem::exists(mission)) GTEST_SKIP() << "replication package not present";
+  TempMission scratch({});
+  const auto out = scratch.dir() / "campaign";
+  const CliRun run =
+      run_uabt_in(scratch.dir().string(), "tests '" + mission.string() + "' --out '" +
+                                              out.string() + "' --criterion guarantee");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  const std::string note =
+      "guarantee targets not planned: no guarantee of this mission has a trigger (a mode, an "
+      "upon/if/when condition)";
+  EXPECT_EQ(run.out,
+            "bt-generator: 0 targets, 0 unreachable; 0 scenarios cover 0 of 0 reachable "
+            "targets\n" +
+                note + "\n");
+  const auto summary = nlohmann::json::parse(read_all(out / "campaign.json"));
+  EXPECT_EQ(summary["notes"], nlohmann::json::array({note})) << summary.dump(2);
+  // uabt coverage says the same, in text and JSON.
+  const std::string scenario = (scratch.dir() / "dust.json").string();
+  scratch.write("dust.json",
+                "{\"max_ticks\": 1, \"initial\": {\"OnDust\": true, \"OnRock\": false}}\n");
+  const CliRun text =
+      run_uabt_in(scratch.dir().string(), "coverage '" + mission.string() + "' '" + scenario + "'");
+  EXPECT_NE(text.out.find("\n" + note + "\n"), std::string::npos) << text.out;
+  const CliRun json = run_uabt_in(scratch.dir().string(), "coverage '" + mission.string() + "' '" +
+                                                              scenario + "' --format json");
+  EXPECT_EQ(nlohmann::json::parse(json.out)["notes"], nlohmann::json::array({note})) << json.out;
+}
+
 // A random small mission with world.json: a node, two actions with random contracts (one
 // writes c), and one or two guarantees with a trigger over a, b, c and the actions.
 std::map<std::string, std::string> random_world_mission(unsigned seed) {
