@@ -97,9 +97,14 @@ void node_section(const CoverageReport& report, const load::Mission& mission,
     out += "</section>\n";
     return;
   }
-  out += "<p>" + std::to_string(visit->visited.cells) + " of " + std::to_string(visit->cells) +
-         (visit->counted ? " states" : " cells") + " visited, " +
-         html_escape(visited_text(visit->visited)) + ".</p>\n";
+  if (!visit->share_not_computed.empty())  // a solved node: its states counted, not measured
+    out += "<p>" + std::to_string(visit->visited.cells) +
+           " states visited, share not computed: " + html_escape(visit->share_not_computed) +
+           ".</p>\n";
+  else
+    out += "<p>" + std::to_string(visit->visited.cells) + " of " + std::to_string(visit->cells) +
+           (visit->counted ? " states" : " cells") + " visited, " +
+           html_escape(visited_text(visit->visited)) + ".</p>\n";
   const verify::Coverage* coverage = nullptr;
   for (const auto& c : maps)
     if (c.adaptable == node) coverage = &c;

@@ -87,10 +87,11 @@ std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
     if (n.solved) {
       // No enumeration, no measure: the distinct states the runs visited, counted.
       std::set<std::string> seen;
-      for (const Observation* o : by_node[n.adaptable])
+      for (const auto& [o, run] : by_node[n.adaptable])
         if (const auto s = n.solved_state(o->state)) seen.insert(state_json(*s));
       visit.visited.cells = seen.size();
       visit.share_not_computed = n.solved->why;
+      visit.no_map = n.solved->why;
       out.push_back(std::move(visit));
       continue;
     }
