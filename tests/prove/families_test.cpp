@@ -91,6 +91,28 @@ TEST(ProveFamilies, ChecklistOfFive) {
   expect_answers(family);
 }
 
+// The symbolic engine finds a violation a short run shows by BMC before it spends IC3/PDR's
+// full search or deeper induction on it: k-induction stops at 2 (it went on to the tick before
+// the violation), with the same shortest violations.
+TEST(ProveFamilies, SymbolicEngineFindsShortViolationsByBmcBeforeDeeperInduction) {
+  TempMission scratch({});
+  prove::Options options;
+  options.engine = "symbolic";
+  for (const auto& family : {bench::generate_checklist(scratch.dir() / "checklist", 5),
+                             bench::generate_binary_tree(scratch.dir() / "binary", 23, 2)}) {
+    SCOPED_TRACE(family.dir.filename().string());
+    const gate::Outcome outcome = gated(family.dir);
+    ASSERT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
+    std::vector<Finding> findings;
+    auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+    ASSERT_TRUE(doc);
+    const prove::Result r =
+        prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), options);
+    check_answers(r, family);
+    EXPECT_EQ(r.induction_k, 2u);
+  }
+}
+
 TEST(ProveFamilies, PreflightOfThree) {
   TempMission scratch({});
   const auto family = bench::generate_preflight(scratch.dir() / "preflight", 3);
