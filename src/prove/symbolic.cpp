@@ -176,7 +176,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   auto holds_under = [&](z3::solver& s, std::initializer_list<z3::expr> assumptions) {
     z3::expr_vector a(ctx);
     for (const z3::expr& e : assumptions) a.push_back(e);
-    ++out.checks;
+    ++(&s == &bmc ? out.bmc_checks : out.induction_checks);
     return s.check(a) == z3::sat;
   };
   std::vector<SymState> path{tick.fresh()};
@@ -291,7 +291,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
       // give: unsat under some of them is unsat under all, and a model that repeats no
       // pair satisfies all of them.
       for (;;) {
-        ++out.checks;
+        ++out.induction_checks;
         if (ind.check(a) == z3::unsat) {
           out.proved[p] = true;
           out.proved_k[p] = k;

@@ -35,9 +35,10 @@ struct SymbolicSearch {
   std::vector<bool> proved;
   std::vector<bool> by_pdr;  // per property: proved by IC3/PDR rather than k-induction
   std::uint64_t depth = 0;   // BMC depth checked (no violation of the open guarantees below it)
-  std::uint64_t induction_k = 0;  // deepest induction tried
-  std::uint64_t checks = 0;       // satisfiability checks of BMC and k-induction
-  std::uint64_t pdr_queries = 0;  // IC3/PDR queries
+  std::uint64_t induction_k = 0;       // deepest induction tried
+  std::uint64_t bmc_checks = 0;        // satisfiability checks of BMC
+  std::uint64_t induction_checks = 0;  // satisfiability checks of k-induction
+  std::uint64_t pdr_queries = 0;       // IC3/PDR queries
   // No first tick satisfies world.json's initial and the assumptions: every "proof" would be
   // vacuous.
   bool no_first_tick = false;
