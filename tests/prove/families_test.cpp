@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "bench/prove_families.hpp"
+#include "prove/symbolic.hpp"
 #include "prove_support.hpp"
 
 namespace uabt::testing {
@@ -89,6 +90,49 @@ TEST(ProveFamilies, ChecklistOfFive) {
   const auto family = bench::generate_checklist(scratch.dir() / "checklist", 5);
   EXPECT_EQ(family.tree_nodes, 19);
   expect_answers(family);
+}
+
+// The symbolic engine finds a violation a short run shows by BMC before it spends IC3/PDR's
+// full search or deeper induction on it: k-induction stops at 2 (it went on to the tick before
+// the violation), with the same shortest violations.
+TEST(ProveFamilies, SymbolicEngineFindsShortViolationsByBmcBeforeDeeperInduction) {
+  TempMission scratch({});
+  prove::Options options;
+  options.engine = "symbolic";
+  for (const auto& family : {bench::generate_checklist(scratch.dir() / "checklist", 5),
+                             bench::generate_binary_tree(scratch.dir() / "binary", 23, 2)}) {
+    SCOPED_TRACE(family.dir.filename().string());
+    const gate::Outcome outcome = gated(family.dir);
+    ASSERT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
+    std::vector<Finding> findings;
+    auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+    ASSERT_TRUE(doc);
+    const prove::Result r =
+        prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), options);
+    check_answers(r, family);
+    EXPECT_EQ(r.induction_k, 2u);
+  }
+}
+
+// BMC asks, per depth, one question per open guarantee and whether a run goes on; whether a
+// run is stuck only when neither answer showed a run of that length. Binary tree of 23 nodes:
+// two guarantees open at depths 1 and 2 (3 questions each), one (Bounded is proved by
+// 2-induction) at depths 3 to 7 (2 each), and at depth 8 its violation (1): 17 questions, where
+// the stuck question at every depth made 25.
+TEST(ProveFamilies, SymbolicBmcAsksWhetherARunIsStuckOnlyWhenNothingShowsARun) {
+  TempMission scratch({});
+  const auto family = bench::generate_binary_tree(scratch.dir() / "binary", 23, 2);
+  const gate::Outcome outcome = gated(family.dir);
+  ASSERT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
+  std::vector<Finding> findings;
+  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+  ASSERT_TRUE(doc);
+  const prove::WorldModel world = prove::mission_world(*outcome.mission);
+  prove::Model m(*outcome.mission, *doc, world);
+  const prove::SymbolicSearch s = prove::symbolic_search(m, {});
+  EXPECT_EQ(s.depth, 8u);
+  EXPECT_EQ(s.deadlock_after, 0u);
+  EXPECT_EQ(s.bmc_checks, 17u);
 }
 
 TEST(ProveFamilies, PreflightOfThree) {

@@ -6,6 +6,7 @@
 
 #include "prove/explore.hpp"
 #include "prove/model.hpp"
+#include "prove/symbolic.hpp"
 #include "prove/symbolic_tick.hpp"
 #include "prove_support.hpp"
 #include "random_mission.hpp"
@@ -59,6 +60,22 @@ TEST(SymbolicAgreement, CuriosityIsProvedAfterTwoInductionDepths) {
   for (const auto& a : s.answers) EXPECT_EQ(a.verdict, Verdict::proved) << a.requirement;
   EXPECT_EQ(s.induction_k, 2u);
   EXPECT_EQ(s.depth, 2u);
+}
+
+// What 2-induction leaves open of msl_curiosity (three guarantees) IC3/PDR proves in one
+// query for all of them, with a few frames (it took one full query per guarantee).
+TEST(SymbolicAgreement, CuriosityIsProvedByOneIcQueryForAllOpenGuarantees) {
+  const Gated g(mission_dir("msl_curiosity"), compile::SelectionStyle::reactive);
+  ASSERT_TRUE(g.ok());
+  prove::Model m(*g.outcome->mission, *g.doc, g.world);
+  const prove::SymbolicSearch s = prove::symbolic_search(m, {});
+  EXPECT_EQ(s.pdr_queries, 1u);
+  std::size_t by_pdr = 0;
+  for (std::size_t p = 0; p < m.properties.size(); ++p) {
+    EXPECT_TRUE(s.proved[p]) << m.properties[p].requirement->id;
+    by_pdr += s.by_pdr[p];
+  }
+  EXPECT_EQ(by_pdr, 3u);
 }
 
 // The missions of prove_test.cpp: sample_drilling (Repeat, wake-up re-ticks) and its
