@@ -90,19 +90,22 @@ std::map<std::string, std::string> one_integer(const std::string& max) {
 }
 
 TEST(CoverageHtml, ANodeWithoutAMapSaysWhy) {
-  // An integer range too large to enumerate: no targets and no map, with the reason.
+  // An integer range too large to enumerate: its targets are solved one by one, and it has no
+  // measured share and no map, each with the reason the text gives.
   uabt::testing::TempMission m(one_integer("100000000000"));
   const CliRun text = uabt::testing::run_shell("cd '" + m.dir().string() + "' && '" + UABT_BINARY +
                                                "' coverage . scenarios 2>&1");
-  const std::string said = "no targets for node: ";
+  const std::string said = "node: 1 states visited, share not computed: ";
   const auto at = text.out.find(said);
   ASSERT_NE(at, std::string::npos) << text.out;
   const std::string reason =
       text.out.substr(at + said.size(), text.out.find('\n', at) - at - said.size());
+  EXPECT_EQ(reason, "the guards range over more than 2^24 states");
   const CliRun page = uabt::testing::run_shell("cd '" + m.dir().string() + "' && '" + UABT_BINARY +
                                                "' coverage . scenarios --format html 2>&1");
   EXPECT_NE(
-      page.out.find("<p class=\"callout info\">No targets and no map for <code>node</code>: " +
+      page.out.find("<p>1 states visited, share not computed: " + reason +
+                    ".</p>\n<p class=\"callout info\">No coverage map of <code>node</code>: " +
                     reason + ".</p>"),
       std::string::npos)
       << page.out;
