@@ -198,8 +198,20 @@ TEST(CampaignGuarantees, AResponseAtomDecidesWhereTheTimingJudgesTheResponseNotA
     ASSERT_EQ(answer.front().verdict, prove::Verdict::violated) << full;
     EXPECT_EQ(answer.front().witness->tick, tick) << full;
   }
-  // At the trigger's own tick no response atom decides these: Until's !Act2.success holds
-  // there, and Act2.success false decides it at tick 1.
+  // Both engines decide every target's trap alike.
+  prove::Options explicit_engine, symbolic_engine;
+  explicit_engine.engine = "explicit";
+  symbolic_engine.engine = "symbolic";
+  for (const auto& [id, goal] : goals) {
+    const auto e = prove::reach(m, replayer.document(), world, {goal}, explicit_engine);
+    const auto s = prove::reach(m, replayer.document(), world, {goal}, symbolic_engine);
+    EXPECT_EQ(e.front().verdict, s.front().verdict) << id;
+    if (e.front().witness && s.front().witness) {
+      EXPECT_EQ(e.front().witness->tick, s.front().witness->tick) << id;
+    }
+  }
+  // Until's response is due at the trigger's tick too (FRET's until includes it): there
+  // Act2.success is false and decides it.
   EXPECT_TRUE(target(c, "guarantee/Until/response/Act2.success/false").reachable);
   // Eventually judges only a tick where the response holds: false never decides it.
   EXPECT_FALSE(target(c, "guarantee/Eventually/response/Act2.success/false").reachable);
