@@ -72,8 +72,8 @@ std::string scope_text(const fretish::Requirement& r) {
 // The ticks at which the timing of `r` judges its response, in words, for a timing that judges
 // it after the trigger (monitor::judges_later); "" for the others, judged at the trigger.
 std::string judged_ticks(const fretish::Requirement& r, const monitor::Shape& shape) {
-  const std::string n = std::to_string(shape.duration);
-  const std::string ticks = n + (shape.duration == 1 ? " tick" : " ticks");
+  const std::string ticks =
+      std::to_string(shape.duration) + (shape.duration == 1 ? " tick" : " ticks");
   const std::string stop =
       r.timing.stop_condition ? fretish::to_fretish(*r.timing.stop_condition) : std::string();
   switch (shape.timing) {
@@ -86,7 +86,7 @@ std::string judged_ticks(const fretish::Requirement& r, const monitor::Shape& sh
       return "at the first tick it fails within " + ticks +
              " of its trigger, else at the last tick of that window";
     case monitor::TimingKind::after:
-      return "at a tick it holds within " + ticks + " of its trigger (too early), else " +
+      return "at the first tick it holds within " + ticks + " of its trigger, too early, else " +
              std::to_string(shape.duration + 1) + " ticks after the trigger";
     case monitor::TimingKind::until:
       return "at a tick from its trigger until " + stop + ", while it held before";

@@ -12,12 +12,6 @@ fretish::Requirement trap_requirement(const Goal& goal) {
     r.scope = goal.scope_of->scope;
     r.location = goal.scope_of->location;
   }
-  const std::string scope =
-      r.scope
-          ? r.scope->keyword + " " +
-                (r.scope->condition ? fretish::to_fretish(*r.scope->condition) : r.scope->mode) +
-                " "
-          : std::string();
   if (goal.at_judged_tick && goal.scope_of != nullptr) {
     const fretish::Requirement& g = *goal.scope_of;
     r.conditions = g.conditions;
@@ -30,7 +24,12 @@ fretish::Requirement trap_requirement(const Goal& goal) {
   }
   r.timing.keyword = "always";
   r.response = fretish::make_expr(fretish::ExprKind::logical_not, {goal.condition});
-  r.text = scope + "uabt shall always satisfy " + fretish::to_fretish(*r.response);
+  r.text = (r.scope ? r.scope->keyword + " " +
+                          (r.scope->condition ? fretish::to_fretish(*r.scope->condition)
+                                              : r.scope->mode) +
+                          " "
+                    : std::string()) +
+           "uabt shall always satisfy " + fretish::to_fretish(*r.response);
   return r;
 }
 

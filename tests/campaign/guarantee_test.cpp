@@ -173,8 +173,8 @@ TEST(CampaignGuarantees, AResponseAtomDecidesWhereTheTimingJudgesTheResponseNotA
        "(at the first tick it fails within 1 tick of its trigger, else at the last tick of "
        "that window)"},
       {"After/response/Act3.success/true", 3,
-       "(at a tick it holds within 1 tick of its trigger (too early), else 2 ticks after the "
-       "trigger)"},
+       "(at the first tick it holds within 1 tick of its trigger, too early, else 2 ticks after "
+       "the trigger)"},
       {"Until/response/Act2.success/true", 2,
        "(at a tick from its trigger until Act3.success, while it held before)"},
       {"Before/response/Act2.success/true", 2,
