@@ -12,6 +12,7 @@
 #include "base/diagnostics.hpp"
 #include "campaign/guarantee.hpp"
 #include "monitor/check_trace.hpp"
+#include "monitor/monitor.hpp"
 #include "monitor/property_set.hpp"
 #include "monitor/trace.hpp"
 #include "prove/outcome.hpp"
@@ -68,17 +69,54 @@ std::string scope_text(const fretish::Requirement& r) {
          (r.scope->condition ? fretish::to_fretish(*r.scope->condition) : r.scope->mode);
 }
 
+// The ticks at which the timing of `r` judges its response, in words, for a timing that judges
+// it after the trigger (monitor::judges_later); "" for the others, judged at the trigger.
+std::string judged_ticks(const fretish::Requirement& r, const monitor::Shape& shape) {
+  const std::string ticks =
+      std::to_string(shape.duration) + (shape.duration == 1 ? " tick" : " ticks");
+  const std::string stop =
+      r.timing.stop_condition ? fretish::to_fretish(*r.timing.stop_condition) : std::string();
+  switch (shape.timing) {
+    case monitor::TimingKind::next: return "at the tick after its trigger";
+    case monitor::TimingKind::eventually: return "at the first tick it holds after its trigger";
+    case monitor::TimingKind::within:
+      return "at the first tick it holds within " + ticks +
+             " of its trigger, else at the last tick of that window";
+    case monitor::TimingKind::for_ticks:
+      return "at the first tick it fails within " + ticks +
+             " of its trigger, else at the last tick of that window";
+    case monitor::TimingKind::after:
+      return "at the first tick it holds within " + ticks + " of its trigger, too early, else " +
+             std::to_string(shape.duration + 1) + " ticks after the trigger";
+    case monitor::TimingKind::until:
+      return "at a tick from its trigger until " + stop + ", while it held before";
+    case monitor::TimingKind::before:
+      return "at the first tick it holds after its trigger and before " + stop + ", else at " +
+             stop;
+    default: return "";
+  }
+}
+
 std::vector<Planned> plan(const load::Mission& mission) {
   std::vector<Planned> out;
   for (const fretish::Requirement& r : mission.properties) {
     if (monitor::is_assumption(r) || r.freeform || !r.response) continue;
     const ExprPtr condition = r.folded_condition();
     if (!r.scope && !condition) continue;
-    auto add = [&](const std::string& id, const std::string& text, ExprPtr goal) {
+    // A timing that judges the response after the trigger has its response atoms decide there
+    // (FRET's "only" scopes, which turn the timing round, keep the trigger's tick).
+    const monitor::Classified shape = monitor::classify(r, mission.domain.tick_seconds);
+    const bool only = r.scope && r.scope->keyword.rfind("only", 0) == 0;
+    const std::string later = shape.shape && !only && monitor::judges_later(shape.shape->timing)
+                                  ? judged_ticks(r, *shape.shape)
+                                  : std::string();
+    auto add = [&](const std::string& id, const std::string& text, ExprPtr goal,
+                   bool judged = false) {
       Planned p;
       p.goal.id = "guarantee/" + r.id + "/" + id;
       p.goal.scope_of = &r;
       p.goal.condition = std::move(goal);
+      p.goal.at_judged_tick = judged;
       p.target.id = p.goal.id;
       p.target.criterion = Criterion::guarantee;
       p.target.text = text;
@@ -106,11 +144,12 @@ std::vector<Planned> plan(const load::Mission& mission) {
       for (bool value : {true, false}) {
         const std::string text = fretish::to_fretish(*atom);
         ExprPtr goal = deciding(r.response, atom, value);
-        if (condition) goal = fretish::make_expr(ExprKind::logical_and, {condition, goal});
+        if (condition && later.empty())
+          goal = fretish::make_expr(ExprKind::logical_and, {condition, goal});
         add("response/" + text + "/" + (value ? "true" : "false"),
             text + " is " + (value ? "true" : "false") + " and decides the response of " + r.id +
-                " (at a tick its trigger holds)",
-            std::move(goal));
+                " (" + (later.empty() ? "at a tick its trigger holds" : later) + ")",
+            std::move(goal), !later.empty());
       }
   }
   return out;

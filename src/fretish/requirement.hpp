@@ -63,6 +63,10 @@ struct Requirement {
   Timing timing;
   ExprPtr response;  // the expression after "satisfy"
   SourceRange response_range;
+  // Never written in FRETISH: set only on the traps of uabt's test campaign (prove/reach.hpp),
+  // which then mean "never `judged` at a tick where this requirement's timing judges its
+  // response" (monitor/templates.hpp, Shape::judged).
+  ExprPtr judged;
 
   // The guard these conditions mean, folded left to right: "or" → |, "and"/nothing → &,
   // unless C and "C is false" → !C. nullptr when there is no condition.

@@ -118,6 +118,13 @@ Classified classify(const fretish::Requirement& r, std::optional<double> tick_se
                " ticks' in an 'only' scope with a condition needs the last N ticks; N is too large";
     return c;
   }
+  if (r.judged) {
+    if (!judges_later(s.timing)) {
+      c.reason = "a trap judged by timing '" + r.timing.keyword + "': it judges only the trigger";
+      return c;
+    }
+    s.judged = true;
+  }
   c.shape = s;
   return c;
 }
@@ -137,10 +144,10 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
   fretish::ExprPtr mode;
   if (r.scope)
     mode = r.scope->condition ? r.scope->condition : fretish::make_identifier(r.scope->mode);
-  const fretish::ExprPtr parts[] = {mode, r.folded_condition(), r.response,
-                                    r.timing.stop_condition};
-  const char* part_names[] = {"scope", "condition", "response", "stop condition"};
-  for (std::size_t i = 0; i < 4; ++i) {
+  const fretish::ExprPtr parts[] = {mode, r.folded_condition(), r.response, r.timing.stop_condition,
+                                    r.judged};
+  const char* part_names[] = {"scope", "condition", "response", "stop condition", "trap"};
+  for (std::size_t i = 0; i < 5; ++i) {
     if (!parts[i]) {
       m->parts_.emplace_back();
       continue;
@@ -160,7 +167,7 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
     m->parts_.push_back(std::move(compiled));
   }
   bool temporal = false;
-  for (std::size_t i = 1; i < 4; ++i)
+  for (std::size_t i = 1; i < 5; ++i)
     temporal = temporal || (m->parts_[i] && m->parts_[i]->has_temporal_functions());
   if (temporal)
     m->start_.emplace(m->start_formula_,
@@ -185,12 +192,12 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
 
 bool RequirementMonitor::step(const std::vector<Val>& frame) {
   if (failed()) return holds_;
-  bool inputs[4] = {false, false, false, false};
-  static const char* part_names[] = {"scope", "condition", "response", "stop condition"};
-  for (std::size_t i = 0; i < 4; ++i) {
+  bool inputs[5] = {false, false, false, false, false};
+  static const char* part_names[] = {"scope", "condition", "response", "stop condition", "trap"};
+  for (std::size_t i = 0; i < 5; ++i) {
     if (i == 1 && start_) {
       const bool left = start_->step(inputs);  // reads the mode, input 0
-      for (std::size_t j = 1; j < 4; ++j)
+      for (std::size_t j = 1; j < 5; ++j)
         if (parts_[j]) parts_[j]->set_scope_start(left);
     }
     if (!parts_[i]) continue;

@@ -62,7 +62,7 @@ class RequirementMonitor {
  private:
   std::string id_;
   Shape shape_;
-  std::vector<std::optional<CompiledExpression>> parts_;  // mode, condition, response, stop
+  std::vector<std::optional<CompiledExpression>> parts_;  // mode, condition, response, stop, trap
   Formula formula_;
   std::optional<FormulaMonitor> run_;
   Formula start_formula_;  // FRET's $Left$, when a part has temporal functions

@@ -95,7 +95,47 @@ struct Context {
 
 struct Inputs {
   int C, P, S;
+  int J = -1;  // a trap's condition (Shape::judged)
 };
+
+// The ticks at which the timing judges the response (templates.hpp, build_requirement_formula).
+int judged_tick(const Context& c, const Shape& shape, const Inputs& in) {
+  Formula& f = c.f;
+  const int st = c.first();
+  const int P = in.P, nP = c.NOT(P), nS = c.NOT(in.S);
+  const std::uint64_t d = shape.duration;
+  const int T = shape.condition == ConditionKind::null      ? st
+                : shape.condition == ConditionKind::regular ? c.AND(in.C, c.Z(c.NOT(in.C)))
+                                                            : in.C;
+  // a S b inside the interval: the chain does not cross its first point.
+  const auto since = [&](int a, int b) { return f.since(c.AND(a, c.NOT(st)), b); };
+  // g held at every tick from the latest trigger up to now.
+  const auto held = [&](int g) { return since(g, c.AND(T, g)); };
+  const int near = f.once_within(T, d);                        // the latest trigger <= d ago
+  const int exactly = c.AND(near, c.NOT(f.once_below(T, d)));  // exactly d ago
+  // g fails now for the first time since the latest trigger, at most d ticks after it.
+  const auto first_fail = [&](int g) {
+    return c.AND(c.NOT(g), c.OR(T, c.AND(c.Y(held(g)), near)));
+  };
+  switch (shape.timing) {
+    case TimingKind::next: return c.Y(T);
+    case TimingKind::eventually: return c.AND(P, c.OR(T, c.Y(held(nP))));
+    case TimingKind::within: {
+      // FRET's violation: a trigger d ticks ago or more, P false ever since; its first tick.
+      const int late = f.since_at_least(c.AND(nP, c.NOT(st)), c.AND(T, nP), d);
+      return c.OR(first_fail(nP), c.AND(late, c.NOT(c.Y(late))));
+    }
+    case TimingKind::for_ticks: return c.OR(first_fail(P), c.AND(held(P), exactly));
+    case TimingKind::after: return c.OR(first_fail(nP), c.Y(c.AND(held(nP), exactly)));
+    case TimingKind::until:
+      return c.AND(nS, c.OR(T, c.Y(since(c.AND(P, nS), c.AND(c.AND(T, P), nS)))));
+    case TimingKind::before: {
+      const int open = c.Y(since(c.AND(nP, nS), c.AND(c.AND(T, nP), nS)));
+      return c.OR(c.AND(c.AND(P, nS), c.OR(T, open)), c.AND(c.AND(in.S, c.NOT(T)), open));
+    }
+    default: return T;
+  }
+}
 
 // FRET's null-scope formula for one condition kind and timing; `dual` for the only scopes.
 int base(const Context& c, const Shape& shape, const Inputs& in, bool dual) {
@@ -104,6 +144,7 @@ int base(const Context& c, const Shape& shape, const Inputs& in, bool dual) {
   const int nP = c.NOT(P);
   const std::uint64_t d = shape.duration;
   const int ftp = c.first();
+  if (shape.judged) return c.H(c.NOT(c.AND(judged_tick(c, shape, in), in.J)));
   if (shape.condition == ConditionKind::null) {
     if (!dual) {
       switch (shape.timing) {
@@ -204,7 +245,7 @@ bool is_dual(ScopeKind s) {
 
 int build_requirement_formula(Formula& f, const Shape& shape, const Slots& slots) {
   const Inputs in{slots.at(f, slots.condition), slots.at(f, slots.response),
-                  slots.at(f, slots.stop)};
+                  slots.at(f, slots.stop), shape.judged ? slots.at(f, slots.judged) : -1};
   const int M = slots.at(f, slots.mode);
   const int nM = f.negation(M);
   const bool dual = is_dual(shape.scope);
@@ -313,7 +354,7 @@ int pending_base(const Context& c, const Shape& shape, const Inputs& in) {
 }  // namespace
 
 int build_pending_formula(Formula& f, const Shape& shape, const Slots& slots) {
-  if (is_dual(shape.scope)) return -1;
+  if (is_dual(shape.scope) || shape.judged) return -1;
   const Inputs in{slots.at(f, slots.condition), slots.at(f, slots.response),
                   slots.at(f, slots.stop)};
   const int M = slots.at(f, slots.mode);
@@ -341,7 +382,21 @@ int build_pending_formula(Formula& f, const Shape& shape, const Slots& slots) {
   }
 }
 
+bool judges_later(TimingKind t) {
+  switch (t) {
+    case TimingKind::next:
+    case TimingKind::eventually:
+    case TimingKind::within:
+    case TimingKind::for_ticks:
+    case TimingKind::after:
+    case TimingKind::until:
+    case TimingKind::before: return true;
+    default: return false;
+  }
+}
+
 bool verdict_is_final_once_violated(const Shape& shape) {
+  if (shape.judged) return true;
   const TimingKind t = shape.timing;
   if (is_dual(shape.scope))
     return t != TimingKind::always && t != TimingKind::never && t != TimingKind::finally;

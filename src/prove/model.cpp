@@ -286,11 +286,11 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     if (r->scope)
       mode = r->scope->condition ? r->scope->condition : fretish::make_identifier(r->scope->mode);
     const fretish::ExprPtr parts[] = {mode, r->folded_condition(), r->response,
-                                      r->timing.stop_condition};
+                                      r->timing.stop_condition, r->judged};
     if (!c.shape) p.unsupported = c.reason;
     p.exprs.assign(std::begin(parts), std::end(parts));
     // Each part compiles as the monitor compiles it (its errors are the monitor's).
-    for (std::size_t k = 0; k < 4 && p.unsupported.empty(); ++k) {
+    for (std::size_t k = 0; k < 5 && p.unsupported.empty(); ++k) {
       if (!parts[k]) continue;
       std::string error;
       if (!monitor::CompiledExpression::compile(
@@ -298,8 +298,8 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
         p.unsupported = error;
     }
     if (p.unsupported.empty()) {
-      PropertyFormula pf =
-          build_property_formula(*c.shape, {parts[0], parts[1], parts[2], parts[3]}, resolve);
+      PropertyFormula pf = build_property_formula(
+          *c.shape, {parts[0], parts[1], parts[2], parts[3], parts[4]}, resolve);
       p.unsupported = pf.unsupported;
       if (p.unsupported.empty() && pf.atoms.size() > Property::kMaxAtoms)
         p.unsupported = "its parts read " + std::to_string(pf.atoms.size()) +

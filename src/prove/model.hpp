@@ -62,7 +62,7 @@ struct Property {
   const fretish::Requirement* requirement = nullptr;
   bool assumption = false;  // component Environment
   monitor::Shape shape;
-  std::vector<fretish::ExprPtr> exprs;  // mode, condition, response, stop (null where absent)
+  std::vector<fretish::ExprPtr> exprs;  // mode, condition, response, stop, trap (or null)
   // The monitor's inputs: boolean expressions of one tick (property_formula.hpp), compiled.
   std::vector<fretish::ExprPtr> atom_exprs;
   std::vector<std::shared_ptr<monitor::CompiledExpression>> atoms;

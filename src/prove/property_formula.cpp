@@ -141,24 +141,24 @@ class Builder {
 }  // namespace
 
 PropertyFormula build_property_formula(const monitor::Shape& shape,
-                                       const std::array<fretish::ExprPtr, 4>& parts,
+                                       const std::array<fretish::ExprPtr, 5>& parts,
                                        const monitor::Resolver& resolve) {
   PropertyFormula out;
   Builder b(out, resolve);
   monitor::Formula& f = out.formula;
-  int nodes[4] = {-1, -1, -1, -1};
+  int nodes[5] = {-1, -1, -1, -1, -1};
   nodes[0] = parts[0] ? b.node(parts[0], -1) : -2;
   bool later = false;  // a temporal function after the mode counts from $Left$
-  for (std::size_t i = 1; i < 4; ++i) later = later || (parts[i] && b.temporal(*parts[i]));
+  for (std::size_t i = 1; i < 5; ++i) later = later || (parts[i] && b.temporal(*parts[i]));
   const int mode = nodes[0] == -2 ? f.constant(false) : nodes[0];
   const int left = later && mode >= 0 ? monitor::build_scope_start_at(f, shape.scope, mode) : -1;
-  for (std::size_t i = 1; i < 4; ++i) nodes[i] = parts[i] ? b.node(parts[i], left) : -2;
+  for (std::size_t i = 1; i < 5; ++i) nodes[i] = parts[i] ? b.node(parts[i], left) : -2;
   out.unsupported = b.unsupported;
   if (!out.unsupported.empty()) return out;
   monitor::Slots slots;
   slots.nodes = true;
-  int* fields[4] = {&slots.mode, &slots.condition, &slots.response, &slots.stop};
-  for (std::size_t i = 0; i < 4; ++i) *fields[i] = nodes[i] == -2 ? f.constant(false) : nodes[i];
+  int* fields[5] = {&slots.mode, &slots.condition, &slots.response, &slots.stop, &slots.judged};
+  for (std::size_t i = 0; i < 5; ++i) *fields[i] = nodes[i] == -2 ? f.constant(false) : nodes[i];
   out.mode = nodes[0] == -2 ? -1 : nodes[0];
   out.condition = nodes[1] == -2 ? -1 : nodes[1];
   out.root = monitor::build_requirement_formula(f, shape, slots);

@@ -25,10 +25,11 @@ struct PropertyFormula {
   std::string unsupported;              // why prove cannot read a part ("" when it can)
 };
 
-// `parts` are the mode, condition, response and stop condition (null where absent); `resolve`
-// tells FRET's FTP from a variable of that name.
+// `parts` are the mode, condition, response, stop condition and a trap's condition
+// (fretish::Requirement::judged), null where absent; `resolve` tells FRET's FTP from a variable
+// of that name.
 PropertyFormula build_property_formula(const monitor::Shape& shape,
-                                       const std::array<fretish::ExprPtr, 4>& parts,
+                                       const std::array<fretish::ExprPtr, 5>& parts,
                                        const monitor::Resolver& resolve);
 
 }  // namespace uabt::prove

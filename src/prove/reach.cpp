@@ -12,6 +12,16 @@ fretish::Requirement trap_requirement(const Goal& goal) {
     r.scope = goal.scope_of->scope;
     r.location = goal.scope_of->location;
   }
+  if (goal.at_judged_tick && goal.scope_of != nullptr) {
+    const fretish::Requirement& g = *goal.scope_of;
+    r.conditions = g.conditions;
+    r.timing = g.timing;
+    r.response = g.response;
+    r.judged = goal.condition;
+    r.text = "uabt shall never satisfy " + fretish::to_fretish(*goal.condition) +
+             " where the response of " + g.id + " is judged (" + g.text + ")";
+    return r;
+  }
   r.timing.keyword = "always";
   r.response = fretish::make_expr(fretish::ExprKind::logical_not, {goal.condition});
   r.text = (r.scope ? r.scope->keyword + " " +

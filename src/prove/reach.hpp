@@ -18,6 +18,10 @@ struct Goal {
   std::string id;                                  // the trap's requirement id
   const fretish::Requirement* scope_of = nullptr;  // its scope is the goal's (nullptr: none)
   fretish::ExprPtr condition;                      // a condition of one tick
+  // When set, the goal is `condition` at a tick where scope_of's timing judges its response
+  // (next, eventually, within, for, after, until, before: monitor::Shape::judged), not at any
+  // tick of the scope.
+  bool at_judged_tick = false;
 };
 
 struct Reach {
@@ -29,7 +33,9 @@ struct Reach {
   std::uint64_t states = 0;                // explicit: states explored
 };
 
-// The trap of a goal: its scope, component "uabt", "always satisfy !(condition)".
+// The trap of a goal: its scope, component "uabt", "always satisfy !(condition)"; for a goal
+// at_judged_tick, the guarantee's own condition, timing and response with `judged` set to the
+// condition (no FRETISH sentence says that: its text names the guarantee).
 fretish::Requirement trap_requirement(const Goal& goal);
 
 // One answer per goal, in order, from one proof of every trap together (the mission's

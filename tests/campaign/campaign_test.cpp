@@ -2,6 +2,8 @@
 // checked against brute force over their domain, and the shipped missions' exact output.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -1001,11 +1003,57 @@ TEST(CampaignCoverage, AMonitorTraceWithoutWhatATrapReadsDoesNotJudgeIt) {
             "msl_curiosity: 1 run covers 11 of 19 reachable targets (decision 7, MC/DC 2, "
             "guarantee 12; 2 unreachable, 1 not judged)");
   EXPECT_NE(run.out.find("not judged: drive.running is false and decides the response of "
-                         "ArmClosed (at a tick its trigger holds): " +
+                         "ArmClosed (at a tick from its trigger until CloseToolArm.success, "
+                         "while it held before): " +
                          lacking.string() + ": the trace lacks drive.running\n"),
             std::string::npos)
       << run.out;
   EXPECT_EQ(run.out.find("missed: drive.running"), std::string::npos) << run.out;
+}
+
+// ArmClosed (`until`): its response's atoms decide at the ticks from the arm opening until it
+// closes (FRET's until includes the trigger's tick, not the stop's), not at any tick where
+// OpenToolArm.success holds.
+TEST(CampaignCoverage, ArmClosedsResponseAtomsDecideFromTheArmOpeningUntilItCloses) {
+  TempMission scratch({});
+  const std::string missions = (source_dir() / "missions").string();
+  // Per tick: OpenToolArm.success, CloseToolArm.success, drive.running.
+  auto covered = [&](const std::string& name, const std::vector<std::array<bool, 3>>& ticks) {
+    std::string lines;
+    for (std::size_t t = 0; t < ticks.size(); ++t)
+      lines += nlohmann::ordered_json{{"tick", t + 1},
+                                      {"state",
+                                       {{"OpenToolArm.success", ticks[t][0]},
+                                        {"CloseToolArm.success", ticks[t][1]},
+                                        {"drive.running", ticks[t][2]}}}}
+                   .dump() +
+               "\n";
+    const auto file = scratch.dir() / name;
+    write_file_atomically(file, lines);
+    const CliRun run =
+        run_uabt_in(missions, "coverage msl_curiosity '" + file.string() + "' --format json");
+    std::map<std::string, bool> out;
+    const auto report = nlohmann::json::parse(run.out);
+    for (const auto& t : report["targets"]) {
+      const std::string id = t["id"].get<std::string>();
+      if (id.starts_with("guarantee/ArmClosed/response/")) out[id.substr(29)] = t["covered"];
+    }
+    return out;
+  };
+  // The arm opens at tick 1 with no drive, a drive runs at tick 2, the arm closes at tick 3:
+  // drive.running decides the response at ticks 1 and 2 (true at tick 2, after the trigger).
+  const auto window = covered(
+      "window.jsonl", {{{true, false, false}}, {{false, false, true}}, {{false, true, false}}});
+  EXPECT_TRUE(window.at("drive.running/false"));
+  EXPECT_TRUE(window.at("drive.running/true"));
+  // The arm closes at the tick it opens: the response is due at no tick.
+  const auto closed = covered("closed.jsonl", {{{true, true, false}}, {{false, false, true}}});
+  EXPECT_FALSE(closed.at("drive.running/false"));
+  EXPECT_FALSE(closed.at("drive.running/true"));
+  // After a drive ran in the window the response is decided already: a later tick is not.
+  const auto decided = covered("decided.jsonl", {{{true, false, true}}, {{false, false, false}}});
+  EXPECT_TRUE(decided.at("drive.running/true"));
+  EXPECT_FALSE(decided.at("drive.running/false"));
 }
 
 }  // namespace

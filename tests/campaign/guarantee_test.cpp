@@ -50,49 +50,33 @@ const campaign::Target& target(const campaign::Campaign& c, const std::string& i
   return c.targets.front();
 }
 
-// Runs every guarantee scenario of `c` with `uabt run --monitor-trace` and checks the trace
-// with `uabt monitor` against the traps of its purposes: each must be violated (its goal
-// reached) within the scenario's ticks.
-void expect_scenarios_reach_their_goals(const load::Mission& m, const campaign::Campaign& c,
+// Runs every guarantee scenario of `c` with `uabt run --monitor-trace` and reads the trace
+// back with `uabt coverage`, which judges it on the campaign's traps: each purpose must be
+// covered (its goal reached) within the scenario's ticks.
+void expect_scenarios_reach_their_goals(const campaign::Campaign& c,
                                         const std::filesystem::path& mission_dir,
                                         const std::filesystem::path& scratch,
                                         const std::string& label) {
-  std::map<std::string, prove::Goal> goals;
-  for (const auto& g : campaign::guarantee_goals(m)) goals[g.id] = g;
   for (const auto& s : c.scenarios) {
     if (!s.name.starts_with("guarantee-")) continue;
     EXPECT_TRUE(s.problems.empty()) << label << " " << s.name;
     const auto file = scratch / (s.name + ".json");
     const auto trace = scratch / (s.name + ".jsonl");
-    const auto traps = scratch / (s.name + ".fret");
     std::ofstream(file) << s.json;
-    std::string fret;
-    std::map<std::string, std::string> trap_of;  // trap label: target id
-    for (std::size_t t : s.purpose) {
-      const std::string label_t = "T" + std::to_string(trap_of.size());
-      trap_of[label_t] = c.targets[t].id;
-      fret += label_t + ": " + prove::trap_requirement(goals.at(c.targets[t].id)).text + "\n";
-    }
-    std::ofstream(traps) << fret;
     const CliRun run = run_uabt_in(
         scratch.string(), "run '" + mission_dir.string() + "' --scenario '" + file.string() +
                               "' --monitor-trace '" + trace.string() + "'");
     ASSERT_TRUE(std::filesystem::exists(trace)) << label << " " << s.name << "\n" << run.out;
-    const CliRun checked = run_uabt_in(
-        scratch.string(), "monitor '" + traps.string() + "' '" + trace.string() + "' --domain '" +
-                              (mission_dir / "domain.fret").string() + "' --format json");
+    const CliRun checked =
+        run_uabt_in(scratch.string(), "coverage '" + mission_dir.string() + "' '" + trace.string() +
+                                          "' --format json");
     const auto j = nlohmann::json::parse(checked.out.substr(checked.out.find('{')));
-    const auto max_ticks = nlohmann::json::parse(s.json)["max_ticks"].get<std::uint64_t>();
-    for (const auto& r : j["requirements"]) {
-      const std::string id = r["id"];
-      if (!trap_of.count(id)) continue;
-      EXPECT_EQ(r["verdict"], "violated")
-          << label << " " << s.name << ": " << trap_of[id] << " is not reached\n"
-          << fret << s.json;
-      if (r["verdict"] == "violated") {
-        EXPECT_LE(r["first_violation"].get<std::uint64_t>(), max_ticks);
-      }
-    }
+    std::map<std::string, bool> covered;
+    for (const auto& t : j["targets"]) covered[t["id"]] = t["covered"];
+    for (std::size_t t : s.purpose)
+      EXPECT_TRUE(covered[c.targets[t].id])
+          << label << " " << s.name << ": " << c.targets[t].id << " is not reached\n"
+          << s.json << checked.out;
   }
 }
 
@@ -132,8 +116,107 @@ TEST(CampaignGuarantees, MslCuriosityTriggersAndEveryAtomDeciding) {
   // Fewer scenarios than reached targets: one run covers several.
   EXPECT_LT(c.scenarios.size(), 10u);
   TempMission scratch({});
-  expect_scenarios_reach_their_goals(m, c, source_dir() / "missions" / "msl_curiosity",
-                                     scratch.dir(), "msl_curiosity");
+  expect_scenarios_reach_their_goals(c, source_dir() / "missions" / "msl_curiosity", scratch.dir(),
+                                     "msl_curiosity");
+}
+
+// A mission whose tree selects at `node` (alt0 when a holds, else fallback), then runs
+// `actions` in sequence; requirements.fret holds the two selection requirements.
+std::map<std::string, std::string> node_then(const std::vector<std::string>& actions,
+                                             const std::string& domain) {
+  std::string body = "    <Sequence>\n      <Adaptable ID=\"node\"/>\n";
+  for (const auto& a : actions) body += "      <" + a + "/>\n";
+  std::map<std::string, std::string> files;
+  files["mission.xml"] = mission_with(body + "    </Sequence>");
+  files["domain.fret"] = domain;
+  files["alternatives/node/alt0.xml"] = alternative_tree("alt0", "<AlwaysSuccess/>");
+  files["alternatives/node/fallback.xml"] = alternative_tree("fallback", "<AlwaysSuccess/>");
+  files["requirements.fret"] =
+      "R0: In node if a Mission shall satisfy selected_alt = alt0\n"
+      "Default: In node Mission shall satisfy selected_alt = fallback\n";
+  return files;
+}
+
+// One guarantee per timing that judges the response after its trigger, over a run where Act1
+// succeeds at tick 1, Act2 runs at tick 1 and succeeds at tick 2, Act3 runs at tick 2 and
+// succeeds at tick 3: each response atom can decide only after the trigger (Act1.success).
+std::map<std::string, std::string> timed_mission() {
+  auto files = node_then({"Act1", "Act2", "Act3"}, "boolean a\n");
+  files["requirements.fret"] +=
+      "Next: upon Act1.success the robot shall at the next timepoint satisfy Act2.success\n"
+      "Eventually: upon Act1.success the robot shall eventually satisfy Act2.success\n"
+      "Within: upon Act1.success the robot shall within 2 ticks satisfy Act2.success\n"
+      "For: upon Act1.success the robot shall for 1 tick satisfy !Act2.success\n"
+      "After: upon Act1.success the robot shall after 1 tick satisfy Act3.success\n"
+      "Until: upon Act1.success the robot shall until Act3.success satisfy !Act2.success\n"
+      "Before: upon Act1.success the robot shall before Act3.success satisfy Act2.success\n";
+  files["world.json"] = R"({"actions": {"Act1": {"ticks": 1, "results": ["success"]},)"
+                        R"( "Act2": {"ticks": 2, "results": ["success"]},)"
+                        R"( "Act3": {"ticks": 2, "results": ["success"]}}})";
+  return files;
+}
+
+TEST(CampaignGuarantees, AResponseAtomDecidesWhereTheTimingJudgesTheResponseNotAtTheTrigger) {
+  TempMission dir(timed_mission());
+  const load::Mission m = load(dir.dir());
+  const campaign::Campaign c = campaign::build_campaign(m, guarantees_only());
+  ASSERT_TRUE(c.notes.empty()) << c.notes.front();
+  // The target, the tick its trap is reached at (the trigger fires at tick 1), its text.
+  const std::vector<std::tuple<std::string, std::uint64_t, std::string>> expected = {
+      {"Next/response/Act2.success/true", 2, "(at the tick after its trigger)"},
+      {"Eventually/response/Act2.success/true", 2,
+       "(at the first tick it holds after its trigger)"},
+      {"Within/response/Act2.success/true", 2,
+       "(at the first tick it holds within 2 ticks of its trigger, else at the last tick of "
+       "that window)"},
+      {"For/response/Act2.success/true", 2,
+       "(at the first tick it fails within 1 tick of its trigger, else at the last tick of "
+       "that window)"},
+      {"After/response/Act3.success/true", 3,
+       "(at the first tick it holds within 1 tick of its trigger, too early, else 2 ticks after "
+       "the trigger)"},
+      {"Until/response/Act2.success/true", 2,
+       "(at a tick from its trigger until Act3.success, while it held before)"},
+      {"Before/response/Act2.success/true", 2,
+       "(at the first tick it holds after its trigger and before Act3.success, else at "
+       "Act3.success)"}};
+  const campaign::Replayer replayer(m, {});
+  const prove::WorldModel world = prove::mission_world(m);
+  std::map<std::string, prove::Goal> goals;
+  for (const auto& g : campaign::guarantee_goals(m)) goals[g.id] = g;
+  for (const auto& [id, tick, words] : expected) {
+    const std::string full = "guarantee/" + id;
+    const campaign::Target& t = target(c, full);
+    EXPECT_TRUE(t.reachable) << full << ": " << t.reason;
+    EXPECT_NE(t.text.find(words), std::string::npos) << t.text;
+    std::size_t k = 0;
+    while (k < c.targets.size() && c.targets[k].id != full) ++k;
+    ASSERT_LT(k, c.targets.size());
+    // Covered: the replay with the runtime's monitor reached the trap at the planned tick.
+    EXPECT_TRUE(c.covered[k]) << full << "\n" << campaign::campaign_text(c);
+    const auto answer = prove::reach(m, replayer.document(), world, {goals.at(full)}, {});
+    ASSERT_EQ(answer.front().verdict, prove::Verdict::violated) << full;
+    EXPECT_EQ(answer.front().witness->tick, tick) << full;
+  }
+  // Both engines decide every target's trap alike.
+  prove::Options explicit_engine, symbolic_engine;
+  explicit_engine.engine = "explicit";
+  symbolic_engine.engine = "symbolic";
+  for (const auto& [id, goal] : goals) {
+    const auto e = prove::reach(m, replayer.document(), world, {goal}, explicit_engine);
+    const auto s = prove::reach(m, replayer.document(), world, {goal}, symbolic_engine);
+    EXPECT_EQ(e.front().verdict, s.front().verdict) << id;
+    if (e.front().witness && s.front().witness) {
+      EXPECT_EQ(e.front().witness->tick, s.front().witness->tick) << id;
+    }
+  }
+  // Until's response is due at the trigger's tick too (FRET's until includes it): there
+  // Act2.success is false and decides it.
+  EXPECT_TRUE(target(c, "guarantee/Until/response/Act2.success/false").reachable);
+  // Eventually judges only a tick where the response holds: false never decides it.
+  EXPECT_FALSE(target(c, "guarantee/Eventually/response/Act2.success/false").reachable);
+  EXPECT_TRUE(c.passed()) << campaign::campaign_text(c);
+  expect_scenarios_reach_their_goals(c, dir.dir(), dir.dir().parent_path(), "timed");
 }
 
 TEST(CampaignGuarantees, ATriggerWorldJsonRulesOutIsUnreachableWithTheGuaranteesLine) {
@@ -172,7 +255,8 @@ TEST(CampaignGuarantees, ATargetNotDecidedWithinTheDepthIsListedAsSuch) {
             0u)
       << text;
   EXPECT_NE(text.find("not decided: drive.running is true and decides the response of ArmClosed "
-                      "(at a tick its trigger holds): not decided within 1 tick\n"),
+                      "(at a tick from its trigger until CloseToolArm.success, while it held "
+                      "before): not decided within 1 tick\n"),
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("unreachable: "), std::string::npos) << text;
@@ -229,18 +313,10 @@ TEST(CampaignGuarantees, AMissionWithoutATriggeredGuaranteeSaysWhyThereAreNoGuar
 std::map<std::string, std::string> random_world_mission(unsigned seed) {
   std::mt19937 rng(seed);
   auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
-  std::map<std::string, std::string> files;
-  files["mission.xml"] = mission_with(
-      "    <Sequence>\n      <Adaptable ID=\"node\"/>\n      <Act1/>\n      <Act2/>\n"
-      "    </Sequence>");
-  files["domain.fret"] = "boolean a, b, c\n";
-  files["alternatives/node/alt0.xml"] = alternative_tree("alt0", "<AlwaysSuccess/>");
-  files["alternatives/node/fallback.xml"] = alternative_tree("fallback", "<AlwaysSuccess/>");
+  auto files = node_then({"Act1", "Act2"}, "boolean a, b, c\n");
   const char* conditions[] = {"a", "!b", "c", "Act1.success", "Act1.failure", "Act2.running"};
   const char* responses[] = {"c", "!a", "Act2.success", "Act2.running", "b"};
-  std::string reqs =
-      "R0: In node if a Mission shall satisfy selected_alt = alt0\n"
-      "Default: In node Mission shall satisfy selected_alt = fallback\n";
+  std::string reqs = files["requirements.fret"];
   for (int g = 0, n = 1 + pick(2); g < n; ++g) {
     std::string condition = conditions[pick(6)];
     if (pick(2)) condition += std::string(pick(2) ? " & " : " | ") + conditions[pick(6)];
@@ -271,7 +347,7 @@ TEST(CampaignGuarantees, RandomWorldsReachedTargetsAreReachedAndUnreachableOnesA
     const std::string label = "seed " + std::to_string(seed);
     ASSERT_TRUE(c.notes.empty()) << label << ": " << c.notes.front();
     ASSERT_FALSE(c.targets.empty()) << label;
-    expect_scenarios_reach_their_goals(m, c, dir.dir(), dir.dir().parent_path(), label);
+    expect_scenarios_reach_their_goals(c, dir.dir(), dir.dir().parent_path(), label);
     // Every target said unreachable: the explicit engine proves its trap.
     const campaign::Replayer replayer(m, {});
     const prove::WorldModel world = prove::mission_world(m);
