@@ -16,15 +16,15 @@ struct Scope {
   // "only after", "only before", "except in", "except during", "except when in",
   // "except if in", "except while", "not in" — the words as written, lower case, one space.
   std::string keyword;
-  std::string mode;       // the mode name for mode scopes
-  ExprPtr condition;      // for while / after B / before B
-  bool negated = false;   // an odd number of not/unless/except
+  std::string mode;      // the mode name for mode scopes
+  ExprPtr condition;     // for while / after B / before B
+  bool negated = false;  // an odd number of not/unless/except
   SourceRange range;
 };
 
 struct Condition {
-  std::string qualifier;    // upon whenever when unless where if (lower case)
-  std::string connective;   // "", "and" or "or": how it joins the previous condition
+  std::string qualifier;   // upon whenever when unless where if (lower case)
+  std::string connective;  // "", "and" or "or": how it joins the previous condition
   ExprPtr expr;
   bool is_true_suffix = false;   // "is true" written
   bool is_false_suffix = false;  // "is false" written
@@ -32,7 +32,7 @@ struct Condition {
 };
 
 struct Probability {
-  std::string relop;   // < <= = != > >=
+  std::string relop;  // < <= = != > >=
   std::string number;
   SourceRange range;
 };
@@ -42,15 +42,15 @@ struct Timing {
   // "at the same timepoint", "at the next timepoint", "at the last timepoint", within, for,
   // after, until, before, eventually, finally, always, never
   std::string keyword;
-  std::string duration;  // number for within/for/after
-  std::string unit;      // ticks, seconds, ... as written (lower case)
+  std::string duration;    // number for within/for/after
+  std::string unit;        // ticks, seconds, ... as written (lower case)
   ExprPtr stop_condition;  // until B / before B
   SourceRange range;
 };
 
 struct Requirement {
-  std::string id;     // label, FRET reqid, or R<line>
-  std::string text;   // the sentence as written (without label)
+  std::string id;           // label, FRET reqid, or R<line>
+  std::string text;         // the sentence as written (without label)
   SourceLocation location;  // where the sentence starts
   bool freeform = false;    // a quoted freeform sentence: stored, not formalized
 
