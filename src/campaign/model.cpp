@@ -331,9 +331,11 @@ void Model::Node::mcdc_targets(std::vector<Target>& all) {
       local.req = k;
       local.atom = a;
       bool alone = false, flips_guard = false, always = true, never = true;
+      bool guard_true = false, guard_false = false;  // somewhere in the domain
       std::set<std::string> shadowing;
       for (std::uint64_t s : reps) {
         (atom_holds(s, a) ? never : always) = false;
+        (enabled[k].test(s) ? guard_true : guard_false) = true;
         if (atom_holds(s, a)) continue;  // each pair once: from the state where it is false
         std::string other = key(s);
         const std::size_t c = column[a];
@@ -360,6 +362,8 @@ void Model::Node::mcdc_targets(std::vector<Target>& all) {
         else if (!alone)
           t.reason = head + atom_text[a] +
                      " never changes alone: the domain or the other atoms tie it to them";
+        else if (!flips_guard && !(guard_true && guard_false))
+          t.reason = head + guard_constant(r->id, guard_true);
         else if (!flips_guard)
           t.reason = head + "changing " + atom_text[a] + " alone never changes the guard of " +
                      r->id + " (the other atoms mask it)";

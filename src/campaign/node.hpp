@@ -124,4 +124,11 @@ struct Model::Node {
   bool solved_pair(const Goal& goal, const State& s, const State& u) const;
 };
 
+// Why no atom of a guard has an MC/DC pair when the guard itself never changes over the
+// domain (an assumption rules out every state where it holds, or every state where it fails).
+inline std::string guard_constant(const std::string& requirement, bool holds) {
+  return "the guard of " + requirement + (holds ? " holds in every" : " holds in no") +
+         " state of the domain, so no atom can change it";
+}
+
 }  // namespace uabt::campaign

@@ -529,8 +529,12 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
               t.reason = head + atom +
                          " never changes alone: the domain or the other atoms tie it to them";
             } else if (q.ask(flips, nullptr, true) == Answer::unsat) {
-              t.reason = head + "changing " + atom + " alone never changes the guard of " + r->id +
-                         " (the other atoms mask it)";
+              const bool guard_true = q.ask({q.guard(k)}) != Answer::unsat;
+              const bool guard_false = q.ask({!q.guard(k)}) != Answer::unsat;
+              t.reason = head + (guard_true && guard_false
+                                     ? "changing " + atom + " alone never changes the guard of " +
+                                           r->id + " (the other atoms mask it)"
+                                     : guard_constant(r->id, guard_true));
             } else {
               std::vector<std::string> shadowing;
               for (std::size_t j = 0; j < k; ++j) {

@@ -319,8 +319,8 @@ TEST(CampaignSolved, ThirtyFlagsGetDecisionAndMcdcTargetsThatTheirScenariosReach
   EXPECT_EQ(by_id.at("node/decision/guard/R4/true")->reason,
             "the guard holds in no state of the domain");
   EXPECT_EQ(by_id.at("node/mcdc/R4/f29")->reason,
-            "not independently testable: changing f29 alone never changes the guard of R4 (the "
-            "other atoms mask it)");
+            "not independently testable: the guard of R4 holds in no state of the domain, so no "
+            "atom can change it");
   EXPECT_TRUE(by_id.at("node/decision/guard/R4/false")->reachable);
 }
 
@@ -1252,6 +1252,39 @@ TEST(CampaignCoverageMap, WithoutVisitedCellsTheMapIsTheReportsOwn) {
   const std::size_t end = page.find("</svg>", title) + 6;
   EXPECT_EQ(page.substr(begin, end - begin), svg);
   EXPECT_EQ(svg.find("visited"), std::string::npos);
+}
+
+// A guard the assumptions rule out never changes, whatever an atom does: that is the reason each
+// of its atoms has no MC/DC pair, on both paths (enumerated and solved).
+TEST(CampaignMcdc, AGuardTheAssumptionsRuleOutIsTheReasonForEachOfItsAtoms) {
+  std::map<std::string, std::string> files;
+  files["mission.xml"] =
+      mission_with("    <Sequence>\n      <Adaptable ID=\"node\"/>\n    </Sequence>");
+  files["domain.fret"] = "boolean a, b\nassume not_both: !(a & b)\n";
+  files["requirements.fret"] =
+      "R1: In node if a & b Mission shall satisfy selected_alt = both\n"
+      "Default: In node Mission shall satisfy selected_alt = fallback\n";
+  for (const char* alt : {"both", "fallback"})
+    files[std::string("alternatives/node/") + alt + ".xml"] =
+        alternative_tree(alt, "<AlwaysSuccess/>");
+  TempMission dir(files);
+  const load::Mission m = load(dir.dir());
+  for (const bool solve : {false, true}) {
+    campaign::Options options;
+    options.solve_every_node = solve;
+    const campaign::Campaign c = campaign::build_campaign(m, options);
+    for (const char* atom : {"a", "b"}) {
+      const auto t = std::find_if(c.targets.begin(), c.targets.end(), [&](const auto& t) {
+        return t.id == std::string("node/mcdc/R1/") + atom;
+      });
+      ASSERT_NE(t, c.targets.end()) << atom;
+      EXPECT_FALSE(t->reachable);
+      EXPECT_EQ(t->reason,
+                "not independently testable: the guard of R1 holds in no state of the domain, so "
+                "no atom can change it")
+          << (solve ? "solved" : "enumerated");
+    }
+  }
 }
 
 }  // namespace
