@@ -127,16 +127,6 @@ std::optional<std::uint64_t> Model::Node::state_index(const State& state) const 
   return s;
 }
 
-namespace {
-
-std::string join(const std::vector<std::string>& parts, const std::string& sep) {
-  std::string out;
-  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
-  return out;
-}
-
-}  // namespace
-
 // Builds one node's space, its truths and its targets; false (with `reason`) when the space
 // cannot be enumerated exactly.
 bool Model::Node::build(const load::Mission& mission, std::string& reason) {

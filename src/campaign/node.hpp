@@ -124,6 +124,13 @@ struct Model::Node {
   bool solved_pair(const Goal& goal, const State& s, const State& u) const;
 };
 
+// "a, b, c" with `sep` between the parts.
+inline std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
+  return out;
+}
+
 // Why no atom of a guard has an MC/DC pair when the guard itself never changes over the
 // domain (an assumption rules out every state where it holds, or every state where it fails).
 inline std::string guard_constant(const std::string& requirement, bool holds) {

@@ -28,23 +28,11 @@ constexpr unsigned kTimeoutMs = 10000;
 // node is not solved (no hang).
 constexpr std::size_t kMaxAtoms = 2048;
 
-std::string join(const std::vector<std::string>& parts, const std::string& sep) {
-  std::string out;
-  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
-  return out;
-}
-
-__int128 floor_of(const Fraction& x) {
-  __int128 q = x.numerator() / x.denominator();
-  if (x.numerator() < 0 && q * x.denominator() != x.numerator()) --q;
-  return q;
-}
-
 // A number inside (lo, hi) that reads well: an integer, else the fewest decimals.
 std::optional<Fraction> simple_inside(const Fraction& lo, const Fraction& hi) {
   Fraction scale(1);
   for (int digits = 0; digits <= 6; ++digits) {
-    const Fraction candidate = Fraction::of(floor_of(lo * scale) + 1, 1) / scale;
+    const Fraction candidate = Fraction::of((lo * scale).floor() + 1, 1) / scale;
     if (candidate < hi) return candidate;
     scale = scale * Fraction(10);
   }
@@ -271,7 +259,7 @@ class SolvedQuestions {
     try {
       const Fraction x = *lo + (*hi - *lo) * Fraction::of(num, den);
       if (slot->sort == smt::Sort::integer) {
-        const __int128 i = floor_of(x);
+        const __int128 i = x.floor();
         if (i < INT64_MIN || i > INT64_MAX) return std::nullopt;
         return var == ctx().int_val(static_cast<std::int64_t>(i));
       }
@@ -575,7 +563,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
             continue;
           }
           if (v->type != fretish::VarType::integer) continue;
-          const __int128 f = floor_of(root);
+          const __int128 f = root.floor();
           for (__int128 x = f - 1; x <= f; ++x) {
             if (x < INT64_MIN || x >= INT64_MAX) continue;
             const auto at = [&](__int128 value) {
@@ -656,7 +644,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
                        "), just below the boundary " + at_text,
                    g, var,
                    points[b - 1] ? simple_inside(*points[b - 1], at)
-                                 : std::optional<Fraction>(Fraction::of(floor_of(at) - 1, 1)));
+                                 : std::optional<Fraction>(Fraction::of(at.floor() - 1, 1)));
           g.point = true;
           g.lo = at;
           g.hi.reset();
@@ -669,7 +657,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
                        "), just above the boundary " + at_text,
                    g, var,
                    points[b + 1] ? simple_inside(at, *points[b + 1])
-                                 : std::optional<Fraction>(Fraction::of(floor_of(at) + 1, 1)));
+                                 : std::optional<Fraction>(Fraction::of(at.floor() + 1, 1)));
         }
       }
       // Two real variables a linear atom relates: x + b·y + c = 0 (x declared first), the

@@ -314,24 +314,17 @@ std::string Cuts::uncut(const std::string& variable) const {
 
 namespace {
 
-__int128 floor_of(const Fraction& f) {
-  const __int128 n = f.numerator(), d = f.denominator();
-  __int128 q = n / d;
-  if (n % d != 0 && n < 0) --q;
-  return q;
-}
-
 // The integer inside the open interval (lo, hi) nearest to its middle, if there is one.
 std::optional<__int128> integer_inside(const std::optional<Fraction>& lo,
                                        const std::optional<Fraction>& hi) {
   if (!lo && !hi) return 0;
   // The integers strictly inside: from floor(lo) + 1 to the last one below hi.
-  const __int128 last = hi ? (hi->denominator() == 1 ? floor_of(*hi) - 1 : floor_of(*hi)) : 0;
+  const __int128 last = hi ? (hi->denominator() == 1 ? hi->floor() - 1 : hi->floor()) : 0;
   if (!lo) return last;
-  const __int128 first = floor_of(*lo) + 1;
+  const __int128 first = lo->floor() + 1;
   if (!hi) return first;
   if (first > last) return std::nullopt;
-  const __int128 middle = floor_of((*lo + *hi) / Fraction(2));
+  const __int128 middle = ((*lo + *hi) / Fraction(2)).floor();
   return middle < first ? first : middle > last ? last : middle;
 }
 
@@ -348,8 +341,8 @@ std::vector<ScriptValue> cell_values(const fretish::Variable& v, const std::set<
   if (!v.lower.empty()) lo = Fraction::parse(v.lower);
   if (!v.upper.empty()) hi = Fraction::parse(v.upper);
   if (integer) {  // the integers of the range: [ceil(lo), floor(hi)]
-    if (lo) lo = Fraction(static_cast<long long>(-floor_of(-*lo)));
-    if (hi) hi = Fraction(static_cast<long long>(floor_of(*hi)));
+    if (lo) lo = Fraction(static_cast<long long>(-(-*lo).floor()));
+    if (hi) hi = Fraction(static_cast<long long>(hi->floor()));
   }
   std::vector<Fraction> points;  // sorted: bounds and the breakpoints inside them
   if (lo) points.push_back(*lo);

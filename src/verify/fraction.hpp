@@ -26,6 +26,11 @@ class Fraction {
   __int128 denominator() const { return den_; }
   bool is_zero() const { return num_ == 0; }
   int sign() const { return num_ > 0 ? 1 : num_ < 0 ? -1 : 0; }
+  // The greatest integer not above the value.
+  __int128 floor() const {
+    const __int128 q = num_ / den_;
+    return num_ % den_ != 0 && num_ < 0 ? q - 1 : q;
+  }
   double to_double() const { return static_cast<double>(num_) / static_cast<double>(den_); }
   // "3", "-7/2": exact.
   std::string text() const;
