@@ -12,6 +12,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/node.hpp"
 #include "fretish/build_expression.hpp"
+#include "smt/assign.hpp"
 #include "smt/encoder.hpp"
 #include "smt/solver.hpp"
 #include "verify/linear.hpp"
@@ -117,7 +118,7 @@ class SolvedQuestions {
       if (space != std::string::npos && node_.names.count(part.description.substr(0, space)))
         parts.push_back(part.constraint);
     }
-    if (!parts.empty()) domain_ = z3::mk_and(parts);
+    if (!parts.empty()) smt::assign(domain_, z3::mk_and(parts));
     for (const auto& name : order()) {
       const smt::Encoder::Slot* slot = enc_.find_slot(name);
       if (slot == nullptr) continue;
@@ -125,8 +126,8 @@ class SolvedQuestions {
       primes_.push_back(ctx.constant(("uabt!pair!" + name).c_str(), slot->constant.get_sort()));
     }
     for (std::size_t k = node_.reqs.size(); k-- > 0;) {
-      sel_ = z3::ite(guards_[k], ctx.int_val(static_cast<int>(k)), sel_);
-      sel2_ = z3::ite(primed(guards_[k]), ctx.int_val(static_cast<int>(k)), sel2_);
+      smt::assign(sel_, z3::ite(guards_[k], ctx.int_val(static_cast<int>(k)), sel_));
+      smt::assign(sel2_, z3::ite(primed(guards_[k]), ctx.int_val(static_cast<int>(k)), sel2_));
     }
     return true;
   }

@@ -7,6 +7,7 @@
 #include "bt/structure.hpp"
 #include "conform/compare.hpp"
 #include "conform/readback.hpp"
+#include "smt/assign.hpp"
 #include "smt/evaluate.hpp"
 
 namespace uabt::conform {
@@ -272,7 +273,8 @@ SelectionMeaning prove_selection_meaning(const Context& ctx, Prover& prover,
       out.reason = "requirement " + (*it)->id + "'s guard does not type check: " + error;
       return out;
     }
-    required = z3::ite(*g, prover.context().int_val(codes.at((*it)->alternative)), required);
+    smt::assign(required,
+                z3::ite(*g, prover.context().int_val(codes.at((*it)->alternative)), required));
   }
   const Proof proof = prover.equivalent(*compiled, required);
   if (proof.answer == Answer::holds) {

@@ -8,6 +8,7 @@
 #include "conform/meaning.hpp"
 #include "conform/readback.hpp"
 #include "conform/selector_shape.hpp"
+#include "smt/assign.hpp"
 #include "smt/evaluate.hpp"
 
 namespace uabt::conform {
@@ -326,8 +327,9 @@ class SelectionCheck {
     z3::context& c = prover_.context();
     z3::expr chosen = c.int_val(-1);
     for (auto it = order.rbegin(); it != order.rend(); ++it)
-      chosen = z3::ite(*requirements_[*it].guard,
-                       c.int_val(codes.at(requirements_[*it].source->alternative)), chosen);
+      smt::assign(chosen,
+                  z3::ite(*requirements_[*it].guard,
+                          c.int_val(codes.at(requirements_[*it].source->alternative)), chosen));
     return chosen;
   }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "prove/symbolic_tick.hpp"
+#include "smt/assign.hpp"
 
 namespace uabt::prove {
 
@@ -111,8 +112,8 @@ PdrAnswers spacer_answers(z3::context& ctx, SymbolicTick& tick, const Model& m,
     fp.register_relation(bad);
     z3::expr fails0 = start.overflow, fails1 = step.overflow;
     for (std::size_t p : which) {
-      fails0 = fails0 || start.fails[p];
-      fails1 = fails1 || step.fails[p];
+      smt::assign(fails0, fails0 || start.fails[p]);
+      smt::assign(fails1, fails1 || step.fails[p]);
     }
     z3::expr r0 =
         z3::forall(quantified(first_in, false), z3::implies(start.valid, holds(start.next)));

@@ -5,6 +5,7 @@
 
 #include "monitor/templates.hpp"
 #include "prove/prove.hpp"
+#include "smt/assign.hpp"
 
 namespace uabt::prove {
 
@@ -363,15 +364,15 @@ struct SymbolicTick::Impl {
     z3::expr ok = ctx.bool_val(true);
     if (d.type == SymType::symbol) {
       z3::expr any = ctx.bool_val(false);
-      for (int c : d.codes) any = any || v == c;
+      for (int c : d.codes) smt::assign(any, any || v == c);
       return any;
     }
     if (d.type == SymType::integer) {
-      if (d.lo) ok = ok && v >= ctx.int_val(d.lo->c_str());
-      if (d.hi) ok = ok && v <= ctx.int_val(d.hi->c_str());
+      if (d.lo) smt::assign(ok, ok && v >= ctx.int_val(d.lo->c_str()));
+      if (d.hi) smt::assign(ok, ok && v <= ctx.int_val(d.hi->c_str()));
     } else if (d.type == SymType::real) {
-      if (d.lo) ok = ok && v >= ctx.real_val(d.lo->c_str());
-      if (d.hi) ok = ok && v <= ctx.real_val(d.hi->c_str());
+      if (d.lo) smt::assign(ok, ok && v >= ctx.real_val(d.lo->c_str()));
+      if (d.hi) smt::assign(ok, ok && v <= ctx.real_val(d.hi->c_str()));
     }
     return ok;
   }
@@ -387,7 +388,7 @@ struct SymbolicTick::Impl {
     const z3::expr g = name(x, guard);
     const z3::expr s = name(x, tick_kind(x, id, g));
     set(x.cur.status[id], g, s);  // Core::execute_tick (no SKIPPED in this subset)
-    x.cur.status[id] = name(x, x.cur.status[id]);
+    smt::assign(x.cur.status[id], name(x, x.cur.status[id]));
     set(x.ret[id], g, s);  // Observables::on_node_ticked
     for (std::size_t a = 0; a < alternatives.size(); ++a)
       if (const auto it = alternatives[a].find(id); it != alternatives[a].end())
@@ -399,7 +400,7 @@ struct SymbolicTick::Impl {
     const NodeId c = nodes[parent].children[i];
     halt_node(x, c, name(x, g && x.cur.status[c] == kRunning));
     set(x.cur.status[c], g, ctx.int_val(kIdle));
-    x.cur.status[c] = name(x, x.cur.status[c]);
+    smt::assign(x.cur.status[c], name(x, x.cur.status[c]));
   }
   void reset_children(Exec& x, NodeId parent, const z3::expr& g) {
     for (std::size_t i = 0; i < nodes[parent].children.size(); ++i) halt_child(x, parent, i, g);
@@ -475,8 +476,8 @@ struct SymbolicTick::Impl {
         z3::expr truth = ctx.bool_val(false);
         switch (types[static_cast<std::size_t>(d.var)]) {
           case SymType::boolean: truth = v; break;
-          case SymType::integer: truth = v != 0; break;
-          case SymType::real: truth = v != ctx.real_val(0); break;
+          case SymType::integer: smt::assign(truth, v != 0); break;
+          case SymType::real: smt::assign(truth, v != ctx.real_val(0)); break;
           case SymType::symbol: break;
         }
         return z3::ite(truth, ctx.int_val(kSuccess), ctx.int_val(kFailure));
@@ -497,13 +498,13 @@ struct SymbolicTick::Impl {
       const z3::expr s = exec(x, nodes[id].children[i], gi);
       const z3::expr run = gi && s == kRunning, ended = name(x, gi && s == stop),
                      next = gi && s == go;
-      result =
-          name(x, z3::ite(run, ctx.int_val(kRunning), z3::ite(ended, ctx.int_val(stop), result)));
-      stopped = stopped || ended;
+      smt::assign(result, name(x, z3::ite(run, ctx.int_val(kRunning),
+                                          z3::ite(ended, ctx.int_val(stop), result))));
+      smt::assign(stopped, stopped || ended);
       set(x.cur.counter[id], ended, ctx.int_val(0));
       set(x.cur.counter[id], next, ctx.int_val(static_cast<int>(i + 1)));
-      x.cur.counter[id] = name(x, x.cur.counter[id]);
-      looping = name(x, looping && !run && !ended);
+      smt::assign(x.cur.counter[id], name(x, x.cur.counter[id]));
+      smt::assign(looping, name(x, looping && !run && !ended));
     }
     const z3::expr all = g && looping;
     // A child that ended the sequence stops the loop: no child is ticked after the reset, so
@@ -525,16 +526,16 @@ struct SymbolicTick::Impl {
       const z3::expr s = exec(x, nodes[id].children[i], gi);
       const z3::expr run = name(x, gi && s == kRunning), ended = name(x, gi && s == stop);
       runs.push_back(run);
-      stopped = stopped || ended;
-      result =
-          name(x, z3::ite(run, ctx.int_val(kRunning), z3::ite(ended, ctx.int_val(stop), result)));
-      looping = name(x, looping && !run && !ended);
+      smt::assign(stopped, stopped || ended);
+      smt::assign(result, name(x, z3::ite(run, ctx.int_val(kRunning),
+                                          z3::ite(ended, ctx.int_val(stop), result))));
+      smt::assign(looping, name(x, looping && !run && !ended));
     }
     // The halts of the loop, after it: a running or ending child stops the loop, so no child
     // is ticked after them, and each child's subtree is its own.
     const z3::expr reset = name(x, stopped || (g && looping));
     z3::expr any_run = ctx.bool_val(false);
-    for (const z3::expr& r : runs) any_run = any_run || r;
+    for (const z3::expr& r : runs) smt::assign(any_run, any_run || r);
     for (std::size_t j = 0; j < count; ++j) halt_child(x, id, j, reset || (any_run && !runs[j]));
     return z3::ite(g && looping, ctx.int_val(go), result);
   }
@@ -553,7 +554,8 @@ struct SymbolicTick::Impl {
     const z3::expr branch = x.cur.counter[id];
     const z3::expr then_s = exec(x, d.children[1], go && branch == 1);
     z3::expr s = then_s;
-    if (has_else) s = z3::ite(branch == 1, then_s, exec(x, d.children[2], go && branch == 2));
+    if (has_else)
+      smt::assign(s, z3::ite(branch == 1, then_s, exec(x, d.children[2], go && branch == 2)));
     const z3::expr finished = go && s != kRunning;
     reset_children(x, id, finished);
     set(x.cur.counter[id], finished, ctx.int_val(0));
@@ -573,9 +575,9 @@ struct SymbolicTick::Impl {
     z3::expr s = z3::ite(yes, then_s, ctx.int_val(kFailure));
     if (has_else) {
       halt_child(x, id, 1, no);
-      s = z3::ite(yes, then_s, exec(x, d.children[2], no));
+      smt::assign(s, z3::ite(yes, then_s, exec(x, d.children[2], no)));
     }
-    s = name(x, s);
+    smt::assign(s, name(x, s));
     reset_children(x, id, (yes || no) && s != kRunning);
     return z3::ite(yes || no, s, ctx.int_val(kRunning));
   }
@@ -603,10 +605,10 @@ struct SymbolicTick::Impl {
       set(x.cur.wake[0], yield, ctx.bool_val(true));
       const z3::expr finished = succeeded && !again;
       set(a, finished, ctx.int_val(0));
-      result = z3::ite(
-          run || yield, ctx.int_val(kRunning),
-          z3::ite(failed, ctx.int_val(kFailure), z3::ite(finished, ctx.int_val(kSuccess), result)));
-      go = again && !yield;
+      smt::assign(result, z3::ite(run || yield, ctx.int_val(kRunning),
+                                  z3::ite(failed, ctx.int_val(kFailure),
+                                          z3::ite(finished, ctx.int_val(kSuccess), result))));
+      smt::assign(go, again && !yield);
     }
     set(a, none, ctx.int_val(0));
     return result;
@@ -631,7 +633,7 @@ struct SymbolicTick::Impl {
     const auto& options = x.in->outcomes[l];
     z3::expr d = options.back();
     for (std::size_t k = options.size() - 1; k-- > 0;)
-      d = z3::ite(x.leaf_ticks[l] == static_cast<int>(k), options[k], d);
+      smt::assign(d, z3::ite(x.leaf_ticks[l] == static_cast<int>(k), options[k], d));
     set(x.leaf_ticks[l], g, x.leaf_ticks[l] + 1);
     const z3::expr now = x.cur.elapsed[l] + 1;
     const z3::expr may_run = c ? now < ctx.int_val(c->max_ticks) : ctx.bool_val(true);
@@ -647,9 +649,10 @@ struct SymbolicTick::Impl {
       const auto var = static_cast<std::size_t>(nodes[id].outputs[k]);
       z3::expr value = x.in->outputs[l][k].back();
       for (std::size_t n = x.in->outputs[l][k].size() - 1; n-- > 0;)
-        value = z3::ite(x.leaf_ticks[l] == static_cast<int>(n) + 1, x.in->outputs[l][k][n], value);
+        smt::assign(value, z3::ite(x.leaf_ticks[l] == static_cast<int>(n) + 1,
+                                   x.in->outputs[l][k][n], value));
       if (leaf.outputs[k].fixed != nullptr) {
-        value = constant_of(ctx, *leaf.outputs[k].fixed, types[var], codes);
+        smt::assign(value, constant_of(ctx, *leaf.outputs[k].fixed, types[var], codes));
       } else {
         x.constraints.push_back(z3::implies(ends_any, in_range(var, value)));
       }
@@ -658,7 +661,8 @@ struct SymbolicTick::Impl {
     }
     for (std::size_t k = 0; k < results.size(); ++k) {
       const z3::expr ends = g && d == static_cast<int>(k);
-      status = z3::ite(d == static_cast<int>(k), ctx.int_val(static_cast<int>(results[k])), status);
+      smt::assign(status, z3::ite(d == static_cast<int>(k),
+                                  ctx.int_val(static_cast<int>(results[k])), status));
       set(x.cur.elapsed[l], ends, ctx.int_val(0));
       const auto& effect = results[k] == NodeStatus::success ? effects[l].first : effects[l].second;
       if (!effect) continue;
@@ -710,7 +714,7 @@ struct SymbolicTick::Impl {
         if (!found.empty()) {
           const int s = field == "success" ? kSuccess : field == "failure" ? kFailure : kRunning;
           z3::expr any = ctx.bool_val(false);
-          for (NodeId n : found) any = any || x.ret[n] == s;
+          for (NodeId n : found) smt::assign(any, any || x.ret[n] == s);
           return {SymType::boolean, any, {}};
         }
       }
@@ -725,7 +729,8 @@ struct SymbolicTick::Impl {
     for (const std::string& a : adaptable_names)
       if (a == name) {
         z3::expr any = ctx.bool_val(false);
-        for (NodeId call : m.engine->subtree_calls(name)) any = any || x.ret[call] != kIdle;
+        for (NodeId call : m.engine->subtree_calls(name))
+          smt::assign(any, any || x.ret[call] != kIdle);
         return {SymType::boolean, any, {}};
       }
     if (auto l = literal(name)) return *l;
@@ -761,7 +766,8 @@ struct SymbolicTick::Impl {
                                                       : z3::ite(bits[bit], level[k + 1], level[k]));
         level = std::move(up);
       }
-      out = s + 1 == t.size() ? level[0] : z3::ite(state == static_cast<int>(s), level[0], out);
+      smt::assign(
+          out, s + 1 == t.size() ? level[0] : z3::ite(state == static_cast<int>(s), level[0], out));
     }
     return out;
   }
@@ -868,33 +874,35 @@ z3::expr SymbolicTick::domain(const SymState& s) const {
   Impl& i = *impl_;
   z3::expr ok = i.ctx.bool_val(true);
   for (std::size_t n = 0; n < i.nodes.size(); ++n) {
-    ok = ok && s.status[n] >= kIdle && s.status[n] <= kFailure;
+    smt::assign(ok, ok && s.status[n] >= kIdle && s.status[n] <= kFailure);
     const NodeDef& d = i.nodes[n];
     // Between ticks only the children of a RUNNING node are not IDLE: every kind here resets
     // its children when it completes, and the root goes back to IDLE when it does.
-    for (NodeId c : d.children) ok = ok && (s.status[c] == kIdle || s.status[n] == kRunning);
+    for (NodeId c : d.children)
+      smt::assign(ok, ok && (s.status[c] == kIdle || s.status[n] == kRunning));
     if (has_counter(d.kind)) {
       const int top = d.kind == NK::if_then_else ? static_cast<int>(d.children.size()) - 1
                       : d.kind == NK::repeat     ? d.cycles
                                                  : static_cast<int>(d.children.size());
-      ok = ok && s.counter[n] >= 0 && s.counter[n] <= top;
+      smt::assign(ok, ok && s.counter[n] >= 0 && s.counter[n] <= top);
     }
   }
   const auto& leaves = i.m.choice->leaves();
   for (std::size_t l = 0; l < leaves.size(); ++l) {
     if (leaves[l].condition) continue;
     const std::int64_t top = leaves[l].contract ? leaves[l].contract->max_ticks - 1 : 1;
-    ok = ok && s.elapsed[l] >= 0 && s.elapsed[l] <= i.ctx.int_val(top);
+    smt::assign(ok, ok && s.elapsed[l] >= 0 && s.elapsed[l] <= i.ctx.int_val(top));
   }
   for (std::size_t v = 0; v < i.vars.size(); ++v)
     if (i.vars[v].tracked && !i.vars[v].chosen && i.types[v] == SymType::symbol)
-      ok = ok && i.in_range(v, s.values[v]);
+      smt::assign(ok, ok && i.in_range(v, s.values[v]));
   for (std::size_t p = 0; p < i.tables.size(); ++p)
     if (i.tables[p])
-      ok = ok && s.monitor[p] >= 0 && s.monitor[p] < static_cast<int>(i.tables[p]->size());
-  ok = ok && (s.status[i.root] == kIdle || s.status[i.root] == kRunning);
+      smt::assign(ok,
+                  ok && s.monitor[p] >= 0 && s.monitor[p] < static_cast<int>(i.tables[p]->size()));
+  smt::assign(ok, ok && (s.status[i.root] == kIdle || s.status[i.root] == kRunning));
   // Before the first tick there is one state.
-  ok = ok && (s.started[0] || same(s, fresh()));
+  smt::assign(ok, ok && (s.started[0] || same(s, fresh())));
   return ok;
 }
 
@@ -910,7 +918,7 @@ z3::expr SymbolicTick::same(const SymState& a, const SymState& b) const {
   z3::expr eq = a.done[0] == b.done[0] && a.started[0] == b.started[0];
   auto all = [&](const std::vector<z3::expr>& x, const std::vector<z3::expr>& y) {
     for (std::size_t k = 0; k < x.size(); ++k)
-      if (!z3::eq(x[k], y[k])) eq = eq && x[k] == y[k];
+      if (!z3::eq(x[k], y[k])) smt::assign(eq, eq && x[k] == y[k]);
   };
   all(a.status, b.status);
   all(a.counter, b.counter);
@@ -934,27 +942,29 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
   for (std::size_t v = 0; v < i.vars.size(); ++v) {
     if (!i.vars[v].tracked || (!first && !i.vars[v].chosen)) continue;
     x.cur.values[v] = in.values[v];
-    valid = valid && i.in_range(v, in.values[v]);
+    smt::assign(valid, valid && i.in_range(v, in.values[v]));
   }
   if (first && i.m.world.initial)
-    valid =
-        valid && i.state_expression(*i.m.world.initial, x.cur.values, i.m.world.file + ": initial");
+    smt::assign(valid, valid && i.state_expression(*i.m.world.initial, x.cur.values,
+                                                   i.m.world.file + ": initial"));
   for (const auto& a : i.m.mission.domain.assumptions)
-    if (a.expr) valid = valid && i.state_expression(*a.expr, x.cur.values, "assumption " + a.name);
+    if (a.expr)
+      smt::assign(valid,
+                  valid && i.state_expression(*a.expr, x.cur.values, "assumption " + a.name));
 
   z3::expr root = i.exec(x, i.root, i.ctx.bool_val(true));
   // Engine::wake_up_loop: the root again while it runs and a node asked for it.
   for (int r = 0; r < i.wake_ups; ++r) {
     const z3::expr again = root == kRunning && x.cur.wake[0];
     Impl::set(x.cur.wake[0], again, i.ctx.bool_val(false));
-    root = z3::ite(again, i.exec(x, i.root, again), root);
+    smt::assign(root, z3::ite(again, i.exec(x, i.root, again), root));
   }
   const z3::expr overflow = i.ctx.bool_val(i.wake_ups > 0) && root == kRunning && x.cur.wake[0];
   // One n-ary conjunction: with a chain of thousands of binary ones, deleting the context
   // took 0.4 s.
   z3::expr_vector constraints(i.ctx);
   for (const z3::expr& c : x.constraints) constraints.push_back(c);
-  valid = valid && z3::mk_and(constraints);
+  smt::assign(valid, valid && z3::mk_and(constraints));
   const z3::expr done = root == kSuccess || root == kFailure;
   Impl::set(x.cur.status[i.root], done, i.ctx.int_val(kIdle));  // BT.CPP's resetStatus()
 
@@ -974,11 +984,11 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
       bits.push_back(fretish_bool(i.ctx, *atom, resolve, prop.requirement->id));
     for (const z3::expr& b : bits) out.inputs.push_back(b);
     const z3::expr now = Impl::lookup(*t, s.monitor[p], bits, true, i.ctx);
-    out.next.monitor[p] = Impl::lookup(*t, s.monitor[p], bits, false, i.ctx);
+    smt::assign(out.next.monitor[p], Impl::lookup(*t, s.monitor[p], bits, false, i.ctx));
     const z3::expr fails =
         !now && (monitor::verdict_is_final_once_violated(prop.shape) ? i.ctx.bool_val(true) : done);
     if (prop.assumption) {
-      out.valid = out.valid && !fails;
+      smt::assign(out.valid, out.valid && !fails);
       out.fails.push_back(i.ctx.bool_val(false));
     } else {
       out.fails.push_back(fails);

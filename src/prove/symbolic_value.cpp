@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "base/number_text.hpp"
+#include "smt/assign.hpp"
 
 namespace uabt::prove {
 
@@ -123,11 +124,11 @@ class ScriptEncoder {
           break;
         case SymType::integer:
           if (!integral(value.type)) refuse("assigns a non-integer to an integer");
-          next = as_int(value);
+          smt::assign(next, as_int(value));
           break;
         case SymType::real:
           if (!numeric(value.type)) refuse("assigns a name to a real");
-          next = as_real(value);
+          smt::assign(next, as_real(value));
           break;
         case SymType::symbol:
           if (value.type != SymType::symbol) refuse("assigns a number to an enumeration");
@@ -144,14 +145,14 @@ class ScriptEncoder {
       if (dst.type == SymType::integer) {
         if (!integral(value.type)) refuse("compound assignment of a real to an integer");
         const z3::expr a = dst.e, b = as_int(value);
-        next = e.op == Op::add_assign ? a + b : e.op == Op::sub_assign ? a - b : a * b;
+        smt::assign(next, e.op == Op::add_assign ? a + b : e.op == Op::sub_assign ? a - b : a * b);
       } else {
         const z3::expr a = dst.e, b = as_real(value);
-        next = e.op == Op::add_assign ? a + b : e.op == Op::sub_assign ? a - b : a * b;
+        smt::assign(next, e.op == Op::add_assign ? a + b : e.op == Op::sub_assign ? a - b : a * b);
       }
     }
     z3::expr& slot = values_[static_cast<std::size_t>(v)];
-    slot = guard_.is_true() ? next : z3::ite(guard_, next, slot);
+    smt::assign(slot, guard_.is_true() ? next : z3::ite(guard_, next, slot));
     SymValue out = dst;
     out.e = next;
     return out;
@@ -239,23 +240,23 @@ class ScriptEncoder {
       z3::expr holds = ctx_.bool_val(false);
       if (l.type == SymType::symbol && r.type == SymType::symbol) {
         if (op != CompareOp::eq && op != CompareOp::ne) refuse("orders names");
-        holds = op == CompareOp::eq ? l.e == r.e : l.e != r.e;
+        smt::assign(holds, op == CompareOp::eq ? l.e == r.e : l.e != r.e);
       } else if (numeric(l.type) && numeric(r.type)) {
         const bool exact = integral(l.type) && integral(r.type);
         const z3::expr a = exact ? as_int(l) : as_real(l), b = exact ? as_int(r) : as_real(r);
         const z3::expr equal = exact ? a == b : z3::abs(a - b) <= float_epsilon(ctx_);
         switch (op) {
           case CompareOp::eq: holds = equal; break;
-          case CompareOp::ne: holds = !equal; break;
-          case CompareOp::lt: holds = a < b; break;
-          case CompareOp::gt: holds = a > b; break;
-          case CompareOp::le: holds = a <= b; break;
-          case CompareOp::ge: holds = a >= b; break;
+          case CompareOp::ne: smt::assign(holds, !equal); break;
+          case CompareOp::lt: smt::assign(holds, a < b); break;
+          case CompareOp::gt: smt::assign(holds, a > b); break;
+          case CompareOp::le: smt::assign(holds, a <= b); break;
+          case CompareOp::ge: smt::assign(holds, a >= b); break;
         }
       } else {
         refuse("compares a name with a number");
       }
-      all = all && holds;
+      smt::assign(all, all && holds);
     }
     return {SymType::boolean, all, {}};
   }
@@ -309,7 +310,7 @@ class FretishEncoder {
       case K::logical_or: {
         z3::expr acc = ctx_.bool_val(e.kind == K::logical_and);
         for (const auto& a : e.args)
-          acc = e.kind == K::logical_and ? acc && boolean(*a) : acc || boolean(*a);
+          smt::assign(acc, e.kind == K::logical_and ? acc && boolean(*a) : acc || boolean(*a));
         return {SymType::boolean, acc, {}};
       }
       case K::logical_xor:
@@ -322,11 +323,11 @@ class FretishEncoder {
         const SymValue a = value(*e.args[0]), b = value(*e.args[1]);
         z3::expr same = ctx_.bool_val(false);
         if (a.type == SymType::boolean && b.type == SymType::boolean) {
-          same = a.e == b.e;
+          smt::assign(same, a.e == b.e);
         } else if (a.type == SymType::symbol && b.type == SymType::symbol) {
-          same = a.e == b.e;
+          smt::assign(same, a.e == b.e);
         } else if (number_kind(a) && number_kind(b)) {
-          same = both_int(a, b) ? a.e == b.e : as_real(a) == as_real(b);
+          smt::assign(same, both_int(a, b) ? a.e == b.e : as_real(a) == as_real(b));
         } else {
           refuse("'" + fretish::to_fretish(e) + "' compares values of different kinds");
         }

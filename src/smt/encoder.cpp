@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "smt/assign.hpp"
 #include "smt/rational.hpp"
 
 namespace uabt::smt {
@@ -133,14 +134,14 @@ Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
       z3::expr acc = lower_term(*e.args[0], overrides).e;
       for (std::size_t i = 1; i < e.args.size(); ++i) {
         const z3::expr next = lower_term(*e.args[i], overrides).e;
-        acc = e.kind == ExprKind::logical_xor ? (acc ^ next) : (acc == next);
+        smt::assign(acc, e.kind == ExprKind::logical_xor ? (acc ^ next) : (acc == next));
       }
       return {acc, sort};
     }
     case ExprKind::implies: {  // right-associative: a -> b -> c is a -> (b -> c)
       z3::expr acc = lower_term(*e.args.back(), overrides).e;
       for (std::size_t i = e.args.size() - 1; i-- > 0;)
-        acc = z3::implies(lower_term(*e.args[i], overrides).e, acc);
+        smt::assign(acc, z3::implies(lower_term(*e.args[i], overrides).e, acc));
       return {acc, sort};
     }
     case ExprKind::eq:
@@ -167,9 +168,9 @@ Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
       z3::expr acc = operand(*e.args[0], sort);
       for (std::size_t i = 1; i < e.args.size(); ++i) {
         const z3::expr next = operand(*e.args[i], sort);
-        acc = e.kind == ExprKind::add   ? acc + next
-              : e.kind == ExprKind::sub ? acc - next
-                                        : acc * next;
+        smt::assign(acc, e.kind == ExprKind::add   ? acc + next
+                         : e.kind == ExprKind::sub ? acc - next
+                                                   : acc * next);
       }
       return {acc, sort};
     }

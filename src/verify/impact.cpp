@@ -6,6 +6,7 @@
 #include <set>
 
 #include "base/number_fit.hpp"
+#include "smt/assign.hpp"
 #include "smt/encoder.hpp"
 #include "smt/evaluate.hpp"
 #include "smt/solver.hpp"
@@ -198,7 +199,7 @@ Impact selection_impact(const load::Mission& before, const load::Mission& after,
           lowered = false;
           continue;
         }
-        term = z3::ite(*g, value, term);
+        smt::assign(term, z3::ite(*g, value, term));
       }
       return term;
     };

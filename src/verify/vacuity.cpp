@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "smt/assign.hpp"
 #include "smt/atoms.hpp"
 #include "verify/node.hpp"
 
@@ -174,7 +175,7 @@ class VacuityQuestions {
     for (auto& [atom, question] : questions_) {
       if (question.places > 1) {
         const z3::expr flipped = encoder.lower(guard, {{atom, !question.value}});
-        question.decides = session.define(formula != flipped, "vacuity");
+        smt::assign(question.decides, session.define(formula != flipped, "vacuity"));
       }
       question.literal.emplace(session.define(question.value, "vacuity_atom"));
     }
@@ -231,22 +232,24 @@ class VacuityQuestions {
         const bool is_and = e.kind == ExprKind::logical_and;
         auto neutral = [&](const z3::expr& t) { return is_and ? t : !t; };
         std::vector<z3::expr> suffix(n + 1, true_);
-        for (std::size_t i = n; i-- > 0;) suffix[i] = link(neutral(terms[i]) && suffix[i + 1]);
+        for (std::size_t i = n; i-- > 0;)
+          smt::assign(suffix[i], link(neutral(terms[i]) && suffix[i + 1]));
         z3::expr prefix = true_;
         for (std::size_t i = 0; i < n; ++i) {
           walk(*e.args[i], link(path && prefix && suffix[i + 1]));
-          prefix = link(prefix && neutral(terms[i]));
+          smt::assign(prefix, link(prefix && neutral(terms[i])));
         }
         return;
       }
       case ExprKind::implies: {
         // a0 -> (a1 -> … -> a(n-1)): ak decides when a0 … a(k-1) hold and the rest is false.
         std::vector<z3::expr> tail(n, terms[n - 1]);
-        for (std::size_t i = n - 1; i-- > 0;) tail[i] = link(z3::implies(terms[i], tail[i + 1]));
+        for (std::size_t i = n - 1; i-- > 0;)
+          smt::assign(tail[i], link(z3::implies(terms[i], tail[i + 1])));
         z3::expr prefix = true_;
         for (std::size_t i = 0; i < n; ++i) {
           walk(*e.args[i], link(i + 1 < n ? path && prefix && !tail[i + 1] : path && prefix));
-          prefix = link(prefix && terms[i]);
+          smt::assign(prefix, link(prefix && terms[i]));
         }
         return;
       }

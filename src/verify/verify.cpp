@@ -6,6 +6,7 @@
 #include <set>
 #include <thread>
 
+#include "smt/assign.hpp"
 #include "smt/encoder.hpp"
 #include "verify/coverage.hpp"
 #include "verify/division.hpp"
@@ -46,7 +47,7 @@ bool build_guards(detail::Node& node, const std::vector<const fretish::Selection
     node.guards.push_back(std::move(g));
   }
   if (!well_typed) return false;
-  for (auto& g : node.guards) g.literal = encoder.fresh_literal("guard");
+  for (auto& g : node.guards) smt::assign(g.literal, encoder.fresh_literal("guard"));
   return true;
 }
 

@@ -8,6 +8,7 @@
 
 #include <z3++.h>
 
+#include "smt/assign.hpp"
 #include "smt/encoder.hpp"
 
 namespace uabt::bench {
@@ -121,7 +122,7 @@ NaiveAnswers naive_verify(const load::Mission& mission, NaiveSolver kind) {
       } else if (i > 0 && !naive_sat(encoder, parts, guards[i] && !higher, kind, answers)) {
         ++answers.shadowed;
       }
-      higher = higher || guards[i];
+      smt::assign(higher, higher || guards[i]);
       for (std::size_t j = 0; j < i; ++j)
         if (naive_sat(encoder, parts, guards[j] && guards[i], kind, answers)) ++answers.overlaps;
     }

@@ -11,6 +11,7 @@
 #include "prove_support.hpp"
 #include "random_mission.hpp"
 #include "runtime/runner.hpp"
+#include "smt/assign.hpp"
 #include "style_missions.hpp"
 
 namespace uabt::testing {
@@ -214,21 +215,22 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
       const auto before = runtime::EngineState::save(*m.engine);
       prove::SymState s = sym.fresh();
       for (std::size_t n = 0; n < before.status.size(); ++n) {
-        s.status[n] = ctx.int_val(static_cast<int>(before.status[n]));
-        s.counter[n] = ctx.int_val(before.counters[3 * n]);
+        smt::assign(s.status[n], ctx.int_val(static_cast<int>(before.status[n])));
+        smt::assign(s.counter[n], ctx.int_val(before.counters[3 * n]));
       }
       for (std::size_t l = 0; l < leaves.size(); ++l)
-        s.elapsed[l] = ctx.int_val(static_cast<int64_t>(m.choice->elapsed()[l]));
+        smt::assign(s.elapsed[l], ctx.int_val(static_cast<int64_t>(m.choice->elapsed()[l])));
       for (std::size_t v = 0; v < m.vars.size(); ++v)
         if (sym.tracked(v))
-          s.values[v] = prove::constant_of(ctx, m.engine->blackboard().value(m.vars[v].slot),
-                                           sym.type(v), sym.codes());
+          smt::assign(s.values[v],
+                      prove::constant_of(ctx, m.engine->blackboard().value(m.vars[v].slot),
+                                         sym.type(v), sym.codes()));
       for (std::size_t p = 0; p < m.properties.size(); ++p) {
         const auto& prop = m.properties[p];
         if (!prop.layout) continue;
         std::vector<std::uint64_t> w(monitors.begin() + prop.offset,
                                      monitors.begin() + prop.offset + prop.layout->words());
-        s.monitor[p] = ctx.int_val(static_cast<int>(*sym.table(p)->index_of(w)));
+        smt::assign(s.monitor[p], ctx.int_val(static_cast<int>(*sym.table(p)->index_of(w))));
       }
       s.started = {ctx.bool_val(!first)};
       s.done = {ctx.bool_val(false)};
@@ -241,7 +243,7 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
         if (!m.vars[v].relevant || (!first && !m.vars[v].env)) continue;
         const auto& value = m.vars[v].values[pick(m.vars[v].values.size())];
         m.engine->blackboard().value(m.vars[v].slot) = value;
-        in.values[v] = prove::constant_of(ctx, value, sym.type(v), sym.codes());
+        smt::assign(in.values[v], prove::constant_of(ctx, value, sym.type(v), sym.codes()));
       }
       std::vector<monitor::Val> scratch_frame;
       if (first && m.initial && !m.holds(*m.initial, scratch_frame)) break;
@@ -274,9 +276,9 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
                                           results.begin());
           }
           ASSERT_LT(k, in.outcomes[l].size());
-          in.outcomes[l][k++] = ctx.int_val(o);
+          smt::assign(in.outcomes[l][k++], ctx.int_val(o));
         }
-        for (; k < in.outcomes[l].size(); ++k) in.outcomes[l][k] = ctx.int_val(-1);
+        for (; k < in.outcomes[l].size(); ++k) smt::assign(in.outcomes[l][k], ctx.int_val(-1));
       }
       const prove::TickEncoding enc = sym.encode(s, in, first);
       const std::string where = "seed " + std::to_string(seed) + " run " + std::to_string(run) +
