@@ -1,6 +1,6 @@
 // Every reference uabt takes on a Z3 term it gives back. A term nobody releases keeps all the
 // terms under it alive until its context is deleted, and deleting a context with leaked terms
-// is slow: before smt/assign.hpp the symbolic engine kept 700 references a tick on
+// is slow: before smt/assign.hpp the symbolic engine left about 4,900 references a run on
 // msl_curiosity and spent 0.45 s deleting its context.
 //
 // This executable counts the references uabt's code takes and releases: it defines Z3_inc_ref
