@@ -142,6 +142,8 @@ report::Proofs report_proofs(const Result& result,
     p.verdict = verdict_name(a.verdict);
     p.reason = a.reason;
     p.depth = a.depth;
+    if (result.engine == "symbolic" && a.verdict == Verdict::proved)
+      p.method = a.by_pdr ? "IC3/PDR" : "k-induction";
     if (result.engine == "explicit" && a.has_trigger) p.first_trigger = a.first_trigger;
     if (a.counterexample) {
       report::ProofCounterexample c;

@@ -287,6 +287,7 @@ Result prove_symbolic(Model& model, const Options& options) {
     if (search.proved[i]) {
       a.verdict = Verdict::proved;
       a.depth = search.proved_k[i];
+      a.by_pdr = search.by_pdr[i];
       if (search.by_pdr[i])
         r.notes.push_back(a.requirement + " is proved by IC3/PDR (Z3's Spacer)");
     } else {

@@ -48,6 +48,9 @@ struct Answer {
   // condition) holds on some run; 0 when it never does (a proof that says nothing).
   std::uint64_t first_trigger = 0;
   bool has_trigger = false;  // the guarantee has a mode or a condition
+  // The symbolic engine: proved by IC3/PDR (Z3's Spacer) rather than by k-induction (depth is
+  // then 0: no k was needed).
+  bool by_pdr = false;
 };
 
 // Why a proof would be vacuous (`prove-vacuous`).

@@ -117,6 +117,7 @@ nlohmann::ordered_json proofs_json(const Proofs& proofs) {
     j["verdict"] = a.verdict;
     j["location"] = location(a.location);
     j["depth"] = a.depth;
+    if (!a.method.empty()) j["method"] = a.method;
     if (a.first_trigger) j["first_trigger"] = *a.first_trigger;
     if (!a.reason.empty()) j["reason"] = a.reason;
     if (a.counterexample) {

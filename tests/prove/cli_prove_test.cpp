@@ -54,6 +54,33 @@ TEST(ProveCli, SymbolicEngineNamesItsFigures) {
   EXPECT_EQ(j["properties"][1]["verdict"], "proved");
 }
 
+// A guarantee IC3/PDR proved says so, not "k-induction with k = 0".
+TEST(ProveCli, SymbolicProofsNameHowEachGuaranteeWasProved) {
+  const std::string mission = mission_dir("msl_curiosity").string();
+  const CliRun text = run("prove " + mission + " --engine symbolic");
+  EXPECT_EQ(text.exit_code, 0) << text.out;
+  EXPECT_EQ(text.out.find("k = 0"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("guarantee 'NoDrillAway' is proved: the rover shall never satisfy "
+                          "Drill.running & !IsInLocation (IC3/PDR, Z3's Spacer)"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("within 1 tick satisfy navigation.selected = hold_position "
+                          "(k-induction with k = 2)"),
+            std::string::npos)
+      << text.out;
+  const auto j =
+      nlohmann::json::parse(run("prove " + mission + " --engine symbolic --format json").out);
+  std::map<std::string, std::string> method;
+  for (const auto& p : j["properties"]) method[p["id"]] = p.value("method", "");
+  EXPECT_EQ(method, (std::map<std::string, std::string>{{"ArmClosed", "IC3/PDR"},
+                                                        {"HoldOnUnknown", "k-induction"},
+                                                        {"NoDrillAway", "IC3/PDR"},
+                                                        {"PictureOfSample", "IC3/PDR"}}));
+  // The explicit engine's proofs name their states and transitions instead.
+  const auto e = nlohmann::json::parse(run("prove " + mission + " --format json").out);
+  for (const auto& p : e["properties"]) EXPECT_FALSE(p.contains("method")) << p;
+}
+
 TEST(ProveCli, JsonAndCounterexampleFiles) {
   TempMission scratch({});
   const auto dir = scratch.dir() / "cex";
