@@ -37,10 +37,10 @@ struct ProofAnswer {
   std::string verdict;      // proved | violated | bounded | unsupported
   std::string reason;       // why not checked
   std::uint64_t depth = 0;  // violated: the tick; bounded: the depth; symbolic proved: k
-  std::string method;       // symbolic proved: "k-induction" or "IC3/PDR"; else ""
   // Explicit engine, for a guarantee with a trigger: the first tick it holds (0: never).
   std::optional<std::uint64_t> first_trigger;
   std::optional<ProofCounterexample> counterexample;
+  std::string method;  // symbolic proved: "k-induction" or "IC3/PDR"; else ""
 };
 
 // Why no guarantee could be proved: the world model leaves no run, or runs that cannot go on.

@@ -44,7 +44,8 @@ report::Proofs three_ticks() {
                        "",
                        3,
                        std::nullopt,
-                       cex});
+                       cex,
+                       ""});
   p.answers.push_back({"Fine",
                        "Mission shall always satisfy z",
                        {"requirements.fret", 5, 10},
@@ -52,7 +53,8 @@ report::Proofs three_ticks() {
                        "",
                        3,
                        std::nullopt,
-                       std::nullopt});
+                       std::nullopt,
+                       ""});
   return p;
 }
 
