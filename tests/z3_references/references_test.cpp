@@ -9,11 +9,10 @@
 // inside libz3 are not counted.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
+#include <z3++.h>
 #include <z3.h>
 
-#include <z3++.h>
 #include <atomic>
-#include <filesystem>
 
 #include "campaign/campaign.hpp"
 #include "gate/gate.hpp"
@@ -66,8 +65,8 @@ load::Mission load_mission(const std::string& name) {
   return std::move(*m);
 }
 
-// The counter sees what the header does: a temporary move-assigned to an expression through
-// z3++ is either released or not, and smt::assign releases it whichever this Z3 is.
+// smt::assign releases the term it replaces, whatever z3++'s move assignment does; the
+// references counted show that the counting itself works.
 TEST(Z3References, AnExpressionAssignedThroughAssignIsReleased) {
   const Balance b = balance_of([] {
     z3::context ctx;
