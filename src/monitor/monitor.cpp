@@ -5,12 +5,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 
 #include "fretish/expr.hpp"
 
 namespace uabt::monitor {
 
 namespace {
+
+// A requirement's parts, in the order the monitor compiles them and reads their inputs.
+constexpr const char* kPartNames[] = {"scope", "condition", "response", "stop condition", "trap"};
+constexpr std::size_t kParts = std::size(kPartNames);
 
 bool contains(const std::string& text, const char* word) {
   return text.find(word) != std::string::npos;
@@ -146,8 +151,8 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
     mode = r.scope->condition ? r.scope->condition : fretish::make_identifier(r.scope->mode);
   const fretish::ExprPtr parts[] = {mode, r.folded_condition(), r.response, r.timing.stop_condition,
                                     r.judged};
-  const char* part_names[] = {"scope", "condition", "response", "stop condition", "trap"};
-  for (std::size_t i = 0; i < 5; ++i) {
+  static_assert(std::size(parts) == kParts);
+  for (std::size_t i = 0; i < kParts; ++i) {
     if (!parts[i]) {
       m->parts_.emplace_back();
       continue;
@@ -156,7 +161,7 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
     auto compiled =
         CompiledExpression::compile(*parts[i], resolve, error, i == 0 ? Field::mode : Field::other);
     if (!compiled) {
-      reason = std::string(part_names[i]) + ": " + error;
+      reason = std::string(kPartNames[i]) + ": " + error;
       return nullptr;
     }
     for (int v : compiled->variables()) {
@@ -167,7 +172,7 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
     m->parts_.push_back(std::move(compiled));
   }
   bool temporal = false;
-  for (std::size_t i = 1; i < 5; ++i)
+  for (std::size_t i = 1; i < kParts; ++i)
     temporal = temporal || (m->parts_[i] && m->parts_[i]->has_temporal_functions());
   if (temporal)
     m->start_.emplace(m->start_formula_,
@@ -192,19 +197,18 @@ std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::R
 
 bool RequirementMonitor::step(const std::vector<Val>& frame) {
   if (failed()) return holds_;
-  bool inputs[5] = {false, false, false, false, false};
-  static const char* part_names[] = {"scope", "condition", "response", "stop condition", "trap"};
-  for (std::size_t i = 0; i < 5; ++i) {
+  bool inputs[kParts] = {};
+  for (std::size_t i = 0; i < kParts; ++i) {
     if (i == 1 && start_) {
       const bool left = start_->step(inputs);  // reads the mode, input 0
-      for (std::size_t j = 1; j < 5; ++j)
+      for (std::size_t j = 1; j < kParts; ++j)
         if (parts_[j]) parts_[j]->set_scope_start(left);
     }
     if (!parts_[i]) continue;
     std::string error;
     inputs[i] = parts_[i]->evaluate_bool(frame, error);
     if (!error.empty()) {
-      error_ = "at tick " + std::to_string(tick_) + ", the " + part_names[i] + ": " + error;
+      error_ = "at tick " + std::to_string(tick_) + ", the " + kPartNames[i] + ": " + error;
       return holds_;
     }
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <optional>
 
@@ -290,7 +291,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     if (!c.shape) p.unsupported = c.reason;
     p.exprs.assign(std::begin(parts), std::end(parts));
     // Each part compiles as the monitor compiles it (its errors are the monitor's).
-    for (std::size_t k = 0; k < 5 && p.unsupported.empty(); ++k) {
+    for (std::size_t k = 0; k < std::size(parts) && p.unsupported.empty(); ++k) {
       if (!parts[k]) continue;
       std::string error;
       if (!monitor::CompiledExpression::compile(
