@@ -150,7 +150,7 @@ std::string enumeration(const std::string& name, const std::vector<const char*>&
   return out + pad + "  </xs:restriction>\n" + pad + "</xs:simpleType>\n";
 }
 
-// uabt's <Adaptable ID="…" selection="…" policy="…"/> (DESIGN §11).
+// uabt's <Adaptable ID="…" selection="…" policy="…"/> (ARCHITECTURE §11).
 std::string adaptable_type() {
   return "  <xs:complexType name=\"AdaptableType\">\n"
          "    <xs:attribute name=\"ID\" type=\"xs:string\" use=\"required\"/>\n"

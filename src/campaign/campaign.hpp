@@ -1,5 +1,5 @@
 #pragma once
-// The test campaign of a mission (DESIGN §13): the targets a testbed run should exercise
+// The test campaign of a mission (ARCHITECTURE §13): the targets a testbed run should exercise
 // (decision, MC/DC, boundary, guarantee), scenarios in the `uabt run` format that reach them, each
 // replayed on the runtime, and what a set of runs covered.
 #include <cstdint>

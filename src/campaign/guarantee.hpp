@@ -1,6 +1,6 @@
 #pragma once
-// Guarantee targets of a campaign (DESIGN §13): FLIP-style obligations of every guarantee with
-// a trigger, solved by the prove engines over world.json and checked by the runtime monitor.
+// Guarantee targets of a campaign (ARCHITECTURE §13): FLIP-style obligations of every guarantee
+// with a trigger, solved by the prove engines over world.json and checked by the runtime monitor.
 #include <map>
 #include <optional>
 #include <set>

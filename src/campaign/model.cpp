@@ -1,5 +1,5 @@
 // The targets of a campaign, enumerated exactly over the coverage stage's space: discrete
-// variables by value, real variables by the cells their guards' boundaries cut (DESIGN §5).
+// variables by value, real variables by the cells their guards' boundaries cut (ARCHITECTURE §5).
 #include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // What a set of runs visited of each node's space: the cells, and the exact share of the
-// domain they hold, measured as the coverage stage measures shares (DESIGN §5).
+// domain they hold, measured as the coverage stage measures shares (ARCHITECTURE §5).
 #include <algorithm>
 #include <map>
 #include <set>

@@ -1,5 +1,5 @@
 #pragma once
-// A campaign scenario played in world.json's world (DESIGN §13): one deterministic resolution
+// A campaign scenario played in world.json's world (ARCHITECTURE §13): one deterministic resolution
 // of the world model, so that a replay does not show what the contracts rule out.
 #include <nlohmann/json.hpp>
 

@@ -72,7 +72,7 @@ void register_gate(CLI::App& app, int& exit_code) {
         running ? (std::filesystem::path(args->out) / "merged").generic_string() : args->mission;
     if (!args->selection.empty())
       options.proof_reporting.run_options = "--selection " + args->selection;
-    // A mission with guarantees passes only when each one is proved (DESIGN §10).
+    // A mission with guarantees passes only when each one is proved (ARCHITECTURE §10).
     gate::Outcome outcome =
         running ? gate::run_uplink_gate(*running, std::move(*mission), options, tool_version())
                 : gate::run_gate(std::move(*mission), options, tool_version());

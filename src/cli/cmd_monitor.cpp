@@ -25,7 +25,7 @@ std::optional<std::string> read_or_finding(const fs::path& path, std::vector<Fin
 
 }  // namespace
 
-// Checks a recorded trace against FRET requirements (DESIGN §10). Exit 0 when every guarantee
+// Checks a recorded trace against FRET requirements (ARCHITECTURE §10). Exit 0 when every guarantee
 // held and everything was monitored; 1 when one was violated or could not be monitored, or an
 // input has errors; 2 for a bad command line or a requirements file with nothing to monitor.
 void register_monitor(CLI::App& app, int& exit_code) {

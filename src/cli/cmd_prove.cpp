@@ -40,7 +40,7 @@ std::string proof_extent(const prove::Result& r, const prove::Answer& a) {
 
 }  // namespace
 
-// Model checking (DESIGN §10): every guarantee over every run of the compiled mission in the
+// Model checking (ARCHITECTURE §10): every guarantee over every run of the compiled mission in the
 // world model. Exit 0 when every guarantee is proved, 1 otherwise (violated, bounded, not
 // checked, or the mission does not compile), 2 on a bad command line or world.json.
 void register_prove(CLI::App& app, int& exit_code) {

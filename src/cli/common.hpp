@@ -12,7 +12,7 @@
 
 namespace uabt::cli {
 
-// DESIGN §7 exit codes.
+// ARCHITECTURE §7 exit codes.
 inline constexpr int kExitPass = 0;
 inline constexpr int kExitFail = 1;
 inline constexpr int kExitUsage = 2;

@@ -24,7 +24,7 @@ struct Options {
   int bt_format = 4;  // 3: refuse guards that need ScriptCondition
 };
 
-// Where a generated node came from: requirement, atom and source line (DESIGN §4).
+// Where a generated node came from: requirement, atom and source line (ARCHITECTURE §4).
 struct TraceEntry {
   std::string tree_id;
   std::string node_path;    // e.g. navigation/Fallback[0]/Sequence[1]/Inverter[0]/OnDust[0]

@@ -1,4 +1,4 @@
-// Translation validation of a compiled tree against its mission (DESIGN §6).
+// Translation validation of a compiled tree against its mission (ARCHITECTURE §6).
 #include "conform/conform.hpp"
 
 #include <set>

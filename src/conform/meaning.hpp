@@ -59,7 +59,7 @@ struct SelectionMeaning {
 
 // Proves with Z3 that the selection tree `tree` of `adaptable` selects, in every state of the
 // domain, the alternative of the first requirement whose guard holds (nothing — the subtree
-// fails — when none holds): DESIGN §6's conformance by meaning, whatever the tree's shape.
+// fails — when none holds): ARCHITECTURE §6's conformance by meaning, whatever the tree's shape.
 SelectionMeaning prove_selection_meaning(const Context& ctx, Prover& prover,
                                          const std::string& adaptable, const bt::TreeDef& tree);
 

@@ -425,7 +425,7 @@ class SelectionCheck {
 namespace {
 
 // A selection tree of another shape than Fig. 4: it conforms when its one-tick meaning equals
-// the requirements' (DESIGN §6); the shape findings then only describe its style. When its
+// the requirements' (ARCHITECTURE §6); the shape findings then only describe its style. When its
 // meaning cannot be read, the shape findings stand and a Fig. 4-like tree gets the per-branch
 // checks. Returns false in that case.
 bool check_by_meaning(Context& ctx, Prover& prover, const std::string& adaptable,

@@ -64,7 +64,7 @@ class Classifier {
                       "probability",
                   at(r_, r_.probability->range));
     }
-    // Not meant as a selection requirement: a mission property (DESIGN §10).
+    // Not meant as a selection requirement: a mission property (ARCHITECTURE §10).
     if (!mentions_selected_alt()) return false;
     if (!r_.scope) {
       unsupported(

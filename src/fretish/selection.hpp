@@ -7,7 +7,7 @@
 
 namespace uabt::fretish {
 
-// A requirement that chooses an alternative of an adaptable node (DESIGN §3):
+// A requirement that chooses an alternative of an adaptable node (ARCHITECTURE §3):
 // "In <adaptable> [if <guard>] Mission shall [immediately] satisfy selected_alt = <alt>".
 struct SelectionRequirement {
   std::string id;
@@ -22,7 +22,7 @@ struct SelectionRequirement {
 
 struct Classification {
   std::vector<SelectionRequirement> selections;  // file order
-  std::vector<Requirement> properties;           // mission properties (DESIGN §10), file order
+  std::vector<Requirement> properties;  // mission properties (ARCHITECTURE §10), file order
 };
 
 // Classifies parsed requirements. A requirement that reads `selected_alt` but is outside the

@@ -1,5 +1,5 @@
 #pragma once
-// The mission's guarantees as the contract of the mission (DESIGN §11): an uplink may change
+// The mission's guarantees as the contract of the mission (ARCHITECTURE §11): an uplink may change
 // what they say only explicitly.
 #include "gate/gate.hpp"
 #include "load/mission.hpp"

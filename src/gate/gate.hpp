@@ -47,7 +47,7 @@ struct Outcome {
   bool passed() const { return report.passed(); }
 };
 
-// The gate's one admission decision (DESIGN §12), the same for `gate`, `gate --uplink`,
+// The gate's one admission decision (ARCHITECTURE §12), the same for `gate`, `gate --uplink`,
 // `run --uplink` and a scenario's uplink event: every check of check_mission, then, when they
 // pass, every guarantee proved on the compiled tree in the mission's world.json (a failed
 // check leaves the proofs "not checked" in the report).
@@ -64,7 +64,7 @@ Outcome check_mission(load::Mission mission, const Options& options,
 // about the tree point there. Call after adding findings; nothing when the outcome passes.
 void keep_rejected_candidate(Outcome& outcome);
 
-// The test campaign of a gated mission (DESIGN §13), for the testbed: built when the gate
+// The test campaign of a gated mission (ARCHITECTURE §13), for the testbed: built when the gate
 // passed, with one more scenario per behaviour change of an uplink (report.uplink), and
 // summarised in report.campaign with its scenarios under `directory` (as the report names
 // it). Information only: it adds no finding and never changes the verdict.

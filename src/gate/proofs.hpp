@@ -5,7 +5,7 @@
 
 namespace uabt::gate {
 
-// The gate's proof step (DESIGN §10): when the mission states guarantees and the gate has a
+// The gate's proof step (ARCHITECTURE §10): when the mission states guarantees and the gate has a
 // compiled tree, proves them on it and adds the findings (and the `prove` stage) to the
 // outcome's report. A world.json or model error is itself an error finding. The report's
 // Proofs section gets every verdict and counterexample, named as `reporting` says.

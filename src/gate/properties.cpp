@@ -65,7 +65,7 @@ monitor::Observables mission_observables(const load::Mission& m) {
     for (const std::string& literal : v.enum_values) o.literals.insert(literal);
   }
   // Nodes of the run: the mission's trees and the alternatives a requirement selects (the
-  // compiler copies only those). A label several nodes share means any of them (DESIGN §12).
+  // compiler copies only those). A label several nodes share means any of them (ARCHITECTURE §12).
   std::set<std::string> labels, leaves;
   for (const bt::TreeDef& t : m.tree.trees) visit(t.root, labels, leaves);
   std::map<std::string, const load::Alternative*> only_unselected, unselected_leaves;

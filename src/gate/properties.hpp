@@ -7,7 +7,7 @@
 
 namespace uabt::gate {
 
-// The observables a run of the mission has (DESIGN §10): domain variables, condition leaves,
+// The observables a run of the mission has (ARCHITECTURE §10): domain variables, condition leaves,
 // `<node>.success/.failure/.running` for every node of the mission and of the alternatives a
 // requirement selects (by `name` or by ID; a label several nodes share means any of them),
 // `<adaptable>` and `<adaptable>.selected`. A label only an unselected alternative has (one an

@@ -6,7 +6,7 @@
 
 namespace uabt::load {
 
-// Where a mission's files are. uabt's own layout (DESIGN §2) or the paper's replication
+// Where a mission's files are. uabt's own layout (ARCHITECTURE §2) or the paper's replication
 // package as it is (mission/, resource/<adaptable>/<alt>/<alt>.xml).
 struct AlternativeFile {
   std::string adaptable;

@@ -58,7 +58,7 @@ std::optional<std::string> read_or_report(const fs::path& path, const std::strin
   return text;
 }
 
-// policy="unique|first" (DESIGN §11); one node id, one policy.
+// policy="unique|first" (ARCHITECTURE §11); one node id, one policy.
 void check_policy(const bt::Node& node, AdaptableSite& site, const std::vector<AdaptableSite>& seen,
                   std::vector<Finding>& findings) {
   if (const std::string* policy = node.attribute("policy")) {
@@ -388,7 +388,7 @@ void report_package_strays(Mission& m, const fs::path& package) {
   report_stray_alternatives(m, package / "alternatives");
 }
 
-// An uplink package (DESIGN §2): requirements.fret, domain.fret and alternatives/, each
+// An uplink package (ARCHITECTURE §2): requirements.fret, domain.fret and alternatives/, each
 // optional, merged onto the mission as it stands. Inside the mission (uplinks/<name>/) or
 // anywhere else: its files are named relative to the mission directory like every other.
 void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& read_options) {

@@ -19,7 +19,7 @@ struct AdaptableSite {
   std::string id;
   std::string tree_id;  // the <BehaviorTree> that holds it
   SourceLocation location;
-  // DMN hit policy (DESIGN §11): "unique" (default: an overlap is an error) or "first" (an
+  // DMN hit policy (ARCHITECTURE §11): "unique" (default: an overlap is an error) or "first" (an
   // overlap is a note, priority decides). Never written to the compiled tree.
   std::string policy = "unique";
   // selection="sequence|reactive|optimized": how this node's selection is compiled (the
@@ -27,7 +27,7 @@ struct AdaptableSite {
   std::string selection;
 };
 
-// Where an uplink put one requirement (or what it removed), and by which rule (DESIGN §11).
+// Where an uplink put one requirement (or what it removed), and by which rule (ARCHITECTURE §11).
 struct UplinkMerge {
   std::string package;      // displayed path of the uplink package
   std::string requirement;  // requirement id
@@ -42,7 +42,7 @@ struct UplinkMerge {
   int priority = 0, of = 0;
 };
 
-// uplink.json's consent that a guarantee of the mission may stop holding (DESIGN §11):
+// uplink.json's consent that a guarantee of the mission may stop holding (ARCHITECTURE §11):
 // "retire": {"HammerPower": "reason"} or "weaken": {"LandSoon": "reason"}.
 struct GuaranteeConsent {
   std::string package;      // displayed path of the uplink package
@@ -76,8 +76,9 @@ struct Mission {
   std::string requirements_file;                          // displayed path
   std::vector<fretish::Requirement> requirements;         // every parsed requirement
   std::vector<fretish::SelectionRequirement> selections;  // the selection subset, file order
-  std::vector<fretish::Requirement> properties;  // mission properties (DESIGN §10), file order
-  fretish::Domain domain;                        // declared + inferred booleans
+  // Mission properties (ARCHITECTURE §10), in file order.
+  std::vector<fretish::Requirement> properties;
+  fretish::Domain domain;  // declared + inferred booleans
 
   std::optional<std::vector<bt::NodeModel>> nodes;  // nodes.xml, when present
   std::vector<std::string> uplinks;        // uplink packages merged on top, in order (displayed)
@@ -93,7 +94,7 @@ struct Mission {
   std::set<std::string> undeclared;  // names reported as ref-undeclared: never inferred
   // Adaptable nodes whose guard checks a broken input makes meaningless, each with the reason
   // ("requirements.fret:3 does not parse"): verify reports each once as not verified instead
-  // of findings that would pretend to know (DESIGN §7: one mistake, one finding).
+  // of findings that would pretend to know (ARCHITECTURE §7: one mistake, one finding).
   std::map<std::string, std::string> not_verified;
   // Alternatives whose file exists but could not be read ("adaptable/name" → displayed path).
   std::map<std::string, std::string> unreadable_alternatives;
@@ -113,7 +114,7 @@ struct Mission {
 
 struct LoadOptions {
   std::optional<std::filesystem::path> nodes_file;  // --nodes
-  // Uplink packages merged onto the mission in order (DESIGN §11). This is the one merge that
+  // Uplink packages merged onto the mission in order (ARCHITECTURE §11). This is the one merge that
   // `gate --uplink`, `diff --uplink` and `run` share: requirements go where the package's
   // uplink.json places them, else a new id goes last before the default and an existing id
   // is replaced in place; uplink.json may remove requirements; domain declarations and
@@ -122,8 +123,8 @@ struct LoadOptions {
   std::vector<std::filesystem::path> uplinks;
 };
 
-// Loads a mission directory (DESIGN §2, or the replication package's layout). Never throws for
-// bad content: problems become findings. Returns nullopt only when `dir` is not a directory.
+// Loads a mission directory (ARCHITECTURE §2, or the replication package's layout). Never throws
+// for bad content: problems become findings. Returns nullopt only when `dir` is not a directory.
 std::optional<Mission> load_mission(const std::filesystem::path& dir, const LoadOptions& options,
                                     std::string& error);
 

@@ -11,7 +11,7 @@ namespace uabt::load {
 // the whole expression): these are condition leaves of the robot.
 std::vector<const fretish::Expr*> boolean_atoms(const fretish::Expr& e);
 
-// DESIGN §3: an undeclared identifier used as a condition is a boolean. Adds such identifiers
+// ARCHITECTURE §3: an undeclared identifier used as a condition is a boolean. Adds such identifiers
 // to the domain (declared = false) so that every later stage sees one set of variables.
 void infer_condition_variables(Mission& m);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The requirement half of an uplink merge (DESIGN §11): the package's optional uplink.json,
+// The requirement half of an uplink merge (ARCHITECTURE §11): the package's optional uplink.json,
 // placement and removal, and the record of where each requirement went.
 #include <filesystem>
 #include <string>

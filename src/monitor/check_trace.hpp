@@ -26,7 +26,7 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
                         const fretish::Domain& domain, const Trace& trace,
                         const std::string& trace_file, std::vector<Finding>& findings);
 
-// DESIGN §10's JSON and a text summary.
+// ARCHITECTURE §10's JSON and a text summary.
 std::string trace_report_json(const TraceReport& report);
 std::string trace_report_text(const TraceReport& report);
 

@@ -10,7 +10,7 @@
 
 namespace uabt::monitor {
 
-// What a property may read, with its type (DESIGN §10 observables).
+// What a property may read, with its type (ARCHITECTURE §10 observables).
 struct Observables {
   enum class Type { boolean, number, name };
   std::map<std::string, Type> variables;

@@ -50,7 +50,7 @@ struct Trace {
   bool records_selections = false;  // a "selection" or "select" somewhere
 };
 
-// A recorded trace (DESIGN §10): JSON lines {"tick": t, "state": {"name": value, …}}, one a
+// A recorded trace (ARCHITECTURE §10): JSON lines {"tick": t, "state": {"name": value, …}}, one a
 // tick, ticks consecutive. A line sets the values it lists; the others keep their value. A
 // line may also carry "select": {"<adaptable>": [{"alternative": "a", "read": {…}, "after":
 // "Req1"}]}, the selections made in that tick; a line {"selection": {"<adaptable>":

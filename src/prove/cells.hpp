@@ -19,7 +19,7 @@ struct Atom;
 
 // An atom that compares a variable x of the cut with the mission's own state (variables the
 // mission writes, whose value is known in every state): `x op -(Σ terms·m + b)`, up to the
-// direction of `op`. Its breakpoint depends on the state, so it is computed there (DESIGN
+// direction of `op`. Its breakpoint depends on the state, so it is computed there (ARCHITECTURE
 // §10.1): when the environment chooses x, from the values the mission's variables have then.
 struct MixedAtom {
   std::vector<std::pair<std::string, verify::detail::Fraction>> terms;
@@ -29,7 +29,7 @@ struct MixedAtom {
   std::string where;  // "the atom `battery >= reserve` (requirements.fret:4:1)"
 };
 
-// Where the atoms that read a numeric environment variable cut its range (DESIGN §10.1).
+// Where the atoms that read a numeric environment variable cut its range (ARCHITECTURE §10.1).
 // Inside one cell (a breakpoint, or an open interval between two) every atom `a·x + b op c`
 // has one truth value, so the explicit engine branches over one value per cell instead of
 // every value. An atom `a·x + Σ b·m op c` whose other variables m are the mission's own state

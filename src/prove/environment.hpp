@@ -16,7 +16,7 @@ namespace uabt::prove {
 
 struct Model;
 
-// The environment of one tick, chosen on demand (DESIGN §10.1): every relevant environment
+// The environment of one tick, chosen on demand (ARCHITECTURE §10.1): every relevant environment
 // variable is pending when the tick starts, and gets its value when the tick, an effect or a
 // monitor first reads it; the value then stays for the rest of the tick. Each value offered
 // keeps the tick's state assumptions (the domain's `assume`s, and on the first tick

@@ -26,14 +26,15 @@ struct StateVar {
   std::vector<runtime::ScriptValue> values;
   bool env = true;       // no action writes it: the environment may change it every tick
   bool relevant = true;  // something reads it (else it keeps its first value)
-  bool cells = false;    // `values` are one per cell of its range (DESIGN §10.1), not every value
+  // `values` are one per cell of its range (ARCHITECTURE §10.1), not every value.
+  bool cells = false;
   // One place in the tree reads it (a condition leaf, or a script that reads no other
   // environment variable), and nothing re-ticks the tree within a tick: once that place has
   // read it, the rest of the tick cannot read it again (unless a monitor or an assumption does).
   bool read_once = false;
   runtime::SlotId slot = runtime::kNoSlot;
   int frame = -1;  // its monitor::Variables slot
-  // An entry an output port `{key}` writes (DESIGN §10): its values are those the action may
+  // An entry an output port `{key}` writes (ARCHITECTURE §10): its values are those the action may
   // write. `unset_first`: no variable of the domain, so nothing is in it before the first write
   // (a read before then is BT.CPP's error).
   bool port_written = false;
@@ -41,8 +42,8 @@ struct StateVar {
   bool unset_first = false;
 };
 
-// A numeric environment variable whose cells depend on the mission's own state (DESIGN §10.1):
-// some atom compares it with variables the mission writes (`battery >= reserve`). The
+// A numeric environment variable whose cells depend on the mission's own state (ARCHITECTURE
+// §10.1): some atom compares it with variables the mission writes (`battery >= reserve`). The
 // environment cuts it when it chooses it, at `breaks` and at each atom's breakpoint in the
 // state at hand.
 struct StateCut {

@@ -11,7 +11,7 @@
 
 namespace uabt::prove {
 
-// What a mission property may read at tick t (DESIGN §10), taken from a running engine:
+// What a mission property may read at tick t (ARCHITECTURE §10), taken from a running engine:
 // state variables (the root blackboard), `<node>.success|failure|running` (the status the node
 // returned in tick t), `<adaptable>.selected` (the alternative whose SubTree the selection
 // ticked last in tick t, else `none`) and the mode `<adaptable>` (its SubTree was ticked).

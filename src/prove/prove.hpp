@@ -14,7 +14,7 @@
 
 namespace uabt::prove {
 
-// Per guarantee (DESIGN §10): proved for every depth, violated with a counterexample, bounded
+// Per guarantee (ARCHITECTURE §10): proved for every depth, violated with a counterexample, bounded
 // (no violation up to the depth explored, nothing proved), vacuous (the world model leaves no
 // run, or runs that cannot go on: Result::vacuity says why), or not checked (why in `reason`).
 enum class Verdict { proved, violated, bounded, vacuous, unsupported };
@@ -30,8 +30,8 @@ struct TickRow {
 };
 
 struct Counterexample {
-  std::uint64_t tick = 0;     // the tick at which the property is violated
-  std::string scenario;       // DESIGN §8 scenario JSON that replays it (`uabt run --scenario`)
+  std::uint64_t tick = 0;  // the tick at which the property is violated
+  std::string scenario;    // ARCHITECTURE §8 scenario JSON that replays it (`uabt run --scenario`)
   std::vector<TickRow> rows;  // ticks 1..tick
 };
 
@@ -90,7 +90,7 @@ class ProveError : public std::runtime_error {
 // world `world` allows. Every counterexample is replayed on the runtime's simulated world
 // before it is returned.
 // `auto` takes the explicit-state engine whenever it can cut every environment variable into
-// finitely many cells (DESIGN §10.1), else the symbolic one, and says why.
+// finitely many cells (ARCHITECTURE §10.1), else the symbolic one, and says why.
 Result prove(const load::Mission& mission, const bt::Document& compiled, const WorldModel& world,
              const Options& options);
 

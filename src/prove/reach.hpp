@@ -1,5 +1,5 @@
 #pragma once
-// Reaching a condition with the prove engines (DESIGN §13): a state the test campaign wants a
+// Reaching a condition with the prove engines (ARCHITECTURE §13): a state the test campaign wants a
 // run to reach is posed as a trap, "the robot shall always satisfy !(condition)" in the scope of
 // the guarantee it is about, and proved like any guarantee. A violated trap is reached: its
 // counterexample (replayed on the runtime before it is returned) is a scenario that gets

@@ -21,7 +21,7 @@ struct Mission;
 
 namespace uabt::prove {
 
-// What an action may do (world.json, DESIGN §10): run for `min_ticks`..`max_ticks` ticks
+// What an action may do (world.json, ARCHITECTURE §10): run for `min_ticks`..`max_ticks` ticks
 // (RUNNING before), end with one of `results`, and then run its effect script.
 struct ActionContract {
   std::string name;  // as world.json keys it: Drill, IsArmInPosition(function=drilling)
@@ -66,7 +66,7 @@ class WorldError : public std::runtime_error {
   std::string check;  // the finding it makes in the gate's report
 };
 
-// With `mission`, world.json is also checked against it as scenarios are (DESIGN §8): every
+// With `mission`, world.json is also checked against it as scenarios are (ARCHITECTURE §8): every
 // action is a leaf of the mission, every name an effect writes is a domain variable or a
 // condition, and every value an effect writes fits its declaration ("did you mean" for a
 // likely typo); the error is at the name or the value.

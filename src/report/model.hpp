@@ -11,9 +11,9 @@
 
 namespace uabt::report {
 
-// What `gate --uplink` adds to a report (DESIGN §11): the package, where the merge put each
+// What `gate --uplink` adds to a report (ARCHITECTURE §11): the package, where the merge put each
 // requirement, and the behaviour change from the running version to the merged one.
-// A guarantee whose statement an uplink changes (DESIGN §11: the guarantees are the mission's
+// A guarantee whose statement an uplink changes (ARCHITECTURE §11: the guarantees are the mission's
 // contract), with its status on the version on board and on the merged mission.
 struct ContractChange {
   std::string requirement;
@@ -36,7 +36,7 @@ struct UplinkChange {
   std::vector<ContractChange> contract;  // added, restated, weakened, removed, in that order
 };
 
-// What the gate says about the test campaign it wrote beside the reports (DESIGN §13):
+// What the gate says about the test campaign it wrote beside the reports (ARCHITECTURE §13):
 // information for the testbed, never part of the verdict.
 struct TestCampaign {
   std::string directory;  // where the scenarios are, relative to the report ("tests/")

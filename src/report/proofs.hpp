@@ -1,6 +1,6 @@
 #pragma once
-// What a report shows of `uabt prove` (DESIGN §10): every guarantee with its verdict and, for a
-// violated one, its counterexample as a tick-by-tick timeline. Filled by the prove stage; the
+// What a report shows of `uabt prove` (ARCHITECTURE §10): every guarantee with its verdict and, for
+// a violated one, its counterexample as a tick-by-tick timeline. Filled by the prove stage; the
 // report stage only draws it.
 #include <cstdint>
 #include <optional>

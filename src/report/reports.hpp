@@ -11,7 +11,7 @@ namespace uabt::report {
 // Every writer is deterministic: the same input gives the same bytes (no time, no absolute
 // path, stable order, fixed number formatting).
 
-// DESIGN §7's JSON: tool, version, mission, verdict, findings[], coverage[]; 2-space indent.
+// ARCHITECTURE §7's JSON: tool, version, mission, verdict, findings[], coverage[]; 2-space indent.
 std::string to_json(const ReportInput& input);
 
 // SARIF 2.1.0 for GitHub code scanning: one run, a rule per check of the catalogue (sorted by

@@ -1,5 +1,5 @@
 #pragma once
-// The "uplink" part of the gate's reports (`gate --uplink`, DESIGN §11): where the merge put
+// The "uplink" part of the gate's reports (`gate --uplink`, ARCHITECTURE §11): where the merge put
 // each requirement and the behaviour change, per adaptable node. Internal to the writers.
 #include <string>
 

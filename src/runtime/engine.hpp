@@ -122,7 +122,7 @@ struct EngineOptions {
   bool smart_selection = false;
 };
 
-// BehaviorTree.CPP 4.x tick engine over a bt::Document (DESIGN §8). Nodes live in flat
+// BehaviorTree.CPP 4.x tick engine over a bt::Document (ARCHITECTURE §8). Nodes live in flat
 // vectors and are addressed by NodeId; blackboard keys and scripts are resolved and compiled
 // once at instantiation, so a tick does no string lookups and no allocations.
 // Leaves that are not built in are delegated to a World.
@@ -197,7 +197,7 @@ class Engine {
   // instantiating the tree again. Observers stay. Not after a hot swap.
   void reset(World& world, const EngineState& built);
 
-  // Hot swap (DESIGN §8), between two ticks.
+  // Hot swap (ARCHITECTURE §8), between two ticks.
   // Registers or replaces the definition of `def.id` for later instantiations only.
   void define_tree(bt::TreeDef def);
   bool has_tree(std::string_view tree_id) const;

@@ -1,4 +1,4 @@
-// Which nodes of a running tree a property's `<node>.success|failure|running` reads (DESIGN
+// Which nodes of a running tree a property's `<node>.success|failure|running` reads (ARCHITECTURE
 // §10, §12): one rule for `uabt run`'s monitor and both `prove` engines.
 #pragma once
 #include <string>

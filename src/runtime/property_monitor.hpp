@@ -20,7 +20,7 @@ struct PropertyViolation {
   monitor::PropertyResult result;
 };
 
-// Monitors a mission's properties (DESIGN §10) on every tick of a run. Observables at tick t:
+// Monitors a mission's properties (ARCHITECTURE §10) on every tick of a run. Observables at tick t:
 //  - domain variables and conditions: the root blackboard after the tick (unset: false);
 //  - `<node>.success` / `.failure` / `.running`: what the node returned in the tick, where
 //    `<node>` is its name attribute, else its ID; nodes that share it: any of them

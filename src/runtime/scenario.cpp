@@ -1,4 +1,4 @@
-// Scenario JSON (DESIGN §8) → Scenario, with errors that point into the file.
+// Scenario JSON (ARCHITECTURE §8) → Scenario, with errors that point into the file.
 #include "runtime/scenario.hpp"
 
 #include <algorithm>

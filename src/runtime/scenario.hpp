@@ -43,7 +43,7 @@ struct ScenarioEvent {
   int index = 0;       // position in the file's "events" array
 };
 
-// A runtime scenario (DESIGN §8):
+// A runtime scenario (ARCHITECTURE §8):
 //   {"max_ticks": 2000,
 //    "initial": {"OnDust": true, "battery": 90, "terrain": "dust"},
 //    "actions": {"Drill": {"ticks": 30, "effects": {"IsDug": true}, "result": "success"}},

@@ -1,4 +1,4 @@
-// A scenario checked against the mission it drives (DESIGN §8): every state value against
+// A scenario checked against the mission it drives (ARCHITECTURE §8): every state value against
 // the domain's declaration (type, range, enum), every name against what the mission reads,
 // with "did you mean" for a likely typo.
 #pragma once

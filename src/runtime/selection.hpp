@@ -20,7 +20,7 @@ struct Selection {
 };
 
 // Recognises the compiler's selection subtrees in every style — a root named like its tree
-// (DESIGN §4, Fig. 4: a (Reactive)Fallback whose children are (Reactive)Sequences ending in a
+// (ARCHITECTURE §4, Fig. 4: a (Reactive)Fallback whose children are (Reactive)Sequences ending in a
 // SubTree; optimized: a decision whose leaves are named Sequences holding only the SubTree) —
 // and reports a Selection each time one of those SubTrees goes from IDLE to RUNNING (every
 // SubTree does when ticked, also if it completes at once). The one rule of which call selects

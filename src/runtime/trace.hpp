@@ -1,4 +1,4 @@
-// The manager's trace (DESIGN §8): JSON lines for tools, a short text summary for a terminal,
+// The manager's trace (ARCHITECTURE §8): JSON lines for tools, a short text summary for a terminal,
 // and the observer that adds every node status change and condition read at `--trace-level
 // nodes`.
 #pragma once

@@ -101,7 +101,7 @@ struct LeafLogEntry {
   NodeStatus status = NodeStatus::idle;
 };
 
-// The simulated robot of a scenario (DESIGN §8). Its state is the engine's root blackboard,
+// The simulated robot of a scenario (ARCHITECTURE §8). Its state is the engine's root blackboard,
 // so scripts (`battery < 20`, `terrain == 'rocks'`) see it and may change it.
 //
 // Which leaves are conditions, in this order:

@@ -224,7 +224,7 @@ class Checker {
                     owners[1]->name + "; compare it with one of them to say which");
       return invalid();
     }
-    if (expect.kind == Expect::boolean) {  // DESIGN §3: an undeclared condition is a boolean
+    if (expect.kind == Expect::boolean) {  // ARCHITECTURE §3: an undeclared condition is a boolean
       TypeInfo t{Sort::boolean};
       t.implicit_boolean = true;
       return t;

@@ -35,7 +35,7 @@ struct Dimension {
 };
 
 // The state space of one adaptable node, enumerated exactly: discrete variables by value, real
-// variables by the cells their atoms' boundaries cut them into (DESIGN §5). Discrete
+// variables by the cells their atoms' boundaries cut them into (ARCHITECTURE §5). Discrete
 // dimensions come first (fastest digits), so the states of one combination of real cells are
 // one run of indices and a measure is a weighted sum of run counts.
 class Space {

@@ -51,7 +51,7 @@ bool build_guards(detail::Node& node, const std::vector<const fretish::Selection
   return true;
 }
 
-// A space that cannot be enumerated still lists its regions (DESIGN §5): the gap as the
+// A space that cannot be enumerated still lists its regions (ARCHITECTURE §5): the gap as the
 // solver's cubes, each overlap as the conjunction of the two guards.
 void regions_from_findings(Coverage& cov, const std::vector<Finding>& findings,
                            const std::vector<const fretish::SelectionRequirement*>& reqs) {

@@ -42,7 +42,7 @@ struct Region {
 };
 
 // The selected alternative drawn over at most two variables, one panel per value of a third
-// (DESIGN §5 coverage picture). Coordinates are the variables' own values; categorical axes
+// (ARCHITECTURE §5 coverage picture). Coordinates are the variables' own values; categorical axes
 // put value k at [k, k+1].
 struct MapShape {
   std::vector<std::pair<double, double>> points;  // polygon (>= 3), segment (2) or point (1)
@@ -78,7 +78,7 @@ struct CoverageMap {
   bool other_variables = false;  // variables off the map: a shape may hold several outcomes
 };
 
-// Terrain coverage of one adaptable node (DESIGN §5): how the domain's state space is split
+// Terrain coverage of one adaptable node (ARCHITECTURE §5): how the domain's state space is split
 // among the alternatives. `counted`: a discrete space, counted exactly (states). `measured`:
 // the measure of every part is exact (counted, or real variables measured exactly); otherwise
 // `not_measured_reason` says why, and `bounded` tells whether the *_lower/_upper shares give
@@ -140,7 +140,7 @@ struct Result {
   Statistics statistics;
 };
 
-// Guard verification of every adaptable node of a loaded mission (DESIGN §5).
+// Guard verification of every adaptable node of a loaded mission (ARCHITECTURE §5).
 Result verify_mission(const load::Mission& mission, const Options& options);
 
 }  // namespace uabt::verify

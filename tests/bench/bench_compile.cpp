@@ -1,4 +1,4 @@
-// Benchmarks of loading and compiling a large mission (DESIGN §4): 100 adaptable nodes x 10
+// Benchmarks of loading and compiling a large mission (ARCHITECTURE §4): 100 adaptable nodes x 10
 // alternatives x 100 BT nodes per alternative = 100,000 nodes in the alternatives' trees.
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// Cost of the FRETISH monitors (DESIGN §10): nanoseconds per requirement per tick for each
+// Cost of the FRETISH monitors (ARCHITECTURE §10): nanoseconds per requirement per tick for each
 // timing, with durations from 1 to 100,000 ticks (the cost must not depend on N), and a
 // 10,000-tick trace checked against 200 requirements of every scope, condition and timing.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Model checking (DESIGN §10) on the peers' benchmark families (prove_families.hpp): the
+// Model checking (ARCHITECTURE §10) on the peers' benchmark families (prove_families.hpp): the
 // whole `uabt prove` after the gate, per size and engine. A run whose verdicts or violation
 // ticks differ from the family's known answers fails (SkipWithError); an engine this build
 // does not have is skipped with the reason.

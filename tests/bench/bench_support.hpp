@@ -45,7 +45,7 @@ struct NaiveAnswers {
   int overlaps = 0, gaps = 0, shadowed = 0, unsatisfiable = 0, inconsistent = 0;
 };
 
-// Every question of DESIGN §5 asked of a fresh solver loaded with D: consistency, each guard
+// Every question of ARCHITECTURE §5 asked of a fresh solver loaded with D: consistency, each guard
 // satisfiable, each guard shadowed by the disjunction of those before it, every pair for
 // overlap, the gap.
 NaiveAnswers naive_verify(const load::Mission& mission, NaiveSolver solver);

@@ -1,4 +1,4 @@
-// Throughput of the tick engine (DESIGN §8) on a 10,002-node tree of built-in nodes whose
+// Throughput of the tick engine (ARCHITECTURE §8) on a 10,002-node tree of built-in nodes whose
 // every tick visits 9,002 of them: controls, a decorator, scripts reading and writing the
 // blackboard, and a robot condition answered by the simulated world.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Benchmarks of guard verification (DESIGN §5): the incremental verifier against a naive
+// Benchmarks of guard verification (ARCHITECTURE §5): the incremental verifier against a naive
 // baseline that asks every question of a fresh solver, on synthetic missions whose answers are
 // known, and the whole gate on the shipped MSL mission.
 #include <benchmark/benchmark.h>

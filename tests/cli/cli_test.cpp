@@ -120,7 +120,8 @@ TEST(Cli, RunTheCuriosityStory) {
   EXPECT_NE(run.out.find("mission success"), std::string::npos);
 }
 
-// --- the uplink workflow (DESIGN §11) ---------------------------------------------------------
+// --- the uplink workflow (ARCHITECTURE §11)
+// ---------------------------------------------------------
 
 TEST(CliUplink, GateUplinkExitCodes) {
   uabt::testing::TempMission out({});

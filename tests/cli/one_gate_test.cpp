@@ -1,4 +1,4 @@
-// One gate everywhere (DESIGN §12): a package that `uabt gate --uplink` rejects is rejected
+// One gate everywhere (ARCHITECTURE §12): a package that `uabt gate --uplink` rejects is rejected
 // by every entry point that could admit it, for the same reason.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Every observable means the same in every selection style (DESIGN §12): each mission's
+// Every observable means the same in every selection style (ARCHITECTURE §12): each mission's
 // properties get the same verdicts from `uabt prove` and from `uabt run` on its scenarios
 // whether a selection is compiled as Fig. 4 or as an optimized decision. `optimized` chooses
 // the layout only; whether a selection is re-checked every tick is the node's own

@@ -2,7 +2,9 @@
 // repository: README.md, every other Markdown file (reports/ aside: it is generated) and the
 // `--help` of uabt and of every subcommand. A reference is a Markdown link, a path in backticks
 // whose first directory is one of the repository's (or `docs/`), a path in the help text, or a
-// "DESIGN §N" / "DESIGN.md" citation, a document the repository does not hold.
+// section citation. Code, tests and documents cite the architecture page as "ARCHITECTURE §N":
+// each must name a section ARCHITECTURE.md has, and "DESIGN §N" (a document the repository
+// does not hold) is never cited.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -68,13 +70,36 @@ bool resolves(const std::string& path, const fs::path& dir) {
   return fs::exists(dir / path, ec) || fs::exists(kRoot / path, ec);
 }
 
-// "DESIGN §8", "DESIGN.md §3", "DESIGN.md": a document outside the repository.
+// The section numbers ARCHITECTURE.md has: "## 10. Time" gives "10", "### 10.1 How" "10.1".
+const std::set<std::string>& architecture_sections() {
+  static const std::set<std::string> sections = [] {
+    std::set<std::string> out;
+    const std::string text = read(kRoot / "ARCHITECTURE.md");
+    static const std::regex heading(R"((^|\n)#{2,3} ([0-9]+(\.[0-9]+)*)\.? )");
+    for (std::sregex_iterator it(text.begin(), text.end(), heading), end; it != end; ++it)
+      out.insert((*it)[2].str());
+    return out;
+  }();
+  return sections;
+}
+
+// "ARCHITECTURE §10" must name a section of ARCHITECTURE.md; "DESIGN §8", "DESIGN.md §3" and
+// "DESIGN.md" name a document outside the repository.
 void design_citations(const std::string& text, const std::string& where,
                       std::vector<std::string>& dangling) {
   static const std::regex design(R"(DESIGN(\.md)?\s*§\s*[0-9]+(\.[0-9]+)*|DESIGN\.md)");
-  if (fs::exists(kRoot / "DESIGN.md")) return;
   for (std::sregex_iterator it(text.begin(), text.end(), design), end; it != end; ++it)
-    dangling.push_back(where + ": '" + it->str() + "' (the repository has no DESIGN.md)");
+    dangling.push_back(where + ": '" + it->str() +
+                       "' (the repository has no DESIGN.md; cite ARCHITECTURE §N)");
+  static const std::regex cited(R"(ARCHITECTURE(\.md)?\s*((§\s*[0-9]+(\.[0-9]+)*(,\s*)?)+))");
+  static const std::regex number(R"([0-9]+(\.[0-9]+)*)");
+  for (std::sregex_iterator it(text.begin(), text.end(), cited), end; it != end; ++it) {
+    const std::string sections = (*it)[2].str();
+    for (std::sregex_iterator n(sections.begin(), sections.end(), number); n != end; ++n)
+      if (!architecture_sections().contains(n->str()))
+        dangling.push_back(where + ": 'ARCHITECTURE §" + n->str() +
+                           "' (ARCHITECTURE.md has no such section)");
+  }
 }
 
 std::vector<std::string> dangling_in_markdown(const fs::path& file) {
@@ -161,14 +186,44 @@ TEST(DocReferences, EveryCommandHelpReferencesOnlyWhatExists) {
   EXPECT_TRUE(dangling.empty()) << "dangling references:\n" << joined(dangling);
 }
 
+// Every comment in the code and the tests cites only sections that exist.
+TEST(DocReferences, EverySourceFileCitesOnlySectionsThatExist) {
+  std::vector<std::string> dangling;
+  int files = 0;
+  for (const char* top : {"src", "tests", "grammar", "cmake"}) {
+    for (const auto& entry : fs::recursive_directory_iterator(kRoot / top)) {
+      if (!entry.is_regular_file() || entry.path().filename() == "references_test.cpp") continue;
+      const std::string ext = entry.path().extension().string();
+      if (ext != ".cpp" && ext != ".hpp" && ext != ".cmake" && ext != ".txt") continue;
+      ++files;
+      design_citations(read(entry.path()), fs::relative(entry.path(), kRoot).generic_string(),
+                       dangling);
+    }
+  }
+  design_citations(read(kRoot / "CMakeLists.txt"), "CMakeLists.txt", dangling);
+  ASSERT_GT(files, 100);
+  EXPECT_TRUE(dangling.empty()) << "dangling references:\n" << joined(dangling);
+}
+
 // The checker itself: it names what does not exist and passes what does.
 TEST(DocReferences, TheCheckerNamesEachDanglingReference) {
   const std::string help =
       "--scenario FILE  scenario JSON (DESIGN §8); see missions/README.md and docs/checks.md";
   const auto found = dangling_in_help(help, "help");
   ASSERT_EQ(found.size(), 2u) << joined(found);
-  EXPECT_EQ(found[0], "help: 'DESIGN §8' (the repository has no DESIGN.md)");
+  EXPECT_EQ(found[0], "help: 'DESIGN §8' (the repository has no DESIGN.md; cite ARCHITECTURE §N)");
   EXPECT_EQ(found[1], "help: 'docs/checks.md'");
+}
+
+TEST(DocReferences, TheCheckerKnowsTheArchitectureSections) {
+  std::vector<std::string> dangling;
+  design_citations("runs (ARCHITECTURE §8); cells (ARCHITECTURE §10.1); (ARCHITECTURE §10, §12)",
+                   "a.cpp", dangling);
+  EXPECT_TRUE(dangling.empty()) << joined(dangling);
+  design_citations("see ARCHITECTURE §31 and ARCHITECTURE §10.9", "b.cpp", dangling);
+  ASSERT_EQ(dangling.size(), 2u) << joined(dangling);
+  EXPECT_EQ(dangling[0], "b.cpp: 'ARCHITECTURE §31' (ARCHITECTURE.md has no such section)");
+  EXPECT_EQ(dangling[1], "b.cpp: 'ARCHITECTURE §10.9' (ARCHITECTURE.md has no such section)");
 }
 
 }  // namespace

@@ -145,8 +145,8 @@ TEST(FretishSelection, EveryOffendingFieldIsReported) {
     EXPECT_EQ(c.findings[i].message.rfind(fields[i], 0), 0u) << c.findings[i].message;
 }
 
-// Requirements that do not read `selected_alt` are mission properties (DESIGN §10): no finding,
-// kept in file order; only what has no meaning on a run is refused.
+// Requirements that do not read `selected_alt` are mission properties (ARCHITECTURE §10): no
+// finding, kept in file order; only what has no meaning on a run is refused.
 TEST(FretishSelection, OtherRequirementsAreMissionProperties) {
   fretish::ParseResult parsed = fretish::parse_requirements_file(
       "Req1: In navigation if OnDust Mission shall satisfy selected_alt = on_dust\n"

@@ -1,4 +1,4 @@
-// An uplink never weakens the mission's guarantees without saying so (DESIGN §11): the old
+// An uplink never weakens the mission's guarantees without saying so (ARCHITECTURE §11): the old
 // statement of every guarantee a package restates or removes is proved on the merged mission.
 #include <gtest/gtest.h>
 

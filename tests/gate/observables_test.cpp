@@ -1,4 +1,4 @@
-// What a property may read (DESIGN §10, §12): a label several nodes share means any of them —
+// What a property may read (ARCHITECTURE §10, §12): a label several nodes share means any of them —
 // in the mission and after an uplink merge — and a label whose last node an uplink retired is
 // a property-reference error that says so, at the property.
 #include <gtest/gtest.h>

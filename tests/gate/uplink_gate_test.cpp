@@ -1,4 +1,4 @@
-// `gate --uplink` (DESIGN §11): the merged mission gated, the behaviour change beside the
+// `gate --uplink` (ARCHITECTURE §11): the merged mission gated, the behaviour change beside the
 // verdict (state counts checked against brute force), the per-node hit policy, and the merged
 // mission written out gating to the same bytes.
 #include <gtest/gtest.h>

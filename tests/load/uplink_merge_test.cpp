@@ -1,4 +1,4 @@
-// The uplink merge (DESIGN §11): the one function behind `gate --uplink`, `diff --uplink` and
+// The uplink merge (ARCHITECTURE §11): the one function behind `gate --uplink`, `diff --uplink` and
 // `run`. Priority order after each rule, uplink.json's placements and removals, and its errors.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Mission properties monitored on every tick of a run (DESIGN §10): Curiosity's shipped
+// Mission properties monitored on every tick of a run (ARCHITECTURE §10): Curiosity's shipped
 // properties hold in its scenarios, and each violation is traced at its tick with the values
 // the property read.
 #include <gtest/gtest.h>

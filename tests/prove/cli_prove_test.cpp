@@ -249,7 +249,7 @@ TEST(ProveCli, BadWorldFileIsAUsageError) {
       << r.out;
 }
 
-// world.json follows the rules scenarios follow (DESIGN §8): every input error is exit 2 from
+// world.json follows the rules scenarios follow (ARCHITECTURE §8): every input error is exit 2 from
 // `prove` and a finding at its place in the gate, with "did you mean" for a likely typo.
 TEST(ProveCli, WorldFileIsCheckedAgainstTheMission) {
   struct Case {

@@ -1,4 +1,4 @@
-// The explicit engine's on-demand environment (DESIGN §10.1): values chosen when first read,
+// The explicit engine's on-demand environment (ARCHITECTURE §10.1): values chosen when first read,
 // numeric variables branched over the cells their atoms draw, and proofs that cannot be vacuous.
 #include <nlohmann/json.hpp>
 

@@ -125,7 +125,7 @@ TEST(Prove, EnvironmentRequirementsRestrictTheWorld) {
 }
 
 // A failing drill heats the bit and makes the percussive branch fail; the selection Fallback
-// then falls through to the default, which drills the hot bit (DESIGN §5's fall-through).
+// then falls through to the default, which drills the hot bit (ARCHITECTURE §5's fall-through).
 TEST(Prove, FallThroughToTheDefaultIsFound) {
   auto files = mission_files("sample_drilling");
   files["requirements.fret"] += "HardOnly: Environment shall always satisfy HardRock\n";

@@ -51,7 +51,7 @@ inline verify::Region boolean_region(bool dust, bool rocks, std::vector<std::str
   return r;
 }
 
-// The paper's MSL mission without domain or default (DESIGN §9): overlap and gap on
+// The paper's MSL mission without domain or default (ARCHITECTURE §9): overlap and gap on
 // `navigation`, an uncounted node `arm` over a real variable, a syntax error and a warning.
 inline report::ReportInput failing_input() {
   report::ReportInput input;

@@ -1,4 +1,4 @@
-// Property test: random trees over the DESIGN §8 node set, ticked with random leaf results,
+// Property test: random trees over the ARCHITECTURE §8 node set, ticked with random leaf results,
 // against invariants that BehaviorTree.CPP 4.10's tick semantics guarantee.
 #include <random>
 

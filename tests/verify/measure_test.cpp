@@ -1,4 +1,4 @@
-// Exact measure of real-valued guards (DESIGN §5): shares against hand-computed lengths and
+// Exact measure of real-valued guards (ARCHITECTURE §5): shares against hand-computed lengths and
 // areas, against brute force on integer versions of the same guards, and regions that contain
 // every witness the verifier reports.
 #include <gtest/gtest.h>

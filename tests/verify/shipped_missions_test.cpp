@@ -1,4 +1,4 @@
-// The shipped missions (DESIGN §9) as the gate sees them, loaded from disk.
+// The shipped missions (ARCHITECTURE §9) as the gate sees them, loaded from disk.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 
 namespace uabt::verify::tree {
 
-// Whole-tree static checks (DESIGN §13) over the mission tree and every alternative (an
+// Whole-tree static checks (ARCHITECTURE §13) over the mission tree and every alternative (an
 // uplink's included, once merged): each finding at the element or attribute it concerns, with
 // the path from its <BehaviorTree> as related locations. Linear in the size of the trees.
 std::vector<Finding> check_trees(const load::Mission& mission);
