@@ -171,13 +171,14 @@ std::set<std::string> PropertyMonitor::bind(const load::Mission& mission) {
   return literals;
 }
 
-void PropertyMonitor::on_status_change(NodeId node, NodeStatus, NodeStatus next) {
+void PropertyMonitor::on_node_ticked(NodeId node, NodeStatus result) {
   if (node >= seen_.size()) seen_.resize(node + 1, 0);
-  std::uint8_t& bits = seen_[node];
-  bits |= kTicked;
-  if (next == NodeStatus::success) bits |= kSuccess;
-  if (next == NodeStatus::failure) bits |= kFailure;
-  if (next == NodeStatus::running) bits |= kRunning;
+  // What the node returned last in the tick (a wake-up re-tick returns again); a node halted
+  // or reset without a tick returned nothing.
+  seen_[node] = kTicked | (result == NodeStatus::success   ? kSuccess
+                           : result == NodeStatus::failure ? kFailure
+                           : result == NodeStatus::running ? kRunning
+                                                           : 0);
 }
 
 void PropertyMonitor::select(const std::string& adaptable, const std::string& alternative,
@@ -216,11 +217,7 @@ monitor::Val PropertyMonitor::read(const std::string& key) {
 }
 
 std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
-  const auto bits = [&](NodeId n) -> std::uint8_t {
-    std::uint8_t b = n < seen_.size() ? seen_[n] : 0;
-    if (engine_.status(n) == NodeStatus::running) b |= kRunning | kTicked;
-    return b;
-  };
+  const auto bits = [&](NodeId n) -> std::uint8_t { return n < seen_.size() ? seen_[n] : 0; };
   for (const NodeObservable& o : nodes_) {
     std::uint8_t any = 0;
     for (NodeId n : o.nodes) any |= bits(n);
