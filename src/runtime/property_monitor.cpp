@@ -38,11 +38,19 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
 }
 
 void PropertyMonitor::bind_selections(const load::Mission& mission,
-                                      const std::set<std::string>& literals) {
-  if (!judge_)
+                                      const std::set<std::string>& literals,
+                                      std::optional<std::uint64_t> swapped_after) {
+  if (!judge_) {
     judge_.emplace(mission.selections, symbols_, literals);
-  else
-    judge_->add(mission.selections, literals);
+  } else {
+    // The merged version's requirements, as it states them, from the next tick on.
+    std::set<std::string> adaptables;
+    for (const load::AdaptableSite& site : mission.adaptables) adaptables.insert(site.id);
+    for (const fretish::SelectionRequirement& r : mission.selections)
+      adaptables.insert(r.adaptable);
+    for (const std::string& id : adaptables)
+      judge_->update(id, mission.selections, literals, swapped_after.value_or(0));
+  }
   selecting_.clear();
   for (const fretish::SelectionRequirement& r : mission.selections) {
     Selecting& s = selecting_[r.adaptable];
@@ -86,7 +94,7 @@ std::vector<PropertyViolation> PropertyMonitor::adopt(const load::Mission& missi
   for (std::size_t i : properties_->update(mission.properties, mission.domain.assumptions, literals,
                                            mission.domain.tick_seconds, last_tick))
     out.push_back({last_tick, properties_->result(i)});
-  bind_selections(mission, literals);
+  bind_selections(mission, literals, last_tick);
   return out;
 }
 

@@ -104,8 +104,10 @@ class PropertyMonitor : public Observer {
   // Binds every name `mission`'s properties and assumptions read to what the engine shows;
   // returns the vocabulary's literals (alternatives, enum values).
   std::set<std::string> bind(const load::Mission& mission);
-  // The selection requirements of `mission` (judge_, selecting_).
-  void bind_selections(const load::Mission& mission, const std::set<std::string>& literals);
+  // The selection requirements of `mission` (judge_, selecting_); `swapped_after`: the tick
+  // after which an uplink swapped `mission` in, whose requirements are judged from then on.
+  void bind_selections(const load::Mission& mission, const std::set<std::string>& literals,
+                       std::optional<std::uint64_t> swapped_after = std::nullopt);
   // A blackboard entry as the properties read it (unset: false for a condition).
   monitor::Val read(const std::string& key);
 
