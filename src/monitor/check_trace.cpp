@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
@@ -87,11 +88,39 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
   };
   TraceReport report;
   std::vector<Val> frame(variables.size());
+  // What the trace's selection lines stated so far, per adaptable node and requirement.
+  std::map<std::string, std::map<std::string, fretish::SelectionRequirement>> stated;
+  std::uint64_t last_tick = 0;
   for (const TraceTick& tick : trace.ticks) {
     for (const TraceAdaptable& a : tick.adaptables) {
-      // The run's own statement of a requirement these do not state (an uplink's) is judged
-      // from here on; one they state keeps theirs, as the run keeps judging the first.
-      judge.add(a.stated, vocabulary.literals);
+      auto& before = stated[a.id];
+      const bool first = before.empty();
+      if (first) {
+        // The run's own statement of a requirement these do not state is judged from here
+        // on; one they state keeps theirs.
+        judge.add(a.stated, vocabulary.literals);
+      } else {
+        // A later line: an uplink swapped a new version in. A requirement it restates (the
+        // trace stated it otherwise before) is judged as restated, one it no longer lists
+        // stops, as the run judged them.
+        std::vector<fretish::SelectionRequirement> now;
+        for (const std::string& id : a.requirements) {
+          const auto says = std::find_if(a.stated.begin(), a.stated.end(),
+                                         [&](const auto& r) { return r.id == id; });
+          const auto said = before.find(id);
+          const fretish::SelectionRequirement* kept = judge.current(a.id, id);
+          const bool restated =
+              says != a.stated.end() &&
+              (kept == nullptr ||
+               (said != before.end() && !SelectionJudge::same_meaning(said->second, *says)));
+          if (restated)
+            now.push_back(*says);
+          else if (kept != nullptr)
+            now.push_back(*kept);
+        }
+        judge.update(a.id, now, vocabulary.literals, last_tick);
+      }
+      for (const fretish::SelectionRequirement& r : a.stated) before.insert_or_assign(r.id, r);
       judge.set_order(a.id, a.requirements);
     }
     for (const auto& [name, value] : tick.state)
@@ -105,6 +134,7 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
       judge.observe(tick.tick, record);
     }
     properties.step(frame, tick.tick);
+    last_tick = tick.tick;
     ++report.ticks;
   }
   // In the requirements' order, the assumptions last.

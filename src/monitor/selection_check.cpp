@@ -10,32 +10,79 @@ SelectionJudge::SelectionJudge(const std::vector<fretish::SelectionRequirement>&
   add(requirements, literals);
 }
 
-void SelectionJudge::add(const std::vector<fretish::SelectionRequirement>& requirements,
-                         const std::set<std::string>& literals) {
+SelectionJudge::Entry SelectionJudge::make_entry(const fretish::SelectionRequirement& r,
+                                                 const std::set<std::string>& literals) {
   const Resolver resolve = [&](const std::string& name) -> Resolved {
     if (literals.count(name) != 0) return {Resolved::Kind::literal, symbols_.id(name)};
     return {Resolved::Kind::variable, variables_.id(name)};
   };
+  Entry e;
+  e.requirement = r;
+  e.result.id = r.id;
+  e.result.location = r.location;
+  e.result.selection = true;
+  if (r.guard) {
+    std::string error;
+    e.guard = CompiledExpression::compile(*r.guard, resolve, error);
+    if (!e.guard) {
+      e.result.verdict = Verdict::not_monitored;
+      e.result.reason = "guard: " + error;
+    }
+  }
+  return e;
+}
+
+void SelectionJudge::add(const std::vector<fretish::SelectionRequirement>& requirements,
+                         const std::set<std::string>& literals) {
   for (const fretish::SelectionRequirement& r : requirements) {
     if (std::any_of(entries_.begin(), entries_.end(),
                     [&](const Entry& e) { return e.requirement.id == r.id; }))
       continue;
-    Entry e;
-    e.requirement = r;
-    e.result.id = r.id;
-    e.result.location = r.location;
-    e.result.selection = true;
-    if (r.guard) {
-      std::string error;
-      e.guard = CompiledExpression::compile(*r.guard, resolve, error);
-      if (!e.guard) {
-        e.result.verdict = Verdict::not_monitored;
-        e.result.reason = "guard: " + error;
-      }
-    }
     order_[r.adaptable].push_back(entries_.size());
+    entries_.push_back(make_entry(r, literals));
+  }
+}
+
+bool SelectionJudge::same_meaning(const fretish::SelectionRequirement& a,
+                                  const fretish::SelectionRequirement& b) {
+  if (a.id != b.id || a.adaptable != b.adaptable || a.alternative != b.alternative) return false;
+  if (!a.guard || !b.guard) return !a.guard && !b.guard;
+  return fretish::same_expr(*a.guard, *b.guard);
+}
+
+const fretish::SelectionRequirement* SelectionJudge::current(const std::string& adaptable,
+                                                             const std::string& id) const {
+  const auto it = order_.find(adaptable);
+  if (it == order_.end()) return nullptr;
+  for (std::size_t i : it->second)
+    if (entries_[i].requirement.id == id) return &entries_[i].requirement;
+  return nullptr;
+}
+
+void SelectionJudge::update(const std::string& adaptable,
+                            const std::vector<fretish::SelectionRequirement>& requirements,
+                            const std::set<std::string>& literals, std::uint64_t last_tick) {
+  std::vector<std::size_t>& order = order_[adaptable];
+  std::vector<std::size_t> next;
+  for (const fretish::SelectionRequirement& r : requirements) {
+    if (r.adaptable != adaptable) continue;
+    const auto kept = std::find_if(order.begin(), order.end(), [&](std::size_t i) {
+      return same_meaning(entries_[i].requirement, r);
+    });
+    if (kept != order.end()) {
+      next.push_back(*kept);
+      continue;
+    }
+    Entry e = make_entry(r, literals);
+    e.result.monitored_from = last_tick + 1;
+    next.push_back(entries_.size());
     entries_.push_back(std::move(e));
   }
+  for (std::size_t i : order) {
+    if (std::find(next.begin(), next.end(), i) == next.end())
+      entries_[i].result.monitored_until = last_tick;
+  }
+  order = std::move(next);
 }
 
 void SelectionJudge::set_order(const std::string& adaptable, const std::vector<std::string>& ids) {

@@ -38,6 +38,20 @@ class SelectionJudge {
   // added; the others keep their verdicts so far.
   void add(const std::vector<fretish::SelectionRequirement>& requirements,
            const std::set<std::string>& literals);
+  // After an uplink swapped a new version in after tick `last_tick`: `adaptable`'s selections
+  // are judged from the next tick on by `requirements` (its requirements in that version, in
+  // priority order). One stated alike (same alternative, same guard) keeps its verdict so far;
+  // one the version restates or no longer has stops at `last_tick` (monitored_until), and a
+  // restated or new one is judged from the next tick (monitored_from).
+  void update(const std::string& adaptable,
+              const std::vector<fretish::SelectionRequirement>& requirements,
+              const std::set<std::string>& literals, std::uint64_t last_tick);
+  // The statement `adaptable`'s selections are judged by for requirement `id` now, or null.
+  const fretish::SelectionRequirement* current(const std::string& adaptable,
+                                               const std::string& id) const;
+  // Whether two statements of a selection requirement judge alike.
+  static bool same_meaning(const fretish::SelectionRequirement& a,
+                           const fretish::SelectionRequirement& b);
   // The priority order of `adaptable`'s requirements from now on (a trace's or an uplink's):
   // the ids listed, in that order, then the others in their own order.
   void set_order(const std::string& adaptable, const std::vector<std::string>& ids);
@@ -52,6 +66,8 @@ class SelectionJudge {
     std::optional<CompiledExpression> guard;  // none: the default
     PropertyResult result;
   };
+  Entry make_entry(const fretish::SelectionRequirement& r, const std::set<std::string>& literals);
+
   Symbols& symbols_;
   Variables variables_;  // the guards' names
   std::vector<Entry> entries_;

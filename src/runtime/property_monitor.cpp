@@ -38,11 +38,19 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
 }
 
 void PropertyMonitor::bind_selections(const load::Mission& mission,
-                                      const std::set<std::string>& literals) {
-  if (!judge_)
+                                      const std::set<std::string>& literals,
+                                      std::optional<std::uint64_t> swapped_after) {
+  if (!judge_) {
     judge_.emplace(mission.selections, symbols_, literals);
-  else
-    judge_->add(mission.selections, literals);
+  } else {
+    // The merged version's requirements, as it states them, from the next tick on.
+    std::set<std::string> adaptables;
+    for (const load::AdaptableSite& site : mission.adaptables) adaptables.insert(site.id);
+    for (const fretish::SelectionRequirement& r : mission.selections)
+      adaptables.insert(r.adaptable);
+    for (const std::string& id : adaptables)
+      judge_->update(id, mission.selections, literals, swapped_after.value_or(0));
+  }
   selecting_.clear();
   for (const fretish::SelectionRequirement& r : mission.selections) {
     Selecting& s = selecting_[r.adaptable];
@@ -86,7 +94,7 @@ std::vector<PropertyViolation> PropertyMonitor::adopt(const load::Mission& missi
   for (std::size_t i : properties_->update(mission.properties, mission.domain.assumptions, literals,
                                            mission.domain.tick_seconds, last_tick))
     out.push_back({last_tick, properties_->result(i)});
-  bind_selections(mission, literals);
+  bind_selections(mission, literals, last_tick);
   return out;
 }
 
@@ -171,13 +179,14 @@ std::set<std::string> PropertyMonitor::bind(const load::Mission& mission) {
   return literals;
 }
 
-void PropertyMonitor::on_status_change(NodeId node, NodeStatus, NodeStatus next) {
+void PropertyMonitor::on_node_ticked(NodeId node, NodeStatus result) {
   if (node >= seen_.size()) seen_.resize(node + 1, 0);
-  std::uint8_t& bits = seen_[node];
-  bits |= kTicked;
-  if (next == NodeStatus::success) bits |= kSuccess;
-  if (next == NodeStatus::failure) bits |= kFailure;
-  if (next == NodeStatus::running) bits |= kRunning;
+  // What the node returned last in the tick (a wake-up re-tick returns again); a node halted
+  // or reset without a tick returned nothing.
+  seen_[node] = kTicked | (result == NodeStatus::success   ? kSuccess
+                           : result == NodeStatus::failure ? kFailure
+                           : result == NodeStatus::running ? kRunning
+                                                           : 0);
 }
 
 void PropertyMonitor::select(const std::string& adaptable, const std::string& alternative,
@@ -216,11 +225,7 @@ monitor::Val PropertyMonitor::read(const std::string& key) {
 }
 
 std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
-  const auto bits = [&](NodeId n) -> std::uint8_t {
-    std::uint8_t b = n < seen_.size() ? seen_[n] : 0;
-    if (engine_.status(n) == NodeStatus::running) b |= kRunning | kTicked;
-    return b;
-  };
+  const auto bits = [&](NodeId n) -> std::uint8_t { return n < seen_.size() ? seen_[n] : 0; };
   for (const NodeObservable& o : nodes_) {
     std::uint8_t any = 0;
     for (NodeId n : o.nodes) any |= bits(n);

@@ -27,12 +27,13 @@ struct PropertyViolation {
 //    (observed_nodes);
 //  - `<adaptable>`: the mode, true when the adaptable's selection tree was ticked;
 //  - `<adaptable>.selected`: the alternative the selection returned from, else `none`.
-// Status changes come through the engine's Observer interface, selections through select().
+// What nodes return comes through the engine's Observer interface, selections through select().
 class PropertyMonitor : public Observer {
  public:
   PropertyMonitor(const load::Mission& mission, const Engine& engine);
 
-  void on_status_change(NodeId node, NodeStatus previous, NodeStatus next) override;
+  void on_status_change(NodeId, NodeStatus, NodeStatus) override {}
+  void on_node_ticked(NodeId node, NodeStatus result) override;
   // A selection subtree started `alternative` (the mission's name for it) in this tick, by the
   // branch of `requirement`: judged (monitor::SelectionJudge) on the values its guards read now.
   void select(const std::string& adaptable, const std::string& alternative,
@@ -103,8 +104,10 @@ class PropertyMonitor : public Observer {
   // Binds every name `mission`'s properties and assumptions read to what the engine shows;
   // returns the vocabulary's literals (alternatives, enum values).
   std::set<std::string> bind(const load::Mission& mission);
-  // The selection requirements of `mission` (judge_, selecting_).
-  void bind_selections(const load::Mission& mission, const std::set<std::string>& literals);
+  // The selection requirements of `mission` (judge_, selecting_); `swapped_after`: the tick
+  // after which an uplink swapped `mission` in, whose requirements are judged from then on.
+  void bind_selections(const load::Mission& mission, const std::set<std::string>& literals,
+                       std::optional<std::uint64_t> swapped_after = std::nullopt);
   // A blackboard entry as the properties read it (unset: false for a condition).
   monitor::Val read(const std::string& key);
 
@@ -115,7 +118,8 @@ class PropertyMonitor : public Observer {
   std::vector<std::pair<int, std::string>> blackboard_;  // slot, key
   std::vector<NodeObservable> nodes_;
   std::vector<Adaptable> adaptables_;
-  std::vector<std::uint8_t> seen_;  // per NodeId: bit 0 success, 1 failure, 2 running, 3 ticked
+  // Per NodeId, what it returned last this tick: bit 0 success, 1 failure, 2 running, 3 ticked.
+  std::vector<std::uint8_t> seen_;
   std::vector<monitor::Val> frame_;
   std::map<std::string, bool> boolean_variable_;
   std::optional<monitor::SelectionJudge> judge_;

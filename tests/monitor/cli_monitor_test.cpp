@@ -517,6 +517,63 @@ TEST(MonitorCli, RunThenMonitorJudgeAnUplinksSelectionRequirements) {
   EXPECT_EQ(old.out.find("Req3 (selection)"), std::string::npos) << old.out;
 }
 
+// An uplink restates the selection requirement FlightAbort with a new guard: from the swap on,
+// the run judges the selections by the merged requirements (the restated guard), and the old
+// statement stops at the swap, as properties do. `uabt monitor` on the run's trace agrees.
+TEST(MonitorCli, RunJudgesARestatedSelectionRequirementByItsNewGuard) {
+  const auto flight = [](const std::string& alt) {
+    return "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"" + alt + "\">\n    <Fly_" + alt +
+           "/>\n  </BehaviorTree>\n</root>\n";
+  };
+  TempMission m(
+      Files{{"mission.xml",
+             "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
+             "  <BehaviorTree ID=\"MainTree\">\n"
+             "    <Sequence name=\"climb\">\n      <Ascend/>\n      <Adaptable ID=\"flight\"/>\n"
+             "    </Sequence>\n  </BehaviorTree>\n</root>\n"},
+            {"alternatives/flight/cruise.xml", flight("cruise")},
+            {"alternatives/flight/abort.xml", flight("abort")},
+            {"domain.fret", "boolean Abort, Override\n"},
+            {"requirements.fret",
+             "FlightAbort: In flight if Abort Mission shall satisfy selected_alt = abort\n"
+             "Cruise: In flight Mission shall satisfy selected_alt = cruise\n"},
+            {"uplinks/override/requirements.fret",
+             "FlightAbort: In flight if Abort & !Override Mission shall satisfy selected_alt = "
+             "abort\n"},
+            // Override from the start, Abort from tick 4, when Ascend ends and `flight` selects.
+            {"scenarios/abort.json",
+             "{\"max_ticks\": 20, \"initial\": {\"Override\": true},\n"
+             " \"actions\": {\"Ascend\": {\"ticks\": 4}},\n"
+             " \"events\": [{\"at\": 4, \"set\": {\"Abort\": true}}]}\n"}},
+      "flight");
+  const std::string dir = m.dir().parent_path().string();
+  const CliRun run = uabt_in(dir,
+                             "run flight --scenario flight/scenarios/abort.json --uplink "
+                             "2:flight/uplinks/override --monitor-trace t.jsonl");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("tick 4: flight selects cruise (Cruise)"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("selection FlightAbort: held (monitored until tick 1, when an uplink "
+                         "replaced or removed it)\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("selection FlightAbort: held (added by an uplink: monitored from tick "
+                         "2)\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("violated"), std::string::npos) << run.out;
+
+  const CliRun monitor = uabt_in(dir, "monitor flight t.jsonl --format json");
+  EXPECT_EQ(monitor.exit_code, 0) << monitor.out;
+  const auto doc = nlohmann::json::parse(monitor.out);
+  int judged = 0;
+  for (const auto& r : doc["requirements"])
+    if (r["id"] == "FlightAbort") {
+      ++judged;
+      EXPECT_EQ(r["verdict"], "held") << monitor.out;
+    }
+  EXPECT_EQ(judged, 2) << "the statement before the swap and the restated one" << monitor.out;
+}
+
 // The judgement itself, on a hand-written trace: a selection must start the alternative of the
 // first requirement, in priority order, whose guard held in the values it read; one that goes
 // on after an earlier branch ("after") is judged from that branch on; a trace that records no
