@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <tuple>
 
 #include "base/number_text.hpp"
 #include "campaign/guarantee.hpp"
 #include "campaign/world_play.hpp"
+#include "campaign/world_reach.hpp"
 #include "monitor/trace.hpp"
 #include "report/coverage_view.hpp"
 #include "report/reports.hpp"
@@ -180,8 +180,8 @@ State filler_state(const load::Mission& mission, const Model& model) {
 
 struct Round {
   std::vector<Scenario> scenarios;
-  // (node, state index, why) of each planned state whose run did not reach its purpose
-  std::vector<std::tuple<std::size_t, std::uint64_t, std::string>> misses;
+  // (node, state index) of each planned state whose run did not reach its purpose
+  std::vector<std::pair<std::size_t, std::uint64_t>> misses;
 };
 
 // Scenarios for the picks: nodes over disjoint variables share scenarios (a lane); every
@@ -247,7 +247,7 @@ Round plan_round(const load::Mission& mission, const Model& model, const Replaye
           problem = model.adaptable(k) + " selected in another state than planned";
         if (problem.empty()) continue;
         s.problems.push_back(problem);
-        round.misses.emplace_back(k, p->index, problem);
+        round.misses.emplace_back(k, p->index);
       }
       round.scenarios.push_back(std::move(s));
     }
@@ -272,20 +272,19 @@ Campaign build_campaign(const load::Mission& mission, const Options& given) {
   // A state whose run does not get to its node (the tree takes another branch first) is
   // set aside and the targets planned again, a few times.
   std::vector<std::set<std::uint64_t>> excluded(model.nodes());
-  std::vector<std::string> first_miss(model.nodes());
   Round round;
   for (int attempt = 0; attempt < 12; ++attempt) {
     round = plan_round(mission, model, replayer, model.minimise(excluded), c.targets, options);
     bool fresh = false;
-    for (const auto& [k, index, why] : round.misses) {
-      fresh = excluded[k].insert(index).second || fresh;
-      if (first_miss[k].empty()) first_miss[k] = why;
-    }
+    for (const auto& [k, index] : round.misses) fresh = excluded[k].insert(index).second || fresh;
     if (!fresh) break;
   }
-  // What still misses its purpose is no test: left out, its targets said not reached.
+  // What still misses its purpose is no test: left out.
   for (auto& s : round.scenarios)
     if (s.problems.empty()) c.scenarios.push_back(std::move(s));
+  // The targets those runs miss: searched for in the world model prove explores, which says
+  // which no run reaches.
+  reach_in_world(mission, model, replayer, options, c);
   // Numbered again without the gaps, per node.
   std::map<std::string, std::size_t> per_base;
   for (const auto& s : c.scenarios) ++per_base[s.name.substr(0, s.name.rfind('-'))];
@@ -318,16 +317,6 @@ Campaign build_campaign(const load::Mission& mission, const Options& given) {
   std::vector<RunRecord> runs;
   for (const auto& s : c.scenarios) runs.push_back(s.run);
   c.covered = model.covered(runs);
-  for (std::size_t t = 0; t < c.targets.size(); ++t) {
-    Target& target = c.targets[t];
-    if (!target.reachable || c.covered[t]) continue;
-    for (std::size_t k = 0; k < model.nodes(); ++k) {
-      if (model.adaptable(k) != target.adaptable || first_miss[k].empty()) continue;
-      target.reachable = false;
-      target.reason = "no run reaches it: in the " + std::to_string(excluded[k].size()) +
-                      " states tried for it, " + first_miss[k];
-    }
-  }
   add_guarantee_targets(mission, replayer, options, c);
   return c;
 }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -139,6 +140,23 @@ class Model {
   State default_state(std::size_t node) const;
   // The alternative a state selects at a node ("" outside its space or in a gap).
   std::string expected(std::size_t node, const State& state) const;
+  // The variables a node's targets are about: its guards', and those assumptions link to them.
+  const std::set<std::string>& variables(std::size_t node) const;
+
+  // What a run must show at a node to reach a target, for the world model's search
+  // (world_reach.hpp): FRETISH conditions of one tick on the node's variables. A single-state
+  // target has one (`single`); an MC/DC pair target one per state of each of its pairs.
+  // `complete`: every way to reach the target is among them, so that the world model ruling
+  // each out proves the target unreachable.
+  struct ReachCondition {
+    std::size_t node = 0;
+    std::string single;
+    std::vector<std::pair<std::string, std::string>> pairs;
+    bool complete = true;
+  };
+  // nullopt for a target of no node (a guarantee target). One no state of the domain reaches
+  // has a condition no state satisfies, or no pair.
+  std::optional<ReachCondition> reach_condition(std::size_t target) const;
 
   struct Node;
 

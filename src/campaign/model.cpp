@@ -277,6 +277,7 @@ void Model::Node::decision_targets(std::vector<Target>& all) {
     add(all, std::move(t), selected[k]);
     locals.back().select = true;
     locals.back().req = k;
+    locals.back().condition = selects_condition(k);
   }
   for (std::size_t k = 0; k < reqs.size(); ++k) {
     const auto* r = reqs[k];
@@ -295,6 +296,7 @@ void Model::Node::decision_targets(std::vector<Target>& all) {
                          : "the guard holds in every state of the domain";
       }
       add(all, std::move(t), std::move(states));
+      locals.back().condition = (value ? "(" : "!(") + guard + ")";
     }
   }
 }
@@ -379,7 +381,8 @@ void Model::Node::mcdc_targets(std::vector<Target>& all) {
 void Model::Node::boundary_targets(std::vector<Target>& all) {
   const std::uint64_t size = space->size();
   const auto& dims = space->dimensions();
-  auto target = [&](const std::string& id, const std::string& text, Bits states) {
+  auto target = [&](const std::string& id, const std::string& text, Bits states,
+                    const std::string& condition) {
     Target t;
     t.adaptable = adaptable;
     t.criterion = Criterion::boundary;
@@ -390,6 +393,7 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
       t.reason = "no state of the domain lies there (the assumptions rule it out)";
     }
     add(all, std::move(t), std::move(states));
+    locals.back().condition = condition;
   };
   for (std::size_t d = 0; d < dims.size(); ++d) {
     const auto& dim = dims[d];
@@ -415,7 +419,8 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
           target(dim.name + "/" + lo + "|" + hi + "/" + (below ? "below" : "above"),
                  dim.name + " = " + (below ? lo : hi) + ", " + (below ? "below" : "above") +
                      " the boundary between " + lo + " and " + hi,
-                 std::move(states));
+                 std::move(states),
+                 dim.name + " = " + number_condition(Fraction(dim.number(side))));
         }
       }
       continue;
@@ -433,16 +438,22 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
         const std::string at = fraction_text(axis.breaks[b]);
         const std::size_t point = 2 * b;
         const std::string base = axis.variable + "/" + at + "/";
+        const std::string& x = axis.variable;
         target(base + "below",
-               axis.variable + " in (" + fraction_text(axis.breaks[b - 1]) + ", " + at +
+               x + " in (" + fraction_text(axis.breaks[b - 1]) + ", " + at +
                    "), just below the boundary " + at,
-               cells_where([&](const auto& c) { return c.axis_cell[a] == point - 1; }));
-        target(base + "at", axis.variable + " = " + at + ", on the boundary",
-               cells_where([&](const auto& c) { return c.axis_cell[a] == point; }));
+               cells_where([&](const auto& c) { return c.axis_cell[a] == point - 1; }),
+               x + " > " + number_condition(axis.breaks[b - 1]) + " & " + x + " < " +
+                   number_condition(axis.breaks[b]));
+        target(base + "at", x + " = " + at + ", on the boundary",
+               cells_where([&](const auto& c) { return c.axis_cell[a] == point; }),
+               x + " = " + number_condition(axis.breaks[b]));
         target(base + "above",
-               axis.variable + " in (" + at + ", " + fraction_text(axis.breaks[b + 1]) +
+               x + " in (" + at + ", " + fraction_text(axis.breaks[b + 1]) +
                    "), just above the boundary " + at,
-               cells_where([&](const auto& c) { return c.axis_cell[a] == point + 1; }));
+               cells_where([&](const auto& c) { return c.axis_cell[a] == point + 1; }),
+               x + " > " + number_condition(axis.breaks[b]) + " & " + x + " < " +
+                   number_condition(axis.breaks[b + 1]));
       }
     }
     for (std::size_t l = 0; l < comp.lines.size(); ++l) {
@@ -460,11 +471,14 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
       const std::string base = "line/" + text + " = " + rhs + "/";
       const char* names[] = {"below", "at", "above"};
       const char* words_of[] = {" < ", " = ", " > "};
+      std::string lhs = comp.axes[0].variable;
+      if (!b.is_zero()) lhs += " + " + number_condition(b) + " * " + comp.axes[1].variable;
       for (int sign = -1; sign <= 1; ++sign)
         target(base + names[sign + 1],
                text + words_of[sign + 1] + rhs +
                    (sign == 0 ? ", on the boundary" : ", beside the boundary"),
-               cells_where([&](const auto& c) { return c.signs[l] == sign; }));
+               cells_where([&](const auto& c) { return c.signs[l] == sign; }),
+               lhs + words_of[sign + 1] + number_condition(-line.c));
     }
   }
 }

@@ -48,6 +48,9 @@ struct Model::Node {
     bool select = false;  // reached by a run that selects the alternative of `req`
     std::size_t req = 0, atom = 0;
     std::vector<std::pair<std::uint64_t, std::uint64_t>> pairs;
+    // A single-state target: its states as a FRETISH condition on the node's variables (within
+    // the domain), for the world model's search (Model::reach_condition).
+    std::string condition;
   };
   std::vector<Local> locals;
 
@@ -94,6 +97,14 @@ struct Model::Node {
   void add(std::vector<Target>& all, Target t, verify::detail::Bits states);
 
   bool atom_holds(std::uint64_t state, std::size_t atom) const;
+  // FRETISH conditions on the node's variables (reach_conditions.cpp): requirement k is the
+  // one selected; the states whose atoms all have the values they have in `state` (a state of
+  // the space) or in `values` (a solved node's).
+  std::string selects_condition(std::size_t k) const;
+  std::string signature_condition(std::uint64_t state) const;
+  std::string signature_condition(const State& values) const;
+  // A solved node's single-state goal as a condition.
+  std::string goal_condition(const Goal& goal) const;
   // The state's signature as bytes, for hashing (bit c of the bytes is column c).
   std::string key(std::uint64_t state) const;
   State state_values(std::uint64_t state) const;
@@ -129,6 +140,12 @@ inline std::string join(const std::vector<std::string>& parts, const std::string
   std::string out;
   for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
   return out;
+}
+
+// A number as a FRETISH condition reads it: "2.5", "(-3)", "(1/3)".
+inline std::string number_condition(const verify::detail::Fraction& x) {
+  const std::string text = x.decimal();
+  return text.find_first_of("-/") == std::string::npos ? text : "(" + text + ")";
 }
 
 // Why no atom of a guard has an MC/DC pair when the guard itself never changes over the

@@ -563,8 +563,9 @@ TEST(CampaignTargets, StatesTheTreeNeverTicksTheNodeInAreNotReached) {
   const campaign::Target& low = *by_id.at("node/decision/select/low");
   EXPECT_FALSE(low.reachable);
   EXPECT_EQ(low.reason,
-            "no run reaches it: in the 2 states tried for it, node is not ticked (1 tick, verdict "
-            "success)");
+            "no run (whatever its actions return: no world.json bounds them) ticks node in a "
+            "state where (x < 1)");
+  EXPECT_FALSE(low.undecided);
   EXPECT_TRUE(by_id.at("node/decision/select/other")->reachable);
   EXPECT_TRUE(c.passed());
   for (const auto& s : c.scenarios) EXPECT_TRUE(s.problems.empty()) << s.name;
@@ -721,17 +722,23 @@ TEST(CampaignCli, ANodeTooLargeToEnumerateGetsItsTargetsSolved) {
 }
 
 TEST(CampaignCli, ARunThatStopsOnATickErrorNamesTheLineOfTheMission) {
-  // blackboard_defects reads target_range before anything writes it: no run reaches sampling.
-  TempMission scratch({});
+  // blackboard_defects reads target_range before anything writes it: a run in which
+  // ReportRange does not write it stops there.
+  TempMission scratch(std::map<std::string, std::string>{
+      {"no_range.json", R"({"max_ticks": 3, "initial": {"terrain": "sand"}})"}});
   const CliRun run = run_uabt_in(
       (source_dir() / "missions").string(),
-      "tests blackboard_defects --criterion decision --out '" + scratch.dir().string() + "'");
-  EXPECT_NE(run.out.find("unreachable: sampling selects scoop (Sand): no run reaches it: in the 2 "
-                         "states tried for it, sampling is not ticked (1 tick, verdict error: "
-                         "blackboard_defects/mission.xml:14:7: ScriptCondition 'in_reach': "
-                         "undefined blackboard key 'target_range'"),
+      "coverage blackboard_defects '" + (scratch.dir() / "no_range.json").string() + "'");
+  EXPECT_NE(run.out.find("stopped: blackboard_defects/mission.xml:14:7: ScriptCondition "
+                         "'in_reach': undefined blackboard key 'target_range'"),
             std::string::npos)
       << run.out;
+  // The campaign's runs have ReportRange write it, and reach sampling.
+  const CliRun tests = run_uabt_in(
+      (source_dir() / "missions").string(),
+      "tests blackboard_defects --criterion decision --out '" + scratch.dir().string() + "/out'");
+  EXPECT_EQ(tests.exit_code, 0) << tests.out;
+  EXPECT_EQ(tests.out.find("unreachable: sampling"), std::string::npos) << tests.out;
 }
 
 }  // namespace
