@@ -42,6 +42,7 @@ void register_gate(CLI::App& app, int& exit_code) {
   add_findings_output_options(*cmd, args->format, args->output);
   add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
+    check_output_directory(args->out, "--out");  // before the work, not after it
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
     auto mission = load_or_complain(args->mission, load_options);

@@ -68,6 +68,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"text", "json", "sarif", "html"}));
   cmd->add_option("-o,--output", args->output, "write the output to FILE");
   cmd->callback([args, &exit_code] {
+    if (!args->counterexamples.empty())
+      check_output_directory(args->counterexamples, "--counterexamples");
     auto mission = load_or_complain(args->mission, {});
     if (!mission) {
       exit_code = kExitUsage;
@@ -128,7 +130,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     std::map<std::string, std::string> written;
     if (!args->counterexamples.empty()) {
-      std::filesystem::create_directories(args->counterexamples);
+      make_output_directory(args->counterexamples, "--counterexamples");
       for (const auto& a : result.answers) {
         if (!a.counterexample) continue;
         const auto path = std::filesystem::path(args->counterexamples) /

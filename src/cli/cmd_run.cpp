@@ -148,6 +148,8 @@ void register_run(CLI::App& app, int& exit_code) {
     } catch (const runtime::ScenarioError& e) {
       std::cerr << e.what() << "\n";  // file:line:col: error: … lines
       exit_code = kExitFail;
+    } catch (const OutputError&) {
+      throw;  // an output path uabt cannot write: exit 2
     } catch (const std::exception& e) {
       std::cerr << "uabt: " << e.what() << "\n";
       exit_code = kExitFail;
