@@ -32,8 +32,9 @@ void register_gate(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
-  cmd->add_option("--timeout-ms", args->timeout_ms,
-                  "solver time limit per query (inconclusive fails)");
+  add_number_option(*cmd, "--timeout-ms", 1, kMaxTimeoutMs,
+                    "solver time limit per query (inconclusive fails)",
+                    [args](std::int64_t ms) { args->timeout_ms = static_cast<unsigned>(ms); });
   cmd->add_option("--uplink", args->uplink,
                   "an uplink package to merge and gate before it is sent; the reports add where "
                   "each requirement went and the behaviour change, OUT/merged/ the merged mission, "

@@ -54,8 +54,11 @@ void register_prove(CLI::App& app, int& exit_code) {
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("--depth", args->depth,
-                  "explore runs of up to K ticks (default: until every reachable state is seen)");
+  add_number_option(
+      *cmd, "--depth", 1, kMaxProveDepth,
+      "explore runs of up to this many ticks (default: until every reachable state is seen; "
+      "the symbolic engine: 40)",
+      [args](std::int64_t ticks) { args->depth = static_cast<std::uint64_t>(ticks); });
   cmd->add_option("--engine", args->engine,
                   "auto | explicit (state enumeration) | symbolic (Z3: BMC and k-induction)")
       ->check(CLI::IsMember({"auto", "explicit", "symbolic"}));

@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : uabt::cli::kExitUsage;
+  } catch (const uabt::cli::UsageError& e) {
+    std::cerr << "uabt: " << e.what() << "\n";
+    return uabt::cli::kExitUsage;
   } catch (const uabt::OutputError& e) {
     // An output path uabt cannot write: a command-line error.
     std::cerr << "uabt: " << e.what() << "\n";
