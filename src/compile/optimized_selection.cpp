@@ -4,6 +4,7 @@
 // ReactiveSequence).
 #include <algorithm>
 
+#include "bt/structure.hpp"
 #include "compile/compile.hpp"
 #include "fretish/requirement.hpp"
 
@@ -233,7 +234,7 @@ std::optional<bt::Node> optimized_selector(const load::Mission& m, const std::st
   }
   Emitter emitter(m, adaptable, reqs, *space, decision, bt_format, reactive);
   bt::Node root = emitter.root();
-  if (depth_of(root) > 200) {  // BT.CPP refuses nesting deeper than 256
+  if (depth_of(root) > bt::kMaxDepth) {  // its file could not be read back
     stats.reason = "the decision structure would nest too deep";
     return std::nullopt;
   }
