@@ -89,7 +89,7 @@ class TextParser {
       : text_(text), file_(file), findings_(findings) {}
 
   std::optional<ParsedText> parse() {
-    const detail::ScanResult scan = detail::scan_xml(text_, kMaxDepth);
+    const detail::ScanResult scan = detail::scan_xml(text_, kMaxXmlDepth);
     if (scan.problem) {
       findings_.push_back(
           xml_finding(scan.problem->message, file_, scan.problem->line, scan.problem->column));
@@ -296,8 +296,7 @@ class TextParser {
     return tree;
   }
 
-  // Recursion is bounded: the scanner refused anything nested deeper than kMaxDepth, and
-  // tinyxml2 refuses even less.
+  // Recursion is bounded: the scanner refused anything nested deeper than kMaxXmlDepth.
   Node read_node(const XMLElement* element) {
     Node node;
     node.tag = element->Name();

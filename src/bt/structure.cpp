@@ -113,7 +113,11 @@ class StructureChecker {
       pending.pop_back();
       if (depth > kMaxDepth) {
         report(tree, *node,
-               "nesting deeper than " + std::to_string(kMaxDepth) + " (BehaviorTree.CPP's limit)");
+               "nesting deeper than " + std::to_string(kMaxDepth) +
+                   " below <BehaviorTree>: its file would nest elements deeper than " +
+                   std::to_string(kMaxXmlDepth) +
+                   ", which tinyxml2 (BehaviorTree.CPP's XML parser) refuses; split the tree "
+                   "into SubTrees");
         continue;
       }
       check_node(tree_index, *node);

@@ -248,14 +248,16 @@ ScanResult scan_xml(const std::string& input, int max_depth) {
         cursor.advance();
       }
       if (!(complete = ended)) break;
-      if (!self_closing) {
-        if (static_cast<int>(open.size()) >= max_depth) {
-          result.problem = ScanProblem{
-              "elements nested deeper than " + std::to_string(max_depth) + " levels", line, column};
-          return result;
-        }
-        open.push_back(element);
+      // An empty element counts as deep as one with content: one limit, however it is written.
+      if (static_cast<int>(open.size()) >= max_depth) {
+        result.problem = ScanProblem{"elements nested deeper than " + std::to_string(max_depth) +
+                                         " levels: tinyxml2, the XML parser of "
+                                         "BehaviorTree.CPP, refuses deeper files; split the tree "
+                                         "into SubTrees",
+                                     line, column};
+        return result;
       }
+      if (!self_closing) open.push_back(element);
       result.elements.push_back(std::move(element));
     } else {
       result.problem =

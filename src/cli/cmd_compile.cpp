@@ -22,8 +22,8 @@ void register_compile(CLI::App& app, int& exit_code) {
       ->required()
       ->check(CLI::ExistingPath);
   cmd->add_option("-o,--output", args->output, "output XML file (default: stdout)");
-  cmd->add_option("--bt-format", args->bt_format, "BehaviorTree.CPP XML format")
-      ->check(CLI::IsMember({3, 4}));
+  add_number_option(*cmd, "--bt-format", 3, 4, "BehaviorTree.CPP XML format",
+                    [args](std::int64_t format) { args->bt_format = static_cast<int>(format); });
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")

@@ -26,8 +26,9 @@ void register_conform(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--timeout-ms", args->timeout_ms,
-                  "solver time limit per query (inconclusive fails)");
+  add_number_option(*cmd, "--timeout-ms", 1, kMaxTimeoutMs,
+                    "solver time limit per query (inconclusive fails)",
+                    [args](std::int64_t ms) { args->timeout_ms = static_cast<unsigned>(ms); });
   add_findings_output_options(*cmd, args->format, args->output);
   add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {

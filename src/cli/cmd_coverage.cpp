@@ -191,6 +191,8 @@ void register_coverage(CLI::App& app, int& exit_code) {
         all = all &&
               (!report.targets[k].reachable || report.covered[k] || report.not_judged.count(k));
       exit_code = all ? kExitPass : kExitFail;
+    } catch (const OutputError&) {
+      throw;  // an output path uabt cannot write: exit 2
     } catch (const std::exception& e) {
       std::cerr << "uabt: coverage: " << e.what() << "\n";
       exit_code = kExitFail;

@@ -36,7 +36,8 @@ void register_diff(CLI::App& app, int& exit_code) {
   cmd->add_option("--format", args->format, "output format")
       ->check(CLI::IsMember({"text", "json"}));
   cmd->add_option("-o,--output", args->output, "write to FILE instead of standard output");
-  cmd->add_option("--timeout-ms", args->timeout_ms, "solver time limit per query");
+  add_number_option(*cmd, "--timeout-ms", 1, kMaxTimeoutMs, "solver time limit per query",
+                    [args](std::int64_t ms) { args->timeout_ms = static_cast<unsigned>(ms); });
   cmd->callback([args, &exit_code] {
     if (args->after.empty() && args->uplink.empty()) {
       std::cerr << "uabt diff: give NEW or --uplink DIR\n";

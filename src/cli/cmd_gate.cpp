@@ -32,8 +32,9 @@ void register_gate(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
-  cmd->add_option("--timeout-ms", args->timeout_ms,
-                  "solver time limit per query (inconclusive fails)");
+  add_number_option(*cmd, "--timeout-ms", 1, kMaxTimeoutMs,
+                    "solver time limit per query (inconclusive fails)",
+                    [args](std::int64_t ms) { args->timeout_ms = static_cast<unsigned>(ms); });
   cmd->add_option("--uplink", args->uplink,
                   "an uplink package to merge and gate before it is sent; the reports add where "
                   "each requirement went and the behaviour change, OUT/merged/ the merged mission, "
@@ -42,6 +43,7 @@ void register_gate(CLI::App& app, int& exit_code) {
   add_findings_output_options(*cmd, args->format, args->output);
   add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
+    check_output_directory(args->out, "--out");  // before the work, not after it
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
     auto mission = load_or_complain(args->mission, load_options);

@@ -54,8 +54,11 @@ void register_prove(CLI::App& app, int& exit_code) {
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("--depth", args->depth,
-                  "explore runs of up to K ticks (default: until every reachable state is seen)");
+  add_number_option(
+      *cmd, "--depth", 1, kMaxProveDepth,
+      "explore runs of up to this many ticks (default: until every reachable state is seen; "
+      "the symbolic engine: 40)",
+      [args](std::int64_t ticks) { args->depth = static_cast<std::uint64_t>(ticks); });
   cmd->add_option("--engine", args->engine,
                   "auto | explicit (state enumeration) | symbolic (Z3: BMC and k-induction)")
       ->check(CLI::IsMember({"auto", "explicit", "symbolic"}));
@@ -68,6 +71,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"text", "json", "sarif", "html"}));
   cmd->add_option("-o,--output", args->output, "write the output to FILE");
   cmd->callback([args, &exit_code] {
+    if (!args->counterexamples.empty())
+      check_output_directory(args->counterexamples, "--counterexamples");
     auto mission = load_or_complain(args->mission, {});
     if (!mission) {
       exit_code = kExitUsage;
@@ -128,7 +133,7 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     std::map<std::string, std::string> written;
     if (!args->counterexamples.empty()) {
-      std::filesystem::create_directories(args->counterexamples);
+      make_output_directory(args->counterexamples, "--counterexamples");
       for (const auto& a : result.answers) {
         if (!a.counterexample) continue;
         const auto path = std::filesystem::path(args->counterexamples) /

@@ -24,6 +24,7 @@ void register_report(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
   add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
+    check_output_directory(args->out, "--out");  // before the work, not after it
     auto mission = load_or_complain(args->mission, {});
     if (!mission) {
       exit_code = kExitUsage;

@@ -21,16 +21,17 @@ std::optional<std::pair<std::int64_t, std::string>> parse_uplink_argument(
     const std::string& spec, const std::string& mission) {
   namespace fs = std::filesystem;
   const auto colon = spec.find(':');
+  if (colon == std::string::npos) {
+    std::cerr << "uabt: --uplink " << spec
+              << ": expected TICK:DIR (a tick number, then the package directory)\n";
+    return std::nullopt;
+  }
   std::int64_t tick = 0;
   try {
-    if (colon == std::string::npos) throw std::invalid_argument("no ':'");
-    std::size_t used = 0;
-    tick = std::stoll(spec.substr(0, colon), &used);
-    if (used != colon || tick < 0) throw std::invalid_argument("not a tick");
-  } catch (const std::exception&) {
-    std::cerr << "uabt: --uplink " << spec
-              << ": expected TICK:DIR (a tick number, then the "
-                 "package directory)\n";
+    tick = whole_number("its TICK", spec.substr(0, colon), 0, kMaxTicks);
+  } catch (const UsageError& e) {
+    std::cerr << "uabt: --uplink " << spec << ": " << e.what()
+              << " (TICK:DIR: a tick number, then the package directory)\n";
     return std::nullopt;
   }
   const fs::path dir = spec.substr(colon + 1);
@@ -78,9 +79,9 @@ void register_run(CLI::App& app, int& exit_code) {
                   "line per tick, to FILE: the trace `uabt monitor` checks");
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
-  cmd->add_option("--max-ticks", args->max_ticks,
-                  "stop after this many ticks, verdict timeout (default: the scenario's)")
-      ->check(CLI::PositiveNumber);
+  add_number_option(*cmd, "--max-ticks", 1, kMaxTicks,
+                    "stop after this many ticks, verdict timeout (default: the scenario's)",
+                    [args](std::int64_t ticks) { args->max_ticks = ticks; });
   cmd->add_flag("--smart-selection", args->smart_selection,
                 "reactive selections re-run their guards only when a variable the guards read "
                 "changed (not BT.CPP's tick; same selections, fewer condition ticks)");
@@ -148,6 +149,8 @@ void register_run(CLI::App& app, int& exit_code) {
     } catch (const runtime::ScenarioError& e) {
       std::cerr << e.what() << "\n";  // file:line:col: error: … lines
       exit_code = kExitFail;
+    } catch (const OutputError&) {
+      throw;  // an output path uabt cannot write: exit 2
     } catch (const std::exception& e) {
       std::cerr << "uabt: " << e.what() << "\n";
       exit_code = kExitFail;

@@ -39,9 +39,10 @@ void register_tests(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"decision", "mcdc", "boundary", "guarantee", "all"}));
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
-  cmd->add_option("--max-ticks", args->max_ticks, "max_ticks of each scenario (default 100)")
-      ->check(CLI::PositiveNumber);
+  add_number_option(*cmd, "--max-ticks", 1, kMaxTicks, "max_ticks of each scenario (default 100)",
+                    [args](std::int64_t ticks) { args->max_ticks = ticks; });
   cmd->callback([args, &exit_code] {
+    check_output_directory(args->out, "--out");  // before the work, not after it
     auto mission = load_for_campaign(args->mission, args->uplinks, exit_code);
     if (!mission) return;
     // The last package is the one tested, as `gate --uplink` gates it: its behaviour changes
@@ -66,6 +67,8 @@ void register_tests(CLI::App& app, int& exit_code) {
         write_file_atomically(out / name, content);
       std::cout << campaign::campaign_text(c);
       exit_code = c.passed() ? kExitPass : kExitFail;
+    } catch (const OutputError&) {
+      throw;  // an output path uabt cannot write: exit 2
     } catch (const std::exception& e) {
       std::cerr << "uabt: tests: " << e.what() << "\n";
       exit_code = kExitFail;

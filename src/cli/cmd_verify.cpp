@@ -25,8 +25,9 @@ void register_verify(CLI::App& app, int& exit_code) {
   add_source_root_option(*cmd, args->source_root);
   cmd->add_flag("--allow-overlap", args->allow_overlap,
                 "report overlapping guards as warnings (priority decides on purpose)");
-  cmd->add_option("--timeout-ms", args->timeout_ms,
-                  "solver time limit per query; past it the verdict is inconclusive and fails");
+  add_number_option(*cmd, "--timeout-ms", 1, kMaxTimeoutMs,
+                    "solver time limit per query; past it the verdict is inconclusive and fails",
+                    [args](std::int64_t ms) { args->timeout_ms = static_cast<unsigned>(ms); });
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;

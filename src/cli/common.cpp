@@ -1,5 +1,7 @@
 #include "cli/common.hpp"
 
+#include <CLI/CLI.hpp>
+#include <charconv>
 #include <iostream>
 
 #include "base/diagnostics.hpp"
@@ -9,6 +11,43 @@ namespace uabt::cli {
 
 const char* tool_version() {
   return UABT_VERSION;
+}
+
+namespace {
+
+std::string range_text(std::int64_t min, std::int64_t max) {
+  if (max == min + 1) return std::to_string(min) + " or " + std::to_string(max);
+  return "a whole number from " + std::to_string(min) + " to " + std::to_string(max);
+}
+
+}  // namespace
+
+std::int64_t whole_number(const std::string& option, const std::string& text, std::int64_t min,
+                          std::int64_t max) {
+  std::int64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end || value < min || value > max) {
+    // A number too long to read is not echoed whole.
+    const std::string shown = text.size() > 24 ? text.substr(0, 20) + "…" : text;
+    throw UsageError(option + " must be " + range_text(min, max) + ", not " +
+                     (shown.empty() ? "nothing" : "'" + shown + "'"));
+  }
+  return value;
+}
+
+CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, std::int64_t min,
+                               std::int64_t max, const std::string& help,
+                               std::function<void(std::int64_t)> set) {
+  const std::string option = name.substr(name.rfind(',') + 1);  // "-o,--output": --output
+  return cmd
+      .add_option_function<std::string>(
+          name,
+          [option, min, max, set = std::move(set)](const std::string& text) {
+            set(whole_number(option, text, min, max));
+          },
+          help + " (" + range_text(min, max) + ")")
+      ->type_name("N");
 }
 
 std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,

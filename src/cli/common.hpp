@@ -1,7 +1,10 @@
 #pragma once
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -9,6 +12,11 @@
 #include "campaign/campaign.hpp"
 #include "compile/compile.hpp"
 #include "load/mission.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
 
 namespace uabt::cli {
 
@@ -18,6 +26,27 @@ inline constexpr int kExitFail = 1;
 inline constexpr int kExitUsage = 2;
 
 const char* tool_version();
+
+// A command line uabt refuses, in its own words; main prints "uabt: " and the message, exit 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The range of every numeric option (README, "Commands").
+inline constexpr std::int64_t kMaxTimeoutMs = 3'600'000;  // --timeout-ms: up to an hour per query
+inline constexpr std::int64_t kMaxProveDepth = 10'000;    // prove --depth, in ticks
+inline constexpr std::int64_t kMaxTicks = 1'000'000;      // --max-ticks; run --uplink TICK
+
+// A whole number `text` given to `option`, within [min, max]; UsageError otherwise ("--depth
+// must be a whole number from 1 to 10000, not -1").
+std::int64_t whole_number(const std::string& option, const std::string& text, std::int64_t min,
+                          std::int64_t max);
+// Adds an option that takes a whole number in [min, max] (checked by whole_number) and passes it
+// to `set`; the help names the range.
+CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, std::int64_t min,
+                               std::int64_t max, const std::string& help,
+                               std::function<void(std::int64_t)> set);
 
 // Loads a mission, or prints why it cannot and returns nullopt (exit code 2: not a mission
 // directory at all).

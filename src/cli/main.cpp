@@ -2,6 +2,7 @@
 #include <exception>
 #include <iostream>
 
+#include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "smt/solver.hpp"
@@ -31,6 +32,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : uabt::cli::kExitUsage;
+  } catch (const uabt::cli::UsageError& e) {
+    std::cerr << "uabt: " << e.what() << "\n";
+    return uabt::cli::kExitUsage;
+  } catch (const uabt::OutputError& e) {
+    // An output path uabt cannot write: a command-line error.
+    std::cerr << "uabt: " << e.what() << "\n";
+    return uabt::cli::kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << "uabt: " << e.what() << "\n";
     return uabt::cli::kExitFail;

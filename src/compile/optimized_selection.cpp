@@ -4,6 +4,7 @@
 // ReactiveSequence).
 #include <algorithm>
 
+#include "bt/structure.hpp"
 #include "compile/compile.hpp"
 #include "fretish/requirement.hpp"
 
@@ -32,30 +33,33 @@ class Emitter {
     std::vector<std::size_t> cells(space_.cells());
     for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = c;
     bt::Node n = emit(decision_.root, cells);
+    // One requirement holds in every state: its leaf goes below a selector of its own, so that
+    // the leaf keeps its requirement's name and the selector the node's.
+    if (decision_.nodes[decision_.root].test < 0 && decision_.nodes[decision_.root].label >= 0)
+      n = node("Sequence", {std::move(n)});
     n.set_attribute("name", adaptable_);
     return n;
   }
 
-  // Trace entries for the emitted tree, once it has its final shape.
-  void trace(const bt::Node& n, const std::string& path, std::vector<TraceEntry>& out) const {
+  // Trace entries for the emitted tree, once it has its final shape. `in_leaf`: the
+  // requirement of the leaf `n` lies in (its alternative call names it).
+  void trace(const bt::Node& n, const std::string& path, std::vector<TraceEntry>& out,
+             const fretish::SelectionRequirement* in_leaf = nullptr) const {
     TraceEntry e;
     e.tree_id = adaptable_;
     e.node_path = path;
-    const std::string* name = n.attribute("name");
-    const fretish::SelectionRequirement* req = nullptr;
-    if (name)
-      for (const auto* r : reqs_)
-        if (r->id == *name) req = r;
+    const fretish::SelectionRequirement* leaf = in_leaf;
     if (path.find('/') == path.rfind('/')) {
       e.atom = "selector";
-    } else if (n.tag == "Sequence" && req != nullptr && n.children.size() == 1) {
+    } else if (const auto* req = leaf_requirement(n)) {
+      leaf = req;
       e.requirement = req->id;
       e.atom = "requirement";
       e.source = req->location;
-    } else if (n.tag == "SubTree") {
-      e.requirement = leaf_requirement_->id;
-      e.atom = "selected_alt = " + leaf_requirement_->alternative;
-      e.source = leaf_requirement_->alternative_location;
+    } else if (n.tag == "SubTree" && leaf != nullptr) {
+      e.requirement = leaf->id;
+      e.atom = "selected_alt = " + leaf->alternative;
+      e.source = leaf->alternative_location;
     } else if (n.tag == "ScriptCondition") {
       e.atom = *n.attribute("code");
       e.source = source_of(e.atom);
@@ -66,13 +70,20 @@ class Emitter {
       e.atom = n.tag == "Inverter" ? "!" : "decision";
     }
     out.push_back(e);
-    for (std::size_t i = 0; i < n.children.size(); ++i) {
-      if (n.tag == "Sequence" && req != nullptr && n.children.size() == 1) leaf_requirement_ = req;
-      trace(n.children[i], path_of(path, n.children[i], i), out);
-    }
+    for (std::size_t i = 0; i < n.children.size(); ++i)
+      trace(n.children[i], path_of(path, n.children[i], i), out, leaf);
   }
 
  private:
+  // The requirement a leaf (a Sequence named after it, calling its alternative) selects for.
+  const fretish::SelectionRequirement* leaf_requirement(const bt::Node& n) const {
+    const std::string* name = n.attribute("name");
+    if (n.tag != "Sequence" || name == nullptr || n.children.size() != 1) return nullptr;
+    for (const auto* r : reqs_)
+      if (r->id == *name) return r;
+    return nullptr;
+  }
+
   static bt::Node node(std::string tag, std::vector<bt::Node> children = {}) {
     bt::Node n;
     n.tag = std::move(tag);
@@ -181,7 +192,6 @@ class Emitter {
   const Decision& decision_;
   int bt_format_;
   bool reactive_;
-  mutable const fretish::SelectionRequirement* leaf_requirement_ = nullptr;
 };
 
 int depth_of(const bt::Node& n) {
@@ -224,7 +234,7 @@ std::optional<bt::Node> optimized_selector(const load::Mission& m, const std::st
   }
   Emitter emitter(m, adaptable, reqs, *space, decision, bt_format, reactive);
   bt::Node root = emitter.root();
-  if (depth_of(root) > 200) {  // BT.CPP refuses nesting deeper than 256
+  if (depth_of(root) > bt::kMaxDepth) {  // its file could not be read back
     stats.reason = "the decision structure would nest too deep";
     return std::nullopt;
   }

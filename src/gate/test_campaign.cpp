@@ -57,9 +57,11 @@ void write_test_campaign(const Outcome& outcome, const std::filesystem::path& di
     const auto name = entry.path().filename().string();
     const auto extension = entry.path().extension();
     if ((extension == ".json" || name == campaign::kJunitFile) && !written.count(name))
-      std::filesystem::remove(entry.path(), error);
+      remove_output_file(entry.path());
   }
-  if (written.empty()) std::filesystem::remove(dir, error);  // only when empty
+  // Only when empty, and never a link to a directory of the user's.
+  if (written.empty() && !std::filesystem::is_symlink(dir, error))
+    std::filesystem::remove(dir, error);
 }
 
 }  // namespace uabt::gate

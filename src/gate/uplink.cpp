@@ -85,7 +85,7 @@ void write_merged_mission(const load::Mission& m, const fs::path& dir) {
   // Only what an earlier merge wrote goes away, never a directory of the user's.
   for (const char* name :
        {"mission.xml", "requirements.fret", "domain.fret", "nodes.xml", "world.json"})
-    fs::remove(dir / name, ec);
+    remove_output_file(dir / name);
   fs::remove_all(dir / "alternatives", ec);
 
   write_file_atomically(dir / "mission.xml", read_or_throw(m.mission_xml));

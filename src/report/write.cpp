@@ -26,9 +26,11 @@ void write_counterexamples(const ReportInput& input, const std::filesystem::path
   for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
     const auto name = entry.path().filename().string();
     if (entry.path().extension() == ".json" && !written.count(name))
-      std::filesystem::remove(entry.path(), error);
+      remove_output_file(entry.path());
   }
-  if (written.empty()) std::filesystem::remove(dir, error);  // only when empty
+  // Only when empty, and never a link to a directory of the user's.
+  if (written.empty() && !std::filesystem::is_symlink(dir, error))
+    std::filesystem::remove(dir, error);
 }
 
 }  // namespace
@@ -58,11 +60,7 @@ void write_reports(const ReportInput& input, const std::filesystem::path& out_di
       write_file_atomically(path, compiled_xml);
       continue;
     }
-    std::error_code error;
-    std::filesystem::remove(path, error);
-    if (error)
-      throw std::runtime_error("cannot remove " + path.filename().string() + ": " +
-                               error.message());
+    remove_output_file(path);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <tinyxml2.h>
 
 #include "base/files.hpp"
+#include "bt/structure.hpp"
 #include "bt/xml_io.hpp"
 #include "bt_test_util.hpp"
 
@@ -132,19 +133,34 @@ std::string nested(int depth) {
 
 TEST(Hostile, HundredThousandDeepIsAFindingNotACrash) {
   const Finding f = refused(nested(100000));
-  EXPECT_NE(f.message.find("nested deeper than 256"), std::string::npos) << f.message;
+  EXPECT_NE(f.message.find("nested deeper than " + std::to_string(kMaxXmlDepth)), std::string::npos)
+      << f.message;
   EXPECT_EQ(f.location.line, 1);
-  // The 257th nested element: <root>, <BehaviorTree>, then 254 Inverters fit.
-  EXPECT_EQ(f.location.column, 1 + 6 + 21 + 254 * 10);
+  // The first element too deep: <root>, <BehaviorTree>, then kMaxXmlDepth - 2 Inverters fit.
+  EXPECT_EQ(f.location.column, 1 + 6 + 21 + (kMaxXmlDepth - 2) * 10);
 }
 
-TEST(Hostile, TinyXml2DepthLimitIsReported) {
-  // tinyxml2 9 stops at TINYXML2_MAX_ELEMENT_DEPTH, below BT.CPP's 256; the finding says so.
-  const Finding f = refused(nested(TINYXML2_MAX_ELEMENT_DEPTH));
-  EXPECT_NE(f.message.find("tinyxml2"), std::string::npos) << f.message;
-  // Just below the limit reads fine.
-  const Document doc = testing::parse_clean(nested(TINYXML2_MAX_ELEMENT_DEPTH - 4));
-  EXPECT_EQ(doc.trees.at(0).root.tag, "Inverter");
+// tinyxml2 refuses elements nested as deep as TINYXML2_MAX_ELEMENT_DEPTH (it counts the document
+// and the innermost content too); uabt refuses them first, in its own words, at the element.
+TEST(Hostile, TinyXml2DepthLimitIsUabtsLimit) {
+  static_assert(kMaxXmlDepth == TINYXML2_MAX_ELEMENT_DEPTH - 2);
+  // <root>, <BehaviorTree>, Inverters and <X/>: as deep as uabt's limit reads fine, even
+  // written <X></X>, which tinyxml2 counts one deeper.
+  for (const char* leaf : {"<X/>", "<X></X>"}) {
+    std::string text = "<root><BehaviorTree ID=\"A\">";
+    for (int i = 0; i < kMaxXmlDepth - 3; ++i) text += "<Inverter>";
+    text += leaf;
+    for (int i = 0; i < kMaxXmlDepth - 3; ++i) text += "</Inverter>";
+    const Document doc = testing::parse_clean(text + "</BehaviorTree></root>");
+    EXPECT_EQ(doc.trees.at(0).root.tag, "Inverter");
+  }
+  // One deeper is refused at the innermost element, an empty one too.
+  const Finding f = refused(nested(kMaxXmlDepth - 2));
+  EXPECT_NE(
+      f.message.find("nested deeper than " + std::to_string(kMaxXmlDepth) + " levels: tinyxml2"),
+      std::string::npos)
+      << f.message;
+  EXPECT_EQ(f.location.column, 1 + 6 + 21 + (kMaxXmlDepth - 2) * 10);
 }
 
 TEST(Hostile, OversizedFileIsRefused) {

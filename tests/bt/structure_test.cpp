@@ -164,15 +164,20 @@ TEST(Structure, DepthLimit) {
     if (depth < 300) node = &node->children.emplace_back();
   }
   const auto findings = check_structure({&tree}, {});
-  const Finding f = only(findings, "nesting deeper than 256 (BehaviorTree.CPP's limit)");
-  EXPECT_EQ(f.location.line, 257);
+  const Finding f = only(findings, "nesting deeper than " + std::to_string(kMaxDepth) +
+                                       " below <BehaviorTree>: its file would nest elements "
+                                       "deeper than " +
+                                       std::to_string(kMaxXmlDepth) +
+                                       ", which tinyxml2 (BehaviorTree.CPP's XML parser) "
+                                       "refuses; split the tree into SubTrees");
+  EXPECT_EQ(f.location.line, kMaxDepth + 1);
 
   TreeDef ok;
   ok.id = "Ok";
   node = &ok.root;
-  for (int depth = 1; depth <= 256; ++depth) {
-    node->tag = depth == 256 ? "X" : "Inverter";
-    if (depth < 256) node = &node->children.emplace_back();
+  for (int depth = 1; depth <= kMaxDepth; ++depth) {
+    node->tag = depth == kMaxDepth ? "X" : "Inverter";
+    if (depth < kMaxDepth) node = &node->children.emplace_back();
   }
   EXPECT_TRUE(check_structure({&ok}, {}).empty());
 }

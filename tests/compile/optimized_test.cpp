@@ -2,7 +2,9 @@
 // it never costs more than Algorithm 1's layout.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
+#include <map>
 
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
@@ -210,6 +212,69 @@ TEST(OptimizedSelection, KeepsADeclaredReactiveSelection) {
   const load::Mission plain = load_clean(testing::mission_dir("exploration"));
   EXPECT_EQ(selection_root(compile_with(plain, SelectionStyle::optimized), "exploration").tag,
             "IfThenElse");
+}
+
+// One requirement that holds in every state, beside one that holds in none (R1's guard is
+// unsatisfiable) or alone (its guard always true): the decision structure tests nothing and
+// runs that requirement's alternative, named after it below a selector named after the node.
+std::map<std::string, std::string> one_requirement_holds_files(bool beside_unsatisfiable) {
+  std::map<std::string, std::string> files;
+  files["mission.xml"] = testing::mission_with("    <Adaptable ID=\"navigation\"/>");
+  files["alternatives/navigation/a.xml"] = testing::alternative_tree("a");
+  files["alternatives/navigation/b.xml"] = testing::alternative_tree("b");
+  if (beside_unsatisfiable) {
+    files["domain.fret"] = "integer battery in [0, 100]\n";
+    files["requirements.fret"] =
+        "R1: In navigation if battery > 80 & battery < 20 Mission shall satisfy selected_alt = "
+        "a\n"
+        "R2: In navigation Mission shall satisfy selected_alt = b\n";
+  } else {
+    files["domain.fret"] = "integer x in [-3, 0]\n";
+    files["requirements.fret"] =
+        "R2: In navigation if !(x = 1) Mission shall satisfy selected_alt = b\n";
+  }
+  return files;
+}
+
+TEST(OptimizedSelection, ARequirementThatHoldsEverywhereIsSelectedWithoutATest) {
+  for (const bool beside_unsatisfiable : {true, false})
+    for (const bool reactive : {false, true}) {
+      SCOPED_TRACE(std::string(beside_unsatisfiable ? "beside R1" : "alone") +
+                   (reactive ? ", declared reactive" : ""));
+      auto files = one_requirement_holds_files(beside_unsatisfiable);
+      if (reactive)
+        files["mission.xml"] =
+            testing::mission_with("    <Adaptable ID=\"navigation\" selection=\"reactive\"/>");
+      const TempMission t(files);
+      std::string error;
+      const auto m = load::load_mission(t.dir(), {}, error);
+      ASSERT_TRUE(m.has_value()) << error;
+      const Result r = compile_with(*m, SelectionStyle::optimized);
+      ASSERT_EQ(r.selection_stats.size(), 1u);
+      EXPECT_TRUE(r.selection_stats.front().optimized_used) << r.selection_stats.front().reason;
+      EXPECT_EQ(r.selection_stats.front().optimized.worst, 0);
+      const bt::Node& root = selection_root(r, "navigation");
+      ASSERT_EQ(root.tag, "Sequence");
+      ASSERT_NE(root.attribute("name"), nullptr);
+      EXPECT_EQ(*root.attribute("name"), "navigation");
+      ASSERT_EQ(root.children.size(), 1u);
+      const bt::Node& leaf = root.children.front();
+      ASSERT_NE(leaf.attribute("name"), nullptr);
+      EXPECT_EQ(*leaf.attribute("name"), "R2");
+      // The trace names R2 at its leaf and at the call of its alternative.
+      const std::string call_path = "navigation/Sequence/Sequence[0]/SubTree[0]";
+      const auto call = std::find_if(r.trace.begin(), r.trace.end(),
+                                     [&](const TraceEntry& e) { return e.node_path == call_path; });
+      ASSERT_NE(call, r.trace.end());
+      EXPECT_EQ(call->requirement, "R2");
+      EXPECT_EQ(call->atom, "selected_alt = b");
+      // The engine starts b in every state, ticking no condition; the tree conforms.
+      const auto by_engine = testing::engine_count(*m, r.document, "navigation");
+      EXPECT_EQ(by_engine.mismatch, "");
+      EXPECT_EQ(by_engine.cost.worst, 0);
+      const conform::Result c = conform::conform_tree(*m, r.document, {});
+      EXPECT_FALSE(has_errors(c.findings)) << format_text(c.findings);
+    }
 }
 
 }  // namespace

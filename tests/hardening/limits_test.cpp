@@ -1,6 +1,6 @@
 // Every size limit of uabt gives a finding that names the file and line instead of a stack
 // overflow, a hang or a blow-up: FRETISH nesting (200) and expression depth (1000), XML depth
-// (tinyxml2's 100, BehaviorTree.CPP's 256), the input file size (kMaxInputFileBytes), and guards
+// (bt::kMaxXmlDepth, tinyxml2's), the input file size (kMaxInputFileBytes), and guards
 // with very many atoms or requirements.
 #include <gtest/gtest.h>
 
@@ -154,30 +154,41 @@ std::string nested_mission(int depth) {
                       "    </Sequence>");
 }
 
-TEST(Limits, XmlDeeperThanTinyxml2Accepts) {
-  const GateRun run = gate_with("mission.xml", nested_mission(120));
-  ASSERT_TRUE(run.outcome.has_value());
-  EXPECT_FALSE(run.passed());
-  const Finding* f = run.error_in("mission.xml", "bt-xml");
-  ASSERT_NE(f, nullptr) << run.text();
-  EXPECT_GT(f->location.line, 1);
-  EXPECT_NE(f->message.find("nested deeper than"), std::string::npos) << f->message;
-}
-
-TEST(Limits, XmlDeeperThanBehaviorTreeCppAccepts) {
-  for (const int depth : {bt::kMaxDepth + 10, 200000}) {
+TEST(Limits, XmlDeeperThanTinyxml2AcceptsIsRefusedInUabtsWords) {
+  for (const int depth : {120, 250, 200000}) {
     SCOPED_TRACE(depth);
     const GateRun run = gate_with("mission.xml", nested_mission(depth));
     ASSERT_TRUE(run.outcome.has_value());
     EXPECT_FALSE(run.passed());
     const Finding* f = run.error_in("mission.xml", "bt-xml");
     ASSERT_NE(f, nullptr) << run.text();
-    // <root>, <BehaviorTree>, <Sequence>, then Inverters from line 5: the one at depth 257 is
-    // the 254th.
-    EXPECT_EQ(f->location.line, 4 + (bt::kMaxDepth + 1 - 3));
+    // <root>, <BehaviorTree>, <Sequence>, then Inverters from line 5: the first one deeper
+    // than kMaxXmlDepth is at its line, column 1.
+    EXPECT_EQ(f->location.line, 4 + (bt::kMaxXmlDepth + 1 - 3));
     EXPECT_EQ(f->location.column, 1);
-    EXPECT_NE(f->message.find("nested deeper than 256"), std::string::npos) << f->message;
+    EXPECT_NE(f->message.find("nested deeper than " + std::to_string(bt::kMaxXmlDepth) +
+                              " levels: tinyxml2"),
+              std::string::npos)
+        << f->message;
   }
+}
+
+// The issue's case: a 250-deep alternative was refused by tinyxml2 ("Element nesting is too
+// deep", no column) although the documented limit was 256.
+TEST(Limits, ADeepAlternativeIsRefusedAtTheElementTooDeep) {
+  const GateRun run =
+      gate_with("alternatives/navigation/on_dust.xml",
+                alternative_tree("on_dust", repeat("<Inverter>\n", 250) + "<MoveForward/>\n" +
+                                                repeat("</Inverter>\n", 250)));
+  ASSERT_TRUE(run.outcome.has_value());
+  const Finding* f = run.error_in("alternatives/navigation/on_dust.xml", "bt-xml");
+  ASSERT_NE(f, nullptr) << run.text();
+  // <root> and <BehaviorTree> on lines 1-2, then one Inverter a line: the first one deeper
+  // than kMaxXmlDepth starts its line.
+  EXPECT_EQ(f->location.line, 2 + (bt::kMaxXmlDepth + 1 - 2));
+  EXPECT_EQ(f->location.column, 1);
+  EXPECT_EQ(f->message.find("Element nesting"), std::string::npos) << f->message;
+  EXPECT_NE(f->message.find("nested deeper than 98 levels"), std::string::npos) << f->message;
 }
 
 TEST(Limits, DeepTreesBuiltInMemoryAreCheckedWithoutRecursion) {
@@ -193,7 +204,8 @@ TEST(Limits, DeepTreesBuiltInMemoryAreCheckedWithoutRecursion) {
   node->tag = "Stop";
   const auto findings = bt::check_structure({&tree}, {});
   ASSERT_FALSE(findings.empty());
-  EXPECT_NE(findings[0].message.find("nesting deeper than 256"), std::string::npos);
+  EXPECT_NE(findings[0].message.find("nesting deeper than " + std::to_string(bt::kMaxDepth)),
+            std::string::npos);
   // The reader never builds such a tree; destroying it is the caller's business (the Node
   // destructor recurses), so unwind it iteratively here.
   while (!tree.root.children.empty()) {
