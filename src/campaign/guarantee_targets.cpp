@@ -105,7 +105,7 @@ std::vector<Planned> plan(const load::Mission& mission) {
     if (!r.scope && !condition) continue;
     // A timing that judges the response after the trigger has its response atoms decide there
     // (FRET's "only" scopes, which turn the timing round, keep the trigger's tick).
-    const monitor::Classified shape = monitor::classify(r, mission.domain.tick_seconds);
+    const monitor::Classified shape = monitor::classify(r);
     const bool only = r.scope && r.scope->keyword.rfind("only", 0) == 0;
     const std::string later = shape.shape && !only && monitor::judges_later(shape.shape->timing)
                                   ? judged_ticks(r, *shape.shape)

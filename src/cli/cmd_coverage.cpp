@@ -92,7 +92,7 @@ void register_coverage(CLI::App& app, int& exit_code) {
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->callback([args, &exit_code] {
-    auto mission = load_for_campaign(args->mission, args->uplinks, exit_code);
+    auto mission = load_without_errors(args->mission, args->uplinks, exit_code);
     if (!mission) return;
     try {
       campaign::Options options;

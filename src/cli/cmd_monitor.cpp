@@ -5,6 +5,7 @@
 #include "base/files.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
+#include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
 #include "monitor/check_trace.hpp"
 
@@ -77,6 +78,8 @@ void register_monitor(CLI::App& app, int& exit_code) {
         domain.tick_seconds = declared.tick_seconds;
       }
     }
+    // Durations become ticks here, once, with the tick period of --domain.
+    fretish::lower_durations(requirements, domain.tick_seconds, findings);
     std::optional<monitor::Trace> trace;
     const std::string trace_file = fs::path(args->trace).generic_string();
     if (auto text = read_or_finding(args->trace, findings))

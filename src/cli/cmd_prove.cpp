@@ -42,7 +42,7 @@ std::string proof_extent(const prove::Result& r, const prove::Answer& a) {
 
 // Model checking (ARCHITECTURE §10): every guarantee over every run of the compiled mission in the
 // world model. Exit 0 when every guarantee is proved, 1 otherwise (violated, bounded, not
-// checked, or the mission does not compile), 2 on a bad command line or world.json.
+// checked, or the mission does not load or compile), 2 on a bad command line or world.json.
 void register_prove(CLI::App& app, int& exit_code) {
   struct Args {
     std::string mission, format = "text", output, counterexamples, selection, engine = "auto";
@@ -73,11 +73,8 @@ void register_prove(CLI::App& app, int& exit_code) {
   cmd->callback([args, &exit_code] {
     if (!args->counterexamples.empty())
       check_output_directory(args->counterexamples, "--counterexamples");
-    auto mission = load_or_complain(args->mission, {});
-    if (!mission) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto mission = load_without_errors(args->mission, {}, exit_code);
+    if (!mission) return;
     gate::Options gate_options;
     apply_selection(args->selection, gate_options.compile);
     gate::Outcome outcome = gate::check_mission(std::move(*mission), gate_options, tool_version());

@@ -43,14 +43,14 @@ void register_tests(CLI::App& app, int& exit_code) {
                     [args](std::int64_t ticks) { args->max_ticks = ticks; });
   cmd->callback([args, &exit_code] {
     check_output_directory(args->out, "--out");  // before the work, not after it
-    auto mission = load_for_campaign(args->mission, args->uplinks, exit_code);
+    auto mission = load_without_errors(args->mission, args->uplinks, exit_code);
     if (!mission) return;
     // The last package is the one tested, as `gate --uplink` gates it: its behaviour changes
     // are those from the mission with the packages before it.
     std::optional<load::Mission> running;
     if (!args->uplinks.empty()) {
-      running = load_for_campaign(args->mission, {args->uplinks.begin(), args->uplinks.end() - 1},
-                                  exit_code);
+      running = load_without_errors(args->mission, {args->uplinks.begin(), args->uplinks.end() - 1},
+                                    exit_code);
       if (!running) return;
     }
     campaign::Options options;

@@ -94,9 +94,9 @@ std::set<campaign::Criterion> campaign_criteria(const std::string& name) {
   return {Criterion::decision, Criterion::mcdc, Criterion::boundary, Criterion::guarantee};
 }
 
-std::optional<load::Mission> load_for_campaign(const std::string& dir,
-                                               const std::vector<std::string>& uplinks,
-                                               int& exit_code) {
+std::optional<load::Mission> load_without_errors(const std::string& dir,
+                                                 const std::vector<std::string>& uplinks,
+                                                 int& exit_code) {
   load::LoadOptions options;
   for (const auto& u : uplinks) options.uplinks.push_back(u);
   auto mission = load_or_complain(dir, options);

@@ -69,11 +69,13 @@ inline constexpr const char* kSelectionHelp =
 
 // --criterion NAME of `uabt tests`: decision, mcdc, boundary, guarantee, or all of them ("all").
 std::set<campaign::Criterion> campaign_criteria(const std::string& name);
-// The mission (with `uplinks` merged) for `uabt tests` and `uabt coverage`, or nullopt after
-// printing why and setting `exit_code`: 2 when it is no mission, 1 when it has load errors.
-std::optional<load::Mission> load_for_campaign(const std::string& dir,
-                                               const std::vector<std::string>& uplinks,
-                                               int& exit_code);
+// The mission (with `uplinks` merged) for `uabt prove`, `uabt tests` and `uabt coverage`, or
+// nullopt after printing why and setting `exit_code`: 2 when it is no mission, 1 when it has
+// load errors (a requirement that does not parse, a duration with no meaning in ticks, …),
+// which would leave what they answer about something other than what is written.
+std::optional<load::Mission> load_without_errors(const std::string& dir,
+                                                 const std::vector<std::string>& uplinks,
+                                                 int& exit_code);
 
 // Writes `content` to `path` atomically, or to stdout when `path` is empty or "-".
 void emit(const std::string& path, const std::string& content);

@@ -172,6 +172,7 @@ class RequirementBuilder {
                                               : "after";
       if (const SyntaxNode* d = form.child<g::duration_value>()) {
         t.duration = std::string(d->text(text_));
+        t.duration_range = range(*d);
         if (std::string why = number_misfit(t.duration); !why.empty()) {
           findings_.push_back(
               make_finding("fretish-syntax", "duration: " + why, map_.location(d->begin)));

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,8 +43,15 @@ struct Timing {
   // "at the same timepoint", "at the next timepoint", "at the last timepoint", within, for,
   // after, until, before, eventually, finally, always, never
   std::string keyword;
-  std::string duration;    // number for within/for/after
-  std::string unit;        // ticks, seconds, ... as written (lower case)
+  std::string duration;        // number for within/for/after, as written
+  std::string unit;            // ticks, seconds, ... as written (lower case)
+  SourceRange duration_range;  // the number
+  // The duration in whole ticks, set once where the requirement is lowered
+  // (fretish/durations.hpp, with the domain's tick period). Every command reads it, never
+  // `duration` and `unit`. Unset when there is no duration or it cannot be converted; then
+  // `unconverted` says why, as the lowering reported it.
+  std::optional<std::uint64_t> ticks;
+  std::string unconverted;
   ExprPtr stop_condition;  // until B / before B
   SourceRange range;
 };

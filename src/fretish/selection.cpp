@@ -3,6 +3,8 @@
 
 #include <cctype>
 
+#include "fretish/durations.hpp"
+
 namespace uabt::fretish {
 
 namespace {
@@ -27,13 +29,6 @@ std::string scope_text(const Scope& s) {
   std::string out = s.keyword;
   if (!s.mode.empty()) out += " " + s.mode;
   if (s.condition) out += " " + to_fretish(*s.condition);
-  return out;
-}
-
-std::string timing_text(const Timing& t) {
-  std::string out = t.keyword;
-  if (!t.duration.empty()) out += " " + t.duration + " " + t.unit;
-  if (t.stop_condition) out += " " + to_fretish(*t.stop_condition);
   return out;
 }
 

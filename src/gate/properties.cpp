@@ -102,7 +102,7 @@ monitor::Observables mission_observables(const load::Mission& m) {
 }
 
 std::vector<Finding> check_mission_properties(const load::Mission& m) {
-  return monitor::check_properties(m.properties, mission_observables(m), m.domain.tick_seconds);
+  return monitor::check_properties(m.properties, mission_observables(m));
 }
 
 }  // namespace uabt::gate

@@ -8,6 +8,7 @@
 #include "base/files.hpp"
 #include "bt/structure.hpp"
 #include "bt/xml_io.hpp"
+#include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
 #include "load/layout.hpp"
 #include "load/references.hpp"
@@ -477,6 +478,8 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
   fretish::Classification classified = fretish::classify_requirements(m.requirements, m.findings);
   m.selections = std::move(classified.selections);
   m.properties = std::move(classified.properties);
+  // Durations become ticks here, once, with the merged domain's tick period.
+  fretish::lower_durations(m.properties, m.domain.tick_seconds, m.findings);
   describe_merges(m);
   check_vocabulary(m, vocabulary_uses(m));
   infer_condition_variables(m);

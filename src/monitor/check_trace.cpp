@@ -72,7 +72,7 @@ TraceReport check_trace(const std::vector<fretish::Requirement>& requirements,
     if (!is_selection(r)) properties_only.push_back(r);
   for (const fretish::SelectionRequirement& r : selections)
     vocabulary.literals.insert(r.alternative);
-  PropertySet properties(properties_only, domain.assumptions, vocabulary, domain.tick_seconds);
+  PropertySet properties(properties_only, domain.assumptions, vocabulary);
   SelectionJudge judge(selections, symbols, vocabulary.literals);
 
   const auto to_frame_value = [&](const std::string& name, const TraceValue& value,

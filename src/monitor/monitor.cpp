@@ -2,11 +2,10 @@
 
 #include "base/number_text.hpp"
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <iterator>
 
+#include "fretish/durations.hpp"
 #include "fretish/expr.hpp"
 
 namespace uabt::monitor {
@@ -27,33 +26,6 @@ std::optional<ScopeKind> scope_kind(const fretish::Scope& s) {
   if (contains(s.keyword, "before")) return only ? ScopeKind::only_before : ScopeKind::before;
   if (s.negated) return only ? std::nullopt : std::optional(ScopeKind::notin);
   return only ? ScopeKind::only_in : ScopeKind::in;
-}
-
-std::optional<std::uint64_t> duration_ticks(const fretish::Timing& t,
-                                            std::optional<double> tick_seconds,
-                                            std::string& reason) {
-  const double value = std::strtod(t.duration.c_str(), nullptr);
-  const std::string written = t.keyword + " " + t.duration + (t.unit.empty() ? "" : " " + t.unit);
-  const std::optional<double> per_unit = fretish::seconds_per_unit(t.unit);
-  double ticks = value;
-  if (per_unit) {
-    if (!tick_seconds || *tick_seconds <= 0) {
-      reason = "timing '" + written +
-               "' is not in ticks and the domain declares no tick period (e.g. 'tick 100 ms' "
-               "in domain.fret)";
-      return std::nullopt;
-    }
-    // Rounded up to whole ticks; the small tolerance keeps 0.3 s / 100 ms at 3 ticks.
-    ticks = std::ceil(value * *per_unit / *tick_seconds - 1e-9);
-  } else if (value != std::floor(value)) {
-    reason = "timing '" + written + "' is not a whole number of ticks";
-    return std::nullopt;
-  }
-  if (!(ticks >= 0) || ticks > 1e12) {
-    reason = "timing '" + written + "' is out of range";
-    return std::nullopt;
-  }
-  return static_cast<std::uint64_t>(ticks);
 }
 
 std::optional<TimingKind> timing_kind(const std::string& k) {
@@ -78,7 +50,7 @@ constexpr std::uint64_t kMaxRingTicks = std::uint64_t{1} << 26;
 
 }  // namespace
 
-Classified classify(const fretish::Requirement& r, std::optional<double> tick_seconds) {
+Classified classify(const fretish::Requirement& r) {
   Classified c;
   if (r.freeform) {
     c.reason = "freeform requirement: FRET does not formalize it";
@@ -111,9 +83,13 @@ Classified classify(const fretish::Requirement& r, std::optional<double> tick_se
   }
   s.timing = *timing;
   if (!r.timing.duration.empty()) {
-    const auto ticks = duration_ticks(r.timing, tick_seconds, c.reason);
-    if (!ticks) return c;
-    s.duration = *ticks;
+    if (!r.timing.ticks) {
+      c.reason = !r.timing.unconverted.empty()
+                     ? r.timing.unconverted
+                     : "timing '" + fretish::timing_text(r.timing) + "' was not lowered to ticks";
+      return c;
+    }
+    s.duration = *r.timing.ticks;
   }
   const bool ring = (s.scope == ScopeKind::only_in || s.scope == ScopeKind::only_after ||
                      s.scope == ScopeKind::only_before) &&
@@ -136,9 +112,8 @@ Classified classify(const fretish::Requirement& r, std::optional<double> tick_se
 
 std::unique_ptr<RequirementMonitor> RequirementMonitor::compile(const fretish::Requirement& r,
                                                                 const Resolver& resolve,
-                                                                std::optional<double> tick_seconds,
                                                                 std::string& reason) {
-  const Classified c = classify(r, tick_seconds);
+  const Classified c = classify(r);
   if (!c.shape) {
     reason = c.reason;
     return nullptr;

@@ -21,18 +21,17 @@ struct Classified {
   std::string reason;  // when !shape: what has no meaning here, naming the field
 };
 
-// FRET's scope, condition kind and timing of a parsed requirement; durations in ticks
-// (`tick_seconds` is the tick period, needed for units other than ticks).
-Classified classify(const fretish::Requirement& r, std::optional<double> tick_seconds);
+// FRET's scope, condition kind and timing of a lowered requirement: its duration is the
+// ticks its lowering gave (fretish/durations.hpp); one that could not be converted has no
+// shape, with the lowering's reason.
+Classified classify(const fretish::Requirement& r);
 
 // One requirement compiled into a synchronous monitor: step() once per tick, constant time.
 class RequirementMonitor {
  public:
   // nullopt with `reason` when the requirement cannot be monitored on this vocabulary.
   static std::unique_ptr<RequirementMonitor> compile(const fretish::Requirement& r,
-                                                     const Resolver& resolve,
-                                                     std::optional<double> tick_seconds,
-                                                     std::string& reason);
+                                                     const Resolver& resolve, std::string& reason);
 
   // The verdict of the trace so far, read as a whole finite trace (FRET's formula at this
   // tick). After an evaluation error the monitor stops (error() says why).

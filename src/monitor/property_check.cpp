@@ -178,12 +178,12 @@ class PartChecker {
 }  // namespace
 
 std::vector<Finding> check_properties(const std::vector<fretish::Requirement>& properties,
-                                      const Observables& observables,
-                                      std::optional<double> tick_seconds) {
+                                      const Observables& observables) {
   std::vector<Finding> findings;
   for (const fretish::Requirement& r : properties) {
-    const Classified c = classify(r, tick_seconds);
-    if (!c.shape) {
+    const Classified c = classify(r);
+    // A duration that could not be converted is the lowering's error, reported there.
+    if (!c.shape && r.timing.unconverted.empty()) {
       Finding f = make_finding("property-timing", r.id + ": " + c.reason, r.location);
       f.requirements = {r.id};
       findings.push_back(std::move(f));

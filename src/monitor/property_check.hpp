@@ -1,6 +1,5 @@
 #pragma once
 #include <map>
-#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -23,9 +22,9 @@ struct Observables {
 // Static checks of mission properties before a run: every name is an observable or a value
 // (`property-reference`, with the closest observables as a note), every part is a boolean and
 // relations compare alike (`property-type`), and the timing has a meaning in ticks
-// (`property-timing`).
+// (`property-timing`; a duration that could not be converted was reported where the
+// requirements were lowered, fretish/durations.hpp, and is not reported again).
 std::vector<Finding> check_properties(const std::vector<fretish::Requirement>& properties,
-                                      const Observables& observables,
-                                      std::optional<double> tick_seconds);
+                                      const Observables& observables);
 
 }  // namespace uabt::monitor

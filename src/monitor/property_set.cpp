@@ -29,14 +29,14 @@ std::string held_text(const PropertyResult& r) {
 
 PropertySet::PropertySet(const std::vector<fretish::Requirement>& requirements,
                          const std::vector<fretish::Assumption>& assumptions,
-                         const Vocabulary& vocabulary, std::optional<double> tick_seconds)
+                         const Vocabulary& vocabulary)
     : vocabulary_(vocabulary) {
-  add_all(requirements, assumptions, tick_seconds, entries_);
+  add_all(requirements, assumptions, entries_);
 }
 
 void PropertySet::add_all(const std::vector<fretish::Requirement>& requirements,
                           const std::vector<fretish::Assumption>& assumptions,
-                          std::optional<double> tick_seconds, std::vector<Entry>& out) const {
+                          std::vector<Entry>& out) const {
   const Resolver resolve = [this](const std::string& name) -> Resolved {
     if (const auto slot = vocabulary_.variables->find(name))
       return {Resolved::Kind::variable, *slot};
@@ -51,7 +51,7 @@ void PropertySet::add_all(const std::vector<fretish::Requirement>& requirements,
     e.base.location = r.location;
     e.text = std::move(text);
     std::string reason;
-    e.monitor = RequirementMonitor::compile(r, resolve, tick_seconds, reason);
+    e.monitor = RequirementMonitor::compile(r, resolve, reason);
     if (!e.monitor) {
       e.base.verdict = Verdict::not_monitored;
       e.base.reason = reason;
@@ -73,11 +73,10 @@ void PropertySet::add_all(const std::vector<fretish::Requirement>& requirements,
 std::vector<std::size_t> PropertySet::update(const std::vector<fretish::Requirement>& requirements,
                                              const std::vector<fretish::Assumption>& assumptions,
                                              const std::set<std::string>& literals,
-                                             std::optional<double> tick_seconds,
                                              std::uint64_t last_tick) {
   vocabulary_.literals.insert(literals.begin(), literals.end());
   std::vector<Entry> next;
-  add_all(requirements, assumptions, tick_seconds, next);
+  add_all(requirements, assumptions, next);
   std::vector<std::size_t> ended;
   std::vector<bool> kept(next.size(), false);
   for (std::size_t i = 0; i < entries_.size(); ++i) {

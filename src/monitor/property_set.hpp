@@ -54,10 +54,9 @@ struct Vocabulary {
 class PropertySet {
  public:
   // Domain assumptions (`assume NAME: E`, FRET "assumption" requirements) are monitored as
-  // "always E" assumptions. `tick_seconds`: the tick period for durations in time units.
+  // "always E" assumptions. The requirements are lowered (fretish/durations.hpp).
   PropertySet(const std::vector<fretish::Requirement>& requirements,
-              const std::vector<fretish::Assumption>& assumptions, const Vocabulary& vocabulary,
-              std::optional<double> tick_seconds);
+              const std::vector<fretish::Assumption>& assumptions, const Vocabulary& vocabulary);
 
   // One tick. `tick` is the caller's number for it. Returns the indices of the properties whose
   // violation became final at this tick (safety properties, at the tick it happens).
@@ -71,8 +70,7 @@ class PropertySet {
   // properties violated at their last tick that step() did not report (as violated_at_end).
   std::vector<std::size_t> update(const std::vector<fretish::Requirement>& requirements,
                                   const std::vector<fretish::Assumption>& assumptions,
-                                  const std::set<std::string>& literals,
-                                  std::optional<double> tick_seconds, std::uint64_t last_tick);
+                                  const std::set<std::string>& literals, std::uint64_t last_tick);
 
   // Verdicts of the trace so far, read as a whole finite trace.
   std::vector<PropertyResult> results() const;
@@ -94,8 +92,7 @@ class PropertySet {
   };
   // Every requirement, then every assumption as "always E", as one list.
   void add_all(const std::vector<fretish::Requirement>& requirements,
-               const std::vector<fretish::Assumption>& assumptions,
-               std::optional<double> tick_seconds, std::vector<Entry>& out) const;
+               const std::vector<fretish::Assumption>& assumptions, std::vector<Entry>& out) const;
   std::vector<Entry> entries_;
   Vocabulary vocabulary_;
   bool started_ = false;  // step() was called: the trace is not empty

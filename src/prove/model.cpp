@@ -282,7 +282,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
     Property p;
     p.requirement = r;
     p.assumption = monitor::is_assumption(property);
-    const monitor::Classified c = monitor::classify(*r, std::nullopt);
+    const monitor::Classified c = monitor::classify(*r);
     fretish::ExprPtr mode;
     if (r->scope)
       mode = r->scope->condition ? r->scope->condition : fretish::make_identifier(r->scope->mode);

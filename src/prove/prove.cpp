@@ -163,7 +163,7 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
   runner.engine().add_observer(&obs);
   std::string reason;
   auto monitor = monitor::RequirementMonitor::compile(
-      *p.requirement, [&](const std::string& n) { return obs.resolve(n); }, std::nullopt, reason);
+      *p.requirement, [&](const std::string& n) { return obs.resolve(n); }, reason);
   if (!monitor) throw ProveError("internal error: replaying " + p.requirement->id + ": " + reason);
   std::vector<monitor::Val> frame;
   std::uint64_t first = 0;

@@ -32,8 +32,7 @@ PropertyMonitor::PropertyMonitor(const load::Mission& mission, const Engine& eng
     : engine_(engine) {
   const std::set<std::string> literals = bind(mission);
   monitor::Vocabulary vocabulary{&variables_, &symbols_, literals};
-  properties_.emplace(mission.properties, mission.domain.assumptions, vocabulary,
-                      mission.domain.tick_seconds);
+  properties_.emplace(mission.properties, mission.domain.assumptions, vocabulary);
   bind_selections(mission, literals);
 }
 
@@ -91,8 +90,8 @@ std::vector<PropertyViolation> PropertyMonitor::adopt(const load::Mission& missi
                                                       std::uint64_t last_tick) {
   const std::set<std::string> literals = bind(mission);
   std::vector<PropertyViolation> out;
-  for (std::size_t i : properties_->update(mission.properties, mission.domain.assumptions, literals,
-                                           mission.domain.tick_seconds, last_tick))
+  for (std::size_t i :
+       properties_->update(mission.properties, mission.domain.assumptions, literals, last_tick))
     out.push_back({last_tick, properties_->result(i)});
   bind_selections(mission, literals, last_tick);
   return out;

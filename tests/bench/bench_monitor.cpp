@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
 #include "monitor/property_set.hpp"
 
@@ -29,6 +30,7 @@ std::string with_duration(std::string timing, int n) {
 
 std::vector<uabt::fretish::Requirement> parse(const std::string& text) {
   auto parsed = uabt::fretish::parse_requirements_file(text, "bench.fret");
+  uabt::fretish::lower_durations(parsed.requirements, {}, parsed.findings);
   if (uabt::has_errors(parsed.findings)) throw std::runtime_error(parsed.findings[0].message);
   return parsed.requirements;
 }
@@ -55,7 +57,7 @@ void BM_MonitorTiming(benchmark::State& state) {
   const auto requirements = parse("R: in m upon c the sw shall " + timing + " satisfy p\n");
   Setup setup;
   for (const char* n : {"m", "c", "p", "s"}) setup.variables.id(n);
-  uabt::monitor::PropertySet set(requirements, {}, {&setup.variables, &setup.symbols, {}}, {});
+  uabt::monitor::PropertySet set(requirements, {}, {&setup.variables, &setup.symbols, {}});
   const auto frames = random_frames(4, 4096);
   std::uint64_t tick = 0;
   for (auto _ : state) {
@@ -93,7 +95,7 @@ void BM_MonitorTrace(benchmark::State& state) {
   for (int k = 0; k < 20; ++k) setup.variables.id("v" + std::to_string(k));
   const auto frames = random_frames(20, ticks);
   for (auto _ : state) {
-    uabt::monitor::PropertySet set(requirements, {}, {&setup.variables, &setup.symbols, {}}, {});
+    uabt::monitor::PropertySet set(requirements, {}, {&setup.variables, &setup.symbols, {}});
     for (std::size_t t = 0; t < ticks; ++t) benchmark::DoNotOptimize(set.step(frames[t], t));
   }
   state.SetItemsProcessed(state.iterations() * count * static_cast<std::int64_t>(ticks));

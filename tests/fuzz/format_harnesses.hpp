@@ -23,6 +23,7 @@
 
 #include "base/finding.hpp"
 #include "bt/xml_io.hpp"
+#include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
 #include "fuzz/entry_points.hpp"
 #include "fuzz/pipeline_harness.hpp"
@@ -453,6 +454,7 @@ class TraceHarness {
     requirements_ = std::move(parsed.requirements);
     std::vector<Finding> findings;
     domain_ = fretish::parse_domain_file(kDomain, "domain.fret", findings);
+    fretish::lower_durations(requirements_, domain_.tick_seconds, findings);
     findings.insert(findings.end(), parsed.findings.begin(), parsed.findings.end());
     if (has_errors(findings)) setup_error_ = detail::first_error(findings);
   }

@@ -257,7 +257,7 @@ TEST(MissionProperties, TheGateRefusesPropertiesWithoutMeaning) {
                         "name [property-type]"),
               std::string::npos)
         << text;
-    EXPECT_NE(text.find("requirements.fret:4:7: error: Secs: timing 'within 2 seconds' is not in "
+    EXPECT_NE(text.find("requirements.fret:4:30: error: Secs: timing 'within 2 seconds' is not in "
                         "ticks"),
               std::string::npos)
         << text;

@@ -217,11 +217,14 @@ TEST(MonitorCli, TickPeriodTurnsTimeUnitsIntoTicks) {
              "{\"tick\": 1, \"state\": {}}\n"
              "{\"tick\": 2, \"state\": {\"stopped\": true}}\n"}});
   EXPECT_EQ(uabt_in(files.dir(), "monitor r.fret run.jsonl --domain domain.fret").exit_code, 0);
+  // Without a tick period the duration has no meaning in ticks: an error at the duration, and
+  // no verdict.
   const CliRun no_period = uabt_in(files.dir(), "monitor r.fret run.jsonl");
   EXPECT_EQ(no_period.exit_code, 1);
-  EXPECT_NE(no_period.out.find("not-monitored: timing 'within 200 millisecs' is not in ticks"),
-            std::string::npos)
-      << no_period.out;
+  EXPECT_EQ(no_period.out,
+            "r.fret:1:41: error: Stop: timing 'within 200 millisecs' is not in ticks and the "
+            "domain declares no tick period (e.g. 'tick 100 ms' in domain.fret) "
+            "[property-timing]\n");
 }
 
 // FRET's own export, as it ships: FSM-007 ("within 5 ticks") violated by a trace where the

@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
 #include "monitor/monitor.hpp"
 #include "monitor_test_support.hpp"
@@ -18,7 +19,8 @@ void check_export(const std::string& file, std::size_t expected_requirements) {
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no FRET data";
   const std::string content = read_all(path);
   fretish::Domain domain;
-  const fretish::ParseResult parsed = fretish::parse_fret_json(content, file, domain);
+  fretish::ParseResult parsed = fretish::parse_fret_json(content, file, domain);
+  fretish::lower_durations(parsed.requirements, domain.tick_seconds, parsed.findings);
   EXPECT_FALSE(has_errors(parsed.findings))
       << (parsed.findings.empty() ? "" : parsed.findings[0].message);
   ASSERT_EQ(parsed.requirements.size(), expected_requirements);
@@ -42,7 +44,7 @@ void check_export(const std::string& file, std::size_t expected_requirements) {
     ASSERT_FALSE(formula.empty()) << r.id;
     const PtFormula oracle = PtFormula::parse(formula);
     std::string reason;
-    ASSERT_NE(monitor::RequirementMonitor::compile(r, resolve, {}, reason), nullptr)
+    ASSERT_NE(monitor::RequirementMonitor::compile(r, resolve, reason), nullptr)
         << r.id << ": " << reason;
     int violated = 0;
     for (int i = 0; i < kTraces; ++i) {
@@ -74,7 +76,7 @@ void check_export(const std::string& file, std::size_t expected_requirements) {
         frames.push_back(std::move(frame));
       }
       const std::vector<bool> expected = oracle.evaluate(trace);
-      auto run = monitor::RequirementMonitor::compile(r, resolve, {}, reason);
+      auto run = monitor::RequirementMonitor::compile(r, resolve, reason);
       for (std::size_t t = 0; t < trace.size(); ++t) {
         const bool got = run->step(frames[t]);
         ASSERT_FALSE(run->failed()) << r.id << ": " << run->error();

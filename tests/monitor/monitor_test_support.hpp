@@ -11,12 +11,23 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fretish/durations.hpp"
+#include "fretish/parse.hpp"
 #include "monitor/formula.hpp"
 #include "monitor/templates.hpp"
 #include "pt_oracle.hpp"
 #include "temp_mission.hpp"
 
 namespace uabt::testing {
+
+// A requirements file parsed and lowered as `uabt monitor` lowers it: its durations in ticks,
+// with the tick period `tick_seconds`; the lowering's findings join the parse's.
+inline fretish::ParseResult parse_lowered(const std::string& text,
+                                          std::optional<double> tick_seconds = {}) {
+  fretish::ParseResult parsed = fretish::parse_requirements_file(text, "r.fret");
+  fretish::lower_durations(parsed.requirements, tick_seconds, parsed.findings);
+  return parsed;
+}
 
 inline std::filesystem::path fret_reference(const std::string& file) {
   return std::filesystem::path(UABT_SHARED_DIR) / "reference" / "fret" / file;

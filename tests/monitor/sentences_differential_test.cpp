@@ -4,9 +4,11 @@
 
 #include <random>
 #include <regex>
+#include <tuple>
 
 #include "fretish/parse.hpp"
 #include "monitor/monitor.hpp"
+#include "monitor/property_check.hpp"
 #include "monitor_test_support.hpp"
 
 namespace uabt::testing {
@@ -86,12 +88,11 @@ TEST(MonitorSemantics, EveryPhraseMeansItsFretTemplate) {
       for (const Phrase& timing : kTimings) {
         const std::string sentence =
             scope.text + condition.text + "the sw shall " + timing.text + "satisfy p";
-        const fretish::ParseResult parsed =
-            fretish::parse_requirements_file("X: " + sentence + "\n", "r.fret");
+        const fretish::ParseResult parsed = parse_lowered("X: " + sentence + "\n");
         ASSERT_EQ(parsed.requirements.size(), 1u) << sentence;
         std::string reason;
         auto monitor =
-            monitor::RequirementMonitor::compile(parsed.requirements[0], resolve, {}, reason);
+            monitor::RequirementMonitor::compile(parsed.requirements[0], resolve, reason);
         ASSERT_NE(monitor, nullptr) << sentence << ": " << reason;
         const std::string key =
             scope.key + "," + condition.key + "," + timing.key + ",satisfaction";
@@ -108,8 +109,7 @@ TEST(MonitorSemantics, EveryPhraseMeansItsFretTemplate) {
         for (int i = 0; i < 12; ++i) {
           const auto trace = random_boolean_trace(rng, {"m", "c", "p", "s"}, length(rng));
           const std::vector<bool> expected = oracle.evaluate(trace);
-          auto run =
-              monitor::RequirementMonitor::compile(parsed.requirements[0], resolve, {}, reason);
+          auto run = monitor::RequirementMonitor::compile(parsed.requirements[0], resolve, reason);
           for (std::size_t t = 0; t < trace.size(); ++t) {
             std::vector<monitor::Val> frame;
             for (const char* n : {"m", "c", "p", "s"})
@@ -276,8 +276,7 @@ TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
             phrase.replace(at, 2, " " + cond);
           const std::string sentence =
               scope.text + phrase + "the sw shall " + timing.text + "satisfy " + response;
-          const fretish::ParseResult parsed =
-              fretish::parse_requirements_file("X: " + sentence + "\n", "r.fret");
+          const fretish::ParseResult parsed = parse_lowered("X: " + sentence + "\n");
           ASSERT_EQ(parsed.requirements.size(), 1u) << sentence;
           const std::string key =
               scope.key + "," + condition.key + "," + timing.key + ",satisfaction";
@@ -298,8 +297,8 @@ TEST(MonitorSemantics, GeneratedExpressionsMeanWhatFretFormalizes) {
             const auto trace = random_typed_trace(rng, length(rng));
             const std::vector<bool> expected = oracle.evaluate(trace);
             std::string reason;
-            auto run = monitor::RequirementMonitor::compile(parsed.requirements[0], resolve_typed,
-                                                            {}, reason);
+            auto run =
+                monitor::RequirementMonitor::compile(parsed.requirements[0], resolve_typed, reason);
             ASSERT_NE(run, nullptr) << sentence << ": " << reason;
             for (std::size_t t = 0; t < trace.size(); ++t) {
               std::vector<monitor::Val> frame;
@@ -375,16 +374,14 @@ TEST(MonitorSemantics, TemporalFunctionsMeanFretsOwnFormulas) {
   std::mt19937 rng(42);
   std::uniform_int_distribution<std::size_t> length(1, 24);
   for (const Case& c : cases) {
-    const fretish::ParseResult parsed =
-        fretish::parse_requirements_file("X: " + c.sentence + "\n", "r.fret");
+    const fretish::ParseResult parsed = parse_lowered("X: " + c.sentence + "\n");
     ASSERT_EQ(parsed.requirements.size(), 1u) << c.sentence;
     const PtFormula oracle = PtFormula::parse(c.formula);
     for (int k = 0; k < 200; ++k) {
       const auto trace = random_boolean_trace(rng, {"m", "p", "r"}, length(rng));
       const std::vector<bool> expected = oracle.evaluate(trace);
       std::string reason;
-      auto run =
-          monitor::RequirementMonitor::compile(parsed.requirements[0], resolve_mpr, {}, reason);
+      auto run = monitor::RequirementMonitor::compile(parsed.requirements[0], resolve_mpr, reason);
       ASSERT_NE(run, nullptr) << c.sentence << ": " << reason;
       for (std::size_t t = 0; t < trace.size(); ++t) {
         std::vector<monitor::Val> frame;
@@ -400,11 +397,10 @@ TEST(MonitorSemantics, TemporalFunctionsMeanFretsOwnFormulas) {
 
 TEST(MonitorClassify, WhatHasNoMeaningOnATraceIsNamed) {
   const auto reason_for = [](const std::string& sentence, std::optional<double> tick = {}) {
-    const fretish::ParseResult parsed =
-        fretish::parse_requirements_file("X: " + sentence + "\n", "r.fret");
+    const fretish::ParseResult parsed = parse_lowered("X: " + sentence + "\n", tick);
     EXPECT_EQ(parsed.requirements.size(), 1u) << sentence;
     if (parsed.requirements.empty()) return std::string();
-    return monitor::classify(parsed.requirements[0], tick).reason;
+    return monitor::classify(parsed.requirements[0]).reason;
   };
   EXPECT_EQ(reason_for("the sw shall with probability > 0.9 always satisfy p"),
             "probability 'with probability > 0.9': a run has no probability");
@@ -418,13 +414,42 @@ TEST(MonitorClassify, WhatHasNoMeaningOnATraceIsNamed) {
             "timing 'within 2.5 ticks' is not a whole number of ticks");
 }
 
+// The lowering reports a duration it cannot convert once, at the duration; classify then gives
+// the same reason, and the static checks do not report it again.
+TEST(MonitorClassify, AnUnconvertedDurationIsOneErrorAtTheDuration) {
+  for (const auto& [sentence, column, reason] :
+       {std::tuple<std::string, int, std::string>{
+            "the sw shall within 2 seconds satisfy p", 24,
+            "timing 'within 2 seconds' is not in ticks and the domain declares no tick period "
+            "(e.g. 'tick 100 ms' in domain.fret)"},
+        {"upon c the sw shall for 2.5 ticks satisfy p", 28,
+         "timing 'for 2.5 ticks' is not a whole number of ticks"},
+        {"the sw shall after 10000000000000 ticks satisfy p", 23,
+         "timing 'after 10000000000000 ticks' is out of range"}}) {
+    const fretish::ParseResult parsed = parse_lowered("X: " + sentence + "\n");
+    ASSERT_EQ(parsed.requirements.size(), 1u) << sentence;
+    ASSERT_EQ(parsed.findings.size(), 1u) << sentence;
+    const Finding& f = parsed.findings[0];
+    EXPECT_EQ(f.check, "property-timing") << sentence;
+    EXPECT_EQ(f.message, "X: " + reason) << sentence;
+    EXPECT_EQ(f.location.file, "r.fret");
+    EXPECT_EQ(f.location.line, 1);
+    EXPECT_EQ(f.location.column, column) << sentence;
+    EXPECT_EQ(monitor::classify(parsed.requirements[0]).reason, reason) << sentence;
+    monitor::Observables observables;
+    observables.variables = {{"c", monitor::Observables::Type::boolean},
+                             {"p", monitor::Observables::Type::boolean}};
+    EXPECT_TRUE(monitor::check_properties(parsed.requirements, observables).empty()) << sentence;
+  }
+}
+
 TEST(MonitorClassify, DurationsInOtherUnitsRoundUpToTicks) {
   const auto ticks = [](const std::string& timing, double period) {
     const fretish::ParseResult parsed =
-        fretish::parse_requirements_file("X: the sw shall " + timing + " satisfy p\n", "r.fret");
+        parse_lowered("X: the sw shall " + timing + " satisfy p\n", period);
     EXPECT_EQ(parsed.requirements.size(), 1u) << timing;
     if (parsed.requirements.empty()) return std::uint64_t{0};
-    const auto c = monitor::classify(parsed.requirements[0], period);
+    const auto c = monitor::classify(parsed.requirements[0]);
     EXPECT_TRUE(c.shape) << c.reason;
     return c.shape ? c.shape->duration : std::uint64_t{0};
   };

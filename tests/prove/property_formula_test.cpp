@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
 #include "monitor/monitor.hpp"
 #include "prove/monitor_table.hpp"
@@ -41,7 +42,7 @@ const std::vector<std::string> kResponses = {"persisted(2, p)",
                                              "p"};
 
 monitor::Shape shape_of(const fretish::Requirement& r) {
-  const monitor::Classified c = monitor::classify(r, std::nullopt);
+  const monitor::Classified c = monitor::classify(r);
   EXPECT_TRUE(c.shape) << c.reason;
   return *c.shape;
 }
@@ -55,8 +56,9 @@ TEST(PropertyFormula, TemporalFunctionsMeanWhatTheMonitorMeansInEveryShape) {
         for (const std::string& response : kResponses) {
           const std::string sentence =
               scope + condition + "the sw shall " + timing + "satisfy " + response;
-          const fretish::ParseResult parsed =
+          fretish::ParseResult parsed =
               fretish::parse_requirements_file("X: " + sentence + "\n", "r.fret");
+          fretish::lower_durations(parsed.requirements, {}, parsed.findings);
           ASSERT_EQ(parsed.requirements.size(), 1u) << sentence;
           const fretish::Requirement& r = parsed.requirements[0];
           fretish::ExprPtr mode;
@@ -79,7 +81,7 @@ TEST(PropertyFormula, TemporalFunctionsMeanWhatTheMonitorMeansInEveryShape) {
           ASSERT_FALSE(table.failed()) << sentence;
           for (int run = 0; run < 6; ++run) {
             std::string reason;
-            auto reference = monitor::RequirementMonitor::compile(r, resolve, {}, reason);
+            auto reference = monitor::RequirementMonitor::compile(r, resolve, reason);
             ASSERT_NE(reference, nullptr) << sentence << ": " << reason;
             auto state = layout.initial();
             std::uint32_t row = 0;
@@ -120,8 +122,9 @@ TEST(PropertyFormula, TemporalFunctionsInTheScopeExpression) {
                            "while persisted(1, m) the sw shall always satisfy s",
                            "only while occurred(2, m) the sw shall within 2 ticks satisfy s",
                            "while FTP | m upon c the sw shall always satisfy s"}) {
-    const fretish::ParseResult parsed =
+    fretish::ParseResult parsed =
         fretish::parse_requirements_file(std::string("X: ") + text + "\n", "r.fret");
+    fretish::lower_durations(parsed.requirements, {}, parsed.findings);
     ASSERT_EQ(parsed.requirements.size(), 1u) << text;
     const fretish::Requirement& r = parsed.requirements[0];
     ASSERT_TRUE(r.scope && r.scope->condition) << text;
@@ -137,7 +140,7 @@ TEST(PropertyFormula, TemporalFunctionsInTheScopeExpression) {
     std::mt19937 rng(7);
     for (int run = 0; run < 50; ++run) {
       std::string reason;
-      auto reference = monitor::RequirementMonitor::compile(r, resolve, {}, reason);
+      auto reference = monitor::RequirementMonitor::compile(r, resolve, reason);
       ASSERT_NE(reference, nullptr) << reason;
       auto state = layout.initial();
       std::vector<char> scratch;
