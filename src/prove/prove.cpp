@@ -141,6 +141,8 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
   Json s = Json::object();
   s["description"] = "Counterexample of " + p.requirement->id +
                      " found by uabt prove: violated at tick " + std::to_string(f.tick);
+  // `uabt run` replays it even where the mission's checks fail, as prove proved it there.
+  s["counterexample_of"] = p.requirement->id;
   s["max_ticks"] = f.tick;
   s["initial"] = initial;
   s["actions"] = recorder.actions();
