@@ -96,10 +96,20 @@ std::string user_path(const std::string& file, const std::string& prefix) {
 }
 
 std::string with_user_path(const std::string& message, const std::string& prefix) {
-  static const std::regex located(R"(^([^:\s]+)(:\d+:\d+: [\s\S]*)$)");
-  std::smatch m;
-  if (prefix.empty() || !std::regex_match(message, m, located)) return message;
-  return user_path(m[1], prefix) + m[2].str();
+  if (prefix.empty()) return message;
+  // "file.ext:line:col" at the start, or after a space, a parenthesis or a quote.
+  static const std::regex located(
+      R"((^|[\s('"`])([A-Za-z0-9_.][^\s:()'"`]*\.[A-Za-z0-9]+)(:\d+:\d+))");
+  std::string out;
+  auto from = message.cbegin();
+  for (std::sregex_iterator it(message.begin(), message.end(), located), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    out.append(from, m[2].first);
+    out += user_path(m[2], prefix) + m[3].str();
+    from = m[0].second;
+  }
+  out.append(from, message.cend());
+  return out;
 }
 
 std::string path_prefix_for(const fs::path& mission_dir) {

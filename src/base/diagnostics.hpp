@@ -37,8 +37,9 @@ std::string path_prefix_for(const std::filesystem::path& mission_dir);
 // climbs higher than the mission's own path does ("/tmp/pkg/domain.fret", not "../../tmp/…").
 std::string user_path(const std::string& file, const std::string& prefix);
 
-// A message that starts with "file:line:col: " (a runtime error) with that file as user_path
-// names it; any other text as it is.
+// A message with every place "file.ext:line:col" in it (a file relative to the mission, at the
+// start or after a space, a parenthesis or a quote) as user_path names that file; any other
+// text as it is.
 std::string with_user_path(const std::string& message, const std::string& prefix);
 
 }  // namespace uabt

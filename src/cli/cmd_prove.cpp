@@ -1,11 +1,13 @@
 #include <iostream>
 
+#include "base/diagnostics.hpp"
 #include "base/files.hpp"
 #include "bt/xml_io.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
+#include "gate/proofs.hpp"
 #include "prove/outcome.hpp"
 #include "report/text.hpp"
 
@@ -103,6 +105,13 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     std::vector<Finding> ignored;
     auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", ignored);
+    // Every message names the lines the user wrote: a node of the compiled tree (which prove
+    // holds in memory and never writes) by the place it comes from, and, in text, every file
+    // as opened from the current directory, as `uabt verify` names them.
+    const std::string prefix = path_prefix_for(outcome.mission->dir);
+    const auto for_user = [&](const std::string& text) {
+      return with_user_path(doc ? gate::at_source(text, outcome, *doc) : text, prefix);
+    };
     prove::Result result;
     try {
       const prove::WorldModel world = prove::mission_world(*outcome.mission);
@@ -122,12 +131,13 @@ void register_prove(CLI::App& app, int& exit_code) {
       exit_code = kExitUsage;
       return;
     } catch (const std::exception& e) {
-      std::cerr << "uabt: prove: " << e.what() << "\n";
+      std::cerr << "uabt: prove: " << for_user(e.what()) << "\n";
       // A counterexample its replay disagrees with is uabt's fault, not the mission's.
       const bool internal = std::string_view(e.what()).find("internal error") != std::string::npos;
       exit_code = internal ? kExitUsage : kExitFail;
       return;
     }
+    if (doc) gate::name_sources(result, outcome, *doc);
     std::map<std::string, std::string> written;
     if (!args->counterexamples.empty()) {
       make_output_directory(args->counterexamples, "--counterexamples");
@@ -161,7 +171,11 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     // Files named as opened from the current directory, as the gate names them.
     TextOptions text_options;
-    text_options.path_prefix = path_prefix_for(outcome.mission->dir);
+    text_options.path_prefix = prefix;
+    for (Finding& f : input.findings) {
+      f.message = with_user_path(f.message, prefix);
+      for (std::string& note : f.notes) note = with_user_path(note, prefix);
+    }
     std::string text = format_text(input.findings, text_options);
     for (const auto& a : result.answers)
       if (a.verdict == prove::Verdict::proved)
@@ -169,8 +183,10 @@ void register_prove(CLI::App& app, int& exit_code) {
                 ":" + std::to_string(a.location.column) + ": note: guarantee '" + a.requirement +
                 "' is proved: " + a.text + " (" + proof_extent(result, a) + ")\n";
     if (!result.engine_reason.empty())
-      text += "note: the symbolic engine was chosen: " + result.engine_reason + "\n";
-    for (const auto& n : result.notes) text += "note: " + n + "\n";
+      text +=
+          "note: the symbolic engine was chosen: " + with_user_path(result.engine_reason, prefix) +
+          "\n";
+    for (const auto& n : result.notes) text += "note: " + with_user_path(n, prefix) + "\n";
     text += summary_line(result, proofs) + "\n";
     emit(args->output, text);
   });

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <optional>
 #include <regex>
+#include <set>
 
 #include "base/diagnostics.hpp"
 #include "base/files.hpp"
@@ -103,6 +104,7 @@ void register_run(CLI::App& app, int& exit_code) {
     }
     try {
       runtime::Scenario scenario = runtime::load_scenario(args->scenario);
+      const std::string counterexample_of = scenario.counterexample_of;
       manager::ManagerOptions options;
       options.max_ticks = args->max_ticks;
       options.trace_nodes = args->trace_level == "nodes";
@@ -112,6 +114,17 @@ void register_run(CLI::App& app, int& exit_code) {
       manager::BehaviorTreeManager bt_manager(args->mission, std::move(scenario), options);
       for (const auto& [tick, package] : uplinks) bt_manager.add_uplink(tick, package);
       manager::ManagerRun run = bt_manager.run();
+      if (!run.unverified.empty()) {
+        std::set<std::string> checks;
+        for (const Finding& f : run.unverified) checks.insert(f.check);
+        std::string names;
+        for (const std::string& c : checks) names += (names.empty() ? "" : ", ") + c;
+        std::cerr << "uabt: warning: the mission does not pass the gate's checks ("
+                  << run.unverified.size()
+                  << (run.unverified.size() == 1 ? " error: " : " errors: ") << names
+                  << "); it runs unverified, only to replay the counterexample of '"
+                  << counterexample_of << "' in " << args->scenario << "\n";
+      }
       std::cout << manager::trace_summary(run, path_prefix_for(args->mission))
                 << manager::property_summary(run);
       if (args->stats) {

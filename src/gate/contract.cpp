@@ -196,9 +196,12 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
             "if the mission may give it up, say so in the package's uplink.json: "
             "{\"" +
             std::string(restated ? "weaken" : "retire") + "\": {\"" + g.id + "\": \"why\"}}");
-      if (answer != on_merged.end() && answer->second.counterexample)
+      if (answer != on_merged.end() && answer->second.counterexample) {
         for (const std::string& line : prove::table_lines(*answer->second.counterexample))
           f.notes.push_back(line);
+        for (const std::string& note : answer->second.counterexample->notes)
+          f.notes.push_back(note);
+      }
     }
     f.requirements = {g.id};
     found.push_back(std::move(f));

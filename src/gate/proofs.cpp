@@ -4,6 +4,7 @@
 #include "monitor/property_set.hpp"
 #include "prove/outcome.hpp"
 #include "report/reports.hpp"
+#include "runtime/source_map.hpp"
 
 namespace uabt::gate {
 
@@ -24,6 +25,20 @@ void add_proofs_not_run(Outcome& outcome, const std::string& reason) {
   outcome.report.proofs = std::move(proofs);
 }
 
+std::string at_source(const std::string& text, const Outcome& outcome,
+                      const bt::Document& compiled) {
+  if (!outcome.mission) return text;
+  return runtime::with_source_places(text, compiled, *outcome.mission, outcome.compiled.trace);
+}
+
+void name_sources(prove::Result& result, const Outcome& outcome, const bt::Document& compiled) {
+  for (std::string& note : result.notes) note = at_source(note, outcome, compiled);
+  result.engine_reason = at_source(result.engine_reason, outcome, compiled);
+  if (result.vacuity)
+    result.vacuity->message = at_source(result.vacuity->message, outcome, compiled);
+  for (prove::Answer& a : result.answers) a.reason = at_source(a.reason, outcome, compiled);
+}
+
 void add_proofs(Outcome& outcome, const prove::Options& options, const ProofReporting& reporting) {
   if (!outcome.mission || !prove::has_guarantees(*outcome.mission) || outcome.compiled_xml.empty())
     return;
@@ -35,7 +50,8 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
   if (!doc) return;  // conform reports a compiled tree that does not read back
   try {
     const prove::WorldModel world = prove::mission_world(*outcome.mission);
-    const prove::Result result = prove::prove(*outcome.mission, *doc, world, options);
+    prove::Result result = prove::prove(*outcome.mission, *doc, world, options);
+    name_sources(result, outcome, *doc);
     std::map<std::string, std::string> written;
     if (!reporting.counterexample_dir.empty())
       for (const prove::Answer& a : result.answers)
@@ -53,9 +69,9 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
     found.back().severity = Severity::error;  // world.json cannot be used: whatever the check
     add_proofs_not_run(outcome, "world.json cannot be read");
   } catch (const std::exception& e) {
-    found = {make_finding("prove-bounded", std::string("the mission cannot be proved: ") + e.what(),
-                          {outcome.mission->requirements_file, 0, 0})};
-    add_proofs_not_run(outcome, std::string("the mission cannot be proved: ") + e.what());
+    const std::string why = "the mission cannot be proved: " + at_source(e.what(), outcome, *doc);
+    found = {make_finding("prove-bounded", why, {outcome.mission->requirements_file, 0, 0})};
+    add_proofs_not_run(outcome, why);
   }
   auto& findings = outcome.report.findings;
   findings.insert(findings.end(), found.begin(), found.end());

@@ -41,10 +41,11 @@ load::Mission load_version(const fs::path& dir, const std::vector<std::string>& 
   return std::move(*mission);
 }
 
-// A gated version: the compiled tree is read back from the bytes the gate passed.
-Version admitted(gate::Outcome outcome) {
+// A gated version: the compiled tree is read back from the bytes the gate passed (with
+// `unverified`, from the bytes it compiled although its checks failed).
+Version admitted(gate::Outcome outcome, bool unverified = false) {
   Version v{std::move(outcome), {}};
-  if (v.outcome.passed()) {
+  if (v.outcome.passed() || (unverified && !v.outcome.compiled_xml.empty())) {
     std::vector<Finding> findings;
     auto doc = bt::parse_document(v.outcome.compiled_xml, "compiled.xml", findings);
     if (!doc)
@@ -64,6 +65,20 @@ std::string alternative_name(const load::Mission& m, const std::string& adaptabl
   for (const auto& alt : m.alternatives)
     if (alt.adaptable == adaptable && alt.tree_id == tree_id) return alt.name;
   return tree_id;
+}
+
+// A counterexample must name a guarantee of the mission it replays on.
+void check_counterexample_of(const Scenario& scenario, const load::Mission& mission) {
+  std::string guarantees;
+  for (const fretish::Requirement& r : mission.properties) {
+    if (monitor::is_assumption(r)) continue;
+    if (r.id == scenario.counterexample_of) return;
+    guarantees += (guarantees.empty() ? "" : ", ") + r.id;
+  }
+  throw ScenarioError(
+      scenario.where("/counterexample_of", true) + ": error: /counterexample_of: '" +
+      scenario.counterexample_of + "' is not a guarantee of the mission (" +
+      (guarantees.empty() ? "it states none" : "its guarantees: " + guarantees) + ")");
 }
 
 TraceEvent violation_event(const PropertyViolation& v) {
@@ -128,9 +143,19 @@ ManagerRun BehaviorTreeManager::run() {
   // monitored by the run rather than required proved, because a run is also how a
   // counterexample of `uabt prove` is replayed. What changes a running mission, an uplink,
   // goes through the whole gate below, proofs included.
-  Version running =
-      admitted(gate::check_mission(load_version(dir_, accepted), options_.gate, "runtime"));
-  if (!running.outcome.passed()) throw NotAdmitted(running.outcome.report.findings);
+  gate::Outcome checked =
+      gate::check_mission(load_version(dir_, accepted), options_.gate, "runtime");
+  if (!scenario_.counterexample_of.empty() && checked.mission)
+    check_counterexample_of(scenario_, *checked.mission);
+  // `uabt prove` proves whatever compiles, checks failed or not: its counterexample replays on
+  // the same compiled tree, unverified, and says so (ManagerRun::unverified).
+  const bool replay =
+      !checked.passed() && !scenario_.counterexample_of.empty() && !checked.compiled_xml.empty();
+  if (!checked.passed() && !replay) throw NotAdmitted(checked.report.findings);
+  if (replay)
+    for (const Finding& f : checked.report.findings)
+      if (f.severity == Severity::error) result.unverified.push_back(f);
+  Version running = admitted(std::move(checked), replay);
 
   check_against_mission(*running.outcome.mission);
 

@@ -46,6 +46,9 @@ struct ManagerRun {
   // With ManagerOptions::monitor_trace: a `uabt monitor` trace (JSON lines {"tick": t,
   // "state": {…}}) of every name the mission properties read, one line per tick.
   std::string monitor_trace;
+  // A counterexample of `uabt prove` (Scenario::counterexample_of) replayed on a mission that
+  // does not pass the gate's checks: the checks' errors. Empty for a verified mission.
+  std::vector<Finding> unverified;
 };
 
 // The paper's Behavior Tree Manager: runs the gated, compiled mission in the scenario's
@@ -73,8 +76,9 @@ class BehaviorTreeManager {
   // Extra uplinks: (tick, package directory) as given on the command line.
   void add_uplink(std::int64_t tick, const std::string& package);
 
-  // Throws NotAdmitted when the mission itself does not pass the gate's checks, ScenarioError
-  // when the scenario does not fit the mission.
+  // Throws NotAdmitted when the mission itself does not pass the gate's checks (unless the
+  // scenario is a counterexample `uabt prove` wrote and the mission compiles: it then runs
+  // unverified, for replay only), ScenarioError when the scenario does not fit the mission.
   ManagerRun run();
 
  private:

@@ -357,9 +357,9 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
         try {
           auto program = runtime::script::Program::parse(value);
           for (const auto& name : program.names()) read.insert(name);
-          tree_scripts.push_back({std::move(program), "the " + attr + " of " + n.tag + " at line " +
-                                                          std::to_string(n.line) +
-                                                          " of the compiled tree"});
+          tree_scripts.push_back({std::move(program), "the " + attr + " of " + n.tag + " at " +
+                                                          doc.file + ":" + std::to_string(n.line) +
+                                                          ":" + std::to_string(n.column)});
         } catch (const std::exception&) {
         }
       }

@@ -90,6 +90,7 @@ std::vector<Finding> findings_of(const Result& result,
         f.notes.push_back("counterexample scenario: " + it->second + " (replay it with `" +
                           report::replay_command(replay, it->second) + "`)");
       for (const std::string& line : table_lines(*a.counterexample)) f.notes.push_back(line);
+      for (const std::string& note : a.counterexample->notes) f.notes.push_back(note);
     } else if (a.verdict == Verdict::bounded) {
       f = make_finding("prove-bounded",
                        "guarantee '" + a.requirement + "' holds up to tick " +
@@ -151,6 +152,7 @@ report::Proofs report_proofs(const Result& result,
       c.scenario = a.counterexample->scenario;
       if (const auto it = written.find(a.requirement); it != written.end())
         c.scenario_file = it->second;
+      c.notes = a.counterexample->notes;
       for (const TickRow& row : a.counterexample->rows) {
         report::ProofTick t{row.tick, row.root, row.values, {}};
         // "Drill started": the event is the last word (the leaf's label may hold spaces).

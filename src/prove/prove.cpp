@@ -3,6 +3,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "monitor/monitor.hpp"
 #include "prove/explore.hpp"
@@ -140,6 +141,8 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
   Json s = Json::object();
   s["description"] = "Counterexample of " + p.requirement->id +
                      " found by uabt prove: violated at tick " + std::to_string(f.tick);
+  // `uabt run` replays it even where the mission's checks fail, as prove proved it there.
+  s["counterexample_of"] = p.requirement->id;
   s["max_ticks"] = f.tick;
   s["initial"] = initial;
   s["actions"] = recorder.actions();
@@ -167,9 +170,14 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
   if (!monitor) throw ProveError("internal error: replaying " + p.requirement->id + ": " + reason);
   std::vector<monitor::Val> frame;
   std::uint64_t first = 0;
+  // The actions started and not ended yet, by node: each is shown running at every tick it
+  // runs without starting or ending.
+  std::map<runtime::NodeId, std::string> running;
+  std::set<std::string, std::less<>> shown;  // every action the table names
   for (std::uint64_t t = 1; t <= f.tick && first == 0; ++t) {
     obs.begin_tick();
     const std::size_t log_before = runner.world().log().size();
+    const auto running_before = running;
     const NodeStatus root = runner.step();
     if (runner.error())
       throw ProveError("internal error: the counterexample of " + p.requirement->id +
@@ -184,17 +192,34 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
     for (int slot : monitor->variables())
       row.values.emplace_back(variables.name(slot), monitor::value_of(frame[slot], symbols));
     const auto& log = runner.world().log();
+    std::set<runtime::NodeId> logged;
+    for (std::size_t i = log_before; i < log.size(); ++i)
+      if (log[i].event != runtime::LeafEvent::condition) logged.insert(log[i].node);
+    for (const auto& [node, leaf] : running_before)
+      if (!logged.contains(node)) row.actions.push_back(leaf + " running");
     for (std::size_t i = log_before; i < log.size(); ++i) {
       if (log[i].event == runtime::LeafEvent::condition) continue;
       std::string what = log[i].event == runtime::LeafEvent::action_finished
                              ? (log[i].status == NodeStatus::success ? "success" : "failure")
                              : runtime::leaf_event_name(log[i].event);
       row.actions.push_back(log[i].leaf + " " + what);
+      if (log[i].event == runtime::LeafEvent::action_started)
+        running[log[i].node] = log[i].leaf;
+      else
+        running.erase(log[i].node);
+      shown.insert(log[i].leaf);
     }
     cex.rows.push_back(std::move(row));
     if (!holds && (monitor->final_violation() || runner.done())) first = t;
     if (runner.done() && first == 0) break;
   }
+  // An action world.json says nothing of runs as long as the counterexample needs.
+  for (const ChoiceWorld::Leaf& leaf : m.choice->leaves())
+    if (!leaf.condition && leaf.contract == nullptr && shown.contains(leaf.label)) {
+      cex.notes.push_back("action '" + leaf.label +
+                          "' has no world.json entry, so it may run any number of ticks");
+      shown.erase(leaf.label);  // once, however many leaves it names
+    }
   if (first != f.tick)
     throw ProveError("internal error: the counterexample of " + p.requirement->id +
                      " violates it at tick " + std::to_string(f.tick) +

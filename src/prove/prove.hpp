@@ -26,13 +26,18 @@ struct TickRow {
   std::uint64_t tick = 0;
   std::string root;
   std::vector<std::pair<std::string, Value>> values;
-  std::vector<std::string> actions;  // "Drill started", "Drill failure"
+  // "Drill started", "Drill running" (every tick it runs without starting or ending),
+  // "Drill failure"
+  std::vector<std::string> actions;
 };
 
 struct Counterexample {
   std::uint64_t tick = 0;  // the tick at which the property is violated
   std::string scenario;    // ARCHITECTURE §8 scenario JSON that replays it (`uabt run --scenario`)
   std::vector<TickRow> rows;  // ticks 1..tick
+  // What the reader needs to know about the runs: "action 'Drive' has no world.json entry,
+  // so it may run any number of ticks".
+  std::vector<std::string> notes;
 };
 
 struct Answer {

@@ -1,5 +1,7 @@
 #include "prove/reach.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "monitor/property_set.hpp"
 
 namespace uabt::prove {
@@ -50,6 +52,13 @@ std::vector<Reach> reach(const load::Mission& mission, const bt::Document& compi
     r.verdict = a.verdict;
     r.depth = a.depth;
     r.witness = a.counterexample;
+    // A witness is a scenario that gets there, not a counterexample of one of the mission's
+    // guarantees: `uabt run` judges it as any other scenario.
+    if (r.witness) {
+      auto scenario = nlohmann::ordered_json::parse(r.witness->scenario);
+      scenario.erase("counterexample_of");
+      r.witness->scenario = scenario.dump(2) + "\n";
+    }
     r.engine = result.engine;
     r.states = result.states;
     r.reason = a.reason;

@@ -54,7 +54,7 @@ std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex) {
         rows.push_back({RowKind::action, action,
                         std::vector<TimelineCell>(cex.ticks.size(), {CellKind::idle, ""})});
 
-  std::map<std::string, bool> running;  // action → it has started and not ended yet
+  // The replay names every action that runs in a tick (started, running, its result).
   for (std::size_t t = 0; t < cex.ticks.size(); ++t) {
     for (const auto& [name, value] : cex.ticks[t].values) {
       TimelineCell& cell = rows[value_row[name]].cells[t];
@@ -63,13 +63,10 @@ std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex) {
                   : value.boolean                    ? CellKind::on
                                                      : CellKind::off;
     }
-    for (auto& [action, is_running] : running)
-      if (is_running) rows[action_row[action]].cells[t].kind = CellKind::running;
     for (const auto& [action, event] : cex.ticks[t].actions) {
       TimelineCell& cell = rows[action_row[action]].cells[t];
       cell.kind = CellKind::running;
       cell.text += (cell.text.empty() ? "" : ", ") + event;
-      running[action] = event == "started";
     }
   }
   return rows;

@@ -19,8 +19,9 @@ namespace uabt::report {
 struct ProofTick {
   std::uint64_t tick = 0;
   std::string root;  // the root's status: RUNNING, SUCCESS, FAILURE
-  std::vector<std::pair<std::string, Value>> values;         // what the property reads
-  std::vector<std::pair<std::string, std::string>> actions;  // (action, "started"|"success"|…)
+  std::vector<std::pair<std::string, Value>> values;  // what the property reads
+  // (action, "started" | "running" | "success" | "failure" | "halted")
+  std::vector<std::pair<std::string, std::string>> actions;
 };
 
 struct ProofCounterexample {
@@ -28,6 +29,8 @@ struct ProofCounterexample {
   std::vector<ProofTick> ticks;
   std::string scenario;       // the scenario JSON that replays it
   std::string scenario_file;  // where it was written ("" when it was not)
+  // About the runs: "action 'Drive' has no world.json entry, so it may run any number of ticks".
+  std::vector<std::string> notes;
 };
 
 struct ProofAnswer {

@@ -53,6 +53,8 @@ void timeline_html(const ProofAnswer& a, const ProofCounterexample& cex, const P
       "</tbody></table></div>\n<p class=\"legend\"><span class=\"key on\"></span>true "
       "<span class=\"key off\"></span>false <span class=\"key run\"></span>action running "
       "<span class=\"key viol\"></span>the violating tick</p>\n";
+  for (const std::string& note : cex.notes)
+    out += "<p class=\"cex-note\">" + html_escape(note) + "</p>\n";
   out += "<p>Replay: " + code(replay_command(proofs, cex.scenario_file)) +
          (cex.scenario_file.empty() ? " (save the scenario below as <code>cex.json</code>)" : "") +
          " runs the same violation at tick " + std::to_string(cex.tick) + ".</p>\n";

@@ -35,7 +35,7 @@ std::string markdown_cell(const detail::TimelineCell& c) {
   switch (c.kind) {
     case detail::CellKind::on: return "■";
     case detail::CellKind::off: return "□";
-    case detail::CellKind::running: return c.text.empty() ? "▬" : cell(c.text);
+    case detail::CellKind::running: return c.text == "running" ? "▬" : cell(c.text);
     case detail::CellKind::idle:
     case detail::CellKind::text: break;
   }
@@ -67,6 +67,7 @@ void timeline_markdown(const ProofAnswer& a, const ProofCounterexample& cex, con
   }
   out += "\n■ true, □ false, ▬ action running. Replay: " +
          code(replay_command(proofs, cex.scenario_file)) + "\n";
+  for (const std::string& note : cex.notes) out += "\nNote: " + cell(note) + "\n";
 }
 
 }  // namespace
@@ -138,6 +139,7 @@ nlohmann::ordered_json proofs_json(const Proofs& proofs) {
       if (!cex.scenario_file.empty()) c["scenario_file"] = cex.scenario_file;
       c["replay"] = replay_command(proofs, cex.scenario_file);
       c["trace"] = std::move(trace);
+      if (!cex.notes.empty()) c["notes"] = cex.notes;
       j["counterexample"] = std::move(c);
     }
     answers.push_back(std::move(j));

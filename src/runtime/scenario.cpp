@@ -215,7 +215,16 @@ Scenario parse_scenario(std::string_view text, const std::string& file) {
   PositionScanner(text, s).scan();
   if (!root.is_object())
     shape_error(s, "", std::string("a scenario must be a JSON object, not ") + root.type_name());
-  only_keys(root, {"max_ticks", "initial", "actions", "events", "description", "name"}, s, "");
+  only_keys(
+      root,
+      {"max_ticks", "initial", "actions", "events", "description", "name", "counterexample_of"}, s,
+      "");
+  if (root.contains("counterexample_of")) {
+    const Json& of = root["counterexample_of"];
+    if (!of.is_string() || of.get<std::string>().empty())
+      shape_error(s, "/counterexample_of", "must be the id of a guarantee, not " + of.dump());
+    s.counterexample_of = of.get<std::string>();
+  }
 
   if (root.contains("max_ticks")) s.max_ticks = integer(root["max_ticks"], s, "/max_ticks", 1);
   if (root.contains("initial")) s.initial = assignment(root["initial"], s, "/initial");

@@ -51,8 +51,13 @@ struct ScenarioEvent {
 //     and "outputs": {"waypoint": 3}, what it writes to its output ports, as may a run)
 //    "events": [{"at": 15, "set": {"OnDust": false}}, {"at": 40, "uplink": "uplinks/on_mud"}]}
 // JSON booleans, integers, reals and strings become state values (strings hold enum values).
+// A counterexample `uabt prove` writes also says which guarantee it violates:
+//   "counterexample_of": "CoolBit"
 struct Scenario {
   std::string file;  // displayed path
+  // The guarantee this scenario is a counterexample of ("" for any other scenario): `uabt run`
+  // replays it even on a mission that does not pass the gate's checks, as `uabt prove` proved it.
+  std::string counterexample_of;
   std::int64_t max_ticks = 2000;
   StateAssignment initial;
   std::map<std::string, ActionSpec, std::less<>> actions;

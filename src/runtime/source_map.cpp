@@ -1,5 +1,7 @@
 #include "runtime/source_map.hpp"
 
+#include <cctype>
+
 namespace uabt::runtime {
 
 namespace {
@@ -31,7 +33,53 @@ const bt::TreeDef* find_source_tree(const std::string& id, const load::Mission& 
   return nullptr;
 }
 
+// The Engine::tree_path of the node of `node`'s subtree that starts at line:column, "" if none.
+std::string path_at(const bt::Node& node, const std::string& path, int line, int column) {
+  if (node.line == line && node.column == column) return path;
+  for (std::size_t i = 0; i < node.children.size(); ++i) {
+    const bt::Node& child = node.children[i];
+    std::string found =
+        path_at(child, path + "/" + child.tag + "[" + std::to_string(i) + "]", line, column);
+    if (!found.empty()) return found;
+  }
+  return "";
+}
+
 }  // namespace
+
+std::string with_source_places(std::string text, const bt::Document& compiled,
+                               const load::Mission& mission,
+                               const std::vector<compile::TraceEntry>& trace) {
+  const std::string file = compiled.file + ":";
+  for (std::size_t at = text.find(file); at != std::string::npos; at = text.find(file, at + 1)) {
+    // "compiled.xml:66:7", not the end of a longer name ("rejected.compiled.xml:…").
+    if (at > 0 && text[at - 1] != ' ' && text[at - 1] != '(' && text[at - 1] != '\'') continue;
+    std::size_t end = at + file.size();
+    int place[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      const std::size_t digits = end;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])) &&
+             end - digits < 9)
+        place[k] = place[k] * 10 + (text[end++] - '0');
+      if (end == digits) break;
+      if (k == 0 && (end >= text.size() || text[end++] != ':')) break;
+    }
+    if (place[0] == 0 || place[1] == 0) continue;
+    std::optional<SourceLocation> source;
+    for (const bt::TreeDef& def : compiled.trees) {
+      const std::string path = path_at(def.root, def.id + "/" + def.root.tag, place[0], place[1]);
+      if (!path.empty()) {
+        source = source_of(path, mission, trace);
+        break;
+      }
+    }
+    if (!source) continue;
+    const std::string named =
+        source->file + ":" + std::to_string(source->line) + ":" + std::to_string(source->column);
+    text.replace(at, end - at, named);
+  }
+  return text;
+}
 
 std::optional<SourceLocation> source_of(const std::string& tree_path, const load::Mission& mission,
                                         const std::vector<compile::TraceEntry>& trace) {

@@ -15,4 +15,12 @@ namespace uabt::runtime {
 std::optional<SourceLocation> source_of(const std::string& tree_path, const load::Mission& mission,
                                         const std::vector<compile::TraceEntry>& trace);
 
+// `text` with every place "compiled.xml:L:C" where a node of `compiled` starts (a tree held in
+// memory, which no file holds) as the place that node comes from (source_of): the line of
+// mission.xml or of an alternative's file, or the requirement a generated node implements.
+// Other text, and a place without a source, stays as it is.
+std::string with_source_places(std::string text, const bt::Document& compiled,
+                               const load::Mission& mission,
+                               const std::vector<compile::TraceEntry>& trace);
+
 }  // namespace uabt::runtime

@@ -25,7 +25,7 @@ report::Proofs three_ticks() {
       {2,
        "RUNNING",
        {{"Drill.running", Value::of_bool(true)}, {"mode", Value::of_enum("a<b")}},
-       {}},
+       {{"Drill", "running"}}},
       {3,
        "SUCCESS",
        {{"Drill.running", Value::of_bool(false)}, {"mode", Value::of_enum("x|y")}},
@@ -69,12 +69,12 @@ TEST(ProofTimeline, RowsAndCells) {
   EXPECT_EQ(rows[1].cells[2].kind, CellKind::off);
   EXPECT_EQ(rows[2].cells[0].kind, CellKind::text);
   EXPECT_EQ(rows[2].cells[0].text, "a<b");
-  // Drill: started in 1, runs through 2 without an event, ends in 3.
+  // Drill: started in 1, runs through 2, ends in 3.
   EXPECT_EQ(rows[3].label, "Drill");
   EXPECT_EQ(rows[3].cells[0].kind, CellKind::running);
   EXPECT_EQ(rows[3].cells[0].text, "started");
   EXPECT_EQ(rows[3].cells[1].kind, CellKind::running);
-  EXPECT_EQ(rows[3].cells[1].text, "");
+  EXPECT_EQ(rows[3].cells[1].text, "running");
   EXPECT_EQ(rows[3].cells[2].text, "success");
   // An action that starts and ends in one tick; idle before.
   EXPECT_EQ(rows[4].label, "Cool Down");

@@ -65,7 +65,7 @@ TEST(Scenario, ShapeErrorsNameTheFileAndTheEntry) {
             "\"failure\", not \"maybe\"");
   EXPECT_EQ(scenario_error("{\n \"evnts\": []}"),
             "scenarios/s.json:2:2: error: unknown key 'evnts' (expected: max_ticks, initial, "
-            "actions, events, description, name)");
+            "actions, events, description, name, counterexample_of)");
   EXPECT_NE(scenario_error(R"({"events": [{"set": {}}]})").find("/events/0"), std::string::npos);
   EXPECT_NE(scenario_error(R"({"initial": {"x": [1]}})").find("/initial/x"), std::string::npos);
   EXPECT_NE(scenario_error(R"({"events": [{"at": 3}]})").find("\"set\" or \"uplink\""),
