@@ -11,6 +11,7 @@
 #include "base/files.hpp"
 #include "base/suggest.hpp"
 #include "bt/element_positions.hpp"
+#include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
 #include "bt/xml_io.hpp"
 #include "bt/xml_scan.hpp"
@@ -315,15 +316,13 @@ class TextParser {
   }
 
   void read_models(const XMLElement* element, std::vector<NodeModel>& models) {
-    static const std::set<std::string_view> kFamilies = {"Action", "Condition", "Control",
-                                                         "Decorator", "SubTree"};
     static const std::set<std::string_view> kPortKinds = {"input_port", "output_port",
                                                           "inout_port"};
     std::map<std::string, std::pair<SourceLocation, std::string>> registered;
     for (const XMLElement* entry = element->FirstChildElement(); entry != nullptr;
          entry = entry->NextSiblingElement()) {
       const SourceLocation at = where(entry);
-      if (!kFamilies.contains(entry->Name())) {
+      if (family_named(entry->Name()) == Family::unknown) {
         Finding f = xml_finding("<" + std::string(entry->Name()) +
                                     "> in <TreeNodesModel> is not Action, Condition, Control, "
                                     "Decorator or SubTree; ignored",

@@ -12,26 +12,6 @@ namespace uabt::bt {
 
 namespace {
 
-Port in(std::string name, std::string type, std::string default_value = {}) {
-  return {"input_port", std::move(name), std::move(type), std::move(default_value), {}};
-}
-Port out(std::string name, std::string type) {
-  return {"output_port", std::move(name), std::move(type), {}, {}};
-}
-Port inout(std::string name, std::string type) {
-  return {"inout_port", std::move(name), std::move(type), {}, {}};
-}
-
-std::vector<Port> switch_ports(int cases) {
-  std::vector<Port> ports{in("variable", "std::string")};
-  for (int k = 1; k <= cases; ++k) ports.push_back(in("case_" + std::to_string(k), "std::string"));
-  return ports;
-}
-
-std::vector<Port> loop_ports(const std::string& type) {
-  return {inout("queue", ""), in("if_empty", "BT::NodeStatus", "SUCCESS"), out("value", type)};
-}
-
 // The XSD type of a port's value: an output port takes a blackboard entry only; an input
 // port a literal of its type or an entry. "" when the type does not map (any text).
 std::string attribute_type(const Port& port) {
@@ -167,21 +147,14 @@ struct Entry {
   std::vector<Port> ports;
 };
 
-Family family_of(const std::string& name) {
-  if (name == "Action") return Family::action;
-  if (name == "Condition") return Family::condition;
-  if (name == "Control") return Family::control;
-  if (name == "Decorator") return Family::decorator;
-  return Family::subtree;
-}
-
 // An ID that can be an element of its own: an XML name without ':' that is not one of the
 // elements the schema defines otherwise.
 bool element_name(const std::string& id) {
-  static const std::set<std::string_view> kTaken = {
-      "Action",    "Condition", "Control", "Decorator",    "SubTree",       "SubTreePlus",
-      "Adaptable", "root",      "include", "BehaviorTree", "TreeNodesModel"};
-  return is_xml_name(id) && id.find(':') == std::string::npos && kTaken.count(id) == 0;
+  static const std::set<std::string_view> kTaken = {"Action",    "Condition",    "Control",
+                                                    "Decorator", "Adaptable",    "root",
+                                                    "include",   "BehaviorTree", "TreeNodesModel"};
+  return is_xml_name(id) && id.find(':') == std::string::npos && kTaken.count(id) == 0 &&
+         !is_subtree(id);
 }
 
 // The children a node's content model allows.
@@ -194,64 +167,18 @@ std::string children_particle(const Entry& e) {
 
 }  // namespace
 
-const std::vector<Port>* builtin_ports(const std::string& name) {
-  // BehaviorTree.CPP 4.10's providedPorts() of every node its factory registers.
-  static const std::map<std::string, std::vector<Port>> table = {
-      {"Parallel", {in("success_count", "int", "-1"), in("failure_count", "int", "1")}},
-      {"ParallelAll", {in("max_failures", "int", "1")}},
-      {"TryCatch", {in("catch_on_halt", "bool", "false")}},
-      {"ManualSelector", {in("repeat_last_selection", "bool", "false")}},
-      {"Switch2", switch_ports(2)},
-      {"Switch3", switch_ports(3)},
-      {"Switch4", switch_ports(4)},
-      {"Switch5", switch_ports(5)},
-      {"Switch6", switch_ports(6)},
-      {"Repeat", {in("num_cycles", "int")}},
-      {"RetryUntilSuccessful", {in("num_attempts", "int")}},
-      {"RetryUntilSuccesful", {in("num_attempts", "int")}},
-      {"RunOnce", {in("then_skip", "bool", "true")}},
-      {"Delay", {in("delay_msec", "unsigned int")}},
-      {"Timeout", {in("msec", "unsigned int")}},
-      {"Precondition", {in("if", "std::string"), in("else", "BT::NodeStatus", "FAILURE")}},
-      {"LoopInt", loop_ports("int")},
-      {"LoopBool", loop_ports("bool")},
-      {"LoopDouble", loop_ports("double")},
-      {"LoopString", loop_ports("std::string")},
-      {"SkipUnlessUpdated", {in("entry", "")}},
-      {"WaitValueUpdate", {in("entry", "")}},
-      {"BlackboardCheckInt",
-       {in("value_A", ""), in("value_B", ""),
-        in("return_on_mismatch", "BT::NodeStatus", "FAILURE")}},
-      {"BlackboardCheckDouble",
-       {in("value_A", ""), in("value_B", ""),
-        in("return_on_mismatch", "BT::NodeStatus", "FAILURE")}},
-      {"BlackboardCheckString",
-       {in("value_A", ""), in("value_B", ""),
-        in("return_on_mismatch", "BT::NodeStatus", "FAILURE")}},
-      {"Script", {in("code", "std::string")}},
-      {"ScriptCondition", {in("code", "std::string")}},
-      {"SetBlackboard", {in("value", ""), inout("output_key", "")}},
-      {"UnsetBlackboard", {in("key", "std::string")}},
-      {"Sleep", {in("msec", "unsigned int")}},
-      {"WasEntryUpdated", {in("entry", "")}},
-  };
-  static const std::vector<Port> none;
-  if (const auto it = table.find(name); it != table.end()) return &it->second;
-  return find_builtin(name) != nullptr ? &none : nullptr;
-}
-
 std::string write_schema(const std::vector<NodeModel>& models) {
   // Every node by ID: the built-ins, then the robot's (a registration of a built-in ID is
   // BehaviorTree.CPP's "already registered" error, so the built-in stays).
   std::map<std::string, Entry> nodes;
   for (const auto& b : builtin_nodes()) {
     if (b.family == Family::subtree) continue;
-    nodes[b.name] = Entry{b.family, b.min_children, b.max_children, *builtin_ports(b.name)};
+    nodes[b.name] = Entry{b.family, b.min_children, b.max_children, b.ports};
   }
   for (const auto& m : models) {
-    if (m.family == "SubTree" || nodes.count(m.id) != 0) continue;
+    if (family_named(m.family) == Family::subtree || nodes.count(m.id) != 0) continue;
     Entry e;
-    e.family = family_of(m.family);
+    e.family = family_named(m.family);
     if (e.family == Family::control) e.min_children = 1, e.max_children = -1;
     if (e.family == Family::decorator) e.min_children = 1, e.max_children = 1;
     e.ports = m.ports;

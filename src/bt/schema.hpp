@@ -6,10 +6,6 @@
 
 namespace uabt::bt {
 
-// The ports BehaviorTree.CPP 4.10 gives a built-in node (its providedPorts()); nullptr for a
-// name that is not built in. SubTree's remapping is free: it has none here.
-const std::vector<Port>* builtin_ports(const std::string& name);
-
 // An XML Schema (XSD 1.0) of the trees a robot with these registered nodes can load: one
 // element per node ID (compact form) with an attribute per port, required when the port has
 // no default, typed where the port's C++ type maps to an XSD type; the explicit form

@@ -11,14 +11,6 @@ namespace uabt::bt {
 
 namespace {
 
-bool is_explicit_family_tag(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
-bool is_subtree(const std::string& kind) {
-  return kind == "SubTree" || kind == "SubTreePlus";
-}
-
 std::string children_phrase(std::size_t n) {
   return std::to_string(n) + (n == 1 ? " child" : " children");
 }

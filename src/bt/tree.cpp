@@ -1,14 +1,8 @@
 #include "bt/tree.hpp"
 
+#include "bt/node_kinds.hpp"
+
 namespace uabt::bt {
-
-namespace {
-
-bool is_explicit_family_tag(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
-}  // namespace
 
 const std::string* Node::attribute(const std::string& name) const {
   for (const auto& [key, value] : attributes) {

@@ -29,10 +29,6 @@ std::string xml_escape(std::string_view text) {
 
 namespace {
 
-bool is_explicit_family_tag(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
 // Attributes BT.CPP interprets itself; they are not ports of the node.
 bool is_reserved_attribute(const std::string& name) {
   static const std::set<std::string_view> kReserved = {

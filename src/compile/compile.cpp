@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "bt/node_kinds.hpp"
 #include "compile/guard_rewrite.hpp"
 #include "fretish/requirement.hpp"
 #include "load/references.hpp"
@@ -26,7 +27,7 @@ void replace_adaptables(bt::Node& node, int bt_format) {
     stack.pop_back();
     if (n->tag == "Adaptable") {
       bt::Node sub;
-      sub.tag = "SubTree";
+      sub.tag = bt::kind_name(bt::NodeKind::subtree);
       sub.line = n->line;
       sub.column = n->column;
       if (const std::string* id = n->attribute("ID")) sub.set_attribute("ID", *id);
@@ -44,7 +45,7 @@ void replace_adaptables(bt::Node& node, int bt_format) {
 
 bt::Node subtree_call(const std::string& tree_id, int bt_format) {
   bt::Node n;
-  n.tag = "SubTree";
+  n.tag = bt::kind_name(bt::NodeKind::subtree);
   n.set_attribute("ID", tree_id);
   if (bt_format == 3)
     n.set_attribute("__shared_blackboard", "true");
@@ -60,13 +61,14 @@ void trace_guard(const bt::Node& node, const std::string& path, const std::strin
   entry.node_path = path;
   entry.requirement = req.id;
   entry.source = req.guard_location;
-  if (node.tag == "ScriptCondition") {
+  const bt::NodeKind kind = bt::node_kind(node.tag);
+  if (kind == bt::NodeKind::script_condition) {
     entry.atom = *node.attribute("code");
-  } else if (node.tag == "Inverter") {
+  } else if (kind == bt::NodeKind::inverter) {
     entry.atom = "!";
-  } else if (node.tag == "Sequence") {
+  } else if (kind == bt::NodeKind::sequence) {
     entry.atom = "&";
-  } else if (node.tag == "Fallback") {
+  } else if (kind == bt::NodeKind::fallback) {
     entry.atom = "|";
   } else {
     entry.atom = node.tag;
@@ -111,7 +113,8 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
   const std::size_t findings_start = findings.size();
   bt::TreeDef tree;
   tree.id = adaptable;
-  tree.root.tag = reactive ? "ReactiveFallback" : "Fallback";
+  tree.root.tag =
+      bt::kind_name(reactive ? bt::NodeKind::reactive_fallback : bt::NodeKind::fallback);
   tree.root.set_attribute("name", adaptable);
   const std::string root_path = adaptable + "/" + tree.root.tag;
   trace.push_back({adaptable, root_path, "", "selector", {}});
@@ -119,7 +122,7 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
   for (const fretish::SelectionRequirement* req : m.selections_for(adaptable)) {
     const load::Alternative* alt = m.find_alternative(adaptable, req->alternative);
     bt::Node branch;
-    branch.tag = reactive ? "ReactiveSequence" : "Sequence";
+    branch.tag = bt::kind_name(reactive ? bt::NodeKind::reactive_sequence : bt::NodeKind::sequence);
     branch.set_attribute("name", req->id);
     if (req->guard) {
       try {
@@ -139,7 +142,7 @@ bt::TreeDef selection_tree(const load::Mission& m, const std::string& adaptable,
         while (!stack.empty()) {
           const bt::Node* n = stack.back();
           stack.pop_back();
-          uses_script |= n->tag == "ScriptCondition";
+          uses_script |= bt::node_kind(n->tag) == bt::NodeKind::script_condition;
           for (const auto& c : n->children) stack.push_back(&c);
         }
         if (uses_script) {

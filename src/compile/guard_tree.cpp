@@ -1,6 +1,7 @@
 // Algorithm 1 of the paper: a guard becomes a condition-checking subtree.
 #include <stdexcept>
 
+#include "bt/node_kinds.hpp"
 #include "compile/compile.hpp"
 #include "compile/guard_rewrite.hpp"
 
@@ -80,17 +81,19 @@ std::string script_of(const Expr& e, const fretish::Domain& domain, int parent_p
 }
 
 bt::Node build(const Expr& e, const fretish::Domain& domain) {
+  using K = bt::NodeKind;
   switch (e.kind) {
-    case ExprKind::bool_literal: return leaf(e.bool_value ? "AlwaysSuccess" : "AlwaysFailure");
+    case ExprKind::bool_literal:
+      return leaf(bt::kind_name(e.bool_value ? K::always_success : K::always_failure));
     case ExprKind::identifier: return leaf(e.text);
     case ExprKind::logical_not: {
-      bt::Node n = leaf("Inverter");
+      bt::Node n = leaf(bt::kind_name(K::inverter));
       n.children.push_back(build(*e.args.at(0), domain));
       return n;
     }
     case ExprKind::logical_and:
     case ExprKind::logical_or: {
-      bt::Node n = leaf(e.kind == ExprKind::logical_and ? "Sequence" : "Fallback");
+      bt::Node n = leaf(bt::kind_name(e.kind == ExprKind::logical_and ? K::sequence : K::fallback));
       for (const auto& arg : e.args) {
         bt::Node child = build(*arg, domain);
         // Nested nodes of one kind are flattened: (a & b) & c is one Sequence.
@@ -104,7 +107,7 @@ bt::Node build(const Expr& e, const fretish::Domain& domain) {
     }
     default: break;
   }
-  bt::Node n = leaf("ScriptCondition");
+  bt::Node n = leaf(bt::kind_name(K::script_condition));
   n.set_attribute("code", atom_to_script(e, domain));
   return n;
 }

@@ -4,6 +4,7 @@
 // ReactiveSequence).
 #include <algorithm>
 
+#include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
 #include "compile/compile.hpp"
 #include "fretish/requirement.hpp"
@@ -11,6 +12,8 @@
 namespace uabt::compile {
 
 namespace {
+
+using K = bt::NodeKind;
 
 std::string path_of(const std::string& parent, const bt::Node& child, std::size_t index) {
   return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
@@ -36,7 +39,7 @@ class Emitter {
     // One requirement holds in every state: its leaf goes below a selector of its own, so that
     // the leaf keeps its requirement's name and the selector the node's.
     if (decision_.nodes[decision_.root].test < 0 && decision_.nodes[decision_.root].label >= 0)
-      n = node("Sequence", {std::move(n)});
+      n = node(K::sequence, {std::move(n)});
     n.set_attribute("name", adaptable_);
     return n;
   }
@@ -56,18 +59,18 @@ class Emitter {
       e.requirement = req->id;
       e.atom = "requirement";
       e.source = req->location;
-    } else if (n.tag == "SubTree" && leaf != nullptr) {
+    } else if (bt::node_kind(n.tag) == K::subtree && leaf != nullptr) {
       e.requirement = leaf->id;
       e.atom = "selected_alt = " + leaf->alternative;
       e.source = leaf->alternative_location;
-    } else if (n.tag == "ScriptCondition") {
+    } else if (bt::node_kind(n.tag) == K::script_condition) {
       e.atom = *n.attribute("code");
       e.source = source_of(e.atom);
     } else if (n.children.empty()) {
       e.atom = n.tag;
       e.source = source_of(n.tag);
     } else {
-      e.atom = n.tag == "Inverter" ? "!" : "decision";
+      e.atom = bt::node_kind(n.tag) == K::inverter ? "!" : "decision";
     }
     out.push_back(e);
     for (std::size_t i = 0; i < n.children.size(); ++i)
@@ -78,7 +81,7 @@ class Emitter {
   // The requirement a leaf (a Sequence named after it, calling its alternative) selects for.
   const fretish::SelectionRequirement* leaf_requirement(const bt::Node& n) const {
     const std::string* name = n.attribute("name");
-    if (n.tag != "Sequence" || name == nullptr || n.children.size() != 1) return nullptr;
+    if (bt::node_kind(n.tag) != K::sequence || name == nullptr || n.children.size() != 1) return nullptr;
     for (const auto* r : reqs_)
       if (r->id == *name) return r;
     return nullptr;
@@ -89,6 +92,9 @@ class Emitter {
     n.tag = std::move(tag);
     n.children = std::move(children);
     return n;
+  }
+  static bt::Node node(K kind, std::vector<bt::Node> children = {}) {
+    return node(bt::kind_name(kind), std::move(children));
   }
 
   // The requirement's guard location whose atoms read what a test reads.
@@ -109,10 +115,10 @@ class Emitter {
   bt::Node leaf(int label) const {
     const auto* req = reqs_[static_cast<std::size_t>(label)];
     const load::Alternative* alt = m_.find_alternative(adaptable_, req->alternative);
-    bt::Node call = node("SubTree");
+    bt::Node call = node(K::subtree);
     call.set_attribute("ID", alt ? alt->tree_id : req->alternative);
     call.set_attribute(bt_format_ == 3 ? "__shared_blackboard" : "_autoremap", "true");
-    bt::Node branch = node("Sequence", {std::move(call)});
+    bt::Node branch = node(K::sequence, {std::move(call)});
     branch.set_attribute("name", req->id);
     return branch;
   }
@@ -132,7 +138,7 @@ class Emitter {
         while (last + 1 < t.holds.size() && t.holds[last + 1]) ++last;
         const auto& here = dim.pieces[last];
         const auto& next = dim.pieces[last + 1];
-        bt::Node n = node("ScriptCondition");
+        bt::Node n = node(K::script_condition);
         n.set_attribute("code", here.point
                                     ? dim.name + " <= " + here.text
                                     : dim.name + " < " + (next.point ? next.text : here.text));
@@ -148,12 +154,12 @@ class Emitter {
         std::string code;
         for (const auto& lit : negated ? no : yes)
           code += (code.empty() ? "" : " || ") + dim.name + " == '" + lit + "'";
-        bt::Node n = node("ScriptCondition");
+        bt::Node n = node(K::script_condition);
         n.set_attribute("code", code);
         return n;
       }
     }
-    return node("AlwaysFailure");
+    return node(K::always_failure);
   }
 
   bool is_gap(int at) const {
@@ -162,7 +168,7 @@ class Emitter {
 
   bt::Node emit(int at, const std::vector<std::size_t>& cells) const {
     const Decision::Node& d = decision_.nodes[at];
-    if (d.test < 0) return d.label < 0 ? node("AlwaysFailure") : leaf(d.label);
+    if (d.test < 0) return d.label < 0 ? node(K::always_failure) : leaf(d.label);
     const DecisionTest& t = decision_.tests[d.test];
     std::vector<std::size_t> yes_cells, no_cells;
     for (std::size_t c : cells)
@@ -177,11 +183,11 @@ class Emitter {
     // A side where no requirement holds fails: Sequence[test, other side] (with the test
     // inverted when the gap is on its true side). Reactive: the test runs again every tick and
     // halts the side it no longer selects, as Fig. 4's ReactiveFallback does.
-    const char* guarded = reactive_ ? "ReactiveSequence" : "Sequence";
+    const K guarded = reactive_ ? K::reactive_sequence : K::sequence;
     if (is_gap(no)) return node(guarded, {std::move(test), emit(yes, yes_cells)});
     if (is_gap(yes))
-      return node(guarded, {node("Inverter", {std::move(test)}), emit(no, no_cells)});
-    return node(reactive_ ? "WhileDoElse" : "IfThenElse",
+      return node(guarded, {node(K::inverter, {std::move(test)}), emit(no, no_cells)});
+    return node(reactive_ ? K::while_do_else : K::if_then_else,
                 {std::move(test), emit(yes, yes_cells), emit(no, no_cells)});
   }
 

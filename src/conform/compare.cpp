@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "bt/node_kinds.hpp"
 #include "conform/context.hpp"
 
 namespace uabt::conform {
@@ -40,7 +41,7 @@ std::optional<std::string> adaptable_difference(const bt::Node& source, const bt
                                                 int bt_format) {
   const std::string* id = source.attribute("ID");
   const std::string shown = "<Adaptable ID=" + quote(id ? *id : "") + ">";
-  if (compiled.tag != "SubTree")
+  if (compiled.tag != bt::kind_name(bt::NodeKind::subtree))
     return shown + " became <" + compiled.tag + ">, expected <SubTree ID=" + quote(id ? *id : "") +
            ">";
   if (!compiled.children.empty()) return "the SubTree that replaces " + shown + " has children";

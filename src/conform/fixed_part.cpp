@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 
+#include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
 #include "conform/compare.hpp"
 #include "conform/tree_rules.hpp"
@@ -27,10 +28,6 @@ void for_each_node(const bt::Document& doc,
   }
 }
 
-bool is_subtree_call(const bt::Node& n) {
-  return n.tag == "SubTree" || n.tag == "SubTreePlus";
-}
-
 }  // namespace
 
 void check_adaptables_left(Context& ctx) {
@@ -50,7 +47,7 @@ void check_adaptables_left(Context& ctx) {
 void check_dangling_subtrees(Context& ctx) {
   const bt::Document& doc = ctx.compiled();
   for_each_node(doc, [&](const bt::Node& node, const std::string& path) {
-    if (!is_subtree_call(node)) return;
+    if (!bt::is_subtree(node.tag)) return;
     const std::string* id = node.attribute("ID");
     if (id == nullptr || id->empty()) {
       ctx.report("compiled-dangling-subtree", "<" + node.tag + "> has no ID: it calls no tree",

@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
 #include "conform/compare.hpp"
 #include "conform/readback.hpp"
@@ -13,10 +14,6 @@
 namespace uabt::conform {
 
 namespace {
-
-bool is_call(const std::string& kind) {
-  return kind == "SubTree" || kind == "SubTreePlus";
-}
 
 class TickReader {
  public:
@@ -31,7 +28,7 @@ class TickReader {
     TickNode t;
     t.node = &n;
     t.path = path;
-    if (is_call(kind)) return call(n, path, visible, depth);
+    if (bt::is_subtree(kind)) return call(n, path, visible, depth);
     auto control = [&](TickNode::Op op, std::size_t min,
                        std::size_t max) -> std::optional<TickNode> {
       if (auto extra = extra_attribute(n))
@@ -47,16 +44,24 @@ class TickReader {
       }
       return t;
     };
-    constexpr std::size_t many = SIZE_MAX;
-    if (kind == "Sequence" || kind == "ReactiveSequence" || kind == "SequenceWithMemory")
-      return control(TickNode::Op::sequence, 1, many);
-    if (kind == "Fallback" || kind == "ReactiveFallback")
-      return control(TickNode::Op::fallback, 1, many);
-    if (kind == "IfThenElse" || kind == "WhileDoElse")
-      return control(TickNode::Op::if_then_else, 2, 3);
-    if (kind == "Inverter") return control(TickNode::Op::invert, 1, 1);
-    if (kind == "ForceSuccess") return control(TickNode::Op::force_success, 1, 1);
-    if (kind == "ForceFailure") return control(TickNode::Op::force_failure, 1, 1);
+    using K = bt::NodeKind;
+    using Op = TickNode::Op;
+    static const std::map<K, Op> kOps = {{K::sequence, Op::sequence},
+                                         {K::reactive_sequence, Op::sequence},
+                                         {K::sequence_with_memory, Op::sequence},
+                                         {K::fallback, Op::fallback},
+                                         {K::reactive_fallback, Op::fallback},
+                                         {K::if_then_else, Op::if_then_else},
+                                         {K::while_do_else, Op::if_then_else},
+                                         {K::inverter, Op::invert},
+                                         {K::force_success, Op::force_success},
+                                         {K::force_failure, Op::force_failure}};
+    const K k = bt::node_kind(kind);
+    if (const auto op = kOps.find(k); op != kOps.end()) {
+      const bt::BuiltinNode& b = bt::builtin(k);
+      return control(op->second, static_cast<std::size_t>(b.min_children),
+                     b.max_children < 0 ? SIZE_MAX : static_cast<std::size_t>(b.max_children));
+    }
     GuardReading g = read_guard(ctx_, n, path, visible);
     if (g.problem) return fail(g.problem->message + " (at " + g.problem->path + ")");
     t.op = TickNode::Op::condition;

@@ -20,10 +20,6 @@ const char* const kGuardVocabulary =
     "AlwaysSuccess/AlwaysFailure, Sequence/Fallback (or their reactive forms), Inverter, "
     "ForceSuccess/ForceFailure and SubTree calls";
 
-bool is_explicit_family_tag(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
 class Reader {
  public:
   explicit Reader(const Context& ctx) : ctx_(ctx) {}
@@ -32,13 +28,15 @@ class Reader {
     if (depth > bt::kMaxDepth) return elsewhere(node, path, "nesting too deep");
     if (node.tag == "Adaptable") return elsewhere(node, path, "an <Adaptable> is left here");
     const std::string kind = node.kind();
-    const bool is_call = kind == "SubTree" || kind == "SubTreePlus";
+    using K = bt::NodeKind;
+    const K k = bt::node_kind(kind);
+    const bool is_call = k == K::subtree;
     if (auto problem = attribute_problem(node, kind, is_call)) return fail(node, path, *problem);
 
-    if (kind == "Sequence" || kind == "ReactiveSequence" || kind == "Fallback" ||
-        kind == "ReactiveFallback") {
+    if (k == K::sequence || k == K::reactive_sequence || k == K::fallback ||
+        k == K::reactive_fallback) {
       if (node.children.empty()) return elsewhere(node, path, kind + " has no children");
-      const bool conjunction = kind == "Sequence" || kind == "ReactiveSequence";
+      const bool conjunction = k == K::sequence || k == K::reactive_sequence;
       std::vector<ExprPtr> parts;
       for (std::size_t i = 0; i < node.children.size(); ++i) {
         GuardReading r =
@@ -50,21 +48,21 @@ class Reader {
       return ok(fretish::make_expr(conjunction ? ExprKind::logical_and : ExprKind::logical_or,
                                    std::move(parts)));
     }
-    if (kind == "Inverter" || kind == "ForceSuccess" || kind == "ForceFailure") {
+    if (k == K::inverter || k == K::force_success || k == K::force_failure) {
       if (node.children.size() != 1)
         return elsewhere(node, path, kind + " must have exactly one child");
       GuardReading r =
           read(node.children[0], child_path(path, node.children[0], 0), visible, depth + 1);
       if (r.problem) return r;
-      if (kind == "Inverter") return ok(fretish::make_expr(ExprKind::logical_not, {r.formula}));
+      if (k == K::inverter) return ok(fretish::make_expr(ExprKind::logical_not, {r.formula}));
       // The child is still evaluated (it is a pure condition), but its result is overridden.
-      return ok(fretish::make_bool(kind == "ForceSuccess"));
+      return ok(fretish::make_bool(k == K::force_success));
     }
-    if (kind == "AlwaysSuccess" || kind == "AlwaysFailure") {
+    if (k == K::always_success || k == K::always_failure) {
       if (!node.children.empty()) return elsewhere(node, path, kind + " must have no children");
-      return ok(fretish::make_bool(kind == "AlwaysSuccess"));
+      return ok(fretish::make_bool(k == K::always_success));
     }
-    if (kind == "ScriptCondition") return script(node, path, visible);
+    if (k == K::script_condition) return script(node, path, visible);
     if (is_call) return call(node, path, visible, depth);
     if (const bt::BuiltinNode* builtin = bt::find_builtin(kind)) {
       return fail(node, path,
@@ -90,9 +88,9 @@ class Reader {
                                                bool is_call) const {
     for (const auto& [key, value] : node.attributes) {
       if (key == "name") continue;
-      if (key == "ID" && (is_call || is_explicit_family_tag(node.tag))) continue;
+      if (key == "ID" && (is_call || bt::is_explicit_family_tag(node.tag))) continue;
       if (is_call && is_remap_attribute(key, ctx_.compiled().format)) continue;
-      if (kind == "ScriptCondition" && key == "code") continue;
+      if (bt::node_kind(kind) == bt::NodeKind::script_condition && key == "code") continue;
       if (!key.empty() && key[0] == '_')
         return "<" + kind + "> has " + key + "=\"" + value +
                "\": a pre/post-condition changes what the node returns, so the subtree no "
@@ -139,10 +137,12 @@ class Reader {
   }
 
   GuardReading leaf(const bt::Node& node, const std::string& path, const std::string& kind) const {
-    std::string family = is_explicit_family_tag(node.tag) ? node.tag : ctx_.declared_family(kind);
-    if (family == "Action")
+    std::string family =
+        bt::is_explicit_family_tag(node.tag) ? node.tag : ctx_.declared_family(kind);
+    const bt::Family f = bt::family_named(family);
+    if (f == bt::Family::action)
       return fail(node, path, "<" + kind + "> is an action, not a condition: " + kGuardVocabulary);
-    if (family == "Control" || family == "Decorator" || family == "SubTree")
+    if (f == bt::Family::control || f == bt::Family::decorator || f == bt::Family::subtree)
       return fail(node, path,
                   "<" + kind + "> is a " + family + " node, not a condition: " + kGuardVocabulary);
     if (!node.children.empty())

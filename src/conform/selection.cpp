@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <map>
 
+#include "bt/node_kinds.hpp"
 #include "conform/compare.hpp"
 #include "conform/meaning.hpp"
 #include "conform/readback.hpp"
@@ -55,7 +56,7 @@ std::vector<const bt::TreeDef*> reachable_trees(const load::Alternative& alt) {
       const bt::Node* n = nodes.back();
       nodes.pop_back();
       const std::string* id = n->attribute("ID");
-      if ((n->kind() == "SubTree" || n->kind() == "SubTreePlus") && id)
+      if (bt::is_subtree(n->kind()) && id)
         if (const bt::TreeDef* called = alt.document.find_tree(*id))
           if (seen.insert(called->id).second) pending.push_back(called);
       for (const auto& c : n->children) nodes.push_back(&c);

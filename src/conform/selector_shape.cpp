@@ -3,6 +3,7 @@
 
 #include <functional>
 
+#include "bt/node_kinds.hpp"
 #include "conform/compare.hpp"
 
 namespace uabt::conform {
@@ -10,10 +11,6 @@ namespace uabt::conform {
 namespace {
 
 const char* const kCheck = "compiled-selector-shape";
-
-bool is_call(const bt::Node& n) {
-  return n.kind() == "SubTree" || n.kind() == "SubTreePlus";
-}
 
 // The attributes a selector node may carry besides its kind: a name only.
 std::optional<std::string> extra_attribute(const bt::Node& n) {
@@ -29,7 +26,7 @@ std::optional<std::string> extra_attribute(const bt::Node& n) {
 bool calls_share_blackboard(const Context& ctx, const std::string& adaptable) {
   bool shared = true;
   std::function<void(const bt::Node&)> visit = [&](const bt::Node& n) {
-    if (is_call(n)) {
+    if (bt::is_subtree(n.kind())) {
       const std::string* id = n.attribute("ID");
       if (id && *id == adaptable && !shares_blackboard(n, ctx.compiled().format)) shared = false;
     }
@@ -94,9 +91,10 @@ Branch read_branch(Context& ctx, const std::string& adaptable, const bt::Node& n
   b.path = path;
   if (const std::string* name = node.attribute("name")) b.name = *name;
   const std::string kind = node.kind();
+  const bt::NodeKind k = bt::node_kind(kind);
   const std::string where = "branch " + std::to_string(index) + " of '" + adaptable + "'";
   std::string problem;
-  if (kind != "Sequence" && kind != "ReactiveSequence") {
+  if (k != bt::NodeKind::sequence && k != bt::NodeKind::reactive_sequence) {
     problem = where + " is a <" + kind + ">; each branch must be a Sequence or ReactiveSequence";
   } else if (auto extra = extra_attribute(node)) {
     problem = where + " has " + *extra + "; a branch carries at most a name";
@@ -104,7 +102,7 @@ Branch read_branch(Context& ctx, const std::string& adaptable, const bt::Node& n
     problem = where + " has " + std::to_string(node.children.size()) +
               " children; a branch is [condition-checking subtree, alternative call], or just "
               "[alternative call] for the default";
-  } else if (!is_call(node.children.back())) {
+  } else if (!bt::is_subtree(node.children.back().kind())) {
     problem = where + " ends with <" + node.children.back().kind() +
               ">; its last child must be the SubTree call of the alternative";
   }
@@ -112,7 +110,7 @@ Branch read_branch(Context& ctx, const std::string& adaptable, const bt::Node& n
   b.well_formed = problem.empty();
   // Even a misshapen branch usually still says which alternative it runs; knowing it keeps
   // one mistake from turning into a cascade of missing-alternative findings.
-  if (!node.children.empty() && is_call(node.children.back())) {
+  if (!node.children.empty() && bt::is_subtree(node.children.back().kind())) {
     const std::size_t last = node.children.size() - 1;
     b.call = &node.children[last];
     b.call_path = child_path(path, *b.call, last);
@@ -134,7 +132,7 @@ std::optional<Selector> read_selector(Context& ctx, const std::string& adaptable
     bool called = false;
     std::function<void(const bt::Node&)> visit = [&](const bt::Node& n) {
       const std::string* id = n.attribute("ID");
-      if (is_call(n) && id && *id == adaptable) called = true;
+      if (bt::is_subtree(n.kind()) && id && *id == adaptable) called = true;
       for (const auto& c : n.children) visit(c);
     };
     for (const auto& t : ctx.compiled().trees) visit(t.root);
@@ -155,7 +153,8 @@ std::optional<Selector> read_selector(Context& ctx, const std::string& adaptable
   std::string problem;
   if (root.tag.empty()) {
     problem = "the selection tree '" + adaptable + "' is empty";
-  } else if (kind != "Fallback" && kind != "ReactiveFallback") {
+  } else if (bt::node_kind(kind) != bt::NodeKind::fallback &&
+             bt::node_kind(kind) != bt::NodeKind::reactive_fallback) {
     problem = "the selection tree '" + adaptable + "' is a <" + kind +
               ">; it must be a Fallback or ReactiveFallback that tries the alternatives in "
               "priority order";

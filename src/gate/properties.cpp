@@ -3,6 +3,8 @@
 #include <map>
 #include <set>
 
+#include "bt/node_kinds.hpp"
+
 namespace uabt::gate {
 
 namespace {
@@ -19,7 +21,7 @@ void visit(const bt::Node& root, std::set<std::string>& labels, std::set<std::st
       if (const std::string* name = n->attribute("name"); name != nullptr && !name->empty())
         labels.insert(*name);
       labels.insert(n->kind());
-      if (n->children.empty() && n->tag != "SubTree") leaves.insert(n->kind());
+      if (n->children.empty() && !bt::is_subtree(n->tag)) leaves.insert(n->kind());
     }
     for (const auto& c : n->children) stack.push_back(&c);
   }

@@ -12,17 +12,6 @@ namespace uabt::load {
 
 namespace {
 
-bool is_explicit_family_tag(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
-}
-
-// BT.CPP: `name` and `ID` are not ports, nor is any attribute that does not start with a
-// letter (_autoremap, _skipIf, _description, …).
-bool is_port_attribute(const std::string& attribute) {
-  return !attribute.empty() && std::isalpha(static_cast<unsigned char>(attribute[0])) &&
-         attribute != "name" && attribute != "ID";
-}
-
 std::string port_list(const bt::NodeModel& model) {
   std::string out;
   for (const auto& p : model.ports) out += (out.empty() ? "" : ", ") + p.name;
@@ -33,7 +22,7 @@ class Registry {
  public:
   explicit Registry(Mission& m) : m_(m) {
     for (const auto& model : *m.nodes) {
-      if (model.family == "SubTree") continue;
+      if (bt::family_named(model.family) == bt::Family::subtree) continue;
       models_.emplace(model.id, &model);
       names_.push_back(model.id);
     }
@@ -54,9 +43,9 @@ class Registry {
  private:
   void check_node(const bt::TreeDef& tree, const bt::Node& n) {
     if (n.tag.empty() || n.tag == "Adaptable") return;
-    if (is_explicit_family_tag(n.tag) && n.attribute("ID") == nullptr) return;  // bt-structure
+    if (bt::is_explicit_family_tag(n.tag) && n.attribute("ID") == nullptr) return;  // bt-structure
     const std::string kind = n.kind();
-    if (kind == "SubTree" || kind == "SubTreePlus" || bt::find_builtin(kind) != nullptr) return;
+    if (bt::find_builtin(kind) != nullptr) return;
     const SourceLocation at{tree.file, n.line, n.column};
     const auto it = models_.find(kind);
     if (it == models_.end()) {
@@ -74,7 +63,7 @@ class Registry {
     std::vector<std::string> port_names;
     for (const auto& p : model.ports) port_names.push_back(p.name);
     for (const auto& [attribute, value] : n.attributes) {
-      if (!is_port_attribute(attribute)) continue;
+      if (!bt::is_port_attribute(attribute)) continue;
       bool known = false;
       for (const auto& p : model.ports) known |= p.name == attribute;
       if (known) continue;

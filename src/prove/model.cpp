@@ -365,8 +365,8 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       }
       const auto open = value.find('{');
       // A robot leaf's port only needs its entry to be there (ChoiceWorld reads no value).
-      const bool robot_leaf = n.children.empty() && bt::find_builtin(n.kind()) == nullptr &&
-                              n.kind() != "SubTree" && n.tag != "Adaptable";
+      const bool robot_leaf =
+          n.children.empty() && bt::find_builtin(n.kind()) == nullptr && n.tag != "Adaptable";
       if (open != std::string::npos && value.back() == '}' && !robot_leaf) {
         read.insert(value.substr(open + 1, value.size() - open - 2));
         port_reads.push_back(value.substr(open + 1, value.size() - open - 2));
@@ -498,9 +498,9 @@ void Model::mark_read_once() {
   // tree may then run again within the tick.
   bool loops = false;
   std::function<void(const bt::Node&)> scan = [&](const bt::Node& n) {
-    const std::string kind = n.kind();
-    loops =
-        loops || kind == "Repeat" || kind == "RetryUntilSuccessful" || kind == "SequenceWithMemory";
+    const bt::NodeKind kind = bt::node_kind(n.kind());
+    loops = loops || kind == bt::NodeKind::repeat || kind == bt::NodeKind::retry_until_successful ||
+            kind == bt::NodeKind::sequence_with_memory;
     for (const auto& c : n.children) scan(c);
   };
   for (const auto& t : doc.trees) scan(t.root);

@@ -3,6 +3,7 @@
 #include <map>
 #include <optional>
 
+#include "bt/node_kinds.hpp"
 #include "monitor/templates.hpp"
 #include "prove/prove.hpp"
 #include "smt/assign.hpp"
@@ -20,55 +21,18 @@ constexpr int kRunning = static_cast<int>(NodeStatus::running);
 constexpr int kSuccess = static_cast<int>(NodeStatus::success);
 constexpr int kFailure = static_cast<int>(NodeStatus::failure);
 
-enum class NK {
-  sequence,
-  reactive_sequence,
-  fallback,
-  reactive_fallback,
-  if_then_else,
-  while_do_else,
-  inverter,
-  force_success,
-  force_failure,
-  keep_running_until_failure,
-  repeat,
-  subtree,
-  always_success,
-  always_failure,
-  script,
-  script_condition,
-  condition,
-  action,
-};
+using NK = bt::NodeKind;
 
-const std::map<std::string, NK, std::less<>>& builtins() {
-  static const std::map<std::string, NK, std::less<>> kinds = {
-      {"Sequence", NK::sequence},
-      {"ReactiveSequence", NK::reactive_sequence},
-      {"Fallback", NK::fallback},
-      {"ReactiveFallback", NK::reactive_fallback},
-      {"IfThenElse", NK::if_then_else},
-      {"WhileDoElse", NK::while_do_else},
-      {"Inverter", NK::inverter},
-      {"ForceSuccess", NK::force_success},
-      {"ForceFailure", NK::force_failure},
-      {"KeepRunningUntilFailure", NK::keep_running_until_failure},
-      {"Repeat", NK::repeat},
-      {"SubTree", NK::subtree},
-      {"SubTreePlus", NK::subtree},
-      {"AlwaysSuccess", NK::always_success},
-      {"AlwaysFailure", NK::always_failure},
-      {"Script", NK::script},
-      {"ScriptCondition", NK::script_condition},
-  };
-  return kinds;
-}
-
-// Built-in nodes the runtime has and this encoding does not (yet) model.
-bool unmodelled_builtin(const std::string& kind) {
-  static const std::set<std::string, std::less<>> kinds = {
-      "SequenceWithMemory",   "SequenceStar",        "Parallel", "ParallelAll",
-      "RetryUntilSuccessful", "RetryUntilSuccesful", "RunOnce"};
+// The built-ins this encoding models; the runtime has a few more.
+bool modelled(NK kind) {
+  static const std::set<NK> kinds = {NK::sequence,       NK::reactive_sequence,
+                                     NK::fallback,       NK::reactive_fallback,
+                                     NK::if_then_else,   NK::while_do_else,
+                                     NK::inverter,       NK::force_success,
+                                     NK::force_failure,  NK::keep_running_until_failure,
+                                     NK::repeat,         NK::subtree,
+                                     NK::always_success, NK::always_failure,
+                                     NK::script,         NK::script_condition};
   return kinds.contains(kind);
 }
 
@@ -85,6 +49,7 @@ bool has_counter(NK k) {
 
 struct NodeDef {
   NK kind = NK::always_success;
+  bool condition = false;  // a robot leaf that is a condition (else an action)
   std::vector<NodeId> children;
   int leaf = -1;   // ChoiceWorld leaf
   int var = -1;    // condition: the variable it reads
@@ -214,13 +179,14 @@ struct SymbolicTick::Impl {
         for (const auto& [attr, value] : info.element->attributes)
           if (pre_or_post_condition(attr))
             throw SymbolicUnsupported(d.where + ": the symbolic engine does not model " + attr);
-      if (const auto it = builtins().find(info.kind); it != builtins().end()) {
-        d.kind = it->second;
-      } else if (unmodelled_builtin(info.kind)) {
+      d.kind = bt::node_kind(info.kind);
+      if (modelled(d.kind)) {
+        // a built-in: its kind is all the encoding needs
+      } else if (d.kind != NK::robot) {
         throw SymbolicUnsupported(d.where + ": the symbolic engine does not model " + info.kind);
       } else if (const auto l = leaf_of.find(id); l != leaf_of.end()) {
         d.leaf = l->second;
-        d.kind = leaves[static_cast<std::size_t>(d.leaf)].condition ? NK::condition : NK::action;
+        d.condition = leaves[static_cast<std::size_t>(d.leaf)].condition;
         const ChoiceWorld::Leaf& leaf = leaves[static_cast<std::size_t>(d.leaf)];
         for (const runtime::SlotId slot : leaf.inputs) {
           const auto v = var_of_slot.find(slot);
@@ -260,7 +226,7 @@ struct SymbolicTick::Impl {
         // Each re-tick within a tick is asked for by a Repeat that counted a cycle.
         wake_ups = std::min(32, wake_ups + cycles);
       }
-      if (d.kind == NK::condition) {
+      if (d.kind == NK::robot && d.condition) {
         const auto v = var_of_slot.find(leaves[static_cast<std::size_t>(d.leaf)].key);
         if (v == var_of_slot.end() || !vars[static_cast<std::size_t>(v->second)].tracked)
           throw SymbolicUnsupported(d.where + ": a condition on an untracked entry");
@@ -408,7 +374,7 @@ struct SymbolicTick::Impl {
   void halt_node(Exec& x, NodeId id, const z3::expr& g) {
     const NodeDef& d = nodes[id];
     if (has_counter(d.kind)) set(x.cur.counter[id], g, ctx.int_val(0));
-    if (d.kind == NK::action)
+    if (d.kind == NK::robot && !d.condition)
       set(x.cur.elapsed[static_cast<std::size_t>(d.leaf)], g && x.cur.status[id] == kRunning,
           ctx.int_val(0));
     reset_children(x, id, g);
@@ -470,7 +436,8 @@ struct SymbolicTick::Impl {
         if (d.kind == NK::script) return ctx.int_val(kSuccess);
         return z3::ite(script_truth(*v, d.where), ctx.int_val(kSuccess), ctx.int_val(kFailure));
       }
-      case NK::condition: {
+      case NK::robot: {
+        if (!d.condition) return action(x, id, g);
         require_inputs(x, d, g);
         const z3::expr& v = x.cur.values[static_cast<std::size_t>(d.var)];
         z3::expr truth = ctx.bool_val(false);
@@ -482,7 +449,7 @@ struct SymbolicTick::Impl {
         }
         return z3::ite(truth, ctx.int_val(kSuccess), ctx.int_val(kFailure));
       }
-      case NK::action: return action(x, id, g);
+      default: break;
     }
     return ctx.int_val(kFailure);
   }

@@ -1,5 +1,6 @@
 // Instantiation of a runtime tree from bt::TreeDefs: BT.CPP's load-time rules, ports
 // resolved to blackboard slots, scripts compiled, robot leaves bound to the World.
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <string_view>
@@ -18,45 +19,20 @@ namespace detail {
 
 namespace {
 
-enum class Shape { control, decorator, leaf, subtree };
-
-struct Spec {
-  Kind kind;
-  Shape shape;
-  std::vector<std::string_view> ports;  // input ports it accepts as attributes
-};
-
-const std::map<std::string_view, Spec, std::less<>>& specs() {
-  static const std::map<std::string_view, Spec, std::less<>> table = {
-      {"Sequence", {Kind::sequence, Shape::control, {}}},
-      {"SequenceWithMemory", {Kind::sequence_with_memory, Shape::control, {}}},
-      {"SequenceStar", {Kind::sequence_with_memory, Shape::control, {}}},  // v3
-      {"ReactiveSequence", {Kind::reactive_sequence, Shape::control, {}}},
-      {"Fallback", {Kind::fallback, Shape::control, {}}},
-      {"ReactiveFallback", {Kind::reactive_fallback, Shape::control, {}}},
-      {"Parallel",
-       {Kind::parallel,
-        Shape::control,
-        {"success_count", "failure_count", "success_threshold", "failure_threshold"}}},
-      {"ParallelAll", {Kind::parallel_all, Shape::control, {"max_failures"}}},
-      {"IfThenElse", {Kind::if_then_else, Shape::control, {}}},
-      {"WhileDoElse", {Kind::while_do_else, Shape::control, {}}},
-      {"Inverter", {Kind::inverter, Shape::decorator, {}}},
-      {"ForceSuccess", {Kind::force_success, Shape::decorator, {}}},
-      {"ForceFailure", {Kind::force_failure, Shape::decorator, {}}},
-      {"Repeat", {Kind::repeat, Shape::decorator, {"num_cycles"}}},
-      {"RetryUntilSuccessful", {Kind::retry_until_successful, Shape::decorator, {"num_attempts"}}},
-      {"RetryUntilSuccesful", {Kind::retry_until_successful, Shape::decorator, {"num_attempts"}}},
-      {"KeepRunningUntilFailure", {Kind::keep_running_until_failure, Shape::decorator, {}}},
-      {"RunOnce", {Kind::run_once, Shape::decorator, {"then_skip"}}},
-      {"SubTree", {Kind::subtree, Shape::subtree, {}}},
-      {"SubTreePlus", {Kind::subtree, Shape::subtree, {}}},  // v3
-      {"AlwaysSuccess", {Kind::always_success, Shape::leaf, {}}},
-      {"AlwaysFailure", {Kind::always_failure, Shape::leaf, {}}},
-      {"Script", {Kind::script, Shape::leaf, {"code"}}},
-      {"ScriptCondition", {Kind::script_condition, Shape::leaf, {"code"}}},
-  };
-  return table;
+// The built-in kinds the runtime ticks (engine.cpp's execute_tick).
+bool runs(Kind kind) {
+  static constexpr Kind kRuns[] = {
+      // controls
+      Kind::sequence, Kind::sequence_with_memory, Kind::reactive_sequence, Kind::fallback,
+      Kind::reactive_fallback, Kind::parallel, Kind::parallel_all, Kind::if_then_else,
+      Kind::while_do_else,
+      // decorators
+      Kind::inverter, Kind::force_success, Kind::force_failure, Kind::repeat,
+      Kind::retry_until_successful, Kind::keep_running_until_failure, Kind::run_once,
+      // leaves
+      Kind::subtree, Kind::always_success, Kind::always_failure, Kind::script,
+      Kind::script_condition};
+  return std::find(std::begin(kRuns), std::end(kRuns), kind) != std::end(kRuns);
 }
 
 // BT.CPP 4.x's pre- and post-condition attributes, where their scripts go.
@@ -80,10 +56,6 @@ const ConditionAttribute* condition_attribute(std::string_view name) {
   for (const auto& a : kConditionAttributes)
     if (a.name == name) return &a;
   return nullptr;
-}
-
-bool is_explicit_family(const std::string& tag) {
-  return tag == "Action" || tag == "Condition" || tag == "Control" || tag == "Decorator";
 }
 
 // BT.CPP treats only attributes that start with a letter as ports; `_description`, `_uid`
@@ -163,22 +135,21 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     throw LoadError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
                     message);
   }
-  const auto spec_it = specs().find(kind_name);
-  const Spec* spec = spec_it == specs().end() ? nullptr : &spec_it->second;
-  if (spec == nullptr && bt::find_builtin(kind_name) != nullptr)
+  const bt::BuiltinNode* builtin = bt::find_builtin(kind_name);
+  if (builtin != nullptr && !runs(builtin->kind))
     throw refuse("BehaviorTree.CPP's " + kind_name + " is not supported by the uabt runtime");
-  if (spec == nullptr && !xml.children.empty())
+  if (builtin == nullptr && !xml.children.empty())
     throw refuse("'" + kind_name + "' has children but is not a control or decorator node " +
                  "of BehaviorTree.CPP");
-  const Shape shape = spec ? spec->shape : Shape::leaf;
-  const Kind kind = spec ? spec->kind : Kind::world_leaf;
+  const bt::Family family = builtin ? builtin->family : bt::Family::action;
+  const Kind kind = builtin ? builtin->kind : Kind::robot;
 
   const std::size_t n_children = xml.children.size();
-  if (shape == Shape::control && n_children == 0)
+  if (family == bt::Family::control && n_children == 0)
     throw refuse(kind_name + " needs at least one child");
-  if (shape == Shape::decorator && n_children != 1)
+  if (family == bt::Family::decorator && n_children != 1)
     throw refuse(kind_name + " needs exactly one child, it has " + std::to_string(n_children));
-  if ((shape == Shape::leaf || shape == Shape::subtree) && n_children != 0)
+  if (family != bt::Family::control && family != bt::Family::decorator && n_children != 0)
     throw refuse(kind_name + " cannot have children");
 
   const auto id = static_cast<NodeId>(core.nodes.size());
@@ -252,11 +223,13 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
       (c->pre ? scripts.pre : scripts.post)[c->index] = program;
       continue;
     }
-    if (attr == "ID" && (is_explicit_family(xml.tag) || shape == Shape::subtree)) continue;
-    if (shape == Shape::subtree || kind == Kind::world_leaf) continue;  // ports, see below
+    if (attr == "ID" && (bt::is_explicit_family_tag(xml.tag) || family == bt::Family::subtree))
+      continue;
+    if (family == bt::Family::subtree || kind == Kind::robot) continue;  // ports, see below
     if (!is_port_name(attr)) continue;
     bool known = false;
-    for (std::string_view port : spec->ports) known = known || port == attr;
+    for (const bt::Port& port : builtin->ports) known = known || port.name == attr;
+    for (const std::string& port : builtin->v3_ports) known = known || port == attr;
     if (!known) throw refuse(kind_name + " has no port named '" + attr + "'");
   }
 
@@ -283,11 +256,11 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
       new_params().program = program;
       break;
     }
-    case Kind::world_leaf: {
+    case Kind::robot: {
       NodeParams& p = new_params();
       p.ports_begin = static_cast<std::uint32_t>(core.leaf_ports.size());
       for (const auto& [attr, value] : xml.attributes) {
-        if (attr == "name" || (attr == "ID" && is_explicit_family(xml.tag))) continue;
+        if (attr == "name" || (attr == "ID" && bt::is_explicit_family_tag(xml.tag))) continue;
         if (!is_port_name(attr)) continue;
         LeafPort port;
         port.name = attr;

@@ -1,12 +1,14 @@
 // Internal to the runtime: the engine's data and the per-family tick functions
 // (controls/, decorators/, leaves/). Not for use outside src/runtime.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "bt/node_kinds.hpp"
 #include "runtime/blackboard.hpp"
 #include "runtime/engine.hpp"
 #include "runtime/script/program.hpp"
@@ -14,30 +16,8 @@
 
 namespace uabt::runtime::detail {
 
-enum class Kind : std::uint8_t {
-  sequence,
-  sequence_with_memory,
-  reactive_sequence,
-  fallback,
-  reactive_fallback,
-  parallel,
-  parallel_all,
-  if_then_else,
-  while_do_else,
-  inverter,
-  force_success,
-  force_failure,
-  repeat,
-  retry_until_successful,
-  keep_running_until_failure,
-  run_once,
-  subtree,
-  always_success,
-  always_failure,
-  script,
-  script_condition,
-  world_leaf,
-};
+// A node's kind from the node catalogue; a robot's leaf is Kind::robot.
+using Kind = bt::NodeKind;
 
 // An integer or boolean input port of a built-in node: a literal, or `{key}` read on every
 // tick (BT.CPP's getInput). Absent and without default: an error at tick, as in BT.CPP.
@@ -47,13 +27,7 @@ struct Input {
   std::int64_t value = 0;
 };
 
-// Hot per-node data. Meaning of the counters by kind:
-//   Sequence/Fallback (+WithMemory): a = current child, b = skipped children
-//   Parallel: b = successes, c = failures (completed flags in Core::child_done)
-//   ParallelAll: c = failures
-//   IfThenElse: a = branch being run (0: condition)
-//   Repeat/RetryUntilSuccessful: a = rounds done
-//   RunOnce: a = already completed (0/1), b = the status it completed with
+// Hot per-node data.
 struct RtNode {
   Kind kind = Kind::always_success;
   NodeStatus status = NodeStatus::idle;
@@ -62,7 +36,19 @@ struct RtNode {
   std::uint32_t child_count = 0;
   std::uint32_t params = 0;                  // into Core::params, for kinds that have some
   std::uint32_t conditions = kNoConditions;  // into Core::conditions
-  std::int32_t a = 0, b = 0, c = 0;
+  // What the node remembers between ticks, in three words saved and restored in this order,
+  // under the names BT.CPP's node gives them (Parallel's completed flags: Core::child_done).
+  std::array<std::int32_t, 3> memory{};
+  std::int32_t& current_child_idx() { return memory[0]; }  // Sequence, Fallback, *WithMemory
+  std::int32_t current_child_idx() const { return memory[0]; }
+  std::int32_t& child_idx() { return memory[0]; }     // IfThenElse: branch being run (0: condition)
+  std::int32_t& repeat_count() { return memory[0]; }  // Repeat
+  std::int32_t& try_count() { return memory[0]; }     // RetryUntilSuccessful
+  std::int32_t& already_ticked() { return memory[0]; }   // RunOnce (0/1)
+  std::int32_t& skipped_count() { return memory[1]; }    // Sequence, Fallback, *WithMemory
+  std::int32_t& success_count() { return memory[1]; }    // Parallel
+  std::int32_t& returned_status() { return memory[1]; }  // RunOnce
+  std::int32_t& failure_count() { return memory[2]; }    // Parallel, ParallelAll
   static constexpr std::uint32_t kNoConditions = UINT32_MAX;
 };
 
@@ -103,7 +89,7 @@ struct Trail {
   struct Entry {
     NodeId id;
     NodeStatus status;
-    std::int32_t a, b, c;
+    std::array<std::int32_t, 3> memory;
   };
   std::vector<Entry> entries;
   std::vector<std::uint32_t> stamp;  // per node: the epoch it was last logged in
@@ -114,7 +100,7 @@ struct Trail {
     if (stamp[id] == epoch) return;
     stamp[id] = epoch;
     const RtNode& n = nodes[id];
-    entries.push_back({id, n.status, n.a, n.b, n.c});
+    entries.push_back({id, n.status, n.memory});
   }
 };
 

@@ -67,7 +67,8 @@ NodeStatus Core::tick_kind(NodeId id) {
     case Kind::always_failure: s = tick_always_failure(*this, id); break;
     case Kind::script: s = tick_script(*this, id); break;
     case Kind::script_condition: s = tick_script_condition(*this, id); break;
-    case Kind::world_leaf: s = tick_world_leaf(*this, id); break;
+    case Kind::robot: s = tick_world_leaf(*this, id); break;
+    default: break;  // the builder refuses the built-ins the runtime does not run
   }
   return s;
 }
@@ -135,15 +136,15 @@ void Core::halt_node(NodeId id) {
   switch (n.kind) {
     case Kind::sequence:
     case Kind::fallback:
-      n.a = 0;
-      n.b = 0;
+      n.current_child_idx() = 0;
+      n.skipped_count() = 0;
       break;
-    case Kind::if_then_else:
-    case Kind::repeat:
-    case Kind::retry_until_successful: n.a = 0; break;
+    case Kind::if_then_else: n.child_idx() = 0; break;
+    case Kind::repeat: n.repeat_count() = 0; break;
+    case Kind::retry_until_successful: n.try_count() = 0; break;
     case Kind::parallel: halt_parallel(*this, id); break;
     case Kind::parallel_all: halt_parallel_all(*this, id); break;
-    case Kind::world_leaf:
+    case Kind::robot:
       if (n.status == NodeStatus::running) halt_world_leaf(*this, id);
       break;
     // SequenceWithMemory keeps its index and RunOnce its memory (BT.CPP); the others have

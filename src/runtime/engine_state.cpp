@@ -16,7 +16,7 @@ EngineState EngineState::save(const Engine& engine) {
   s.counters.reserve(3 * c.nodes.size());
   for (const detail::RtNode& n : c.nodes) {
     s.status.push_back(n.status);
-    s.counters.insert(s.counters.end(), {n.a, n.b, n.c});
+    s.counters.insert(s.counters.end(), n.memory.begin(), n.memory.end());
   }
   s.child_done = c.child_done;
   s.values.reserve(c.bb.slot_count());
@@ -32,9 +32,8 @@ void EngineState::restore(Engine& engine) const {
   detail::Core& c = *engine.core_;
   for (std::size_t i = 0; i < c.nodes.size() && i < status.size(); ++i) {
     c.nodes[i].status = status[i];
-    c.nodes[i].a = counters[3 * i];
-    c.nodes[i].b = counters[3 * i + 1];
-    c.nodes[i].c = counters[3 * i + 2];
+    std::copy_n(counters.begin() + static_cast<std::ptrdiff_t>(3 * i), 3,
+                c.nodes[i].memory.begin());
   }
   c.child_done = child_done;
   // Slots created after the save (a script's first write) go back to empty.
@@ -54,7 +53,7 @@ void Engine::reset(World& world, const EngineState& built) {
   if (c.options.smart_selection) c.smart = std::make_shared<detail::SmartSelection>();
   c.world = &world;
   for (NodeId id = 0; id < c.nodes.size(); ++id)
-    if (c.nodes[id].kind == detail::Kind::world_leaf && c.nodes[id].alive) c.bind_world_leaf(id);
+    if (c.nodes[id].kind == detail::Kind::robot && c.nodes[id].alive) c.bind_world_leaf(id);
 }
 
 namespace {
@@ -155,7 +154,7 @@ void engine_key(const detail::Core& c, const std::vector<NodeId>* only, std::str
       [&](std::uint32_t i) { return c.nodes[i].status; },
       [&](std::uint32_t i) {
         const detail::RtNode& n = c.nodes[i];
-        return std::array<std::int32_t, 3>{n.a, n.b, n.c};
+        return n.memory;
       },
       c.child_done, c.bb.slot_count(),
       [&](std::size_t slot) -> const ScriptValue& { return c.bb.value(slot); }, c.wake_up,
@@ -163,7 +162,7 @@ void engine_key(const detail::Core& c, const std::vector<NodeId>* only, std::str
 }
 
 bool busy(const detail::RtNode& n) {
-  return n.status != NodeStatus::idle || (n.a | n.b | n.c) != 0;
+  return n.status != NodeStatus::idle || n.memory != decltype(n.memory){};
 }
 
 }  // namespace
@@ -238,8 +237,7 @@ bool TickTrail::resumable() const {
   const std::vector<NodeId>& path = trail_->path;
   if (c.in_wake_up_loop || path.empty() || path.front() != c.root) return false;
   const detail::RtNode& leaf = c.nodes[path.back()];
-  if (leaf.kind != Kind::world_leaf || leaf.conditions != detail::RtNode::kNoConditions)
-    return false;
+  if (leaf.kind != Kind::robot || leaf.conditions != detail::RtNode::kNoConditions) return false;
   for (std::size_t k = 0; k + 1 < path.size(); ++k) {
     const detail::RtNode& n = c.nodes[path[k]];
     if (n.status != NodeStatus::running) return false;
@@ -250,8 +248,8 @@ bool TickTrail::resumable() const {
     switch (n.kind) {
       case Kind::sequence:
       case Kind::fallback:
-        if (n.a < 0) return false;
-        child = static_cast<std::uint32_t>(n.a);
+        if (n.current_child_idx() < 0) return false;
+        child = static_cast<std::uint32_t>(n.current_child_idx());
         break;
       case Kind::inverter:
       case Kind::force_success:
@@ -298,9 +296,7 @@ void TickTrail::restore() {
     const detail::Trail::Entry& e = t.entries.back();
     detail::RtNode& n = c.nodes[e.id];
     n.status = e.status;
-    n.a = e.a;
-    n.b = e.b;
-    n.c = e.c;
+    n.memory = e.memory;
     t.entries.pop_back();
   }
   ++t.epoch;

@@ -50,8 +50,8 @@ void add_script(const std::string& code, std::set<std::string>& state) {
 
 void add_node(const bt::Node& node, ScenarioVocabulary& v) {
   const std::string kind = node.kind();
-  const bool builtin = bt::find_builtin(kind) != nullptr || kind == "SubTree" ||
-                       node.tag == "Adaptable" || !node.children.empty();
+  const bool builtin =
+      bt::find_builtin(kind) != nullptr || node.tag == "Adaptable" || !node.children.empty();
   if (!builtin) v.leaves.insert(kind);
   for (const auto& [attr, value] : node.attributes) {
     if (attr == "code" || attr.starts_with('_')) {

@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "bt/node_kinds.hpp"
+
 namespace uabt::runtime {
 
 namespace {
@@ -14,10 +16,12 @@ SelectionObserver::SelectionObserver(const Engine& engine,
 
 NodeId SelectionObserver::selector_of(const Engine& engine, NodeId call) {
   const NodeInfo& sub = engine.info(call);
-  if (sub.kind != "SubTree" || sub.parent == kNoNode) return kNoNode;
+  using bt::NodeKind;
+  if (!bt::is_subtree(sub.kind) || sub.parent == kNoNode) return kNoNode;
   const NodeId branch = sub.parent;
   const NodeInfo& seq = engine.info(branch);
-  if (seq.kind != "Sequence" && seq.kind != "ReactiveSequence") return kNoNode;
+  const NodeKind seq_kind = bt::node_kind(seq.kind);
+  if (seq_kind != NodeKind::sequence && seq_kind != NodeKind::reactive_sequence) return kNoNode;
   if (sub.child_index + 1 != engine.children(branch).size()) return kNoNode;
   if (seq.parent == kNoNode || engine.info(seq.parent).instance != seq.instance) return kNoNode;
   // Fig. 4: the branch is a child of the selector, a (Reactive)Fallback. A decision structure
@@ -30,10 +34,11 @@ NodeId SelectionObserver::selector_of(const Engine& engine, NodeId call) {
            engine.info(engine.info(selector).parent).instance == seq.instance)
       selector = engine.info(selector).parent;
   const NodeInfo& root = engine.info(selector);
-  static const std::set<std::string, std::less<>> fallbacks = {"Fallback", "ReactiveFallback"};
-  static const std::set<std::string, std::less<>> decisions = {
-      "Fallback", "ReactiveFallback", "IfThenElse", "WhileDoElse", "Sequence", "ReactiveSequence"};
-  if (!(leaf ? decisions : fallbacks).contains(root.kind)) return kNoNode;
+  static const std::set<NodeKind> fallbacks = {NodeKind::fallback, NodeKind::reactive_fallback};
+  static const std::set<NodeKind> decisions = {NodeKind::fallback,     NodeKind::reactive_fallback,
+                                               NodeKind::if_then_else, NodeKind::while_do_else,
+                                               NodeKind::sequence,     NodeKind::reactive_sequence};
+  if (!(leaf ? decisions : fallbacks).contains(bt::node_kind(root.kind))) return kNoNode;
   if (root.name.empty() || root.name != root.tree_id) return kNoNode;
   if (root.parent != kNoNode && engine.info(root.parent).instance == root.instance) return kNoNode;
   return selector;

@@ -1,6 +1,7 @@
 // Counts what one tick of a selection tree really ticks (cross-checks the compiler's counts).
 #include "runtime/selection_probe.hpp"
 
+#include "bt/node_kinds.hpp"
 #include "runtime/runner.hpp"
 
 namespace uabt::runtime {
@@ -26,15 +27,16 @@ class Counter : public Observer {
     if (previous != NodeStatus::idle) return;
     const NodeInfo& info = engine_.info(node);
     if (info.tree_id != tree_id_) return;
-    if (info.kind == "SubTree") {
+    const bt::NodeKind kind = bt::node_kind(info.kind);
+    if (kind == bt::NodeKind::subtree) {
       if (next == NodeStatus::running && out_.first_call.empty())
         if (const std::string* id = info.element->attribute("ID")) out_.first_call = *id;
       return;
     }
     const bool done = next == NodeStatus::success || next == NodeStatus::failure;
     const bool leaf = engine_.children(node).empty();
-    if (done && leaf && info.kind != "AlwaysSuccess" && info.kind != "AlwaysFailure" &&
-        info.kind != "Script")
+    if (done && leaf && kind != bt::NodeKind::always_success &&
+        kind != bt::NodeKind::always_failure && kind != bt::NodeKind::script)
       ++out_.conditions;
   }
 

@@ -20,7 +20,7 @@ bool pure_guard(Core& core, NodeId id, std::vector<NodeId>& leaves) {
       if (core.programs[core.params[n.params].program].writes()) return false;
       leaves.push_back(id);
       return true;
-    case Kind::world_leaf:
+    case Kind::robot:
       // The world says which leaves are conditions (it names what they read).
       if (condition_reads(core, id).empty()) return false;
       leaves.push_back(id);
@@ -56,7 +56,7 @@ Reads reads_of(Core& core, const SmartSelector& s) {
 Reads condition_reads(Core& core, NodeId node) {
   const RtNode& n = core.nodes[node];
   Reads out;
-  if (n.kind == Kind::world_leaf) return core.world->condition_reads(core.leaf_context(node));
+  if (n.kind == Kind::robot) return core.world->condition_reads(core.leaf_context(node));
   if (n.kind != Kind::script_condition) return out;
   const script::Program& program = core.programs[core.params[n.params].program];
   const ScopeId scope = core.instances[core.info[node].instance].scope;

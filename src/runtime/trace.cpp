@@ -4,6 +4,7 @@
 
 #include "base/diagnostics.hpp"
 #include "base/number_text.hpp"
+#include "bt/node_kinds.hpp"
 
 namespace uabt::runtime {
 
@@ -37,9 +38,10 @@ const std::string& NodeTracer::path(NodeId node) {
 bool NodeTracer::is_condition(NodeId node) {
   if (condition_.size() <= node) condition_.resize(engine_.node_count(), 0);
   if (condition_[node] == 0)
-    condition_[node] =
-        engine_.info(node).kind == "ScriptCondition" || !engine_.condition_reads(node).empty() ? 1
-                                                                                               : 2;
+    condition_[node] = bt::node_kind(engine_.info(node).kind) == bt::NodeKind::script_condition ||
+                               !engine_.condition_reads(node).empty()
+                           ? 1
+                           : 2;
   return condition_[node] == 1;
 }
 

@@ -106,6 +106,23 @@ TEST(SchemaCli, DeterministicAndWrittenOnlyWhenAsked) {
   EXPECT_FALSE(fs::exists(dir.dir() / "x.xsd"));
 }
 
+TEST(SchemaCli, HasBtCpp410sAsyncSequenceAndAsyncFallback) {
+  TempMission dir(mission_files("<Stop/>"));
+  const CliRun run = run_uabt_in(dir.dir().string(), "schema nodes.xml");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  for (const char* id : {"AsyncSequence", "AsyncFallback"}) {
+    const std::string name(id);
+    EXPECT_NE(run.out.find("<xs:element name=\"" + name + "\" type=\"node_" + name + "\"/>"),
+              std::string::npos)
+        << id;
+    EXPECT_NE(run.out.find("<xs:complexType name=\"node_" + name +
+                           "\">\n    <xs:group ref=\"oneNodeGroup\" minOccurs=\"1\" "
+                           "maxOccurs=\"unbounded\"/>"),
+              std::string::npos)
+        << id;
+  }
+}
+
 TEST(SchemaCli, XmllintAcceptsGoodTreesAndRejectsWhatTheLoaderRejects) {
   if (!have_xmllint()) GTEST_SKIP() << "xmllint (libxml2-utils) is not installed";
   TempMission dir(mission_files("<Stop/>"));

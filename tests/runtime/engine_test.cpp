@@ -96,6 +96,19 @@ TEST_F(EngineTest, LoadErrorsNameTheElement) {
             std::string::npos);
 }
 
+// The node catalogue has every built-in of BT.CPP 4.10: one the runtime does not run is
+// refused as such, not as a robot node with children.
+TEST_F(EngineTest, BtCpp410BuiltInsItDoesNotRunAreRefusedByName) {
+  EXPECT_EQ(load_error("<AsyncSequence><A/></AsyncSequence>"),
+            "test.xml:1:76: BehaviorTree.CPP's AsyncSequence is not supported by the uabt runtime");
+  EXPECT_NE(load_error("<AsyncFallback><A/></AsyncFallback>").find("not supported"),
+            std::string::npos);
+  // Parallel still reads BT.CPP 3.8's port names.
+  EXPECT_EQ(load_error("<Parallel success_threshold=\"1\"><A/></Parallel>"), "");
+  EXPECT_NE(load_error("<Parallel threshold=\"1\"><A/></Parallel>").find("no port named"),
+            std::string::npos);
+}
+
 TEST_F(EngineTest, PreAndPostConditionScripts) {
   Engine e = build(
       "<Sequence><A _skipIf=\"!go\"/><B _successIf=\"true\"/>"

@@ -1,5 +1,6 @@
 #include "bt/script/load_check.hpp"
 
+#include "bt/node_kinds.hpp"
 #include "bt/script/ast.hpp"
 #include "bt/tree.hpp"
 
@@ -32,11 +33,12 @@ std::vector<std::pair<std::string, std::string>> node_script_refusals(const Node
     if (is_condition_attribute(attr))
       if (auto why = script_refusal(kind + " " + attr, value, false))
         out.emplace_back(attr, std::move(*why));
-  if (kind == "Script" || kind == "ScriptCondition") {
+  const NodeKind k = node_kind(kind);
+  if (k == NodeKind::script || k == NodeKind::script_condition) {
     const std::string* code = node.attribute("code");
     if (code == nullptr)
       out.emplace_back("", kind + " needs its port 'code'");
-    else if (auto why = script_refusal(kind, *code, kind == "ScriptCondition"))
+    else if (auto why = script_refusal(kind, *code, k == NodeKind::script_condition))
       out.emplace_back("code", std::move(*why));
   }
   return out;

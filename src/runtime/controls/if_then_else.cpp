@@ -12,23 +12,23 @@ NodeStatus tick_if_then_else(Core& core, NodeId id) {
     core.fail(id, "IfThenElse must have 2 or 3 children, it has " + std::to_string(count));
   core.set_status(id, NodeStatus::running);
 
-  if (n.a == 0) {
+  if (n.child_idx() == 0) {
     const NodeStatus condition = core.execute_tick(core.child(id, 0));
     if (condition == NodeStatus::running) return condition;
     if (condition == NodeStatus::success) {
-      n.a = 1;
+      n.child_idx() = 1;
     } else if (condition == NodeStatus::failure) {
       if (count != 3) return condition;
-      n.a = 2;
+      n.child_idx() = 2;
     }
   }
   // BT.CPP throws "Something unexpected happened" here.
-  if (n.a == 0) core.fail(id, "its condition was skipped: no branch to run");
+  if (n.child_idx() == 0) core.fail(id, "its condition was skipped: no branch to run");
 
-  const NodeStatus s = core.execute_tick(core.child(id, static_cast<std::uint32_t>(n.a)));
+  const NodeStatus s = core.execute_tick(core.child(id, static_cast<std::uint32_t>(n.child_idx())));
   if (s == NodeStatus::running) return s;
   core.reset_children(id);
-  n.a = 0;
+  n.child_idx() = 0;
   return s;
 }
 

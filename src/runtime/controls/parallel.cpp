@@ -16,8 +16,8 @@ std::int64_t threshold(std::int64_t value, std::uint32_t children) {
 void clear(Core& core, NodeId id) {
   RtNode& n = core.nodes[id];
   std::fill_n(core.child_done.begin() + n.first_child, n.child_count, std::uint8_t{0});
-  n.b = 0;
-  n.c = 0;
+  n.success_count() = 0;
+  n.failure_count() = 0;
 }
 
 }  // namespace
@@ -54,19 +54,20 @@ NodeStatus tick_parallel(Core& core, NodeId id) {
         ++skipped;
       } else if (s == NodeStatus::success) {
         done = 1;
-        ++n.b;
+        ++n.success_count();
       } else if (s == NodeStatus::failure) {
         done = 1;
-        ++n.c;
+        ++n.failure_count();
       }
     }
     // Checked after every child, as BT.CPP does: a threshold reached stops the loop.
-    if (n.b >= required_successes || (success_value < 0 && n.b + skipped >= required_successes)) {
+    if (n.success_count() >= required_successes ||
+        (success_value < 0 && n.success_count() + skipped >= required_successes)) {
       clear(core, id);
       core.reset_children(id);
       return NodeStatus::success;
     }
-    if (count - n.c < required_successes || n.c == failure_threshold) {
+    if (count - n.failure_count() < required_successes || n.failure_count() == failure_threshold) {
       clear(core, id);
       core.reset_children(id);
       return NodeStatus::failure;

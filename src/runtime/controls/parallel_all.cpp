@@ -9,7 +9,7 @@ namespace uabt::runtime::detail {
 void halt_parallel_all(Core& core, NodeId id) {
   RtNode& n = core.nodes[id];
   std::fill_n(core.child_done.begin() + n.first_child, n.child_count, std::uint8_t{0});
-  n.c = 0;
+  n.failure_count() = 0;
 }
 
 NodeStatus tick_parallel_all(Core& core, NodeId id) {
@@ -38,7 +38,7 @@ NodeStatus tick_parallel_all(Core& core, NodeId id) {
     if (s == NodeStatus::success || s == NodeStatus::failure) {
       done = 1;
       ++completed;
-      if (s == NodeStatus::failure) ++n.c;
+      if (s == NodeStatus::failure) ++n.failure_count();
     } else if (s == NodeStatus::skipped) {
       ++skipped;
     }
@@ -46,7 +46,8 @@ NodeStatus tick_parallel_all(Core& core, NodeId id) {
   if (skipped == count) return NodeStatus::skipped;
   if (skipped + completed >= count) {
     core.reset_children(id);
-    const NodeStatus result = n.c >= failure_threshold ? NodeStatus::failure : NodeStatus::success;
+    const NodeStatus result =
+        n.failure_count() >= failure_threshold ? NodeStatus::failure : NodeStatus::success;
     halt_parallel_all(core, id);
     return result;
   }

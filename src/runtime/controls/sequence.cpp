@@ -7,24 +7,24 @@ namespace uabt::runtime::detail {
 NodeStatus tick_sequence(Core& core, NodeId id) {
   RtNode& n = core.nodes[id];
   const auto count = static_cast<std::int32_t>(n.child_count);
-  if (n.status == NodeStatus::idle) n.b = 0;  // a new run: forget skipped children
+  if (n.status == NodeStatus::idle) n.skipped_count() = 0;  // a new run: forget skipped children
   core.set_status(id, NodeStatus::running);
 
-  while (n.a < count) {
-    const NodeStatus s = core.execute_tick(core.child(id, n.a));
+  while (n.current_child_idx() < count) {
+    const NodeStatus s = core.execute_tick(core.child(id, n.current_child_idx()));
     if (s == NodeStatus::running) return s;
     if (s == NodeStatus::failure) {
       core.reset_children(id);
-      n.a = 0;
+      n.current_child_idx() = 0;
       return s;
     }
-    if (s == NodeStatus::skipped) ++n.b;
-    ++n.a;  // SUCCESS or SKIPPED: next child
+    if (s == NodeStatus::skipped) ++n.skipped_count();
+    ++n.current_child_idx();  // SUCCESS or SKIPPED: next child
   }
-  const bool all_skipped = n.b == count;
+  const bool all_skipped = n.skipped_count() == count;
   core.reset_children(id);
-  n.a = 0;
-  n.b = 0;
+  n.current_child_idx() = 0;
+  n.skipped_count() = 0;
   return all_skipped ? NodeStatus::skipped : NodeStatus::success;
 }
 

@@ -11,7 +11,7 @@ NodeStatus tick_repeat(Core& core, NodeId id) {
   const std::int64_t cycles =
       core.read_int(id, core.params[core.nodes[id].params].in0, "num_cycles");
   RtNode& n = core.nodes[id];
-  bool again = n.a < cycles || cycles == -1;
+  bool again = n.repeat_count() < cycles || cycles == -1;
   core.set_status(id, NodeStatus::running);
 
   // At most two rounds: after the first the child is IDLE, so a second success yields.
@@ -21,20 +21,20 @@ NodeStatus tick_repeat(Core& core, NodeId id) {
     const NodeStatus s = core.execute_tick(child);
     if (s == NodeStatus::running) return s;
     if (s == NodeStatus::failure) {
-      n.a = 0;
+      n.repeat_count() = 0;
       core.halt_child(id, 0);
       return s;
     }
     core.halt_child(id, 0);
     if (s == NodeStatus::skipped) return s;
-    if (n.a < INT32_MAX) ++n.a;
-    again = n.a < cycles || cycles == -1;
+    if (n.repeat_count() < INT32_MAX) ++n.repeat_count();
+    again = n.repeat_count() < cycles || cycles == -1;
     if (again && before == NodeStatus::idle) {
       core.emit_wake_up(id);
       return NodeStatus::running;
     }
   }
-  n.a = 0;
+  n.repeat_count() = 0;
   return NodeStatus::success;
 }
 

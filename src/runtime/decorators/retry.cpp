@@ -10,7 +10,7 @@ NodeStatus tick_retry_until_successful(Core& core, NodeId id) {
   const Input& input = core.params[core.nodes[id].params].in0;
   std::int64_t attempts = core.read_int(id, input, "num_attempts");
   RtNode& n = core.nodes[id];
-  bool again = n.a < attempts || attempts == -1;
+  bool again = n.try_count() < attempts || attempts == -1;
   core.set_status(id, NodeStatus::running);
 
   while (again) {
@@ -19,7 +19,7 @@ NodeStatus tick_retry_until_successful(Core& core, NodeId id) {
     const NodeStatus s = core.execute_tick(child);
     if (s == NodeStatus::running) return s;
     if (s == NodeStatus::success) {
-      n.a = 0;
+      n.try_count() = 0;
       core.halt_child(id, 0);
       return s;
     }
@@ -27,18 +27,18 @@ NodeStatus tick_retry_until_successful(Core& core, NodeId id) {
       core.halt_child(id, 0);
       return s;
     }
-    if (n.a < INT32_MAX) ++n.a;
+    if (n.try_count() < INT32_MAX) ++n.try_count();
     // BT.CPP reads num_attempts again here (the child may have changed it) and keeps the old
     // value when that read fails.
     core.try_read_int(input, attempts);
-    again = n.a < attempts || attempts == -1;
+    again = n.try_count() < attempts || attempts == -1;
     core.halt_child(id, 0);
     if (again && before == NodeStatus::idle) {
       core.emit_wake_up(id);
       return NodeStatus::running;
     }
   }
-  n.a = 0;
+  n.try_count() = 0;
   return NodeStatus::failure;
 }
 

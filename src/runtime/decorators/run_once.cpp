@@ -9,13 +9,14 @@ NodeStatus tick_run_once(Core& core, NodeId id) {
   bool then_skip = true;  // also when the port does not read as a boolean, as in BT.CPP
   core.try_read_bool(core.params[core.nodes[id].params].in0, then_skip);
   RtNode& n = core.nodes[id];
-  if (n.a != 0) return then_skip ? NodeStatus::skipped : static_cast<NodeStatus>(n.b);
+  if (n.already_ticked() != 0)
+    return then_skip ? NodeStatus::skipped : static_cast<NodeStatus>(n.returned_status());
 
   core.set_status(id, NodeStatus::running);
   const NodeStatus s = core.execute_tick(core.child(id, 0));
   if (is_completed(s)) {
-    n.a = 1;
-    n.b = static_cast<std::int32_t>(s);
+    n.already_ticked() = 1;
+    n.returned_status() = static_cast<std::int32_t>(s);
     core.halt_child(id, 0);
   }
   return s;

@@ -10,7 +10,8 @@ namespace uabt::verify::tree {
 void check_async_reactive(const Site& site, Outcomes& outcomes, std::vector<Finding>& out) {
   const bt::Node& node = *site.node;
   const std::string kind = node.kind();
-  if (kind != "ReactiveSequence" && kind != "ReactiveFallback") return;
+  const bt::NodeKind k = bt::node_kind(kind);
+  if (k != bt::NodeKind::reactive_sequence && k != bt::NodeKind::reactive_fallback) return;
   const bt::Node* first = nullptr;
   for (const auto& child : node.children) {
     if (!outcomes.may_run(*site.document, child)) continue;
@@ -27,9 +28,10 @@ void check_async_reactive(const Site& site, Outcomes& outcomes, std::vector<Find
             kind + "::EnableException(true))",
         site.location_of(child));
     f.notes.push_back(
-        "keep one asynchronous child (the last) and make the others conditions, "
-        "or use " +
-        std::string(kind == "ReactiveSequence" ? "Sequence" : "Fallback") +
+        std::string("keep one asynchronous child (the last) and make the others conditions, "
+                    "or use ") +
+        bt::kind_name(k == bt::NodeKind::reactive_sequence ? bt::NodeKind::sequence
+                                                           : bt::NodeKind::fallback) +
         " if the earlier children need not be re-checked every tick");
     add_path(f, site, true);
     f.related.push_back(

@@ -43,7 +43,9 @@ void check_dead_branches(const Site& site, Outcomes& outcomes, std::vector<Findi
     }
     return;
   }
-  if ((kind == "IfThenElse" || kind == "WhileDoElse") && children.size() >= 2) {
+  if ((bt::node_kind(kind) == bt::NodeKind::if_then_else ||
+       bt::node_kind(kind) == bt::NodeKind::while_do_else) &&
+      children.size() >= 2) {
     const bt::Node& condition = children[0];
     if (outcomes.always_fails(document, condition)) {
       report(site, children[1], condition,

@@ -22,19 +22,12 @@ struct ScopeInfo {
   std::map<std::string, std::string> remapped;  // SubTree port → the parent's key
 };
 
-// BT.CPP: attributes that start with a letter are ports; ID and name are not.
-bool is_port(const std::string& attribute) {
-  return !attribute.empty() && std::isalpha(static_cast<unsigned char>(attribute.front())) &&
-         attribute != "ID" && attribute != "name";
-}
-
 // A built-in node's port: the Loop decorators write `value` (and pop `queue`, which must be
 // there); every other built-in port is an input.
+// A built-in node's port direction as BT.CPP declares it; input for a name it does not declare.
 std::string builtin_direction(const std::string& kind, const std::string& port) {
-  if (kind.rfind("Loop", 0) == 0) {
-    if (port == "value") return "output_port";
-    if (port == "queue") return "inout_port";
-  }
+  for (const bt::Port& p : bt::find_builtin(kind)->ports)
+    if (p.name == port) return p.direction;
   return "input_port";
 }
 
@@ -199,7 +192,7 @@ class Builder {
     const std::uint32_t scope = g_.nodes[node].scope;
     const SourceLocation& where = g_.nodes[node].location;
     const bool first_visit = seen_nodes_.insert({where.file, where.line, where.column}).second;
-    if (kind == "SetBlackboard") {
+    if (bt::node_kind(kind) == bt::NodeKind::set_blackboard) {
       if (const std::string* value = xml.attribute("value"))
         if (auto key = blackboard_key("value", *value))
           g_.vertices[at].reads.push_back(
@@ -213,7 +206,7 @@ class Builder {
     const auto model_it = models_.find(kind);
     const bt::NodeModel* model = model_it == models_.end() ? nullptr : model_it->second;
     for (const auto& [attribute, value] : xml.attributes) {
-      if (!is_port(attribute)) continue;
+      if (!bt::is_port_attribute(attribute)) continue;
       const bt::Port* port = nullptr;
       if (model)
         for (const auto& p : model->ports)
@@ -303,21 +296,23 @@ class Builder {
     Exits out;
     const auto& children = xml.children;
     if (xml.tag == "Adaptable") return adaptable(xml, node, enter);
-    if (kind == "SubTree" || kind == "SubTreePlus") return subtree(xml, def, scope, node, enter);
+    const bt::NodeKind k = bt::node_kind(kind);
+    if (k == bt::NodeKind::subtree) return subtree(xml, def, scope, node, enter);
     const bt::BuiltinNode* builtin = bt::find_builtin(kind);
     const ControlRule rule =
         control_rule(kind, builtin ? builtin->family : bt::Family::unknown, children.size());
 
     if (rule.combine == Combine::leaf) {
-      if (kind == "Script" || kind == "ScriptCondition") {
+      using K = bt::NodeKind;
+      if (k == K::script || k == K::script_condition) {
         if (const std::string* code = xml.attribute("code"))
-          add_script("code", kind, *code, node, kind == "ScriptCondition", enter, enter);
+          add_script("code", kind, *code, node, k == K::script_condition, enter, enter);
       } else {
         leaf_ports(xml, kind, node, enter);
       }
-      if (kind != "AlwaysFailure" && kind != "Script") out.success.push_back(enter);
-      if (kind != "AlwaysSuccess" && kind != "Script") out.failure.push_back(enter);
-      if (kind == "Script") out.success.push_back(enter);
+      if (k != K::always_failure && k != K::script) out.success.push_back(enter);
+      if (k != K::always_success && k != K::script) out.failure.push_back(enter);
+      if (k == K::script) out.success.push_back(enter);
       return out;
     }
     leaf_ports(xml, kind, node, enter);  // a control's or decorator's own ports ({key} inputs)
@@ -458,7 +453,7 @@ class Builder {
     std::uint32_t run_scope = shared ? scope : sub_scope;
     if (!shared) {
       for (const auto& [attribute, value] : xml.attributes) {
-        if (!is_port(attribute) || attribute.front() == '_') continue;
+        if (!bt::is_port_attribute(attribute) || attribute.front() == '_') continue;
         if (auto key = blackboard_key(attribute, value)) {
           // The remapping itself reads nothing: a read inside the SubTree reaches the parent.
           scopes_[sub_scope].remapped[attribute] = *key;

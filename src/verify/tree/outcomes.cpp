@@ -63,7 +63,8 @@ bool Outcomes::compute(const bt::Document& document, const bt::Node& node, Quest
     case runs: break;
   }
   if (node.tag == "Adaptable") return q == runs;  // an alternative is an action tree
-  if (kind == "SubTree" || kind == "SubTreePlus") {
+  const bt::NodeKind k = bt::node_kind(kind);
+  if (k == bt::NodeKind::subtree) {
     const bt::Node* root = subtree_root(document, node);
     if (root == nullptr) return q == runs || q == skips;
     return answer(document, *root, q);
@@ -72,13 +73,13 @@ bool Outcomes::compute(const bt::Document& document, const bt::Node& node, Quest
   const ControlRule rule = control_rule(kind, family, children.size());
   if (rule.combine == Combine::leaf) {
     switch (q) {
-      case succeeds: return kind == "AlwaysSuccess";
-      case fails: return kind == "AlwaysFailure";
+      case succeeds: return k == bt::NodeKind::always_success;
+      case fails: return k == bt::NodeKind::always_failure;
       case skips: return false;
       case runs:
         if (family == bt::Family::condition) return false;
         if (family == bt::Family::action)
-          return bt::find_builtin(kind) == nullptr || kind == "Sleep";
+          return k == bt::NodeKind::robot || k == bt::NodeKind::sleep;
         // Neither built in nor registered: a domain name is a condition the robot reports,
         // anything else one of its actions.
         return !registry_.is_domain_name(kind);
@@ -86,7 +87,7 @@ bool Outcomes::compute(const bt::Document& document, const bt::Node& node, Quest
   }
   if (q == runs && rule.may_run_alone) return true;
   if (q == runs || q == skips) {
-    if (kind == "SkipUnlessUpdated" && q == skips) return true;
+    if (k == bt::NodeKind::skip_unless_updated && q == skips) return true;
     for (const auto& child : children)
       if (answer(document, child, q)) return true;
     return false;

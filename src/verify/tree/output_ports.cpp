@@ -23,7 +23,9 @@ void check_output_ports(const Site& site, const Registry& registry, std::vector<
   const bt::Node& node = *site.node;
   const std::string kind = node.kind();
   const bt::NodeModel* model = registry.model(kind);
-  if (model == nullptr || model->family == "SubTree" || bt::find_builtin(kind) != nullptr) return;
+  if (model == nullptr || bt::family_named(model->family) == bt::Family::subtree ||
+      bt::find_builtin(kind) != nullptr)
+    return;
   for (const auto& port : model->ports) {
     if (port.direction != "output_port" && port.direction != "inout_port") continue;
     const std::string* value = node.attribute(port.name);

@@ -11,16 +11,7 @@ Registry::Registry(const load::Mission& mission) : mission_(mission) {
   add_document(mission.tree);
   for (const auto& alternative : mission.alternatives) add_document(alternative.document);
   for (const auto& builtin : bt::builtin_nodes()) families_.emplace(builtin.name, builtin.family);
-  static const std::unordered_map<std::string, bt::Family> kFamilies = {
-      {"Action", bt::Family::action},
-      {"Condition", bt::Family::condition},
-      {"Control", bt::Family::control},
-      {"Decorator", bt::Family::decorator},
-      {"SubTree", bt::Family::subtree}};
-  for (const auto& [id, model] : models_) {
-    const auto it = kFamilies.find(model->family);
-    families_.emplace(id, it == kFamilies.end() ? bt::Family::unknown : it->second);
-  }
+  for (const auto& [id, model] : models_) families_.emplace(id, bt::family_named(model->family));
   for (const auto& v : mission.domain.variables) domain_names_.insert(v.name);
 }
 
@@ -50,23 +41,26 @@ SourceLocation Site::location_of(const bt::Node& other) const {
 ControlRule control_rule(std::string_view kind, bt::Family family, std::size_t children) {
   ControlRule rule;
   if (children == 0 || family == bt::Family::action || family == bt::Family::condition) return rule;
+  using K = bt::NodeKind;
+  const K k = bt::node_kind(kind);
   if (is_sequence(kind)) {
     rule.combine = Combine::sequence;
   } else if (is_fallback(kind)) {
     rule.combine = Combine::fallback;
-  } else if ((kind == "IfThenElse" || kind == "WhileDoElse") && children >= 2) {
+  } else if ((k == K::if_then_else || k == K::while_do_else) && children >= 2) {
     rule.combine = Combine::if_then_else;
-  } else if (kind == "Parallel" || kind == "ParallelAll") {
+  } else if (k == K::parallel || k == K::parallel_all) {
     rule.combine = Combine::parallel;
   } else if (family == bt::Family::decorator && children == 1) {
-    rule.combine = kind == "Inverter"       ? Combine::invert
-                   : kind == "ForceSuccess" ? Combine::force_success
-                   : kind == "ForceFailure" ? Combine::force_failure
-                                            : Combine::pass;
-    rule.may_end_without_child = kind == "Precondition" || kind == "SkipUnlessUpdated" ||
-                                 kind == "LoopInt" || kind == "LoopBool" || kind == "LoopDouble" ||
-                                 kind == "LoopString" || kind.starts_with("BlackboardCheck");
-    rule.may_run_alone = kind == "Delay" || kind == "Timeout" || kind == "WaitValueUpdate";
+    rule.combine = k == K::inverter        ? Combine::invert
+                   : k == K::force_success ? Combine::force_success
+                   : k == K::force_failure ? Combine::force_failure
+                                           : Combine::pass;
+    rule.may_end_without_child = k == K::precondition || k == K::skip_unless_updated ||
+                                 k == K::loop_int || k == K::loop_bool || k == K::loop_double ||
+                                 k == K::loop_string || k == K::blackboard_check_int ||
+                                 k == K::blackboard_check_double || k == K::blackboard_check_string;
+    rule.may_run_alone = k == K::delay || k == K::timeout || k == K::wait_value_update;
   } else {
     rule.combine = Combine::any_child;
   }

@@ -52,11 +52,14 @@ struct Site {
 // The controls BehaviorTree.CPP 4.10 ticks as a Sequence (stop at the first child that does
 // not succeed) and as a Fallback (stop at the first that does not fail).
 inline bool is_sequence(std::string_view kind) {
-  return kind == "Sequence" || kind == "SequenceWithMemory" || kind == "SequenceStar" ||
-         kind == "ReactiveSequence" || kind == "AsyncSequence";
+  const bt::NodeKind k = bt::node_kind(kind);
+  return k == bt::NodeKind::sequence || k == bt::NodeKind::sequence_with_memory ||
+         k == bt::NodeKind::reactive_sequence || k == bt::NodeKind::async_sequence;
 }
 inline bool is_fallback(std::string_view kind) {
-  return kind == "Fallback" || kind == "ReactiveFallback" || kind == "AsyncFallback";
+  const bt::NodeKind k = bt::node_kind(kind);
+  return k == bt::NodeKind::fallback || k == bt::NodeKind::reactive_fallback ||
+         k == bt::NodeKind::async_fallback;
 }
 
 // How BehaviorTree.CPP 4.10 makes a node's result from its children's. The one reading of its
