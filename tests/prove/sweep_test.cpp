@@ -605,3 +605,61 @@ TEST(ProveSweep, DurationsInTimeUnitsAgreeAcrossProveRunAndMonitor) {
 
 }  // namespace
 }  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// Disagreements the agreement test found, each reduced to a small mission: a guarantee
+// `uabt prove` proves and a run of `uabt run` (the manager) that violates it. Each is skipped
+// with the seam it shows until the seam is fixed; UABT_AGREE_KNOWN_SEAMS=1 runs them.
+void expect_run_holds(const std::map<std::string, std::string>& files, const std::string& id,
+                      const std::string& scenario, const char* seam) {
+  if (!std::getenv("UABT_AGREE_KNOWN_SEAMS")) GTEST_SKIP() << "known seam " << seam;
+  const TempMission dir(files);
+  const Gated g(dir.dir());
+  ASSERT_TRUE(g.ok());
+  EXPECT_EQ(answer(g.prove("explicit"), id).verdict, Verdict::proved);
+  const std::filesystem::path path = dir.dir().parent_path() / "scenario.json";
+  std::ofstream(path, std::ios::binary) << scenario;
+  manager::BehaviorTreeManager bt_manager(dir.dir(), runtime::load_scenario(path));
+  const manager::ManagerRun run = bt_manager.run();
+  const monitor::PropertyResult* r = property_of(run.properties, id);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(verdict_text(r), "held") << manager::trace_summary(run);
+}
+
+// (e) Sweep seeds 4 and 17 (Forms::every), reduced: a Sequence that fails in the tick it
+// starts returned FAILURE, yet the run reads S.running true at tick 1.
+TEST(AgreementSeams, AControlNodeThatStartsAndFailsInOneTickIsNotRunning) {
+  expect_run_holds(
+      {{"mission.xml", mission_with("<Sequence name=\"S\"><AlwaysFailure/></Sequence>")},
+       {"domain.fret", "boolean A\n"},
+       {"requirements.fret", "Never: Mission shall never satisfy S.running\n"}},
+      "Never", R"({"max_ticks": 3})",
+      "(e): the run reads <node>.running true at a tick the control node started "
+      "and completed in; prove reads the status it returned");
+}
+
+// (h) Sweep seed 1002 (Forms::every), reduced: the reactive selection picks alt0 at tick 2,
+// alt0 fails, and the node falls through to alt1, still running: `.selected` is the later
+// branch (DESIGN §10), yet the run reads alt0.
+TEST(AgreementSeams, ASelectionThatFallsThroughReadsTheLaterBranch) {
+  expect_run_holds(
+      {{"mission.xml", mission_with("<Adaptable ID=\"ad0\" selection=\"reactive\"/>")},
+       {"alternatives/ad0/alt0.xml", alternative_tree("alt0", "<AlwaysFailure/>")},
+       {"alternatives/ad0/alt1.xml", alternative_tree("alt1", "<Work/>")},
+       {"domain.fret", "boolean E\n"},
+       {"world.json", R"({"actions": {"Work": {"ticks": 5, "results": ["success"]}}})"},
+       {"requirements.fret",
+        "R0: In ad0 if !E Mission shall satisfy selected_alt = alt0\n"
+        "R1: In ad0 Mission shall satisfy selected_alt = alt1\n"
+        "NotAlt0: Mission shall never satisfy ad0.selected = alt0\n"}},
+      "NotAlt0",
+      R"({"max_ticks": 3, "initial": {"E": true}, "actions": {"Work": {"ticks": 5}},
+          "events": [{"at": 2, "set": {"E": false}}]})",
+      "(h): after a reactive selection falls through to an alternative still running, the run "
+      "reads `.selected` as the alternative whose guard held; prove as the later branch");
+}
+
+}  // namespace
+}  // namespace uabt::testing
