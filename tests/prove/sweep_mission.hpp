@@ -19,19 +19,29 @@ namespace uabt::testing {
 // requirements; guarantees with modes, upon/if/whenever conditions and
 // always/never/immediately/within/for/until timings. With `temporal`, the guarantees also read
 // FRET's temporal functions persisted, occurred, prevOcc and FTP (and the random choices differ).
+// With Forms::every (the agreement test), it draws every form a user writes too: each timing
+// FRET has (immediately, next, within/for/after N, until, before, eventually, always, never),
+// each scope (in, not in, only in, after/before a mode or a condition, only after/before,
+// while), a `tick 100 ms` / `tick 1 s` period, ParallelAll, and world.json contracts with or
+// without `initial`, a number or a range of ticks, and effects left out; Forms::time_units also
+// writes the durations in time units.
 class SweepMission : public MissionWriter {
  public:
+  enum class Forms { engines, every, time_units };
+
   // With `mixed`, atoms also compare the environment's real r and wide integer w with the
   // mission's own x (guards, scripts, effects, an assumption, guarantees): the explicit engine
   // cuts them in each state it explores.
-  explicit SweepMission(unsigned seed, bool temporal = false, bool mixed = false)
-      : MissionWriter(seed), temporal_(temporal), mixed_(mixed) {
+  explicit SweepMission(unsigned seed, bool temporal = false, bool mixed = false,
+                        Forms forms = Forms::engines)
+      : MissionWriter(seed), temporal_(temporal), mixed_(mixed), forms_(forms) {
     style = static_cast<compile::SelectionStyle>(pick(3));
     integer_ = pick(2);
     real_ = mixed || pick(2);
     enum_ = pick(2);
     adaptables_ = 1 + pick(2);
     wide_ = pick(3) == 0;
+    if (forms_ != Forms::engines) period_ = forms_ == Forms::time_units ? 1 + pick(2) : pick(3);
     std::string main = node(0, 3);
     for (int i = static_cast<int>(adaptable_ids_.size()); i < adaptables_; ++i)
       main = "<Sequence>" + adaptable() + main + "</Sequence>";
@@ -48,6 +58,7 @@ class SweepMission : public MissionWriter {
   }
 
   compile::SelectionStyle style;  // the gate's style for the nodes that declare none
+  bool time_units = false;        // a duration is written in a unit of time, not in ticks
 
  private:
   template <class T>
@@ -111,7 +122,7 @@ class SweepMission : public MissionWriter {
     const std::string named = " name=\"N" + std::to_string(names_++) + "\"";
     // The kinds the symbolic engine models; the others only in a "wide" mission, which
     // only the explicit engine answers.
-    switch (pick(wide_ ? 17 : 12)) {
+    switch (pick(wide_ ? (forms_ != Forms::engines ? 18 : 17) : 12)) {
       case 0: return wrap("Sequence", named, children(1 + pick(3)));
       case 1: return wrap("ReactiveSequence", named, children(1 + pick(3)));
       case 2: return wrap("Fallback", named, children(1 + pick(3)));
@@ -130,6 +141,7 @@ class SweepMission : public MissionWriter {
             named + " success_count=\"" + std::to_string(1 + pick(2)) + "\" failure_count=\"1\"",
             children(2));
       case 16: return wrap("WhileDoElse", named, children(2 + pick(2)));
+      case 17: return wrap("ParallelAll", named + " max_failures=\"1\"", children(2));
       case 9:
         if (!repeated_) {  // one Repeat at most: its wake-up re-ticks multiply the tick
           repeated_ = true;
@@ -150,6 +162,7 @@ class SweepMission : public MissionWriter {
     if (real_) s += "real r in [0, 10]\n";
     if (enum_) s += "enum t in {p, q, s}\n";
     if (mixed_) s += "integer w in [0, 1000000]\nassume a1: r <= x + 8\n";
+    if (period_ != 0) s += period_ == 1 ? "tick 100 ms\n" : "tick 1 s\n";
     const auto groups = env_groups();
     if (groups.size() > 1 && pick(2))
       s += "assume a0: !(E & " +
@@ -180,6 +193,7 @@ class SweepMission : public MissionWriter {
     if (integer_) effects.push_back("x = n < 3 ? n : 3");
     if (real_) effects.push_back("B = r < 4.5");
     if (mixed_) effects.push_back("B = w >= 200000 * x + 100000");
+    if (forms_ != Forms::engines) return every_world(effects);
     std::string s = "{\"initial\": \"x = 0 & !A\", \"actions\": {";
     for (int i = 0; i < 2; ++i) {
       const int lo = 1 + pick(2), hi = lo + pick(2);
@@ -189,6 +203,28 @@ class SweepMission : public MissionWriter {
       s += std::string(i ? ", " : "") + "\"Act" + std::to_string(i) + "\": {\"ticks\": [" +
            std::to_string(lo) + ", " + std::to_string(hi) + "], \"results\": [" + results +
            "], \"on_success\": \"" + any(effects) + "\", \"on_failure\": \"" + any(effects) + "\"}";
+    }
+    return s + "}}";
+  }
+
+  // Forms::every's contracts: `initial` given or not (every state of the domain), `ticks` a
+  // number or a range, each effect given or not; Act2 has none (any result on any tick).
+  std::string every_world(const std::vector<std::string>& effects) {
+    std::string s = "{";
+    if (pick(4) != 0) s += "\"initial\": \"x = 0 & !A\", ";
+    s += "\"actions\": {";
+    for (int i = 0; i < 2; ++i) {
+      const int lo = 1 + pick(2), hi = lo + pick(2);
+      const std::string ticks =
+          pick(2) ? std::to_string(lo) : "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+      const std::string results = pick(3) == 0 ? "\"success\""
+                                  : pick(2)    ? "\"success\", \"failure\""
+                                               : "\"failure\"";
+      s += std::string(i ? ", " : "") + "\"Act" + std::to_string(i) + "\": {\"ticks\": " + ticks +
+           ", \"results\": [" + results + "]";
+      if (pick(3) != 0) s += ", \"on_success\": \"" + any(effects) + "\"";
+      if (pick(3) != 0) s += ", \"on_failure\": \"" + any(effects) + "\"";
+      s += "}";
     }
     return s + "}}";
   }
@@ -230,6 +266,7 @@ class SweepMission : public MissionWriter {
         }
       }
     }
+    if (forms_ != Forms::engines) return s + every_guarantees(obs);
     const std::vector<std::string> conditions = {"upon", "if", "whenever"};
     for (int i = 0; i < 4; ++i) {
       std::string id = "P" + std::to_string(i) + ": ";
@@ -262,10 +299,77 @@ class SweepMission : public MissionWriter {
     return s;
   }
 
+  // A duration of 1 to 3 ticks: in ticks, or (Forms::time_units) in a unit of time that the
+  // tick period rounds up to them.
+  std::string duration() {
+    const int n = 1 + pick(3);
+    if (forms_ != Forms::time_units)
+      return std::to_string(n) + (n == 1 && pick(2) ? " tick" : " ticks");
+    time_units = true;
+    if (period_ == 1) {  // tick 100 ms
+      switch (pick(3)) {
+        case 0: return std::to_string(100 * n) + " ms";
+        case 1: return std::to_string(100 * n - 50) + " milliseconds";  // rounded up
+        default: return n == 1 ? "0.1 s" : "0." + std::to_string(n) + " seconds";
+      }
+    }
+    switch (pick(3)) {  // tick 1 s
+      case 0: return std::to_string(n) + (n == 1 ? " second" : " seconds");
+      case 1: return std::to_string(1000 * n - 500) + " ms";  // rounded up
+      default: return std::to_string(n) + " s";
+    }
+  }
+
+  // Forms::every's guarantees: a scope, conditions and a timing each drawn from every form.
+  std::string every_guarantees(const std::vector<std::string>& obs) {
+    const std::vector<std::string> conditions = {"upon", "if", "whenever", "when", "unless"};
+    // A condition for a scope: in parentheses, so that it is not read as a mode's name.
+    const auto cond = [&] { return "(" + any(obs) + ")"; };
+    std::string s;
+    for (int i = 0; i < 5; ++i) {
+      s += "P" + std::to_string(i) + ": ";
+      const std::string mode = adaptable_ids_.empty() ? "" : any(adaptable_ids_);
+      switch (pick(mode.empty() ? 4 : 12)) {
+        case 0: s += "after " + cond() + " "; break;
+        case 1: s += "before " + cond() + " "; break;
+        case 2: s += "only after " + cond() + " "; break;
+        case 3: break;
+        case 4: s += "In " + mode + " "; break;
+        case 5: s += "when not in " + mode + " "; break;
+        case 6: s += "only in " + mode + " "; break;
+        case 7: s += "after " + mode + " "; break;
+        case 8: s += "before " + mode + " "; break;
+        case 9: s += "only before " + cond() + " "; break;
+        case 10: s += "while " + cond() + " "; break;
+        default: break;
+      }
+      if (pick(2)) s += any(conditions) + " " + any(obs) + " ";
+      s += "Mission shall ";
+      switch (pick(11)) {
+        case 0: s += "immediately "; break;
+        case 1: s += "at the next timepoint "; break;
+        case 2: s += "within " + duration() + " "; break;
+        case 3: s += "for " + duration() + " "; break;
+        case 4: s += "after " + duration() + " "; break;
+        case 5: s += "until " + any(obs) + " "; break;
+        case 6: s += "before " + any(obs) + " "; break;
+        case 7: s += "eventually "; break;
+        case 8: s += "never "; break;
+        case 9: break;  // FRET's default timing: eventually
+        default: s += "always "; break;
+      }
+      s += "satisfy " + any(obs) + (pick(2) ? "" : " & " + any(obs)) + "\n";
+    }
+    if (pick(3) == 0) s += "Env: Environment shall always satisfy !C | " + any(env_atoms()) + "\n";
+    return s;
+  }
+
   std::set<std::string> actions_;
   std::vector<std::string> adaptable_ids_;
   int names_ = 0, adaptables_ = 1;
   bool temporal_ = false, mixed_ = false;
+  Forms forms_ = Forms::engines;
+  int period_ = 0;  // the domain's tick period: none, 100 ms, 1 s
   bool repeated_ = false, wide_ = false, integer_ = false, real_ = false, enum_ = false;
 };
 

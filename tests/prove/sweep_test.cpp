@@ -6,10 +6,15 @@
 #include <chrono>
 #include <cstdlib>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 
+#include "manager/manager.hpp"
+#include "monitor/trace_files.hpp"
 #include "prove_support.hpp"
+#include "runtime/scenario.hpp"
 #include "sweep_mission.hpp"
 
 namespace uabt::testing {
@@ -50,14 +55,200 @@ Proof prove_with(const Gated& g, const std::string& engine, std::uint64_t depth 
 struct Tally {
   int missions = 0, gated = 0, explicit_answered = 0, both = 0, violated = 0, proved = 0;
   int temporal = 0;  // answered guarantees that read persisted, occurred, prevOcc or FTP
+  int runs = 0;      // counterexamples replayed by `uabt run`, each trace checked by `uabt monitor`
+  std::map<std::string, int> known;  // disagreements taken for a known seam, per seam
   std::set<std::string> kinds;
 };
+
+// Disagreements known and being fixed elsewhere: the sweep counts them (and prints them with
+// UABT_SWEEP_VERBOSE) rather than failing; UABT_AGREE_KNOWN_SEAMS=1 makes them failures again.
+// Returns the seam a disagreement about guarantee `a` is taken for, or nullptr.
+const char* known_seam(const prove::Answer& a) {
+  // The run reads `<node>.running` true at a tick where the control node started and
+  // completed (BT.CPP sets a control node RUNNING as it starts; it returned SUCCESS or
+  // FAILURE), prove false (the status the node returned): DESIGN §10 says "the status a node
+  // returned in tick t". Named control nodes are N0, N1, ... in the sweep's missions.
+  static const std::regex control_running(R"(\bN\d+\.running\b)");
+  if (std::regex_search(a.text, control_running)) return "(e) a control node's .running";
+  // (b) The run reads the mode `<adaptable>` true at a tick that does not tick the node (a
+  // Sequence resuming the running child after it), prove false.
+  static const std::regex mode(R"(\b(in|after|before) ad\d+\b)", std::regex::icase);
+  if (std::regex_search(a.text, mode)) return "(b) the mode of an adaptable node";
+  return nullptr;
+}
+
+const monitor::PropertyResult* property_of(const std::vector<monitor::PropertyResult>& results,
+                                           const std::string& id) {
+  for (const auto& r : results)
+    if (r.id == id && !r.selection) return &r;
+  return nullptr;
+}
+
+std::string verdict_text(const monitor::PropertyResult* r) {
+  if (r == nullptr) return "absent";
+  std::string s = monitor::verdict_name(r->verdict);
+  if (r->first_violation) s += " at tick " + std::to_string(*r->first_violation);
+  if (!r->reason.empty()) s += " (" + r->reason + ")";
+  return s;
+}
+
+// The seams a user crosses after a proof, for each counterexample `engine` gave: the run
+// `uabt run MISSION --scenario CEX` makes (the Behavior Tree Manager the run command calls,
+// with the gate options the mission was proved with) violates the guarantee first at the
+// counterexample's tick; no guarantee the engine proved is violated before the run ends, nor
+// any violated before its shortest violation; and `uabt monitor MISSION TRACE` (the monitor
+// command's own reading of the files) on the run's --monitor-trace gives every property the
+// verdict and the first violation the run gave it.
+void check_runs(unsigned seed, const SweepMission& m, const TempMission& dir, const char* engine,
+                const prove::Result& result, Tally& tally) {
+  const std::filesystem::path beside = dir.dir().parent_path();
+  for (const prove::Answer& a : result.answers) {
+    if (!a.counterexample) continue;
+    const std::string name = std::string(engine) + "-" + a.requirement;
+    const std::filesystem::path scenario = beside / ("cex-" + name + ".json");
+    const std::filesystem::path trace = beside / ("trace-" + name + ".jsonl");
+    std::ofstream(scenario, std::ios::binary) << a.counterexample->scenario;
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info()->result();
+    const int failures_before = test->total_part_count();
+    struct Keep {  // UABT_SWEEP_KEEP: the counterexample of a disagreement, beside its mission
+      ~Keep() {
+        const char* keep = std::getenv("UABT_SWEEP_KEEP");
+        if (keep == nullptr || test->total_part_count() == before) return;
+        std::filesystem::create_directories(keep);
+        std::ofstream(std::filesystem::path(keep) / name, std::ios::binary) << text;
+      }
+      const ::testing::TestResult* test;
+      int before;
+      std::string name, text;
+    } kept{test, failures_before, "seed-" + std::to_string(seed) + ".cex-" + name + ".json",
+           a.counterexample->scenario};
+    manager::ManagerOptions options;
+    options.gate.compile.selection = m.style;
+    options.gate.compile.selection_forced = false;
+    options.monitor_trace = true;
+    manager::ManagerRun run;
+    try {
+      manager::BehaviorTreeManager bt_manager(dir.dir(), runtime::load_scenario(scenario), options);
+      run = bt_manager.run();
+    } catch (const manager::NotAdmitted& e) {
+      ADD_FAILURE() << "run refuses the " << engine << " counterexample of " << a.requirement
+                    << ": " << e.what() << "\n"
+                    << format_text(e.findings) << a.counterexample->scenario << describe(seed, m);
+      continue;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "run refuses the " << engine << " counterexample of " << a.requirement
+                    << ": " << e.what() << "\n"
+                    << a.counterexample->scenario << describe(seed, m);
+      continue;
+    }
+    ++tally.runs;
+    const auto where = [&] {
+      return "\n" + a.counterexample->scenario + manager::trace_summary(run) +
+             manager::property_summary(run) + describe(seed, m);
+    };
+    // The tick of each guarantee's violation as the run reports it: its `violation` event
+    // (the property summary's "violated from" is where the verdict last turned false, which
+    // for an `eventually` still open is earlier than the tick its violation became certain).
+    std::map<std::string, std::uint64_t> violated_at;
+    for (const runtime::TraceEvent& event : run.trace)
+      if (event.event == "violation" && !violated_at.contains(event.requirement))
+        violated_at[event.requirement] = event.tick;
+    const auto disagree = [&](const prove::Answer& about, const std::string& what) {
+      if (const char* seam = known_seam(about); seam && !std::getenv("UABT_AGREE_KNOWN_SEAMS")) {
+        ++tally.known[seam];
+        if (std::getenv("UABT_SWEEP_VERBOSE"))
+          std::cout << "known seam (" << seam << ") seed " << seed << ": " << what << "\n";
+        return;
+      }
+      ADD_FAILURE() << what << where();
+    };
+    const auto own = violated_at.find(a.requirement);
+    if (own == violated_at.end() || own->second != a.counterexample->tick)
+      disagree(
+          a,
+          "run of the " + std::string(engine) + " counterexample of " + a.requirement + ": " +
+              verdict_text(property_of(run.properties, a.requirement)) +
+              (own == violated_at.end() ? "" : ", event at tick " + std::to_string(own->second)) +
+              "; prove: violated at tick " + std::to_string(a.counterexample->tick) +
+              (run.error ? " (the run stops: " + run.error->message + ")" : ""));
+    for (const prove::Answer& b : result.answers) {
+      const auto at = violated_at.find(b.requirement);
+      if (at == violated_at.end()) continue;
+      // A violation the run reports at its last tick only because the run ends there (an
+      // `eventually` still open) is no violation a proof rules out, unless the mission ended.
+      const bool before_end = at->second < run.ticks || run.finished;
+      if (b.verdict == Verdict::proved && before_end)
+        disagree(b, "run of the " + std::string(engine) + " counterexample of " + a.requirement +
+                        " violates " + b.requirement + " at tick " + std::to_string(at->second) +
+                        ", which the " + engine + " engine proved");
+      if (b.verdict == Verdict::violated && before_end && at->second < b.depth)
+        disagree(b, "run of the " + std::string(engine) + " counterexample of " + a.requirement +
+                        " violates " + b.requirement + " at tick " + std::to_string(at->second) +
+                        ", before the " + engine + " engine's shortest violation (tick " +
+                        std::to_string(b.depth) + ")");
+    }
+    std::ofstream(trace, std::ios::binary) << run.monitor_trace;
+    std::vector<Finding> findings;
+    const monitor::TraceFilesCheck check =
+        monitor::check_trace_files(dir.dir(), "", trace, findings);
+    if (!check.report) {
+      ADD_FAILURE() << "monitor refuses the trace of the " << engine << " counterexample of "
+                    << a.requirement << ":\n"
+                    << format_text(findings) << run.monitor_trace << where();
+      continue;
+    }
+    for (const monitor::PropertyResult& p : run.properties) {
+      if (p.selection) continue;
+      const monitor::PropertyResult* q = property_of(check.report->properties, p.id);
+      // The verdict and the first violation; why a property is not monitored is said in the
+      // words of each (the run knows a value is missing, the monitor that the trace lacks it).
+      if (q && q->verdict == p.verdict && q->first_violation == p.first_violation) continue;
+      // (g) A variable the scenario gives no value: the run decides a property that reads it
+      // where the value does not matter (`!(E & t = s)` with E false) and its --monitor-trace
+      // leaves the variable out, so the monitor cannot monitor the property at all.
+      const auto unvalued = [](const monitor::PropertyResult* r) {
+        return r && (r->reason.find("has no value") != std::string::npos ||
+                     r->reason.find("the trace has no variable") != std::string::npos);
+      };
+      if ((unvalued(&p) || unvalued(q)) && !std::getenv("UABT_AGREE_KNOWN_SEAMS")) {
+        ++tally.known["(g) a variable without a value in the run's --monitor-trace"];
+        continue;
+      }
+      ADD_FAILURE() << "monitor and run disagree on " << p.id << " over the run of the " << engine
+                    << " counterexample of " << a.requirement << ": run " << verdict_text(&p)
+                    << ", monitor " << verdict_text(q) << "\n"
+                    << run.monitor_trace << where();
+    }
+  }
+}
 
 // Proves one random mission with both engines; a disagreement is a test failure that prints
 // the mission.
 void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
-               bool temporal = false, bool mixed = false) {
-  const SweepMission m(seed, temporal, mixed);
+               bool temporal = false, bool mixed = false,
+               SweepMission::Forms forms = SweepMission::Forms::engines);
+
+// UABT_SWEEP_KEEP=DIR: each mission the sweep finds a disagreement in is kept as
+// DIR/seed-N/ (with the counterexamples as DIR/seed-N.cex-*.json), to replay with the commands.
+void sweep_one_keeping(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
+                       bool temporal, bool mixed, SweepMission::Forms forms) {
+  const auto* result = ::testing::UnitTest::GetInstance()->current_test_info()->result();
+  const int before = result->total_part_count();
+  sweep_one(seed, symbolic, depth, tally, temporal, mixed, forms);
+  const char* keep = std::getenv("UABT_SWEEP_KEEP");
+  if (keep == nullptr || result->total_part_count() == before) return;
+  const SweepMission m(seed, temporal, mixed, forms);
+  const std::filesystem::path dir = std::filesystem::path(keep) / ("seed-" + std::to_string(seed));
+  for (const auto& [path, text] : m.files) {
+    std::filesystem::create_directories((dir / path).parent_path());
+    std::ofstream(dir / path, std::ios::binary) << text;
+  }
+  std::cout << "kept " << dir.generic_string() << "\n";
+}
+
+void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally, bool temporal,
+               bool mixed, SweepMission::Forms forms) {
+  const SweepMission m(seed, temporal, mixed, forms);
   ++tally.missions;
   const TempMission dir(m.files);
   const Gated g(dir.dir(), m.style, false);
@@ -81,6 +272,9 @@ void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
     std::cout << "explicit " << seed << ": " << e.error << "\n";
   if (!e.result || !e.result->complete) return;
   ++tally.explicit_answered;
+  // Only a mission that passes the gate's checks runs (the run says why the others do not).
+  const bool runs = g.outcome->passed();
+  if (runs) check_runs(seed, m, dir, "explicit", *e.result, tally);
   for (const auto& a : e.result->answers) {
     tally.violated += a.verdict == Verdict::violated;
     tally.proved += a.verdict == Verdict::proved;
@@ -98,6 +292,7 @@ void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
     return;
   }
   ++tally.both;
+  if (runs) check_runs(seed, m, dir, "symbolic", *s.result, tally);
   const auto &x = e.result->answers, &y = s.result->answers;
   ASSERT_EQ(x.size(), y.size()) << describe(seed, m);
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -119,11 +314,11 @@ void sweep_one(unsigned seed, bool symbolic, std::uint64_t depth, Tally& tally,
 // Sweeps `seeds`, the symbolic engine on those `symbolic_on` accepts, and prints the tally.
 Tally sweep(const std::string& label, const std::vector<unsigned>& seeds,
             const std::function<bool(unsigned)>& symbolic_on, std::uint64_t depth, bool temporal,
-            bool mixed = false) {
+            bool mixed = false, SweepMission::Forms forms = SweepMission::Forms::engines) {
   Tally tally;
   for (unsigned seed : seeds) {
     const auto start = std::chrono::steady_clock::now();
-    sweep_one(seed, symbolic_on(seed), depth, tally, temporal, mixed);
+    sweep_one_keeping(seed, symbolic_on(seed), depth, tally, temporal, mixed, forms);
     const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count();
@@ -133,7 +328,10 @@ Tally sweep(const std::string& label, const std::vector<unsigned>& seeds,
             << tally.explicit_answered << " proved explicitly, " << tally.both
             << " by both engines, " << tally.violated << " violated and " << tally.proved
             << " proved guarantees, " << tally.temporal
-            << " answered guarantees read temporal functions\n";
+            << " answered guarantees read temporal functions, " << tally.runs
+            << " counterexamples run and monitored\n";
+  for (const auto& [seam, n] : tally.known)
+    std::cout << label << ": " << n << " disagreements taken for the known seam: " << seam << "\n";
   return tally;
 }
 
@@ -334,6 +532,134 @@ TEST(ProveSweep, EnginesAgreeOnAtomsMixingTheEnvironmentAndTheMissionsState) {
   EXPECT_EQ(tally.both, 6);
   EXPECT_GE(tally.violated, 20);
   EXPECT_GE(tally.proved, 20);
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// The agreement test (DESIGN §14): random missions of every form a user writes
+// (SweepMission::Forms::every: every timing, scope, node kind, tick period and world.json
+// contract form), each proved by the explicit engine and, on every UABT_AGREE_SYMBOLIC_EVERY-th
+// mission, by the symbolic one too. The engines agree wherever both answer (verdict and
+// shortest violation); every counterexample of either engine replays with `uabt run` to the
+// same violation at the same tick, and `uabt monitor` on the run's trace agrees with the run.
+// By default a short sweep; tests/README.md says how to run a long campaign.
+TEST(ProveSweep, EveryFormAgreesAcrossProveRunAndMonitor) {
+  const unsigned first = env_or("UABT_AGREE_FIRST", 1), count = env_or("UABT_AGREE_MISSIONS", 60);
+  // The symbolic engine takes seconds to minutes on some missions: in the long campaign only.
+  const unsigned every = env_or("UABT_AGREE_SYMBOLIC_EVERY", 0);
+  const bool by_default = std::getenv("UABT_AGREE_MISSIONS") == nullptr;
+  std::vector<unsigned> seeds;
+  for (unsigned seed = first; seed < first + count; ++seed) seeds.push_back(seed);
+  const Tally tally = sweep(
+      "agreement", seeds, [&](unsigned seed) { return every != 0 && seed % every == 0; }, 3, false,
+      false, SweepMission::Forms::every);
+  if (!by_default) return;
+  EXPECT_GE(tally.gated, 50);
+  EXPECT_GE(tally.runs, 50);
+  EXPECT_GE(tally.violated, 50);
+  EXPECT_GE(tally.proved, 50);
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// The agreement test on durations written in units of time (`within 200 ms` with `tick 100
+// ms`, `for 2 seconds` with `tick 1 s`): prove must convert them with the domain's tick period
+// as run and monitor do. Known seam (a): prove passes no tick period, so it leaves these
+// guarantees unchecked while run and monitor decide them. UABT_AGREE_KNOWN_SEAMS=1 runs it.
+TEST(ProveSweep, DurationsInTimeUnitsAgreeAcrossProveRunAndMonitor) {
+  const unsigned first = env_or("UABT_AGREE_FIRST", 1), count = env_or("UABT_AGREE_MISSIONS", 30);
+  int unchecked = 0;
+  for (unsigned seed = first; seed < first + count; ++seed) {
+    const SweepMission m(seed, false, false, SweepMission::Forms::time_units);
+    const TempMission dir(m.files);
+    const Gated g(dir.dir(), m.style, false);
+    if (!g.ok() || !m.time_units) continue;
+    const Proof e = prove_with(g, "explicit");
+    if (!e.result) continue;
+    for (const auto& a : e.result->answers)
+      if (a.verdict == Verdict::unsupported &&
+          a.reason.find("declares no tick period") != std::string::npos)
+        ++unchecked;
+  }
+  if (unchecked != 0 && !std::getenv("UABT_AGREE_KNOWN_SEAMS"))
+    GTEST_SKIP() << "known seam (a): prove leaves " << unchecked
+                 << " guarantees with durations in units of time unchecked (it passes no tick "
+                    "period), which run and monitor decide";
+  sweep(
+      "time units",
+      [&] {
+        std::vector<unsigned> seeds;
+        for (unsigned seed = first; seed < first + count; ++seed) seeds.push_back(seed);
+        return seeds;
+      }(),
+      [](unsigned) { return false; }, 3, false, false, SweepMission::Forms::time_units);
+  EXPECT_EQ(unchecked, 0) << "guarantees prove leaves unchecked for want of a tick period";
+}
+
+}  // namespace
+}  // namespace uabt::testing
+
+namespace uabt::testing {
+namespace {
+
+// Disagreements the agreement test found, each reduced to a small mission: a guarantee
+// `uabt prove` proves and a run of `uabt run` (the manager) that violates it. Each is skipped
+// with the seam it shows until the seam is fixed; UABT_AGREE_KNOWN_SEAMS=1 runs them.
+void expect_run_holds(const std::map<std::string, std::string>& files, const std::string& id,
+                      const std::string& scenario, const char* seam) {
+  if (!std::getenv("UABT_AGREE_KNOWN_SEAMS")) GTEST_SKIP() << "known seam " << seam;
+  const TempMission dir(files);
+  const Gated g(dir.dir());
+  ASSERT_TRUE(g.ok());
+  EXPECT_EQ(answer(g.prove("explicit"), id).verdict, Verdict::proved);
+  const std::filesystem::path path = dir.dir().parent_path() / "scenario.json";
+  std::ofstream(path, std::ios::binary) << scenario;
+  manager::BehaviorTreeManager bt_manager(dir.dir(), runtime::load_scenario(path));
+  const manager::ManagerRun run = bt_manager.run();
+  const monitor::PropertyResult* r = property_of(run.properties, id);
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(verdict_text(r), "held") << manager::trace_summary(run);
+}
+
+// (e) Sweep seeds 4 and 17 (Forms::every), reduced: a Sequence that fails in the tick it
+// starts returned FAILURE, yet the run reads S.running true at tick 1.
+TEST(AgreementSeams, AControlNodeThatStartsAndFailsInOneTickIsNotRunning) {
+  expect_run_holds(
+      {{"mission.xml", mission_with("<Sequence name=\"S\"><AlwaysFailure/></Sequence>")},
+       {"domain.fret", "boolean A\n"},
+       {"requirements.fret", "Never: Mission shall never satisfy S.running\n"}},
+      "Never", R"({"max_ticks": 3})",
+      "(e): the run reads <node>.running true at a tick the control node started "
+      "and completed in; prove reads the status it returned");
+}
+
+// (h) Sweep seed 1002 (Forms::every), reduced: the reactive selection picks alt0 at tick 2,
+// alt0 fails, and the node falls through to alt1, still running: `.selected` is the later
+// branch (DESIGN §10), yet the run reads alt0.
+TEST(AgreementSeams, ASelectionThatFallsThroughReadsTheLaterBranch) {
+  expect_run_holds(
+      {{"mission.xml", mission_with("<Adaptable ID=\"ad0\" selection=\"reactive\"/>")},
+       {"alternatives/ad0/alt0.xml", alternative_tree("alt0", "<AlwaysFailure/>")},
+       {"alternatives/ad0/alt1.xml", alternative_tree("alt1", "<Work/>")},
+       {"domain.fret", "boolean E\n"},
+       {"world.json", R"({"actions": {"Work": {"ticks": 5, "results": ["success"]}}})"},
+       {"requirements.fret",
+        "R0: In ad0 if !E Mission shall satisfy selected_alt = alt0\n"
+        "R1: In ad0 Mission shall satisfy selected_alt = alt1\n"
+        "NotAlt0: Mission shall never satisfy ad0.selected = alt0\n"}},
+      "NotAlt0",
+      R"({"max_ticks": 3, "initial": {"E": true}, "actions": {"Work": {"ticks": 5}},
+          "events": [{"at": 2, "set": {"E": false}}]})",
+      "(h): after a reactive selection falls through to an alternative still running, the run "
+      "reads `.selected` as the alternative whose guard held; prove as the later branch");
 }
 
 }  // namespace
