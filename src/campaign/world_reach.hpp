@@ -1,6 +1,6 @@
 #pragma once
 // The selection targets a campaign's first runs miss, searched for in the world model `uabt
-// prove` explores (DESIGN §10): an action without a world.json contract may run, succeed or
+// prove` explores (ARCHITECTURE §10): an action without a world.json contract may run, succeed or
 // fail on any tick and a contract bounds it; the environment may change on any tick what no
 // action writes. A target is reached by prove's run to it, replayed as `uabt run` runs it;
 // unreachable only when prove shows that no run gets there.

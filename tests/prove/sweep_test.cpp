@@ -66,7 +66,7 @@ struct Tally {
 const char* known_seam(const prove::Answer& a) {
   // The run reads `<node>.running` true at a tick where the control node started and
   // completed (BT.CPP sets a control node RUNNING as it starts; it returned SUCCESS or
-  // FAILURE), prove false (the status the node returned): DESIGN §10 says "the status a node
+  // FAILURE), prove false (the status the node returned): ARCHITECTURE §10 says "the status a node
   // returned in tick t". Named control nodes are N0, N1, ... in the sweep's missions.
   static const std::regex control_running(R"(\bN\d+\.running\b)");
   if (std::regex_search(a.text, control_running)) return "(e) a control node's .running";
@@ -540,7 +540,7 @@ TEST(ProveSweep, EnginesAgreeOnAtomsMixingTheEnvironmentAndTheMissionsState) {
 namespace uabt::testing {
 namespace {
 
-// The agreement test (DESIGN §14): random missions of every form a user writes
+// The agreement test (ARCHITECTURE §14): random missions of every form a user writes
 // (SweepMission::Forms::every: every timing, scope, node kind, tick period and world.json
 // contract form), each proved by the explicit engine and, on every UABT_AGREE_SYMBOLIC_EVERY-th
 // mission, by the symbolic one too. The engines agree wherever both answer (verdict and
@@ -643,7 +643,7 @@ TEST(AgreementSeams, AControlNodeThatStartsAndFailsInOneTickIsNotRunning) {
 
 // (h) Sweep seed 1002 (Forms::every), reduced: the reactive selection picks alt0 at tick 2,
 // alt0 fails, and the node falls through to alt1, still running: `.selected` is the later
-// branch (DESIGN §10), yet the run reads alt0.
+// branch (ARCHITECTURE §10), yet the run reads alt0.
 TEST(AgreementSeams, ASelectionThatFallsThroughReadsTheLaterBranch) {
   expect_run_holds(
       {{"mission.xml", mission_with("<Adaptable ID=\"ad0\" selection=\"reactive\"/>")},

@@ -1,4 +1,4 @@
-// What a tick shows (DESIGN §10, §14): `uabt run`'s monitor, `uabt monitor` on the trace it
+// What a tick shows (ARCHITECTURE §10, §14): `uabt run`'s monitor, `uabt monitor` on the trace it
 // records and both `uabt prove` engines read the same observation of every tick, so they give
 // the same verdict.
 #include <gtest/gtest.h>
