@@ -52,7 +52,8 @@ Environment::Environment(Model& m) : m_(m) {
       var_of_slot_[v.slot] = i;
     }
     std::vector<monitor::Val> vals;
-    for (const auto& value : v.values) vals.push_back(Observables::value_of(value, m.symbols));
+    for (const auto& value : v.values)
+      vals.push_back(runtime::TickObservation::value_of(value, m.symbols));
     choices_.push_back(std::move(vals));
     if (v.relevant && v.env) {
       env_.push_back(i);
@@ -120,7 +121,8 @@ void Environment::fill(std::size_t var, Cells& c) {
   c.values = cell_values(*m_.state_cuts.at(var).declaration, c.breaks);
   if (c.values.empty()) c.values.push_back(runtime::ScriptValue{});
   c.vals.clear();
-  for (const auto& value : c.values) c.vals.push_back(Observables::value_of(value, m_.symbols));
+  for (const auto& value : c.values)
+    c.vals.push_back(runtime::TickObservation::value_of(value, m_.symbols));
 }
 
 Environment::Cells& Environment::cells(std::size_t var, bool completion, std::string& key) {
@@ -182,7 +184,8 @@ void Environment::start_tick(bool first) {
   // The environment's own entries get their values as they are chosen.
   for (std::size_t i : mission_vars_) {
     const StateVar& v = m_.vars[i];
-    frame_[static_cast<std::size_t>(v.frame)] = Observables::value_of(bb.value(v.slot), m_.symbols);
+    frame_[static_cast<std::size_t>(v.frame)] =
+        runtime::TickObservation::value_of(bb.value(v.slot), m_.symbols);
   }
   for (std::size_t i : env_) {
     assigned_[i] = 0;

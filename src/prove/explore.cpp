@@ -468,7 +468,7 @@ class Search {
     std::size_t at = 0;
     std::vector<std::int64_t> elapsed;
     std::size_t chosen = 0;  // Environment::chosen()
-    Observables::Mark observables;
+    runtime::TickObservation::Mark observables;
   };
   std::vector<Checkpoint> checkpoints_;
   std::size_t checkpoints_in_use_ = 0;

@@ -261,7 +261,8 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
   } catch (const std::exception& e) {
     throw ProveError(std::string("the compiled tree cannot be explored: ") + e.what());
   }
-  observables = std::make_unique<Observables>(*engine, mission, state_names, variables, symbols);
+  observables =
+      std::make_unique<runtime::TickObservation>(*engine, mission, state_names, variables, symbols);
   engine->add_observer(observables.get());
   for (StateVar& v : vars) {
     v.slot = engine->blackboard().resolve(runtime::Blackboard::kRootScope, v.name);
@@ -531,8 +532,8 @@ void Model::mark_read_once() {
 void Model::fill_state(std::vector<monitor::Val>& frame) const {
   frame.resize(variables.size());
   for (const StateVar& v : vars)
-    frame[v.frame] = Observables::value_of(engine->blackboard().value(v.slot),
-                                           const_cast<monitor::Symbols&>(symbols));
+    frame[v.frame] = runtime::TickObservation::value_of(engine->blackboard().value(v.slot),
+                                                        const_cast<monitor::Symbols&>(symbols));
 }
 
 bool Model::holds(monitor::CompiledExpression& e, std::vector<monitor::Val>& frame) {

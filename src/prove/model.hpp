@@ -12,11 +12,11 @@
 #include "monitor/templates.hpp"
 #include "prove/cells.hpp"
 #include "prove/choice_world.hpp"
-#include "prove/observables.hpp"
 #include "prove/past_time.hpp"
 #include "prove/world_model.hpp"
 #include "runtime/engine.hpp"
 #include "runtime/engine_state.hpp"
+#include "runtime/tick_observation.hpp"
 
 namespace uabt::prove {
 
@@ -100,7 +100,7 @@ struct Model {
   monitor::Symbols symbols;
   std::unique_ptr<ChoiceWorld> choice;
   std::unique_ptr<runtime::Engine> engine;
-  std::unique_ptr<Observables> observables;
+  std::unique_ptr<runtime::TickObservation> observables;
   std::unique_ptr<Environment> environment;  // the environment's values, chosen on demand
   std::vector<Property> properties;
   std::vector<std::shared_ptr<monitor::CompiledExpression>> assumptions;

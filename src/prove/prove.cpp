@@ -162,7 +162,7 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
   runtime::Runner runner(m.doc, std::move(parsed), runtime::RunOptions{}, models);
   monitor::Variables variables;
   monitor::Symbols symbols;
-  Observables obs(runner.engine(), m.mission, m.state_names, variables, symbols);
+  runtime::TickObservation obs(runner.engine(), m.mission, m.state_names, variables, symbols);
   runner.engine().add_observer(&obs);
   std::string reason;
   auto monitor = monitor::RequirementMonitor::compile(

@@ -6,6 +6,7 @@
 #include "bt/node_kinds.hpp"
 #include "monitor/templates.hpp"
 #include "prove/prove.hpp"
+#include "runtime/tick_observation.hpp"
 #include "smt/assign.hpp"
 
 namespace uabt::prove {
@@ -266,7 +267,8 @@ struct SymbolicTick::Impl {
     for (const auto& site : m.mission.adaptables) {
       adaptable_names.push_back(site.id);
       std::map<NodeId, int> calls;
-      for (const auto& [call, alt] : alternative_calls(e, m.mission, site.id))
+      for (const auto& [call, alt] :
+           runtime::observable_of(e, m.mission, {}, site.id + ".selected").alternatives)
         calls[call] = codes.code(alt);
       alternatives.push_back(std::move(calls));
     }
@@ -355,7 +357,7 @@ struct SymbolicTick::Impl {
     const z3::expr s = name(x, tick_kind(x, id, g));
     set(x.cur.status[id], g, s);  // Core::execute_tick (no SKIPPED in this subset)
     smt::assign(x.cur.status[id], name(x, x.cur.status[id]));
-    set(x.ret[id], g, s);  // Observables::on_node_ticked
+    set(x.ret[id], g, s);  // TickObservation::on_node_ticked
     for (std::size_t a = 0; a < alternatives.size(); ++a)
       if (const auto it = alternatives[a].find(id); it != alternatives[a].end())
         set(x.selected[a], g, ctx.int_val(it->second));
@@ -646,7 +648,7 @@ struct SymbolicTick::Impl {
     return status;
   }
 
-  // --- Observables (prove/observables.cpp) and the state expressions.
+  // --- Observables (runtime/tick_observation.hpp) and the state expressions.
 
   SymValue var_value(std::size_t i, const std::vector<z3::expr>& values) const {
     SymValue v{types[i], values[i], {}};
@@ -668,39 +670,45 @@ struct SymbolicTick::Impl {
     return -1;
   }
 
+  // The rule runtime::TickObservation computes a tick's observables by (observable_of), as
+  // terms over this tick's returns: a state variable is its value; `<node>.success|failure|
+  // running` one of its nodes returned that status last; `<adaptable>.selected` the alternative
+  // of its last alternative call ticked (x.selected), else `none`; the mode one of its calls
+  // returned anything.
   SymValue observe(const std::string& name, const Exec& x) {
-    if (m.state_names.contains(name)) {
-      const int v = var_named(name);
-      if (v >= 0) return var_value(static_cast<std::size_t>(v), x.cur.values);
-    }
-    const auto dot = name.rfind('.');
-    if (dot != std::string::npos) {
-      const std::string node = name.substr(0, dot), field = name.substr(dot + 1);
-      if (field == "success" || field == "failure" || field == "running") {
-        const std::vector<NodeId> found = status_nodes(*m.engine, m.mission, node);
-        if (!found.empty()) {
-          const int s = field == "success" ? kSuccess : field == "failure" ? kFailure : kRunning;
-          z3::expr any = ctx.bool_val(false);
-          for (NodeId n : found) smt::assign(any, any || x.ret[n] == s);
-          return {SymType::boolean, any, {}};
-        }
+    using Kind = runtime::Observable::Kind;
+    const runtime::Observable o = runtime::observable_of(*m.engine, m.mission, m.state_names, name);
+    switch (o.kind) {
+      case Kind::state:
+        if (const int v = var_named(name); v >= 0)
+          return var_value(static_cast<std::size_t>(v), x.cur.values);
+        break;
+      case Kind::status: {
+        const int s = o.status == NodeStatus::success   ? kSuccess
+                      : o.status == NodeStatus::failure ? kFailure
+                                                        : kRunning;
+        z3::expr any = ctx.bool_val(false);
+        for (NodeId n : o.nodes) smt::assign(any, any || x.ret[n] == s);
+        return {SymType::boolean, any, {}};
       }
-      if (field == "selected")
+      case Kind::selected:
         for (std::size_t a = 0; a < adaptable_names.size(); ++a)
-          if (adaptable_names[a] == node) {
+          if (adaptable_names[a] + ".selected" == name) {
             SymValue v{SymType::symbol, x.selected[a], {codes.code("none")}};
             for (const auto& [call, code] : alternatives[a]) v.codes.insert(code);
             return v;
           }
-    }
-    for (const std::string& a : adaptable_names)
-      if (a == name) {
+        break;
+      case Kind::mode: {
         z3::expr any = ctx.bool_val(false);
-        for (NodeId call : m.engine->subtree_calls(name))
-          smt::assign(any, any || x.ret[call] != kIdle);
+        for (NodeId call : o.nodes) smt::assign(any, any || x.ret[call] != kIdle);
         return {SymType::boolean, any, {}};
       }
-    if (auto l = literal(name)) return *l;
+      case Kind::literal:
+        if (auto l = literal(name)) return *l;
+        break;
+      case Kind::unknown: break;
+    }
     throw SymbolicUnsupported("the symbolic engine cannot read '" + name + "'");
   }
 

@@ -8,18 +8,10 @@
 #include "base/number_text.hpp"
 
 #include "runtime/blackboard.hpp"
-#include "runtime/observed_nodes.hpp"
 
 namespace uabt::runtime {
 
 namespace {
-
-constexpr std::uint8_t kSuccess = 1, kFailure = 2, kRunning = 4, kTicked = 8;
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() > suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 void collect(const fretish::ExprPtr& e, std::set<std::string>& names) {
   if (!e) return;
@@ -51,6 +43,7 @@ void PropertyMonitor::bind_selections(const load::Mission& mission,
       judge_->update(id, mission.selections, literals, swapped_after.value_or(0));
   }
   selecting_.clear();
+  boolean_variable_.clear();
   for (const fretish::SelectionRequirement& r : mission.selections) {
     Selecting& s = selecting_[r.adaptable];
     s.requirements.push_back(r.id);
@@ -116,85 +109,30 @@ std::set<std::string> PropertyMonitor::bind(const load::Mission& mission) {
   for (const fretish::Variable& v : mission.domain.variables)
     for (const std::string& literal : v.enum_values) literals.insert(literal);
 
-  std::set<std::string> leaf_kinds;
+  // The state variables: declared, a robot leaf, or set on the blackboard.
+  std::set<std::string, std::less<>> state;
+  for (const fretish::Variable& v : mission.domain.variables) state.insert(v.name);
   for (NodeId id = 0; id < engine_.node_count(); ++id)
-    if (engine_.info(id).alive && engine_.children(id).empty())
-      leaf_kinds.insert(engine_.info(id).kind);
-  std::set<std::string> adaptable_ids;
-  for (const load::AdaptableSite& site : mission.adaptables) adaptable_ids.insert(site.id);
+    if (engine_.info(id).alive && engine_.children(id).empty()) state.insert(engine_.info(id).kind);
+  for (const std::string& name : names)
+    if (engine_.blackboard().get(name) != nullptr) state.insert(name);
 
-  // A selection in progress carries over a swap (the adaptable keeps its id).
-  std::vector<Adaptable> before = std::move(adaptables_);
-  nodes_.clear();
-  adaptables_.clear();
-  blackboard_.clear();
-  boolean_variable_.clear();
-  for (const std::string& name : names) {
-    if (literals.count(name) != 0 && mission.domain.find(name) == nullptr) continue;
-    bool node_observable = false;
-    for (const char* suffix : {".success", ".failure", ".running"}) {
-      if (!ends_with(name, suffix)) continue;
-      const std::string label = name.substr(0, name.size() - std::string(suffix).size());
-      std::vector<NodeId> nodes = observed_nodes(engine_, mission, label);
-      if (nodes.empty()) break;
-      auto it = std::find_if(nodes_.begin(), nodes_.end(),
-                             [&](const NodeObservable& o) { return o.nodes == nodes; });
-      if (it == nodes_.end()) it = nodes_.insert(nodes_.end(), make_node_observable(nodes));
-      const int slot = variables_.id(name);
-      (suffix[1] == 's' ? it->success : suffix[1] == 'f' ? it->failure : it->running) = slot;
-      node_observable = true;
-    }
-    if (node_observable) continue;
-    std::string adaptable = name;
-    const bool selected = ends_with(name, ".selected");
-    if (selected) adaptable = name.substr(0, name.size() - 9);
-    if (adaptable_ids.count(adaptable) != 0) {
-      auto it = std::find_if(adaptables_.begin(), adaptables_.end(),
-                             [&](const Adaptable& a) { return a.id == adaptable; });
-      if (it == adaptables_.end()) {
-        it = adaptables_.insert(adaptables_.end(), make_adaptable(adaptable));
-        it->calls = engine_.subtree_calls(adaptable);
-        for (const Adaptable& old : before)
-          if (old.id == adaptable) {
-            it->chosen = old.chosen;
-            it->running = old.running;
-          }
-      }
-      (selected ? it->selected : it->mode) = variables_.id(name);
-      continue;
-    }
-    // A variable of the world: declared, a robot leaf, or set on the blackboard.
-    const fretish::Variable* declared = mission.domain.find(name);
-    if (declared != nullptr || leaf_kinds.count(name) != 0 ||
-        engine_.blackboard().get(name) != nullptr) {
-      blackboard_.emplace_back(variables_.id(name), name);
-      boolean_variable_[name] = declared == nullptr || declared->type == fretish::VarType::boolean;
-    }
-  }
+  observation_.emplace(engine_, mission, std::move(state), variables_, symbols_);
+  for (const std::string& name : names)
+    if (literals.count(name) == 0 || mission.domain.find(name) != nullptr)
+      observation_->resolve(name);
   // Every bound slot is written before each step; a name the new version no longer shows
   // reads as unknown rather than its last value.
   frame_.assign(variables_.size(), monitor::Val{});
-  seen_.resize(engine_.node_count(), 0);
   return literals;
 }
 
 void PropertyMonitor::on_node_ticked(NodeId node, NodeStatus result) {
-  if (node >= seen_.size()) seen_.resize(node + 1, 0);
-  // What the node returned last in the tick (a wake-up re-tick returns again); a node halted
-  // or reset without a tick returned nothing.
-  seen_[node] = kTicked | (result == NodeStatus::success   ? kSuccess
-                           : result == NodeStatus::failure ? kFailure
-                           : result == NodeStatus::running ? kRunning
-                                                           : 0);
+  observation_->on_node_ticked(node, result);
 }
 
 void PropertyMonitor::select(const std::string& adaptable, const std::string& alternative,
                              const std::string& requirement) {
-  for (Adaptable& a : adaptables_) {
-    if (a.id != adaptable) continue;
-    a.chosen = alternative;
-    a.running = alternative;
-  }
   const auto it = selecting_.find(adaptable);
   if (it == selecting_.end()) return;
   Selecting& s = it->second;
@@ -210,48 +148,14 @@ void PropertyMonitor::select(const std::string& adaptable, const std::string& al
 }
 
 monitor::Val PropertyMonitor::read(const std::string& key) {
-  const ScriptValue* v = engine_.blackboard().get(key);
-  if (v == nullptr || v->empty()) {
-    const auto it = boolean_variable_.find(key);
-    return it == boolean_variable_.end() || it->second ? monitor::Val::of_bool(false)
-                                                       : monitor::Val{};
-  }
-  if (v->kind == ScriptValue::Kind::boolean) return monitor::Val::of_bool(v->boolean);
-  if (v->is_number())
-    return v->kind == ScriptValue::Kind::integer ? monitor::Val::of_integer(v->as_double())
-                                                 : monitor::Val::of_number(v->as_double());
-  return monitor::Val::of_symbol(symbols_.id(v->text));
+  const auto it = boolean_variable_.find(key);
+  return state_value(engine_.blackboard().get(key), it == boolean_variable_.end() || it->second,
+                     symbols_);
 }
 
 std::vector<PropertyViolation> PropertyMonitor::after_tick(std::uint64_t tick) {
-  const auto bits = [&](NodeId n) -> std::uint8_t { return n < seen_.size() ? seen_[n] : 0; };
-  for (const NodeObservable& o : nodes_) {
-    std::uint8_t any = 0;
-    for (NodeId n : o.nodes) any |= bits(n);
-    if (o.success >= 0)
-      frame_[static_cast<std::size_t>(o.success)] = monitor::Val::of_bool(any & kSuccess);
-    if (o.failure >= 0)
-      frame_[static_cast<std::size_t>(o.failure)] = monitor::Val::of_bool(any & kFailure);
-    if (o.running >= 0)
-      frame_[static_cast<std::size_t>(o.running)] = monitor::Val::of_bool(any & kRunning);
-  }
-  for (Adaptable& a : adaptables_) {
-    bool ticked = false, still_running = false;
-    for (NodeId n : a.calls) {
-      ticked = ticked || (bits(n) & kTicked);
-      still_running = still_running || engine_.status(n) == NodeStatus::running;
-    }
-    if (a.mode >= 0) frame_[static_cast<std::size_t>(a.mode)] = monitor::Val::of_bool(ticked);
-    const std::string selected = !a.chosen.empty()              ? a.chosen
-                                 : ticked && !a.running.empty() ? a.running
-                                                                : std::string("none");
-    if (a.selected >= 0)
-      frame_[static_cast<std::size_t>(a.selected)] = monitor::Val::of_symbol(symbols_.id(selected));
-    a.chosen.clear();
-    if (!still_running) a.running.clear();
-  }
-  for (const auto& [slot, key] : blackboard_) frame_[static_cast<std::size_t>(slot)] = read(key);
-  std::fill(seen_.begin(), seen_.end(), 0);
+  observation_->fill(frame_);
+  observation_->begin_tick();
   for (const monitor::SelectionRecord& record : selected_) judge_->observe(tick, record);
   traced_ = std::move(selected_);
   selected_.clear();

@@ -11,6 +11,7 @@
 #include "monitor/property_set.hpp"
 #include "monitor/selection_check.hpp"
 #include "runtime/engine.hpp"
+#include "runtime/tick_observation.hpp"
 
 namespace uabt::runtime {
 
@@ -20,14 +21,10 @@ struct PropertyViolation {
   monitor::PropertyResult result;
 };
 
-// Monitors a mission's properties (ARCHITECTURE §10) on every tick of a run. Observables at tick t:
-//  - domain variables and conditions: the root blackboard after the tick (unset: false);
-//  - `<node>.success` / `.failure` / `.running`: what the node returned in the tick, where
-//    `<node>` is its name attribute, else its ID; nodes that share it: any of them
-//    (observed_nodes);
-//  - `<adaptable>`: the mode, true when the adaptable's selection tree was ticked;
-//  - `<adaptable>.selected`: the alternative the selection returned from, else `none`.
-// What nodes return comes through the engine's Observer interface, selections through select().
+// Monitors a mission's properties (ARCHITECTURE §10) on every tick of a run, on what the tick shows
+// (TickObservation, the rule `uabt prove` reads by too), and judges its selections
+// (monitor::SelectionJudge). What nodes return comes through the engine's Observer interface,
+// selections through select().
 class PropertyMonitor : public Observer {
  public:
   PropertyMonitor(const load::Mission& mission, const Engine& engine);
@@ -69,17 +66,6 @@ class PropertyMonitor : public Observer {
   bool guarantees_failed() const;
 
  private:
-  struct NodeObservable {
-    std::vector<NodeId> nodes;
-    int success = -1, failure = -1, running = -1;  // slots, -1 when no property reads it
-  };
-  struct Adaptable {
-    std::string id;
-    std::vector<NodeId> calls;  // SubTree nodes calling its selection tree
-    int mode = -1, selected = -1;
-    std::string chosen;   // selected in this tick
-    std::string running;  // the alternative whose branch is still running
-  };
   // An adaptable node with selection requirements, for judging them.
   struct Selecting {
     std::vector<std::string> requirements;        // priority order
@@ -90,17 +76,6 @@ class PropertyMonitor : public Observer {
     std::vector<NodeId> calls;       // SubTree nodes calling its selection tree
   };
 
-  static Adaptable make_adaptable(std::string id) {
-    Adaptable a;
-    a.id = std::move(id);
-    return a;
-  }
-  static NodeObservable make_node_observable(std::vector<NodeId> nodes) {
-    NodeObservable o;
-    o.nodes = std::move(nodes);
-    return o;
-  }
-
   // Binds every name `mission`'s properties and assumptions read to what the engine shows;
   // returns the vocabulary's literals (alternatives, enum values).
   std::set<std::string> bind(const load::Mission& mission);
@@ -108,18 +83,14 @@ class PropertyMonitor : public Observer {
   // after which an uplink swapped `mission` in, whose requirements are judged from then on.
   void bind_selections(const load::Mission& mission, const std::set<std::string>& literals,
                        std::optional<std::uint64_t> swapped_after = std::nullopt);
-  // A blackboard entry as the properties read it (unset: false for a condition).
+  // A blackboard entry as a guard reads it (state_value).
   monitor::Val read(const std::string& key);
 
   const Engine& engine_;
   monitor::Variables variables_;
   monitor::Symbols symbols_;
   std::optional<monitor::PropertySet> properties_;
-  std::vector<std::pair<int, std::string>> blackboard_;  // slot, key
-  std::vector<NodeObservable> nodes_;
-  std::vector<Adaptable> adaptables_;
-  // Per NodeId, what it returned last this tick: bit 0 success, 1 failure, 2 running, 3 ticked.
-  std::vector<std::uint8_t> seen_;
+  std::optional<TickObservation> observation_;  // what each tick shows, of the version running
   std::vector<monitor::Val> frame_;
   std::map<std::string, bool> boolean_variable_;
   std::optional<monitor::SelectionJudge> judge_;
