@@ -1,6 +1,6 @@
-// What a tick shows (ARCHITECTURE §10, §14): one rule for `uabt run`'s monitor, `uabt prove`'s explicit
-// engine and the replay of its counterexamples; the symbolic engine encodes the same rule as
-// terms (prove/symbolic_tick.cpp, over observable_of).
+// What a tick shows (ARCHITECTURE §10, §14): one rule for `uabt run`'s monitor, `uabt prove`'s
+// explicit engine and the replay of its counterexamples; the symbolic engine encodes the same rule
+// as terms (prove/symbolic_tick.cpp, over observable_of).
 #pragma once
 #include <map>
 #include <set>
@@ -13,7 +13,8 @@
 
 namespace uabt::runtime {
 
-// What a name a property reads is, in a running engine: one rule of ARCHITECTURE §10, in this order.
+// What a name a property reads is, in a running engine: one rule of ARCHITECTURE §10, in this
+// order.
 //  - state: a state variable (a domain variable, a condition: the caller's `state`);
 //  - status: `<node>.success|failure|running`, the nodes observed_nodes names (named `node`,
 //    else of that ID, any of them; not the generated selection trees);
