@@ -29,11 +29,12 @@ std::string summary_line(const prove::Result& r, const report::Proofs& proofs) {
 
 // What a proof covered: the reachable runs' size, and when the guarantee first asks something.
 std::string proof_extent(const prove::Result& r, const prove::Answer& a) {
-  if (r.engine == "symbolic")
-    return a.by_pdr ? "IC3/PDR, Z3's Spacer" : "k-induction with k = " + std::to_string(a.depth);
-  std::string out = "over " + std::to_string(r.states) + " reachable states and " +
-                    std::to_string(r.transitions) + " transitions";
-  if (a.has_trigger)
+  std::string out =
+      r.engine == "symbolic"
+          ? (a.by_pdr ? "IC3/PDR, Z3's Spacer" : "k-induction with k = " + std::to_string(a.depth))
+          : "over " + std::to_string(r.states) + " reachable states and " +
+                std::to_string(r.transitions) + " transitions";
+  if (a.has_trigger && a.trigger_decided)
     out += a.first_trigger == 0
                ? "; its trigger never holds"
                : "; its trigger first holds at tick " + std::to_string(a.first_trigger);

@@ -107,8 +107,9 @@ std::optional<Atom> atom_of(const std::optional<Affine>& l, const std::optional<
 class FretishAffine {
  public:
   FretishAffine(const std::set<std::string, std::less<>>& numeric,
-                const std::set<std::string, std::less<>>& mission)
-      : numeric_(numeric), mission_(mission) {}
+                const std::set<std::string, std::less<>>& mission,
+                const std::set<std::string, std::less<>>& integers)
+      : numeric_(numeric), mission_(mission), integers_(integers) {}
   std::optional<Affine> of(const Expr& e) const {
     try {
       switch (e.kind) {
@@ -134,7 +135,10 @@ class FretishAffine {
           return acc;
         }
         case ExprKind::mul: return product(of(*e.args[0]), of(*e.args[1]));
-        case ExprKind::div: return quotient(of(*e.args[0]), of(*e.args[1]));
+        case ExprKind::div:
+          // A quotient of integers truncates toward zero: a step function, not affine.
+          if (integral(*e.args[0]) && integral(*e.args[1])) return std::nullopt;
+          return quotient(of(*e.args[0]), of(*e.args[1]));
         default: return std::nullopt;
       }
     } catch (const verify::detail::FractionOverflow&) {
@@ -143,8 +147,26 @@ class FretishAffine {
   }
 
  private:
+  // Whether `e` has FRETISH's integer type (its numbers and variables are integers).
+  bool integral(const Expr& e) const {
+    switch (e.kind) {
+      case ExprKind::number: return e.text.find_first_of(".eE") == std::string::npos;
+      case ExprKind::identifier: return integers_.contains(e.text);
+      case ExprKind::negate:
+      case ExprKind::add:
+      case ExprKind::sub:
+      case ExprKind::mul:
+      case ExprKind::div:
+      case ExprKind::mod:
+        for (const auto& a : e.args)
+          if (!a || !integral(*a)) return false;
+        return true;
+      default: return false;
+    }
+  }
   const std::set<std::string, std::less<>>& numeric_;
   const std::set<std::string, std::less<>>& mission_;
+  const std::set<std::string, std::less<>>& integers_;
 };
 
 class ScriptAffine {
@@ -224,7 +246,7 @@ bool Cuts::cut(const std::optional<Atom>& atom, const std::string& where, bool a
 
 void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool at_tick_start) {
   if (fretish::is_relation(e.kind) && e.args.size() == 2) {
-    const FretishAffine affine(numeric_, mission_);
+    const FretishAffine affine(numeric_, mission_, integers_);
     std::optional<Atom> a;
     try {
       a = atom_of(affine.of(*e.args[0]), affine.of(*e.args[1]), numeric_);

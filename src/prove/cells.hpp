@@ -40,9 +40,13 @@ class Cuts {
  public:
   // `numeric`: the numeric environment variables (integers and reals no action writes).
   // `mission`: the numeric variables of the mission's own state (a value in every state).
+  // `integers`: those of either declared integer, whose quotient truncates (not affine).
   explicit Cuts(std::set<std::string, std::less<>> numeric,
-                std::set<std::string, std::less<>> mission = {})
-      : numeric_(std::move(numeric)), mission_(std::move(mission)) {}
+                std::set<std::string, std::less<>> mission = {},
+                std::set<std::string, std::less<>> integers = {})
+      : numeric_(std::move(numeric)),
+        mission_(std::move(mission)),
+        integers_(std::move(integers)) {}
 
   // `where` names the expression for a reason ("requirements.fret:4:1", "a script `x > 2`").
   // `at_tick_start`: an assumption or the initial condition (read with the tick's first state).
@@ -64,7 +68,7 @@ class Cuts {
             bool at_tick_start);
   // Records `atom` (a breakpoint, or a mixed atom); false when there is none.
   bool cut(const std::optional<detail::Atom>& atom, const std::string& where, bool at_tick_start);
-  std::set<std::string, std::less<>> numeric_, mission_;
+  std::set<std::string, std::less<>> numeric_, mission_, integers_;
   std::map<std::string, std::set<verify::detail::Fraction>, std::less<>> breaks_;
   std::map<std::string, std::vector<MixedAtom>, std::less<>> mixed_;
   std::map<std::string, std::string, std::less<>> uncut_;

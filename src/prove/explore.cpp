@@ -376,9 +376,7 @@ class Search {
     } catch (const runtime::TickException& e) {
       ++result_.transitions;
       // As in `uabt run`, the run stops there: the runs that go on are still explored.
-      if (!result_.tick_error)
-        result_.tick_error =
-            "tick " + std::to_string(from.tick + 1) + " of a run: " + e.error.message;
+      if (!result_.tick_error) result_.tick_error = tick_error_text(from.tick + 1, e.error.message);
       outcomes.errors = true;
       return;
     }
@@ -519,6 +517,26 @@ SearchResult explore(Model& model, const Options& options) {
     SearchResult result = Search(model, options).run();
     if (!model.environment->refined()) return result;
   }
+}
+
+std::string tick_error_text(std::uint64_t tick, const std::string& message) {
+  return "tick " + std::to_string(tick) + " of a run: " + message;
+}
+
+std::string replay_tick_error(Model& model, const std::vector<Step>& path) {
+  std::uint64_t at = 0;
+  try {
+    replay_path(
+        model, path, [&](std::uint64_t tick) { at = tick; },
+        [](std::uint64_t, NodeStatus, const std::vector<std::size_t>&) {});
+  } catch (const runtime::TickException& e) {
+    if (at == path.size()) return tick_error_text(at, e.error.message);
+    throw ProveError("internal error: a run the symbolic engine stops with an error at tick " +
+                     std::to_string(path.size()) + " stops at tick " + std::to_string(at) +
+                     " in its replay: " + e.error.message);
+  }
+  throw ProveError("internal error: a run the symbolic engine stops with an error at tick " +
+                   std::to_string(path.size()) + " does not stop in its replay");
 }
 
 void replay_path(Model& m, const std::vector<Step>& path,

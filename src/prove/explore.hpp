@@ -53,6 +53,13 @@ Vacuity vacuity_of(const Model& model, Stuck kind, std::uint64_t tick = 0,
 // one of the shortest.
 SearchResult explore(Model& model, const Options& options);
 
+// "tick N of a run: MESSAGE": a tick that stops with an error, as both engines note it.
+std::string tick_error_text(std::uint64_t tick, const std::string& message);
+
+// The error with which the last tick of `path` stops when replayed on the model's own engine
+// (tick_error_text); throws ProveError when the replay does not stop there.
+std::string replay_tick_error(Model& model, const std::vector<Step>& path);
+
 // Replays `path` on the model's own engine, calling `before_tick(t)` once the values set before
 // tick t are on the blackboard (the initial ones; a symbolic path's environment), and
 // `after_tick(t, root, chosen)` after the tick and the monitors' reads, with the environment's

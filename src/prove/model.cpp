@@ -420,7 +420,11 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
         (d->type == fretish::VarType::integer || d->type == fretish::VarType::real))
       mission_numbers.insert(v.name);
   }
-  Cuts cuts(numeric, mission_numbers);
+  std::set<std::string, std::less<>> integers;
+  for (const StateVar& v : vars)
+    if (const fretish::Variable* d = declaration(v.name); d && d->type == fretish::VarType::integer)
+      integers.insert(v.name);
+  Cuts cuts(numeric, mission_numbers, integers);
   if (!numeric.empty()) {
     auto where = [](const SourceLocation& l) {
       return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);

@@ -65,15 +65,19 @@ std::vector<Finding> findings_of(const Result& result,
   for (const Answer& a : result.answers) {
     if (a.verdict == Verdict::vacuous) continue;
     if (a.verdict == Verdict::proved) {
-      if (result.engine == "explicit" && a.has_trigger && a.first_trigger == 0) {
+      if (a.has_trigger && a.trigger_decided && a.first_trigger == 0) {
         Finding f = make_finding("prove-trigger-unreachable",
                                  "guarantee '" + a.requirement +
                                      "' is proved, but its trigger (its mode and condition) "
                                      "holds on no run, so it never asks anything: " +
                                      a.text,
                                  a.location);
-        f.notes.push_back("explored " + std::to_string(result.states) + " reachable states and " +
-                          std::to_string(result.transitions) + " transitions");
+        f.notes.push_back(result.engine == "explicit"
+                              ? "explored " + std::to_string(result.states) +
+                                    " reachable states and " + std::to_string(result.transitions) +
+                                    " transitions"
+                              : "the symbolic engine proved that no run reaches it (BMC, "
+                                "k-induction and IC3/PDR)");
         f.requirements = {a.requirement};
         out.push_back(std::move(f));
       }
@@ -145,7 +149,7 @@ report::Proofs report_proofs(const Result& result,
     p.depth = a.depth;
     if (result.engine == "symbolic" && a.verdict == Verdict::proved)
       p.method = a.by_pdr ? "IC3/PDR" : "k-induction";
-    if (result.engine == "explicit" && a.has_trigger) p.first_trigger = a.first_trigger;
+    if (a.has_trigger && a.trigger_decided) p.first_trigger = a.first_trigger;
     if (a.counterexample) {
       report::ProofCounterexample c;
       c.tick = a.counterexample->tick;

@@ -233,6 +233,9 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
 
 namespace {
 
+// The note both engines give the first tick that stops with an error (tick_error_text).
+const std::string kTickErrorNote = "a reachable tick stops with an error: ";
+
 Answer answer_of(const Property& p) {
   Answer a;
   a.requirement = p.requirement->id;
@@ -278,8 +281,7 @@ Result prove_explicit(Model& model, const Options& options) {
   r.transitions = search.transitions;
   r.depth = search.depth;
   r.complete = search.complete;
-  if (search.tick_error)
-    r.notes.push_back("a reachable tick stops with an error: " + *search.tick_error);
+  if (search.tick_error) r.notes.push_back(kTickErrorNote + *search.tick_error);
   if (search.vacuous) r.vacuity = Vacuity{search.vacuous->message, search.vacuous->location};
   add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
     a.verdict = search.vacuous    ? Verdict::vacuous
@@ -303,18 +305,30 @@ Result prove_symbolic(Model& model, const Options& options) {
     r.vacuity = vacuity_of(model, model.world.initial ? Stuck::initial : Stuck::assumptions);
   else if (search.deadlock_after != 0)
     r.vacuity = vacuity_of(model, Stuck::deadlock, search.deadlock_after);
+  // The runtime's own error at the tick BMC found (the explicit engine's note).
+  if (search.error)
+    r.notes.push_back(kTickErrorNote + replay_tick_error(model, search.error->path));
+  if (!search.error_decided && !r.vacuity)
+    r.notes.push_back("no tick up to tick " + std::to_string(search.depth) +
+                      " stops with an error; whether a later one does is not decided");
   add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
     if (r.vacuity) {
       a.verdict = Verdict::vacuous;
       r.complete = false;
       return;
     }
+    a.has_trigger = model.properties[i].has_trigger();
+    a.first_trigger = search.first_trigger[i];
+    a.trigger_decided = search.trigger_decided[i];
     if (search.proved[i]) {
       a.verdict = Verdict::proved;
       a.depth = search.proved_k[i];
       a.by_pdr = search.by_pdr[i];
       if (search.by_pdr[i])
         r.notes.push_back(a.requirement + " is proved by IC3/PDR (Z3's Spacer)");
+      if (a.has_trigger && !a.trigger_decided)
+        r.notes.push_back(a.requirement +
+                          " is proved, but whether its trigger holds on any run is not decided");
     } else {
       a.verdict = Verdict::bounded;
       a.depth = search.depth;

@@ -49,9 +49,11 @@ struct Answer {
   std::uint64_t depth = 0;  // ticks explored (bounded), the violation's tick, or for a proof
                             // the explicit depth / the symbolic engine's k
   std::optional<Counterexample> counterexample;
-  // The explicit engine: the first tick at which the guarantee's trigger (its mode and its
-  // condition) holds on some run; 0 when it never does (a proof that says nothing).
+  // The first tick at which the guarantee's trigger (its mode and its condition) holds on
+  // some run; 0 when it never does (a proof that says nothing). Not decided when the symbolic
+  // engine neither reached the trigger nor proved that no run does within its bounds.
   std::uint64_t first_trigger = 0;
+  bool trigger_decided = true;
   bool has_trigger = false;  // the guarantee has a mode or a condition
   // The symbolic engine: proved by IC3/PDR (Z3's Spacer) rather than by k-induction (depth is
   // then 0: no k was needed).

@@ -45,24 +45,47 @@ Step step_of(const z3::model& model, SymbolicTick& tick, const Model& m, const T
   return step;
 }
 
+// What the search looks for, by index: a guarantee's violation (the property's index), a tick
+// that stops with an error (kError after them), or a guarantee's trigger (after that). Each is
+// a term that holds at a bad tick: BMC finds its shortest tick, k-induction and IC3/PDR prove
+// that no run reaches it.
+class Goals {
+ public:
+  explicit Goals(std::size_t properties) : count_(properties) {}
+  std::size_t size() const { return 2 * count_ + 1; }
+  std::size_t error() const { return count_; }
+  std::size_t trigger(std::size_t property) const { return count_ + 1 + property; }
+  bool is_guarantee(std::size_t goal) const { return goal < count_; }
+  bool is_trigger(std::size_t goal) const { return goal > count_; }
+  std::size_t property_of_trigger(std::size_t goal) const { return goal - count_ - 1; }
+  z3::expr bad(const TickEncoding& e, std::size_t goal) const {
+    if (goal < count_) return e.fails[goal];
+    if (goal == count_) return e.error;
+    return e.triggered[goal - count_ - 1];
+  }
+
+ private:
+  std::size_t count_;
+};
+
 bool is_variable(const z3::expr& e) {
   return e.is_app() && e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED;
 }
 
-// IC3/PDR (Z3's Spacer) on the guarantees k-induction could not prove: Horn clauses over an
+// IC3/PDR (Z3's Spacer) on the goals k-induction could not prove: Horn clauses over an
 // invariant of the states between ticks, with at most `levels` frames (deterministic, unlike a
-// timeout). One query asks whether any of them can fail; only when one can is each asked
-// alone. A proof is trusted; a violation is left to BMC, which finds the shortest one.
+// timeout). One query asks whether any of them can be reached; only when one can is each asked
+// alone. A proof is trusted; a reachable goal is left to BMC, which finds its shortest run.
 struct PdrAnswers {
-  std::vector<bool> proved, reachable;  // per property
+  std::vector<bool> proved, reachable;  // per goal
   unsigned queries = 0;
 };
 
-PdrAnswers spacer_answers(z3::context& ctx, SymbolicTick& tick, const Model& m,
+PdrAnswers spacer_answers(z3::context& ctx, SymbolicTick& tick, const Goals& goals,
                           const std::vector<std::size_t>& open, unsigned levels) {
   PdrAnswers out;
-  out.proved.assign(m.properties.size(), false);
-  out.reachable.assign(m.properties.size(), false);
+  out.proved.assign(goals.size(), false);
+  out.reachable.assign(goals.size(), false);
   const SymState cur = tick.state("pdr.");
   std::vector<z3::expr> flat = SymbolicTick::flatten(cur);
   std::vector<std::size_t> positions;
@@ -111,9 +134,9 @@ PdrAnswers spacer_answers(z3::context& ctx, SymbolicTick& tick, const Model& m,
     z3::func_decl bad = ctx.function(name.c_str(), 0, nullptr, ctx.bool_sort());
     fp.register_relation(bad);
     z3::expr fails0 = start.overflow, fails1 = step.overflow;
-    for (std::size_t p : which) {
-      smt::assign(fails0, fails0 || start.fails[p]);
-      smt::assign(fails1, fails1 || step.fails[p]);
+    for (std::size_t g : which) {
+      smt::assign(fails0, fails0 || goals.bad(start, g));
+      smt::assign(fails1, fails1 || goals.bad(step, g));
     }
     z3::expr r0 =
         z3::forall(quantified(first_in, false), z3::implies(start.valid, holds(start.next)));
@@ -153,17 +176,30 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   SymbolicTick tick(m, ctx);
   const std::uint64_t bound = options.depth != 0 ? options.depth : kSymbolicBound;
   const std::size_t count = m.properties.size();
+  const Goals goals(count);
   SymbolicSearch out;
   out.violations.resize(count);
   out.proved_k.assign(count, 0);
   out.proved.assign(count, false);
   out.by_pdr.assign(count, false);
-  std::vector<std::size_t> open;  // guarantees neither proved nor violated yet
+  out.first_trigger.assign(count, 0);
+  out.trigger_decided.assign(count, false);
+  // Per goal: proved unreachable (with the k of its induction, or by IC3/PDR), or reached.
+  std::vector<bool> proved(goals.size(), false), by_pdr(goals.size(), false);
+  std::vector<std::uint64_t> proved_k(goals.size(), 0);
+  std::vector<bool> wanted(goals.size(), false);
+  std::vector<std::size_t> open;  // goals neither proved nor reached yet
   for (std::size_t p = 0; p < count; ++p)
     if (!m.properties[p].assumption && tick.table(p)) open.push_back(p);
-  // Per property: IC3/PDR found a run that violates it. Induction cannot prove it, so it is
-  // left to BMC, which finds the shortest such run (or reaches its bound).
-  std::vector<bool> reachable(count, false);
+  if (tick.may_stop()) open.push_back(goals.error());
+  // A guarantee's trigger matters for a proof: one that holds on no run proves nothing.
+  for (std::size_t p = 0; p < count; ++p)
+    if (!m.properties[p].assumption && tick.table(p) && m.properties[p].has_trigger())
+      open.push_back(goals.trigger(p));
+  for (std::size_t g : open) wanted[g] = true;
+  // Per goal: IC3/PDR found a run that reaches it. Induction cannot prove it unreachable, so it
+  // is left to BMC, which finds the shortest such run (or reaches its bound).
+  std::vector<bool> reachable(goals.size(), false);
 
   // Z3's SMT core, incremental; each question is asked under assumption literals rather than
   // in a push/pop scope, so what the solver learns stays for the next question and depth.
@@ -193,7 +229,7 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   // BMC has reached a tick no run goes past: no first tick, a deadlock, or every run over.
   bool stopped = false;
 
-  // BMC one tick deeper: the open guarantees a run of out.depth + 1 ticks violates, at their
+  // BMC one tick deeper: the open goals a run of out.depth + 1 ticks reaches, at their
   // shortest tick since every shorter depth was asked first.
   auto bmc_tick = [&]() {
     const std::uint64_t k = out.depth + 1;
@@ -207,32 +243,44 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
       throw SymbolicUnsupported("at tick " + std::to_string(k) +
                                 " the wake-up loop re-ticks the root more often than the "
                                 "symbolic engine unrolls it");
-    std::vector<std::size_t> still;
-    for (std::size_t p : open) {
-      if (holds_under(bmc, {literal(bmc, enc.fails[p])})) {
-        const z3::model model = bmc.get_model();
-        Finding f;
-        f.property = p;
-        f.tick = k;
-        for (std::size_t j = 0; j < inputs.size(); ++j)
-          f.path.push_back(step_of(model, tick, m, inputs[j], leaf_ticks[j], j == 0));
-        out.violations[p] = std::move(f);
+    auto run_of = [&](const z3::model& model) {
+      Finding f;
+      f.tick = k;
+      for (std::size_t j = 0; j < inputs.size(); ++j)
+        f.path.push_back(step_of(model, tick, m, inputs[j], leaf_ticks[j], j == 0));
+      return f;
+    };
+    std::vector<std::size_t> still, violated;
+    for (std::size_t g : open) {
+      if (!holds_under(bmc, {literal(bmc, goals.bad(enc, g))})) {
+        still.push_back(g);
+      } else if (goals.is_guarantee(g)) {
+        out.violations[g] = run_of(bmc.get_model());
+        out.violations[g]->property = g;
+        violated.push_back(g);
+      } else if (g == goals.error()) {
+        out.error = run_of(bmc.get_model());
       } else {
-        still.push_back(p);
+        out.first_trigger[goals.property_of_trigger(g)] = k;
+        out.trigger_decided[goals.property_of_trigger(g)] = true;
       }
     }
-    const bool violated = still.size() < open.size();
+    const bool reached = still.size() < open.size();
     open = std::move(still);
+    // A violated guarantee's trigger no longer matters.
+    std::erase_if(open, [&](std::size_t g) {
+      return goals.is_trigger(g) && out.violations[goals.property_of_trigger(g)];
+    });
     if (open.empty()) {
       out.depth = k;
       return;
     }
-    // Every run over by tick k: nothing is left to prove (cheaper than any induction).
+    // Every run over by tick k: nothing is left to reach (cheaper than any induction).
     if (!holds_under(bmc, {literal(bmc, !path.back().done[0])})) {
       // No run lasting k ticks either (asked only now: measured, that question cost half of
       // BMC on a binary tree of 24 nodes): tick k - 1 left one going (else the search would
       // have stopped there), yet it cannot go on; it is stuck, and a proof would be vacuous.
-      if (!violated && !holds_under(bmc, {})) {
+      if (!reached && !holds_under(bmc, {})) {
         if (k == 1)
           out.no_first_tick = true;
         else
@@ -241,9 +289,9 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
         stopped = true;
         return;
       }
-      for (std::size_t p : open) {
-        out.proved[p] = true;
-        out.proved_k[p] = k;
+      for (std::size_t g : open) {
+        proved[g] = true;
+        proved_k[g] = k;
       }
       open.clear();
       stopped = true;
@@ -253,24 +301,25 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   auto bmc_to = [&](std::uint64_t depth) {
     while (!stopped && !open.empty() && out.depth < depth) bmc_tick();
   };
-  // IC3/PDR on the open guarantees it has not found violated.
-  auto ask_pdr = [&](unsigned levels) {
+  // IC3/PDR on the open goals it has not found reachable; `guarantees_only`: not on the
+  // errors and triggers, which a run usually reaches (BMC finds them at less cost).
+  auto ask_pdr = [&](unsigned levels, bool guarantees_only) {
     std::vector<std::size_t> asked;
-    for (std::size_t p : open)
-      if (!reachable[p]) asked.push_back(p);
+    for (std::size_t g : open)
+      if (!reachable[g] && (!guarantees_only || goals.is_guarantee(g))) asked.push_back(g);
     if (asked.empty()) return;
-    const PdrAnswers pdr = spacer_answers(ctx, tick, m, asked, levels);
+    const PdrAnswers pdr = spacer_answers(ctx, tick, goals, asked, levels);
     out.pdr_queries += pdr.queries;
-    for (std::size_t p : asked) {
-      out.proved[p] = pdr.proved[p];
-      out.by_pdr[p] = pdr.proved[p];
-      reachable[p] = pdr.reachable[p];
+    for (std::size_t g : asked) {
+      proved[g] = pdr.proved[g];
+      by_pdr[g] = pdr.proved[g];
+      reachable[g] = pdr.reachable[g];
     }
-    std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
+    std::erase_if(open, [&](std::size_t g) { return proved[g]; });
   };
 
   std::vector<SymState> ind_states{tick.state("i0.")};
-  std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per property: a literal
+  std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per goal: a literal
   ind.add(tick.domain(ind_states[0]) && ind_states[0].started[0]);
   const std::uint64_t pdr_k = std::min<std::uint64_t>(bound, kInductionBeforePdr);
   for (std::uint64_t k = 1; k <= bound; ++k) {
@@ -285,15 +334,16 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     ind_states.push_back(pin(ind, tick, step.next, u));
     // A proof must also rule out a wake-up loop deeper than the encoding.
     std::vector<z3::expr> fails;
-    for (std::size_t p = 0; p < count; ++p)
-      fails.push_back(literal(ind, step.fails[p] || step.overflow));
+    for (std::size_t g = 0; g < goals.size(); ++g)
+      fails.push_back(wanted[g] ? literal(ind, goals.bad(step, g) || step.overflow)
+                                : ctx.bool_val(false));
     ind_fails.push_back(std::move(fails));
-    for (std::size_t p : open) {
-      if (reachable[p]) continue;
+    for (std::size_t g : open) {
+      if (reachable[g]) continue;
       out.induction_k = k;
       z3::expr_vector a(ctx);
-      for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) a.push_back(!ind_fails[j][p]);
-      a.push_back(ind_fails.back()[p]);
+      for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) a.push_back(!ind_fails[j][g]);
+      a.push_back(ind_fails.back()[g]);
       // The simple-path constraints (sources pairwise distinct), added lazily: only for
       // the pairs a counterexample to induction repeats. The answer is the one all pairs
       // give: unsat under some of them is unsat under all, and a model that repeats no
@@ -301,8 +351,8 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
       for (;;) {
         ++out.induction_checks;
         if (ind.check(a) == z3::unsat) {
-          out.proved[p] = true;
-          out.proved_k[p] = k;
+          proved[g] = true;
+          proved_k[g] = k;
           break;
         }
         const z3::model model = ind.get_model();
@@ -318,17 +368,25 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
         if (!repeated) break;
       }
     }
-    std::erase_if(open, [&](std::size_t p) { return out.proved[p]; });
+    std::erase_if(open, [&](std::size_t g) { return proved[g]; });
     if (k != pdr_k || open.empty()) continue;
     // What k-induction has not proved by now it will rarely prove later. IC3/PDR is asked
     // first with a few frames, which proves most guarantees; BMC then runs ahead, so that a
-    // guarantee a short run violates costs neither IC3/PDR's full search nor deeper
-    // induction; IC3/PDR with all its frames takes what is still open.
-    ask_pdr(kPdrFirstLevels);
+    // guarantee a short run violates, or a trigger a short run reaches, costs neither
+    // IC3/PDR's full search nor deeper induction; IC3/PDR with all its frames takes what is
+    // still open.
+    ask_pdr(kPdrFirstLevels, true);
     bmc_to(std::min(bound, kBmcBeforePdr));
     if (stopped || open.empty()) break;
-    ask_pdr(kPdrMaxLevel);
+    ask_pdr(kPdrMaxLevel, false);
   }
+  for (std::size_t p = 0; p < count; ++p) {
+    out.proved[p] = proved[p];
+    out.proved_k[p] = proved_k[p];
+    out.by_pdr[p] = by_pdr[p];
+    if (proved[goals.trigger(p)]) out.trigger_decided[p] = true;
+  }
+  out.error_decided = !wanted[goals.error()] || out.error || proved[goals.error()];
   return out;
 }
 

@@ -45,10 +45,21 @@ struct SymbolicSearch {
   // A run still going after this tick cannot take another (a deadlock: the assumptions leave
   // the environment no value); 0 when none.
   std::uint64_t deadlock_after = 0;
+  // Per property: the first tick at which its trigger (its mode and its condition) holds on
+  // some run (BMC: the shortest), 0 when no run reaches it; decided when either is known
+  // (a guarantee without a trigger, or one violated, is not asked).
+  std::vector<std::uint64_t> first_trigger;
+  std::vector<bool> trigger_decided;
+  // One of the shortest runs whose last tick stops with an error (Finding::property is not
+  // used); error_decided when that, or that no tick does, is known.
+  std::optional<Finding> error;
+  bool error_decided = true;
 };
 
 // BMC with increasing depth (a violation is found at its shortest tick) and k-induction with
-// all states of the path distinct (proves a guarantee for every depth), over SymbolicTick.
+// all states of the path distinct (proves a guarantee for every depth), then IC3/PDR, over
+// SymbolicTick. The same search finds the first tick that stops with an error and the first
+// tick each guarantee's trigger holds, or proves that none does.
 // Throws SymbolicUnsupported when the mission is outside what SymbolicTick models.
 SymbolicSearch symbolic_search(Model& model, const Options& options);
 

@@ -91,6 +91,7 @@ struct SymbolicTick::Impl {
       effects;  // per leaf: on_success, on_failure (parsed without binding)
   NodeId root = 0;
   int wake_ups = 0;               // wake-up re-ticks unrolled per tick (0 without Repeat)
+  bool may_stop = false;          // a node reads an entry that may not be written yet
   std::vector<int> multiplicity;  // per leaf: how often the unrolled tick may tick it
 
   // Per encode() call.
@@ -102,6 +103,10 @@ struct SymbolicTick::Impl {
     std::vector<z3::expr> constraints;
     bool naming = false;
     std::vector<z3::expr> locals;  // the constants name() introduced
+    // Where the tick stops with an error: a node ticked under its guard reads an entry
+    // nothing has written. The first of them in the tick's order has its exact guard, so their
+    // disjunction is the tick's error whatever the terms say of the rest of that tick.
+    std::vector<z3::expr> errors;
   };
   unsigned names = 0;  // constants name() made so far, for unique names
 
@@ -246,6 +251,12 @@ struct SymbolicTick::Impl {
         }
       }
     }
+    for (const NodeDef& d : nodes) {
+      for (const int v : d.inputs)
+        may_stop = may_stop || m.vars[static_cast<std::size_t>(v)].unset_first;
+      for (const auto& [name, v] : d.script_vars)
+        may_stop = may_stop || (v >= 0 && m.vars[static_cast<std::size_t>(v)].unset_first);
+    }
     // How often one tick may tick each leaf: once per root pass, twice under a Repeat.
     multiplicity.assign(leaves.size(), 0);
     std::vector<std::pair<NodeId, int>> todo{{root, wake_ups + 1}};
@@ -279,7 +290,10 @@ struct SymbolicTick::Impl {
         tables.emplace_back();
         continue;
       }
-      auto t = std::make_unique<MonitorTable>(*p.layout, 4096);
+      std::function<bool(const std::vector<char>&)> triggered;
+      if (!p.assumption && p.has_trigger())
+        triggered = [&p](const std::vector<char>& values) { return p.triggered(values); };
+      auto t = std::make_unique<MonitorTable>(*p.layout, 4096, triggered);
       if (t->failed())
         throw SymbolicUnsupported(p.requirement->id +
                                   (p.layout->inputs() > MonitorTable::kMaxInputs
@@ -429,11 +443,9 @@ struct SymbolicTick::Impl {
                             return it == d.script_vars.end() ? -1 : it->second;
                           },
                           &types, &domains, &codes};
-        // A read of an entry nothing has written yet stops the tick (BT.CPP throws): such a
-        // step is not one of the mission's (the explicit engine drops it too).
+        // A read of an entry nothing has written yet stops the tick (BT.CPP throws).
         for (const auto& [name, var] : d.script_vars)
-          if (var >= 0 && m.vars[static_cast<std::size_t>(var)].unset_first)
-            x.constraints.push_back(z3::implies(g, x.cur.written[static_cast<std::size_t>(var)]));
+          if (var >= 0) require_written(x, static_cast<std::size_t>(var), g);
         const auto v = run_script(ctx, *d.program, scope, x.cur.values, g, d.where);
         if (d.kind == NK::script) return ctx.int_val(kSuccess);
         return z3::ite(script_truth(*v, d.where), ctx.int_val(kSuccess), ctx.int_val(kFailure));
@@ -585,9 +597,12 @@ struct SymbolicTick::Impl {
 
   // The engine's check before a robot leaf ticks: its input ports' entries are there.
   void require_inputs(Exec& x, const NodeDef& d, const z3::expr& g) {
-    for (const int var : d.inputs)
-      if (m.vars[static_cast<std::size_t>(var)].unset_first)
-        x.constraints.push_back(z3::implies(g, x.cur.written[static_cast<std::size_t>(var)]));
+    for (const int var : d.inputs) require_written(x, static_cast<std::size_t>(var), g);
+  }
+  // A node ticked under `g` reads variable `var`: the tick stops with an error if nothing has
+  // written it yet.
+  void require_written(Exec& x, std::size_t var, const z3::expr& g) {
+    if (m.vars[var].unset_first) x.errors.push_back(name(x, g && !x.cur.written[var]));
   }
 
   // ChoiceWorld::tick_leaf for an action.
@@ -723,13 +738,20 @@ struct SymbolicTick::Impl {
     return fretish_bool(ctx, e, resolve, what);
   }
 
-  // The input bits of a property's monitor, as a table lookup.
+  // What a property's monitor makes of its input bits from `state`, as a table lookup: its
+  // value now, its next state, or whether it is triggered.
+  enum class Lookup { now, next, triggered };
   static z3::expr lookup(const MonitorTable& t, const z3::expr& state,
-                         const std::vector<z3::expr>& bits, bool now, z3::context& ctx) {
+                         const std::vector<z3::expr>& bits, Lookup what, z3::context& ctx) {
     auto leaf = [&](std::uint32_t s, unsigned in) {
-      return now ? ctx.bool_val(t.now(s, in)) : ctx.int_val(static_cast<int>(t.next(s, in)));
+      switch (what) {
+        case Lookup::now: return ctx.bool_val(t.now(s, in));
+        case Lookup::triggered: return ctx.bool_val(t.triggered(s, in));
+        case Lookup::next: break;
+      }
+      return ctx.int_val(static_cast<int>(t.next(s, in)));
     };
-    z3::expr out = now ? ctx.bool_val(false) : ctx.int_val(0);
+    z3::expr out = what == Lookup::next ? ctx.int_val(0) : ctx.bool_val(false);
     for (std::uint32_t s = static_cast<std::uint32_t>(t.size()); s-- > 0;) {
       // A tree over the inputs, input 0 innermost.
       std::vector<z3::expr> level;
@@ -768,6 +790,9 @@ SymType SymbolicTick::type(std::size_t var) const {
 }
 const MonitorTable* SymbolicTick::table(std::size_t property) const {
   return impl_->tables[property].get();
+}
+bool SymbolicTick::may_stop() const {
+  return impl_->may_stop;
 }
 
 SymState SymbolicTick::fresh() const {
@@ -907,7 +932,7 @@ z3::expr SymbolicTick::same(const SymState& a, const SymState& b) const {
 
 TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool first, bool named) {
   Impl& i = *impl_;
-  Impl::Exec x{s, {}, {}, {}, &in, {}, named, {}};
+  Impl::Exec x{s, {}, {}, {}, &in, {}, named, {}, {}};
   for (std::size_t n = 0; n < i.nodes.size(); ++n) x.ret.push_back(i.ctx.int_val(kIdle));
   x.leaf_ticks.assign(i.m.choice->leaves().size(), i.ctx.int_val(0));
   for (std::size_t a = 0; a < i.adaptable_names.size(); ++a)
@@ -934,7 +959,11 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
     Impl::set(x.cur.wake[0], again, i.ctx.bool_val(false));
     smt::assign(root, z3::ite(again, i.exec(x, i.root, again), root));
   }
-  const z3::expr overflow = i.ctx.bool_val(i.wake_ups > 0) && root == kRunning && x.cur.wake[0];
+  z3::expr_vector errors(i.ctx);
+  for (const z3::expr& e : x.errors) errors.push_back(e);
+  const z3::expr error = i.name(x, z3::mk_or(errors));
+  const z3::expr overflow =
+      i.ctx.bool_val(i.wake_ups > 0) && root == kRunning && x.cur.wake[0] && !error;
   // One n-ary conjunction: with a chain of thousands of binary ones, deleting the context
   // took 0.4 s.
   z3::expr_vector constraints(i.ctx);
@@ -943,12 +972,13 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
   const z3::expr done = root == kSuccess || root == kFailure;
   Impl::set(x.cur.status[i.root], done, i.ctx.int_val(kIdle));  // BT.CPP's resetStatus()
 
-  TickEncoding out{x.cur, root, x.ret, {}, valid, {}, overflow, x.leaf_ticks, x.locals};
+  TickEncoding out{x.cur, root, x.ret, {}, valid, {}, overflow, x.leaf_ticks, x.locals, error, {}};
   for (std::size_t p = 0; p < i.m.properties.size(); ++p) {
     const Property& prop = i.m.properties[p];
     const MonitorTable* t = i.tables[p].get();
     if (!t) {
       out.fails.push_back(i.ctx.bool_val(false));
+      out.triggered.push_back(i.ctx.bool_val(false));
       continue;
     }
     std::vector<z3::expr> bits;
@@ -958,10 +988,17 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
     for (const fretish::ExprPtr& atom : prop.atom_exprs)
       bits.push_back(fretish_bool(i.ctx, *atom, resolve, prop.requirement->id));
     for (const z3::expr& b : bits) out.inputs.push_back(b);
-    const z3::expr now = Impl::lookup(*t, s.monitor[p], bits, true, i.ctx);
-    smt::assign(out.next.monitor[p], Impl::lookup(*t, s.monitor[p], bits, false, i.ctx));
+    const z3::expr now = Impl::lookup(*t, s.monitor[p], bits, Impl::Lookup::now, i.ctx);
+    smt::assign(out.next.monitor[p],
+                Impl::lookup(*t, s.monitor[p], bits, Impl::Lookup::next, i.ctx));
+    out.triggered.push_back(
+        prop.assumption || !prop.has_trigger()
+            ? i.ctx.bool_val(false)
+            : !error && Impl::lookup(*t, s.monitor[p], bits, Impl::Lookup::triggered, i.ctx));
+    // A tick that stops with an error is not judged (explore.cpp: no monitor reads it).
     const z3::expr fails =
-        !now && (monitor::verdict_is_final_once_violated(prop.shape) ? i.ctx.bool_val(true) : done);
+        !error && !now &&
+        (monitor::verdict_is_final_once_violated(prop.shape) ? i.ctx.bool_val(true) : done);
     if (prop.assumption) {
       smt::assign(out.valid, out.valid && !fails);
       out.fails.push_back(i.ctx.bool_val(false));
@@ -972,7 +1009,7 @@ TickEncoding SymbolicTick::encode(const SymState& s, const TickInputs& in, bool 
   // The environment's values are chosen afresh before the next tick (explore.cpp).
   for (std::size_t v = 0; v < i.vars.size(); ++v)
     if (i.vars[v].chosen) out.next.values[v] = i.first[v];
-  out.next.done = {done};
+  out.next.done = {done || error};
   out.next.started = {i.ctx.bool_val(true)};
   return out;
 }

@@ -53,6 +53,12 @@ struct TickEncoding {
   std::vector<z3::expr> leaf_ticks;  // per leaf: how often it was ticked
   // With named terms: the constants `valid` defines (existential, like the inputs).
   std::vector<z3::expr> locals;
+  // The tick stops with an error (a read of a blackboard entry nothing has written yet, which
+  // BT.CPP throws on): the run ends there, as in `uabt run`; no monitor reads the tick.
+  z3::expr error;
+  // Per property: its trigger (its mode and its condition) holds at this tick (false without a
+  // trigger, and at a tick that stops with an error).
+  std::vector<z3::expr> triggered;
 };
 
 // One tick of the runtime's engine (Engine::tick on the ChoiceWorld) as a formula, written
@@ -80,6 +86,8 @@ class SymbolicTick {
   bool tracked(std::size_t var) const;  // part of the state or chosen by the environment
   SymType type(std::size_t var) const;
   const MonitorTable* table(std::size_t property) const;
+  // Whether some tick may stop with an error (TickEncoding::error is not always false).
+  bool may_stop() const;
   SymbolCodes& codes();
   z3::context& context();
 

@@ -6,6 +6,7 @@
 
 #include "base/number_text.hpp"
 #include "smt/assign.hpp"
+#include "smt/division.hpp"
 
 namespace uabt::prove {
 
@@ -358,6 +359,22 @@ class FretishEncoder {
         const SymValue a = number(*e.args[0]);
         return {a.type, -a.e, {}};
       }
+      case K::div:
+      case K::mod: {
+        // By a non-zero numeral only, which keeps the term linear: integers by the truncated
+        // quotient and its remainder (smt/division.hpp), anything else by real division.
+        if (!nonzero_numeral(*e.args[1])) break;
+        const SymValue a = number(*e.args[0]);
+        SymValue b = number(*e.args[1]);
+        smt::assign(b.e, b.e.simplify());  // `-8` as the numeral -8
+        if (both_int(a, b))
+          return {SymType::integer,
+                  e.kind == K::div ? smt::truncated_quotient(a.e, b.e)
+                                   : smt::truncated_remainder(a.e, b.e),
+                  {}};
+        if (e.kind == K::mod) refuse("'" + fretish::to_fretish(e) + "': mod of a real");
+        return {SymType::real, as_real(a) / as_real(b), {}};
+      }
       case K::call: return call(e);
       default: break;
     }
@@ -376,6 +393,11 @@ class FretishEncoder {
   }
   static bool number_kind(const SymValue& v) {
     return v.type == SymType::integer || v.type == SymType::real;
+  }
+  // A number written out (`8`, `0.5`, `-8`) that is not zero.
+  static bool nonzero_numeral(const fretish::Expr& e) {
+    if (e.kind == K::negate && e.args.size() == 1 && e.args[0]) return nonzero_numeral(*e.args[0]);
+    return e.kind == K::number && e.text.find_first_not_of("0.") != std::string::npos;
   }
   static bool both_int(const SymValue& a, const SymValue& b) {
     return a.type == SymType::integer && b.type == SymType::integer;

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "smt/assign.hpp"
+#include "smt/division.hpp"
 #include "smt/rational.hpp"
 
 namespace uabt::smt {
@@ -27,12 +28,6 @@ Sort sort_of(VarType t) {
 // Exponents up to this are expanded into products, which Z3's arithmetic handles far better
 // than its power operator.
 constexpr unsigned long kMaxExpandedExponent = 64;
-
-// a / b on integers truncated toward zero. SMT-LIB's div is Euclidean, which agrees with
-// truncation for a non-negative dividend.
-z3::expr truncated_quotient(const z3::expr& a, const z3::expr& b) {
-  return z3::ite(a >= 0, a / b, -((-a) / b));
-}
 
 }  // namespace
 
@@ -179,12 +174,12 @@ Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
       const Sort target = common_sort(*e.args[0], *e.args[1]);
       const z3::expr a = operand(*e.args[0], target), b = operand(*e.args[1], target);
       if (!a.is_int() || !b.is_int()) return {a / b, sort};
-      return {truncated_quotient(a, b), sort};
+      return {smt::truncated_quotient(a, b), sort};
     }
     case ExprKind::mod: {
       // The remainder of the truncated quotient: it has the sign of the dividend.
       const z3::expr a = operand(*e.args[0], sort), b = operand(*e.args[1], sort);
-      return {a - b * truncated_quotient(a, b), sort};
+      return {smt::truncated_remainder(a, b), sort};
     }
     case ExprKind::pow: {
       const Expr& exponent = *e.args[1];

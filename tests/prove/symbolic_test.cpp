@@ -296,6 +296,7 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
         EXPECT_EQ(int_of(enc.next.elapsed[l]), m.choice->elapsed()[l]) << where << " leaf " << l;
       EXPECT_EQ(enc.next.wake[0].simplify().is_true(), after.wake_up) << where;
       EXPECT_TRUE(enc.overflow.simplify().is_false()) << where;
+      EXPECT_TRUE(enc.error.simplify().is_false()) << where;  // the tick did not throw
       // Properties read the values after the tick (before the environment's next choice).
       std::vector<monitor::Val> frame;
       m.observables->fill(frame);
@@ -323,6 +324,10 @@ void check_ticks(const Gated& g, unsigned seed, int runs, int ticks) {
           allowed = allowed && !fails;
         } else {
           EXPECT_EQ(enc.fails[p].simplify().is_true(), fails)
+              << where << " " << prop.requirement->id;
+          // Its trigger as the explicit engine reads it (first_trigger).
+          EXPECT_EQ(enc.triggered[p].simplify().is_true(),
+                    prop.has_trigger() && prop.triggered(scratch))
               << where << " " << prop.requirement->id;
         }
       }
