@@ -81,7 +81,8 @@ class Emitter {
   // The requirement a leaf (a Sequence named after it, calling its alternative) selects for.
   const fretish::SelectionRequirement* leaf_requirement(const bt::Node& n) const {
     const std::string* name = n.attribute("name");
-    if (bt::node_kind(n.tag) != K::sequence || name == nullptr || n.children.size() != 1) return nullptr;
+    if (bt::node_kind(n.tag) != K::sequence || name == nullptr || n.children.size() != 1)
+      return nullptr;
     for (const auto* r : reqs_)
       if (r->id == *name) return r;
     return nullptr;
