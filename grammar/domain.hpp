@@ -1,5 +1,5 @@
 #pragma once
-// domain.fret: one declaration a line (DESIGN §3). Rules only; EBNF in grammar/README.md.
+// domain.fret: one declaration a line (ARCHITECTURE §3). Rules only; EBNF in grammar/README.md.
 //   boolean A, B          integer n in [0, 100]     unsigned integer k
 //   real slope in [-45, 45]                          enum terrain in {dust, rocks}
 //   assume NAME: EXPR                                tick 100 ms
@@ -54,7 +54,7 @@ struct assumption_colon : one<':'> {};
 struct assumption_declaration
     : seq<kw_assume, ws, assumption_name, ws, assumption_colon, ws, expression> {};
 
-// The period of one tick, for durations written in time units (DESIGN §10).
+// The period of one tick, for durations written in time units (ARCHITECTURE §10).
 struct kw_tick : keyword<TAO_PEGTL_ISTRING("tick")> {};
 struct tick_period : number {};
 struct tick_unit : sor<kw_unit, unit_abbreviation> {};
