@@ -638,6 +638,10 @@ RunRecord observe_trace(const load::Mission& mission, const std::string& content
   State now;
   for (const auto& tick : trace->ticks) {
     for (const auto& [name, v] : tick.state) {
+      if (v.kind == monitor::TraceValue::Kind::none) {  // no value at this tick
+        std::erase_if(now, [&](const auto& entry) { return entry.first == name; });
+        continue;
+      }
       Value value;
       if (v.kind == monitor::TraceValue::Kind::boolean)
         value = Value::of_bool(v.boolean);

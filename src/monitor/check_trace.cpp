@@ -27,6 +27,7 @@ std::optional<Val> to_val(const TraceValue& v, const fretish::Variable* declared
                 : Val::of_number(v.number);
       break;
     case TraceValue::Kind::text: out = Val::of_symbol(symbols.id(v.text)); break;
+    case TraceValue::Kind::none: return out;  // no value, whatever the type
   }
   if (declared == nullptr) return out;
   const bool fits = (declared->type == VarType::boolean && v.kind == TraceValue::Kind::boolean) ||

@@ -46,10 +46,12 @@ bool read_value(const std::string& name, const json& v, std::uint64_t tick, int 
     value.kind = TraceValue::Kind::text;
     value.text = v.get<std::string>();
     trace.strings.insert(value.text);
+  } else if (v.is_null()) {
+    value.kind = TraceValue::Kind::none;
   } else {
-    reader.error(
-        line, 1,
-        "'" + name + "' at tick " + std::to_string(tick) + " is not a boolean, a number or a name");
+    reader.error(line, 1,
+                 "'" + name + "' at tick " + std::to_string(tick) +
+                     " is not a boolean, a number, a name or null (no value)");
     return false;
   }
   return true;

@@ -13,7 +13,8 @@ namespace uabt::monitor {
 
 // One value of a recorded trace, as JSON wrote it.
 struct TraceValue {
-  enum class Kind { boolean, number, text } kind = Kind::boolean;
+  // `none`: JSON null, the variable has no value at this tick (the run had none to give).
+  enum class Kind { boolean, number, text, none } kind = Kind::boolean;
   bool boolean = false;
   double number = 0;
   bool integer = false;  // the JSON number has no fraction or exponent

@@ -188,12 +188,14 @@ std::string PropertyMonitor::monitor_trace_line(std::uint64_t tick) {
     out += Json{{"selection", std::move(nodes)}}.dump() + "\n";
   }
   header_due_ = false;
+  // A variable without a value is written as null, so that `uabt monitor` reads the same
+  // frame the run judged: a property decided where the value does not matter stays decided.
   Json state = Json::object();
-  for (std::size_t slot = 0; slot < frame_.size(); ++slot) {
-    if (frame_[slot].kind == monitor::Val::Kind::missing) continue;
+  for (std::size_t slot = 0; slot < frame_.size(); ++slot)
     state[variables_.name(static_cast<int>(slot))] =
-        value_json(monitor::value_of(frame_[slot], symbols_));
-  }
+        frame_[slot].kind == monitor::Val::Kind::missing
+            ? Json(nullptr)
+            : value_json(monitor::value_of(frame_[slot], symbols_));
   Json line = {{"tick", tick}, {"state", std::move(state)}};
   if (!traced_.empty()) {
     Json select = Json::object();

@@ -194,17 +194,6 @@ void check_runs(unsigned seed, const SweepMission& m, const TempMission& dir, co
       // The verdict and the first violation; why a property is not monitored is said in the
       // words of each (the run knows a value is missing, the monitor that the trace lacks it).
       if (q && q->verdict == p.verdict && q->first_violation == p.first_violation) continue;
-      // (g) A variable the scenario gives no value: the run decides a property that reads it
-      // where the value does not matter (`!(E & t = s)` with E false) and its --monitor-trace
-      // leaves the variable out, so the monitor cannot monitor the property at all.
-      const auto unvalued = [](const monitor::PropertyResult* r) {
-        return r && (r->reason.find("has no value") != std::string::npos ||
-                     r->reason.find("the trace has no variable") != std::string::npos);
-      };
-      if ((unvalued(&p) || unvalued(q)) && !std::getenv("UABT_AGREE_KNOWN_SEAMS")) {
-        ++tally.known["(g) a variable without a value in the run's --monitor-trace"];
-        continue;
-      }
       ADD_FAILURE() << "monitor and run disagree on " << p.id << " over the run of the " << engine
                     << " counterexample of " << a.requirement << ": run " << verdict_text(&p)
                     << ", monitor " << verdict_text(q) << "\n"
@@ -651,6 +640,37 @@ TEST(AgreementSeams, ASelectionThatFallsThroughReadsTheLaterBranch) {
           "events": [{"at": 2, "set": {"E": false}}]})",
       "(h): after a reactive selection falls through to an alternative still running, the run "
       "reads `.selected` as the alternative whose guard held; prove as the later branch");
+}
+
+// (g) Sweep (Forms::every): a guarantee reads a variable the scenario gives no value, where
+// the value does not matter (`!(E & t = s)` with E false). The run decides it; its
+// --monitor-trace left the variable out, so `uabt monitor` could not monitor it at all. The
+// trace now writes the variable as null, and the monitor reads the frame the run judged.
+TEST(AgreementSeams, AVariableWithoutAValueIsInTheMonitorTraceAndDecidedAlike) {
+  const TempMission dir(
+      {{"mission.xml", mission_with("<AlwaysSuccess/>")},
+       {"domain.fret", "boolean E\nenum t in {s, u}\n"},
+       {"requirements.fret", "NotBoth: Mission shall always satisfy !(E & t = s)\n"}});
+  const std::filesystem::path scenario = dir.dir().parent_path() / "scenario.json";
+  std::ofstream(scenario, std::ios::binary) << R"({"max_ticks": 2, "initial": {"E": false}})";
+  manager::ManagerOptions options;
+  options.monitor_trace = true;
+  manager::BehaviorTreeManager bt_manager(dir.dir(), runtime::load_scenario(scenario), options);
+  const manager::ManagerRun run = bt_manager.run();
+  const monitor::PropertyResult* by_run = property_of(run.properties, "NotBoth");
+  ASSERT_NE(by_run, nullptr);
+  EXPECT_EQ(verdict_text(by_run), "held") << manager::trace_summary(run);
+  EXPECT_NE(run.monitor_trace.find("\"t\":null"), std::string::npos) << run.monitor_trace;
+
+  const std::filesystem::path trace = dir.dir().parent_path() / "trace.jsonl";
+  std::ofstream(trace, std::ios::binary) << run.monitor_trace;
+  std::vector<Finding> findings;
+  const monitor::TraceFilesCheck check = monitor::check_trace_files(dir.dir(), "", trace, findings);
+  ASSERT_TRUE(check.report) << format_text(findings);
+  const monitor::PropertyResult* by_monitor = property_of(check.report->properties, "NotBoth");
+  ASSERT_NE(by_monitor, nullptr);
+  EXPECT_EQ(verdict_text(by_monitor), verdict_text(by_run)) << run.monitor_trace;
+  EXPECT_TRUE(check.report->pass) << run.monitor_trace;
 }
 
 }  // namespace
