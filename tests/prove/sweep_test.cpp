@@ -55,18 +55,8 @@ struct Tally {
   int missions = 0, gated = 0, explicit_answered = 0, both = 0, violated = 0, proved = 0;
   int temporal = 0;  // answered guarantees that read persisted, occurred, prevOcc or FTP
   int runs = 0;      // counterexamples replayed by `uabt run`, each trace checked by `uabt monitor`
-  std::map<std::string, int> known;  // disagreements taken for a known seam, per seam
   std::set<std::string> kinds;
 };
-
-// Disagreements known and being fixed elsewhere: the sweep counts them (and prints them with
-// UABT_SWEEP_VERBOSE) rather than failing; UABT_AGREE_KNOWN_SEAMS=1 makes them failures again.
-// Returns the seam a disagreement about guarantee `a` is taken for, or nullptr. None is known
-// today: (b) the mode of an adaptable node and (e) a control node's `.running` were fixed by
-// the one tick observation (runtime::TickObservation), and now fail the sweep again.
-const char* known_seam(const prove::Answer&) {
-  return nullptr;
-}
 
 const monitor::PropertyResult* property_of(const std::vector<monitor::PropertyResult>& results,
                                            const std::string& id) {
@@ -144,24 +134,14 @@ void check_runs(unsigned seed, const SweepMission& m, const TempMission& dir, co
     for (const runtime::TraceEvent& event : run.trace)
       if (event.event == "violation" && !violated_at.contains(event.requirement))
         violated_at[event.requirement] = event.tick;
-    const auto disagree = [&](const prove::Answer& about, const std::string& what) {
-      if (const char* seam = known_seam(about); seam && !std::getenv("UABT_AGREE_KNOWN_SEAMS")) {
-        ++tally.known[seam];
-        if (std::getenv("UABT_SWEEP_VERBOSE"))
-          std::cout << "known seam (" << seam << ") seed " << seed << ": " << what << "\n";
-        return;
-      }
-      ADD_FAILURE() << what << where();
-    };
+    const auto disagree = [&](const std::string& what) { ADD_FAILURE() << what << where(); };
     const auto own = violated_at.find(a.requirement);
     if (own == violated_at.end() || own->second != a.counterexample->tick)
-      disagree(
-          a,
-          "run of the " + std::string(engine) + " counterexample of " + a.requirement + ": " +
-              verdict_text(property_of(run.properties, a.requirement)) +
-              (own == violated_at.end() ? "" : ", event at tick " + std::to_string(own->second)) +
-              "; prove: violated at tick " + std::to_string(a.counterexample->tick) +
-              (run.error ? " (the run stops: " + run.error->message + ")" : ""));
+      disagree("run of the " + std::string(engine) + " counterexample of " + a.requirement + ": " +
+               verdict_text(property_of(run.properties, a.requirement)) +
+               (own == violated_at.end() ? "" : ", event at tick " + std::to_string(own->second)) +
+               "; prove: violated at tick " + std::to_string(a.counterexample->tick) +
+               (run.error ? " (the run stops: " + run.error->message + ")" : ""));
     for (const prove::Answer& b : result.answers) {
       const auto at = violated_at.find(b.requirement);
       if (at == violated_at.end()) continue;
@@ -169,14 +149,14 @@ void check_runs(unsigned seed, const SweepMission& m, const TempMission& dir, co
       // `eventually` still open) is no violation a proof rules out, unless the mission ended.
       const bool before_end = at->second < run.ticks || run.finished;
       if (b.verdict == Verdict::proved && before_end)
-        disagree(b, "run of the " + std::string(engine) + " counterexample of " + a.requirement +
-                        " violates " + b.requirement + " at tick " + std::to_string(at->second) +
-                        ", which the " + engine + " engine proved");
+        disagree("run of the " + std::string(engine) + " counterexample of " + a.requirement +
+                 " violates " + b.requirement + " at tick " + std::to_string(at->second) +
+                 ", which the " + engine + " engine proved");
       if (b.verdict == Verdict::violated && before_end && at->second < b.depth)
-        disagree(b, "run of the " + std::string(engine) + " counterexample of " + a.requirement +
-                        " violates " + b.requirement + " at tick " + std::to_string(at->second) +
-                        ", before the " + engine + " engine's shortest violation (tick " +
-                        std::to_string(b.depth) + ")");
+        disagree("run of the " + std::string(engine) + " counterexample of " + a.requirement +
+                 " violates " + b.requirement + " at tick " + std::to_string(at->second) +
+                 ", before the " + engine + " engine's shortest violation (tick " +
+                 std::to_string(b.depth) + ")");
     }
     std::ofstream(trace, std::ios::binary) << run.monitor_trace;
     std::vector<Finding> findings;
@@ -310,8 +290,6 @@ Tally sweep(const std::string& label, const std::vector<unsigned>& seeds,
             << " proved guarantees, " << tally.temporal
             << " answered guarantees read temporal functions, " << tally.runs
             << " counterexamples run and monitored\n";
-  for (const auto& [seam, n] : tally.known)
-    std::cout << label << ": " << n << " disagreements taken for the known seam: " << seam << "\n";
   return tally;
 }
 
@@ -552,8 +530,7 @@ namespace {
 
 // The agreement test on durations written in units of time (`within 200 ms` with `tick 100
 // ms`, `for 2 seconds` with `tick 1 s`): prove must convert them with the domain's tick period
-// as run and monitor do. Known seam (a): prove passes no tick period, so it leaves these
-// guarantees unchecked while run and monitor decide them. UABT_AGREE_KNOWN_SEAMS=1 runs it.
+// as run and monitor do, so that none is left unchecked for want of a tick period.
 TEST(ProveSweep, DurationsInTimeUnitsAgreeAcrossProveRunAndMonitor) {
   const unsigned first = env_or("UABT_AGREE_FIRST", 1), count = env_or("UABT_AGREE_MISSIONS", 30);
   int unchecked = 0;
@@ -569,10 +546,6 @@ TEST(ProveSweep, DurationsInTimeUnitsAgreeAcrossProveRunAndMonitor) {
           a.reason.find("declares no tick period") != std::string::npos)
         ++unchecked;
   }
-  if (unchecked != 0 && !std::getenv("UABT_AGREE_KNOWN_SEAMS"))
-    GTEST_SKIP() << "known seam (a): prove leaves " << unchecked
-                 << " guarantees with durations in units of time unchecked (it passes no tick "
-                    "period), which run and monitor decide";
   sweep(
       "time units",
       [&] {
