@@ -1,5 +1,6 @@
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.hpp"
 #include "report/common.hpp"
 #include "report/proof_timeline.hpp"
 #include "report/reports.hpp"
@@ -35,9 +36,10 @@ Json finding_json(const Finding& finding) {
   return out;
 }
 
-// An exact quantity as a JSON number (its nearest double); the exact rational goes beside it.
+// An exact quantity as a JSON number (its nearest double, written as every number is: an
+// integer as an integer); the exact rational goes beside it.
 Json number_json(const verify::Exact& q) {
-  return q.value;
+  return uabt::number_json(q.value);
 }
 
 Json region_json(const verify::Region& region) {
@@ -47,7 +49,8 @@ Json region_json(const verify::Region& region) {
     switch (c.kind) {
       case verify::RegionConstraint::Kind::interval:
         j["variable"] = c.variable;
-        j["interval"] = Json::array({c.lower_value, c.upper_value});
+        j["interval"] =
+            Json::array({uabt::number_json(c.lower_value), uabt::number_json(c.upper_value)});
         j["closed"] = Json::array({c.lower_closed, c.upper_closed});
         break;
       case verify::RegionConstraint::Kind::values:
@@ -92,7 +95,7 @@ void share_json(Json& out, const char* name, const verify::Coverage& coverage,
   } else {
     out[name] = nullptr;
     if (coverage.bounded)
-      out[std::string(name) + "_bounds"] = Json::array({lower.value, upper.value});
+      out[std::string(name) + "_bounds"] = Json::array({number_json(lower), number_json(upper)});
   }
 }
 

@@ -1,5 +1,7 @@
 #include "smt/encoder.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 #include "smt/assign.hpp"
@@ -253,6 +255,25 @@ std::vector<Encoder::DomainPart> Encoder::domain_parts(std::vector<Finding>& fin
   return parts;
 }
 
+namespace {
+
+// A rational numeral as people write it: a decimal where it has one (256/125 as 2.048),
+// else the fraction (1/3).
+std::string exact_real_text(const z3::expr& value) {
+  const std::string fraction = Z3_get_numeral_string(value.ctx(), value);
+  std::uint64_t q = 0;
+  if (fraction.find('/') == std::string::npos || !value.denominator().is_numeral_u64(q))
+    return fraction;
+  // p/q in lowest terms has a finite decimal exactly when q = 2^a 5^b; it has max(a, b)
+  // decimal places.
+  int twos = 0, fives = 0;
+  for (; q % 2 == 0; q /= 2) ++twos;
+  for (; q % 5 == 0; q /= 5) ++fives;
+  return q == 1 ? value.get_decimal_string(std::max(twos, fives)) : fraction;
+}
+
+}  // namespace
+
 State Encoder::state_of(const z3::model& model) const {
   State state;
   state.reserve(slots_.size());
@@ -276,8 +297,7 @@ State Encoder::state_of(const z3::model& model) const {
           if (!digits.empty() && digits.back() == '?') digits.pop_back();
           state.emplace_back(slot.name, Value::of_real(std::stod(digits), text));
         } else {
-          state.emplace_back(slot.name, Value::of_real(value.as_double(),
-                                                       Z3_get_numeral_string(value.ctx(), value)));
+          state.emplace_back(slot.name, Value::of_real(value.as_double(), exact_real_text(value)));
         }
         break;
       }

@@ -132,7 +132,11 @@ TEST(JsonReport, CoverageFields) {
   EXPECT_EQ(navigation["states"], 4);
   EXPECT_EQ(navigation["counted"], true);
   EXPECT_EQ(navigation["measured"], true);
-  EXPECT_EQ(navigation["measure"], 4.0);
+  // Written as people write numbers: the measure 4, not 4.0 (README, "Numbers").
+  EXPECT_TRUE(navigation["measure"].is_number_integer()) << navigation["measure"];
+  EXPECT_EQ(navigation["measure"], 4);
+  EXPECT_TRUE(navigation["alternatives"][0]["measure"].is_number_integer());
+  EXPECT_TRUE(navigation["gap_share"].is_number_float());  // 1/4 stays a real
   EXPECT_EQ(navigation["alternatives"][0], (ordered_json{{"name", "on_dust"},
                                                          {"requirement", "Req1"},
                                                          {"states", 2},

@@ -51,6 +51,30 @@ TEST(Encoder, ModelBecomesAFullStateInDeclarationOrder) {
   EXPECT_TRUE(satisfies_domain(d, s));
 }
 
+// A witness is written as people write numbers (README, "Numbers"): 256/125 as 2.048, -7/4 as
+// -1.75, while a fraction with no finite decimal stays a fraction.
+TEST(Encoder, ARealWithAFiniteDecimalIsWrittenAsThatDecimal) {
+  const fretish::Domain d = domain("real wind in [-20, 20]\n");
+  for (const auto& [condition, text] :
+       std::vector<std::pair<std::string, std::string>>{{"125 * wind = 256", "2.048"},
+                                                        {"4 * wind = -7", "-1.75"},
+                                                        {"80 * wind = 1", "0.0125"},
+                                                        {"wind = 3", "3"},
+                                                        {"7 * wind = 2", "2/7"},
+                                                        {"6 * wind = 1", "1/6"}}) {
+    Encoder encoder(d);
+    std::vector<Finding> findings;
+    const auto parts = encoder.domain_parts(findings);
+    const auto guard = encoder.lower_condition(*expr(condition), kWhere, findings);
+    ASSERT_TRUE(guard) << condition;
+    z3::solver solver(encoder.context());
+    for (const auto& p : parts) solver.add(p.constraint);
+    solver.add(*guard);
+    ASSERT_EQ(solver.check(), z3::sat);
+    EXPECT_EQ(encoder.state_of(solver.get_model())[0].second.text, text) << condition;
+  }
+}
+
 TEST(Encoder, DomainPartsDescribeRangesEnumsAndAssumptions) {
   const fretish::Domain d = domain(
       "integer battery in [0, 100]\nenum terrain in {dust, rocks}\nboolean A\n"
