@@ -285,9 +285,17 @@ TEST(EvaluatorAgreement, IntegerOverflowHasNoValue) {
   EXPECT_EQ(exact.witness_checker, std::optional<bool>(true)) << exact.text();
 }
 
-// `x ^ y` is a real power (its type is real unless the exponent is a whole number written out).
+// `x ^ y` is a real power (its type is real unless the exponent is a whole number written
+// out): its quotient is exact, and a negative exponent gives a fraction.
 TEST(EvaluatorAgreement, PowerWithAVariableExponentIsReal) {
   Point p;
+  p.x = 3;
+  p.y = 1;
+  for (const char* text : {"x ^ y / 2 = 1.5", "(x ^ 2) / 2 = 4"}) {
+    const Answers a = answers(text, p);
+    EXPECT_TRUE(a.agree()) << text << ": " << a.text();
+    EXPECT_EQ(a.witness_checker, std::optional<bool>(true)) << text << ": " << a.text();
+  }
   p.x = 2;
   p.y = -1;
   const Answers a = answers("x ^ y = 0.5", p);
