@@ -1,6 +1,5 @@
 #include "monitor/expression.hpp"
 
-#include <cmath>
 #include <cstdlib>
 
 namespace uabt::monitor {
@@ -96,12 +95,7 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
   N n;
   switch (e.kind) {
     case ExprKind::bool_literal: n.constant = Val::of_bool(e.bool_value); break;
-    case ExprKind::number: {
-      const double x = std::strtod(e.text.c_str(), nullptr);
-      const bool integer = e.text.find_first_of(".eE") == std::string::npos;
-      n.constant = integer ? Val::of_integer(x) : Val::of_number(x);
-      break;
-    }
+    case ExprKind::number: n.constant = fretish::number_literal(e.text); break;
     case ExprKind::identifier: {
       const Resolved r = resolve(e.text);
       if (r.kind == Resolved::Kind::unknown && e.text == "FTP") {
@@ -157,34 +151,18 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
           if (x < 0) return -1;
           n.args.push_back(x);
         }
+      } else if (f.starts_with("pre")) {
+        n.kind = K::previous;
       } else {
-        n.kind = f.rfind("abs", 0) == 0   ? K::abs
-                 : f.rfind("min", 0) == 0 ? K::min
-                 : f.rfind("max", 0) == 0 ? K::max
-                 : f == "ite"             ? K::ite
-                                          : K::previous;
+        n.kind = K::apply;
+        n.op = fretish::operator_of(e);
       }
       break;
     }
-    case ExprKind::logical_not: n.kind = K::logical_not; break;
-    case ExprKind::logical_and: n.kind = K::logical_and; break;
-    case ExprKind::logical_or: n.kind = K::logical_or; break;
-    case ExprKind::logical_xor: n.kind = K::logical_xor; break;
-    case ExprKind::implies: n.kind = K::implies; break;
-    case ExprKind::iff: n.kind = K::iff; break;
-    case ExprKind::eq: n.kind = K::eq; break;
-    case ExprKind::ne: n.kind = K::ne; break;
-    case ExprKind::lt: n.kind = K::lt; break;
-    case ExprKind::le: n.kind = K::le; break;
-    case ExprKind::gt: n.kind = K::gt; break;
-    case ExprKind::ge: n.kind = K::ge; break;
-    case ExprKind::add: n.kind = K::add; break;
-    case ExprKind::sub: n.kind = K::sub; break;
-    case ExprKind::mul: n.kind = K::mul; break;
-    case ExprKind::div: n.kind = K::div; break;
-    case ExprKind::mod: n.kind = K::mod; break;
-    case ExprKind::pow: n.kind = K::pow; break;
-    case ExprKind::negate: n.kind = K::negate; break;
+    default:
+      n.kind = K::apply;
+      n.op = fretish::operator_of(e);
+      break;
   }
   const bool temporal = n.kind == K::persisted || n.kind == K::occurred || n.kind == K::prev_occ;
   if (!temporal) {
@@ -218,13 +196,16 @@ bool CompiledExpression::update_temporal(const std::vector<Val>& frame, std::str
   const bool in_mode = field_ == Field::mode;
   const bool left = !in_mode && (left_ ? *left_ : first_tick_);
   const auto boolean = [&](int node) -> std::optional<bool> {
-    const Val v = eval(node, frame, error);
-    if (!error.empty()) return std::nullopt;
+    const Val v = eval(node, frame);
+    if (!v.known()) {
+      error = message(v);
+      return std::nullopt;
+    }
     if (v.kind != Val::Kind::boolean) {
       error = std::string("a boolean is needed, got ") + kind_name(v.kind);
       return std::nullopt;
     }
-    return v.number != 0;
+    return v.truth();
   };
   const auto older = [](std::uint64_t age, std::uint64_t bound) {
     return age > bound ? bound + 1 : age + 1;
@@ -266,17 +247,23 @@ bool CompiledExpression::update_temporal(const std::vector<Val>& frame, std::str
   return true;
 }
 
+std::string CompiledExpression::message(const Val& v) const {
+  if (v.fault == Val::Fault::unset || v.kind == Val::Kind::missing)
+    return unset_.empty() ? "no value" : "'" + unset_ + "' has no value";
+  return fretish::fault_text(v.fault);
+}
+
 Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& error) {
+  unset_.clear();
   if (!temporal_nodes_.empty() && !update_temporal(frame, error)) return {};
-  const Val v = eval(root_, frame, error);
+  const Val v = eval(root_, frame);
+  if (!v.known()) error = message(v);
   // pre*: read this tick's argument values first, then store them all, so nested ones and
   // short-circuited branches see the same previous values.
   std::vector<Val> now;
   now.reserve(previous_nodes_.size());
-  for (int p : previous_nodes_) {
-    std::string ignored;
-    now.push_back(eval(nodes_[static_cast<std::size_t>(p)].args[1], frame, ignored));
-  }
+  for (int p : previous_nodes_)
+    now.push_back(eval(nodes_[static_cast<std::size_t>(p)].args[1], frame));
   first_tick_ = false;
   for (std::size_t i = 0; i < previous_nodes_.size(); ++i) {
     Previous& state = previous_[static_cast<std::size_t>(
@@ -294,140 +281,32 @@ bool CompiledExpression::evaluate_bool(const std::vector<Val>& frame, std::strin
     error = std::string("the expression is ") + kind_name(v.kind) + ", not a boolean";
     return false;
   }
-  return v.number != 0;
+  return v.truth();
 }
 
-Val CompiledExpression::eval(int id, const std::vector<Val>& frame, std::string& error) {
+Val CompiledExpression::eval(int id, const std::vector<Val>& frame) {
   const N& n = nodes_[static_cast<std::size_t>(id)];
-  const auto arg = [&](std::size_t i) { return eval(n.args[i], frame, error); };
-  const auto boolean = [&](std::size_t i) -> std::optional<bool> {
-    const Val v = arg(i);
-    if (!error.empty()) return std::nullopt;
-    if (v.kind != Val::Kind::boolean) {
-      error = std::string("a boolean is needed, got ") + kind_name(v.kind);
-      return std::nullopt;
-    }
-    return v.number != 0;
-  };
-  bool integers = true;  // every number operand read so far is an integer
-  const auto number = [&](std::size_t i) -> std::optional<double> {
-    const Val v = arg(i);
-    if (!error.empty()) return std::nullopt;
-    if (v.kind != Val::Kind::number) {
-      error = std::string("a number is needed, got ") + kind_name(v.kind);
-      return std::nullopt;
-    }
-    integers = integers && v.integer;
-    return v.number;
-  };
-  const auto result = [&](double x) { return integers ? Val::of_integer(x) : Val::of_number(x); };
   switch (n.kind) {
     case K::constant: return n.constant;
     case K::variable: {
       const Val& v = frame[static_cast<std::size_t>(n.slot)];
-      if (v.kind == Val::Kind::missing && error.empty()) error = "'" + n.name + "' has no value";
+      if (!v.known() && unset_.empty()) unset_ = n.name;
       return v;
     }
-    case K::logical_not: {
-      const auto a = boolean(0);
-      return a ? Val::of_bool(!*a) : Val{};
-    }
-    case K::logical_and:
-    case K::logical_or: {
-      const bool is_and = n.kind == K::logical_and;
-      for (std::size_t i = 0; i < n.args.size(); ++i) {
-        const auto a = boolean(i);
-        if (!a) return {};
-        if (*a != is_and) return Val::of_bool(!is_and);
+    case K::apply: {
+      Val small[3];
+      std::vector<Val> many;
+      Val* args = small;
+      if (n.args.size() > 3) {
+        many.resize(n.args.size());
+        args = many.data();
       }
-      return Val::of_bool(is_and);
-    }
-    case K::implies: {
-      const auto a = boolean(0);
-      if (!a) return {};
-      if (!*a) return Val::of_bool(true);
-      const auto b = boolean(1);
-      return b ? Val::of_bool(*b) : Val{};
-    }
-    case K::logical_xor:
-    case K::iff: {
-      const auto a = boolean(0);
-      const auto b = a ? boolean(1) : std::nullopt;
-      if (!b) return {};
-      return Val::of_bool(n.kind == K::iff ? *a == *b : *a != *b);
-    }
-    case K::eq:
-    case K::ne: {
-      const Val a = arg(0);
-      const Val b = error.empty() ? arg(1) : Val{};
-      if (!error.empty()) return {};
-      if (a.kind != b.kind) {
-        error = std::string("compares ") + kind_name(a.kind) + " with " + kind_name(b.kind);
-        return {};
-      }
-      const bool same = a.kind == Val::Kind::symbol ? a.symbol == b.symbol : a.number == b.number;
-      return Val::of_bool(n.kind == K::eq ? same : !same);
-    }
-    case K::lt:
-    case K::le:
-    case K::gt:
-    case K::ge: {
-      const auto a = number(0);
-      const auto b = a ? number(1) : std::nullopt;
-      if (!b) return {};
-      switch (n.kind) {
-        case K::lt: return Val::of_bool(*a < *b);
-        case K::le: return Val::of_bool(*a <= *b);
-        case K::gt: return Val::of_bool(*a > *b);
-        default: return Val::of_bool(*a >= *b);
-      }
-    }
-    case K::negate:
-    case K::abs: {
-      const auto a = number(0);
-      if (!a) return {};
-      return result(n.kind == K::negate ? -*a : std::fabs(*a));
-    }
-    case K::add:
-    case K::sub:
-    case K::mul:
-    case K::div:
-    case K::mod:
-    case K::pow:
-    case K::min:
-    case K::max: {
-      const auto a = number(0);
-      const auto b = a ? number(1) : std::nullopt;
-      if (!b) return {};
-      switch (n.kind) {
-        case K::add: return result(*a + *b);
-        case K::sub: return result(*a - *b);
-        case K::mul: return result(*a * *b);
-        case K::min: return result(std::fmin(*a, *b));
-        case K::max: return result(std::fmax(*a, *b));
-        case K::pow: {
-          // A negative integer exponent has a fraction for a result.
-          if (*b < 0) integers = false;
-          return result(std::pow(*a, *b));
-        }
-        default: break;
-      }
-      if (*b == 0) {
-        error = "division by zero";
-        return {};
-      }
-      // Integers: quotient truncated toward zero, remainder with the sign of the dividend.
-      if (n.kind == K::div) return result(integers ? std::trunc(*a / *b) : *a / *b);
-      return result(std::fmod(*a, *b));
-    }
-    case K::ite: {
-      const auto c = boolean(0);
-      if (!c) return {};
-      return arg(*c ? 1 : 2);
+      for (std::size_t i = 0; i < n.args.size(); ++i) args[i] = eval(n.args[i], frame);
+      return fretish::apply(n.op, args, n.args.size());
     }
     case K::previous: {
       const Previous& p = previous_[static_cast<std::size_t>(n.state)];
-      return p.seen ? p.value : arg(0);
+      return p.seen ? p.value : eval(n.args[0], frame);
     }
     case K::first_tick: return Val::of_bool(first_tick_);
     case K::persisted:

@@ -6,26 +6,17 @@
 #include <unordered_map>
 #include <vector>
 
+#include "fretish/evaluate.hpp"
 #include "fretish/expr.hpp"
 
 namespace uabt::monitor {
 
-// The value of one variable at one tick. Enum literals and other names are interned symbols.
-// A number is an integer when its variable is declared integer, its literal or JSON value is
-// written without a fraction or exponent, or it is computed from integers: then `/` and `mod`
-// truncate toward zero, as FRET's targets (C, Lustre, SMV) compute them.
-struct Val {
-  enum class Kind : std::uint8_t { missing, boolean, number, symbol };
-  Kind kind = Kind::missing;
-  double number = 0;  // booleans as 0/1
-  int symbol = -1;
-  bool integer = false;  // a number of integer type
-
-  static Val of_bool(bool b) { return {Kind::boolean, b ? 1.0 : 0.0, -1, false}; }
-  static Val of_number(double x) { return {Kind::number, x, -1, false}; }
-  static Val of_integer(double x) { return {Kind::number, x, -1, true}; }
-  static Val of_symbol(int s) { return {Kind::symbol, 0, s, false}; }
-};
+// The value of one variable at one tick, and of an expression: fretish::Val, whose operators
+// are the one meaning every evaluator shares (ARCHITECTURE §14). Enum literals and other names
+// are interned symbols. A number is an integer when its variable is declared integer, its
+// literal or JSON value is written without a fraction or exponent, or it is computed from
+// integers.
+using Val = fretish::Val;
 
 // Names numbered in order of first use: the variables of a trace (one slot a name, shared by
 // every monitor of a run) and the symbols that are values (enum literals, alternatives).
@@ -92,29 +83,7 @@ class CompiledExpression {
   enum class K : std::uint8_t {
     constant,
     variable,
-    logical_not,
-    logical_and,
-    logical_or,
-    logical_xor,
-    implies,
-    iff,
-    eq,
-    ne,
-    lt,
-    le,
-    gt,
-    ge,
-    add,
-    sub,
-    mul,
-    div,
-    mod,
-    pow,
-    negate,
-    abs,
-    min,
-    max,
-    ite,
+    apply,  // a connective, relation, arithmetic or function: fretish::apply
     previous,
     first_tick,
     persisted,  // FRET: (H[<=n] p) & (H[<n] !$Left$)
@@ -123,6 +92,7 @@ class CompiledExpression {
   };
   struct N {
     K kind = K::constant;
+    fretish::Op op = fretish::Op::unknown;
     std::vector<int> args;
     Val constant;
     int slot = -1;
@@ -131,7 +101,9 @@ class CompiledExpression {
     std::uint64_t bound = 0;  // persisted, occurred: n
   };
   int build(const fretish::Expr& e, const Resolver& resolve, std::string& error);
-  Val eval(int node, const std::vector<Val>& frame, std::string& error);
+  Val eval(int node, const std::vector<Val>& frame);
+  std::string unset_;  // this tick: the first variable read that has no value
+  std::string message(const Val& v) const;
 
   std::vector<N> nodes_;
   int root_ = -1;

@@ -62,7 +62,7 @@ std::optional<SymValue> run_script(z3::context& ctx, const runtime::script::Prog
 // The truth a script result has for BT.CPP (ScriptCondition): booleans and numbers.
 z3::expr script_truth(const SymValue& v, const std::string& where);
 
-// A FRETISH expression over observables, with monitor/expression.cpp's meaning on the typed
+// A FRETISH expression over observables, with fretish/evaluate.cpp's meaning on the typed
 // subset it accepts. `resolve` gives an identifier's value (throws when unknown).
 SymValue fretish_value(z3::context& ctx, const fretish::Expr& e,
                        const std::function<SymValue(const std::string&)>& resolve,

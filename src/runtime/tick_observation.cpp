@@ -79,7 +79,7 @@ monitor::Val TickObservation::value_of(const ScriptValue& v, monitor::Symbols& s
   switch (v.kind) {
     case K::empty: return {};
     case K::boolean: return monitor::Val::of_bool(v.boolean);
-    case K::integer: return monitor::Val::of_integer(static_cast<double>(v.integer));
+    case K::integer: return monitor::Val::of_whole(v.integer);
     case K::real: return monitor::Val::of_number(v.real);
     case K::string: return monitor::Val::of_symbol(symbols.id(v.text));
   }

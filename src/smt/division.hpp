@@ -4,7 +4,7 @@
 namespace uabt::smt {
 
 // FRETISH's integer `a / b`: the quotient truncated toward zero, as FRET's targets (C, Lustre,
-// SMV) and the concrete evaluators (smt/evaluate.cpp, monitor/expression.cpp) compute it.
+// SMV) and the concrete evaluator (fretish/evaluate.cpp, ARCHITECTURE §14) compute it.
 // SMT-LIB's div is Euclidean, which agrees with truncation for a non-negative dividend.
 inline z3::expr truncated_quotient(const z3::expr& a, const z3::expr& b) {
   return z3::ite(a >= 0, a / b, -((-a) / b));

@@ -9,16 +9,14 @@
 
 namespace uabt::smt {
 
-// Thrown when a condition has no value in a state: a division by zero, a name the state does
-// not assign, an ill-typed operation.
+// Thrown when a condition has no value in a state (fretish/evaluate.hpp says when).
 struct EvaluationError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
 // The truth value of a condition in a state, computed directly from the expression (no
-// solver), so that it can check what the solver claims. Exact for booleans, enums and
-// integers (division and mod truncated toward zero, as FRET's targets); reals use the state's
-// double approximation.
+// solver), so that it can check what the solver claims: fretish::evaluate over the state, the
+// meaning every evaluator shares (ARCHITECTURE §14).
 bool evaluate(const fretish::Expr& condition, const fretish::Domain& domain, const State& state);
 
 // Like evaluate, but nullopt instead of an EvaluationError.

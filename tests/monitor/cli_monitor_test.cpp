@@ -84,6 +84,24 @@ TEST(MonitorCli, MissingVariablesAreNotMonitoredWithTheReason) {
   EXPECT_EQ(doc["verdict"], "inconclusive");  // nothing violated, nothing to pass on
 }
 
+// A division by zero matters only where the result depends on it (ARCHITECTURE §14): a true
+// disjunct decides, whichever side it is written on; where none decides, the requirement is
+// not monitored with the reason.
+TEST(MonitorCli, ADivisionByZeroThatDoesNotDecideTheResultIsNoReasonToGiveUp) {
+  TempMission files(Files{{"r.fret",
+                           "Safe: the rover shall always satisfy 10 / x > 1 | x = 0\n"
+                           "Other: the rover shall always satisfy 10 / x > 1 | x = 1\n"},
+                          {"run.jsonl",
+                           "{\"tick\": 0, \"state\": {\"x\": 5}}\n"
+                           "{\"tick\": 1, \"state\": {\"x\": 0}}\n"}});
+  const CliRun run = uabt_in(files.dir(), "monitor r.fret run.jsonl --format json");
+  const auto doc = nlohmann::json::parse(run.out);
+  EXPECT_EQ(doc["requirements"][0]["verdict"], "held") << run.out;
+  EXPECT_EQ(doc["requirements"][1]["verdict"], "not-monitored") << run.out;
+  EXPECT_EQ(doc["requirements"][1]["reason"], "at tick 1, the response: division by zero")
+      << run.out;
+}
+
 // FRET formalizes nextOcc only in future time; the monitor says so in FRET's terms, and a
 // persisted(n, p) whose n is not a number is refused as FRET leaves it unexpanded.
 TEST(MonitorCli, TemporalFunctionsFretCannotMonitorAreNamedWithFretsReason) {
