@@ -44,6 +44,20 @@ std::optional<std::string> read_text_file(const fs::path& path, std::string& err
   return buffer.str();
 }
 
+bool lies_inside(const fs::path& path, const fs::path& folder) {
+  std::error_code ec;
+  const fs::path target = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) return false;
+  const fs::path base = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+  if (ec) return false;
+  const fs::path inside = target.lexically_relative(base);
+  return !inside.empty() && *inside.begin() != "..";
+}
+
+std::string outside_folder_error(const std::string& what) {
+  return "leads outside " + what + " through a symbolic link; uabt reads only files inside it";
+}
+
 namespace {
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& what) {

@@ -13,6 +13,16 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = 16u * 1024u * 1024u;
 // Reads a whole file. Returns nullopt and sets `error` when it cannot be read or is too large.
 std::optional<std::string> read_text_file(const std::filesystem::path& path, std::string& error);
 
+// Whether `path` lies inside `folder` once every symbolic link in both is resolved
+// (weakly_canonical): the one rule for the files of a mission folder (mission.xml,
+// alternatives, domain.fret, requirements, nodes.xml, world.json, <include>d files) and of an
+// uplink package. A symlink that leads out of the folder is refused as an <include> outside it
+// is, unread, so that nothing of the outside file is ever shown.
+bool lies_inside(const std::filesystem::path& path, const std::filesystem::path& folder);
+
+// Why a file of `what` ("the mission folder") that does not lie inside it is not read.
+std::string outside_folder_error(const std::string& what);
+
 // A path uabt cannot write its output to (a directory where a file goes, a fifo, a folder
 // that is a file, a device that refuses the bytes): a command-line error, exit 2. The message
 // names the path and what is wrong with it.

@@ -456,8 +456,7 @@ class FileReader {
     }
     std::error_code ec;
     const fs::path target = fs::weakly_canonical(dir / relative, ec);
-    const fs::path inside = target.lexically_relative(confine_);
-    if (ec || inside.empty() || *inside.begin() == "..") {
+    if (ec || !lies_inside(target, confine_)) {
       return fail("include path '" + written + "' leaves the mission directory");
     }
     if (!fs::is_regular_file(target, ec)) {

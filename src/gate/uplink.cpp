@@ -105,10 +105,12 @@ void write_merged_mission(const load::Mission& m, const fs::path& dir) {
   bool declares = !m.domain.assumptions.empty();
   for (const auto& v : m.domain.variables) declares |= v.declared;
   if (declares) write_file_atomically(dir / "domain.fret", domain_text(m));
-  if (m.nodes && fs::is_regular_file(m.dir / "nodes.xml", ec))
+  // Only the mission folder's own files: one a symlink leads out of was never read.
+  if (m.nodes && fs::is_regular_file(m.dir / "nodes.xml", ec) &&
+      lies_inside(m.dir / "nodes.xml", m.dir))
     write_file_atomically(dir / "nodes.xml", read_or_throw(m.dir / "nodes.xml"));
   // The world model the guarantees are proved in (an uplink does not change the world).
-  if (fs::is_regular_file(m.dir / "world.json", ec))
+  if (fs::is_regular_file(m.dir / "world.json", ec) && lies_inside(m.dir / "world.json", m.dir))
     write_file_atomically(dir / "world.json", read_or_throw(m.dir / "world.json"));
 }
 

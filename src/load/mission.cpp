@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/files.hpp"
+#include "bt/node_kinds.hpp"
 #include "bt/structure.hpp"
 #include "bt/xml_io.hpp"
 #include "fretish/durations.hpp"
@@ -51,8 +52,26 @@ bool Mission::first_hit(const std::string& adaptable) const {
 
 namespace {
 
-std::optional<std::string> read_or_report(const fs::path& path, const std::string& shown,
+// The folder a file comes from: the mission's, or an uplink package's.
+struct Folder {
+  fs::path path;
+  std::string what;  // "the mission folder"
+};
+
+// A file of a folder is read only when it lies inside it, as an <include> must: one a symbolic
+// link leads out of is refused unread, so that nothing of the outside file is shown.
+bool inside_or_report(const fs::path& path, const Folder& folder, const std::string& shown,
+                      std::vector<Finding>& findings) {
+  if (lies_inside(path, folder.path)) return true;
+  findings.push_back(
+      make_finding("load-file", shown + ": " + outside_folder_error(folder.what), {shown, 0, 0}));
+  return false;
+}
+
+std::optional<std::string> read_or_report(const fs::path& path, const Folder& folder,
+                                          const std::string& shown,
                                           std::vector<Finding>& findings) {
+  if (!inside_or_report(path, folder, shown, findings)) return std::nullopt;
   std::string error;
   auto text = read_text_file(path, error);
   if (!text) findings.push_back(make_finding("load-file", shown + ": " + error, {shown, 0, 0}));
@@ -150,9 +169,10 @@ std::string line_of(const std::string& text, int number) {
 // Parses a requirements file: the mission's own, or an uplink package's (then the caller
 // merges it).
 std::optional<std::vector<fretish::Requirement>> parse_requirements(Mission& m,
-                                                                    const fs::path& path) {
+                                                                    const fs::path& path,
+                                                                    const Folder& folder) {
   const std::string shown = display_path(path, m.dir);
-  auto text = read_or_report(path, shown, m.findings);
+  auto text = read_or_report(path, folder, shown, m.findings);
   if (!text) return std::nullopt;
   fretish::ParseResult parsed = path.extension() == ".json"
                                     ? fretish::parse_fret_json(*text, shown, m.domain)
@@ -180,9 +200,9 @@ void redeclared(Mission& m, const std::string& what, const SourceLocation& here,
 // The mission's domain.fret, or (`package`) an uplink package's, merged onto the domain: a
 // package may repeat a declaration, an assumption or the tick period as the mission has them,
 // and may add new ones; a different one is an error naming both.
-void load_domain(Mission& m, const fs::path& path, bool package = false) {
+void load_domain(Mission& m, const fs::path& path, const Folder& folder, bool package = false) {
   const std::string shown = display_path(path, m.dir);
-  auto text = read_or_report(path, shown, m.findings);
+  auto text = read_or_report(path, folder, shown, m.findings);
   if (!text) return;
   const std::size_t first = m.findings.size();
   fretish::Domain declared = fretish::parse_domain_file(*text, shown, m.findings);
@@ -234,18 +254,60 @@ void load_domain(Mission& m, const fs::path& path, bool package = false) {
   }
 }
 
+// The column of the element on `line` of `text` that has ID="id" (0 when it is not there: the
+// entry came from an included file).
+int entry_column(const std::string& text, int line, const std::string& id) {
+  std::size_t begin = 0;
+  for (int k = 1; k < line && begin != std::string::npos; ++k) {
+    begin = text.find('\n', begin);
+    if (begin != std::string::npos) ++begin;
+  }
+  if (begin == std::string::npos) return 0;
+  const std::string row = text.substr(begin, text.find('\n', begin) - begin);
+  for (const char quote : {'"', '\''}) {
+    const std::size_t at = row.find(std::string("ID=") + quote + id + quote);
+    if (at == std::string::npos) continue;
+    const std::size_t open = row.rfind('<', at);
+    if (open != std::string::npos) return static_cast<int>(open) + 1;
+  }
+  return 0;
+}
+
 // A --nodes file outside the mission is named relative to the mission directory too
 // (display_path), like every finding's file, so that the mission's path in front of it opens it.
+// nodes.xml lists what the robot registers with BehaviorTree.CPP's factory, which already holds
+// every 4.x built-in: a built-in ID there is a second registration, refused on board (the v3
+// spellings are not built into 4.x, so a robot may register them).
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
   auto doc = bt::read_document(path, read_options, m.findings);
-  if (doc) m.nodes = doc->node_models;
+  if (!doc) return;
+  std::string error;
+  const std::string text = read_text_file(path, error).value_or("");
+  for (const auto& model : doc->node_models) {
+    const bt::BuiltinNode* builtin = bt::find_builtin(model.id);
+    if (builtin == nullptr || builtin->v3 || bt::family_named(model.family) == bt::Family::subtree)
+      continue;
+    const int column = entry_column(text, model.line, model.id);
+    if (column == 0) continue;  // an included file's entry: its own line is not known here
+    Finding f = make_finding("ref-duplicate-id",
+                             "node ID '" + model.id + "' is built into BehaviorTree.CPP 4.x, and " +
+                                 doc->file + " registers it again",
+                             {doc->file, model.line, column});
+    f.notes.push_back(
+        "BehaviorTree.CPP refuses to register an ID twice: remove the entry (the built-in needs "
+        "none), or give the robot's own node another ID");
+    m.findings.push_back(std::move(f));
+  }
+  m.nodes = doc->node_models;
 }
 
 void load_alternatives(Mission& m, const std::vector<AlternativeFile>& files,
-                       const bt::ReadOptions& read_options) {
+                       const bt::ReadOptions& read_options, const Folder& folder) {
   for (const auto& file : files) {
     const std::string key = file.adaptable + "/" + file.name;
-    auto doc = bt::read_document(file.path, read_options, m.findings);
+    std::optional<bt::Document> doc;
+    if (inside_or_report(file.path, folder, display_path(file.path, m.dir), m.findings))
+      doc = bt::read_document(file.path, read_options, m.findings);
     if (!doc) {
       m.unreadable_alternatives[key] = display_path(file.path, m.dir);
       continue;
@@ -401,17 +463,19 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
     return;
   }
   m.uplinks.push_back(shown);
+  const Folder package{uplink, "the uplink package"};
   report_package_strays(m, uplink);
   bool has_content = false;
   UplinkPlan plan;
   if (fs::exists(uplink / "uplink.json", ec)) {
-    plan = read_uplink_plan(uplink / "uplink.json", display_path(uplink / "uplink.json", m.dir),
-                            m.findings);
+    const std::string plan_shown = display_path(uplink / "uplink.json", m.dir);
+    if (inside_or_report(uplink / "uplink.json", package, plan_shown, m.findings))
+      plan = read_uplink_plan(uplink / "uplink.json", plan_shown, m.findings);
     has_content = true;
   }
   std::vector<fretish::Requirement> incoming;
   if (fs::is_regular_file(uplink / "requirements.fret", ec)) {
-    if (auto parsed = parse_requirements(m, uplink / "requirements.fret"))
+    if (auto parsed = parse_requirements(m, uplink / "requirements.fret", package))
       incoming = std::move(*parsed);
     has_content = true;
   }
@@ -421,11 +485,11 @@ void merge_uplink(Mission& m, const fs::path& uplink, const bt::ReadOptions& rea
     m.consents.push_back(std::move(consent));
   }
   if (fs::is_regular_file(uplink / "domain.fret", ec)) {
-    load_domain(m, uplink / "domain.fret", /*package=*/true);
+    load_domain(m, uplink / "domain.fret", package, /*package=*/true);
     has_content = true;
   }
   if (auto alternatives = discover_alternatives(uplink / "alternatives"); !alternatives.empty()) {
-    load_alternatives(m, alternatives, read_options);
+    load_alternatives(m, alternatives, read_options, package);
     has_content = true;
   }
   if (!has_content)
@@ -452,27 +516,32 @@ std::optional<Mission> load_mission(const fs::path& dir, const LoadOptions& opti
   read_options.confine_to = dir;
   read_options.display_base = dir;
 
-  if (auto doc = bt::read_document(layout->mission_xml, read_options, m.findings)) {
-    m.tree = std::move(*doc);
-    for (const auto& t : m.tree.trees)
-      collect_adaptables(t.root, t.id, t.file, m.adaptables, m.findings);
+  const Folder folder{dir, "the mission folder"};
+  if (inside_or_report(layout->mission_xml, folder, display_path(layout->mission_xml, dir),
+                       m.findings)) {
+    if (auto doc = bt::read_document(layout->mission_xml, read_options, m.findings)) {
+      m.tree = std::move(*doc);
+      for (const auto& t : m.tree.trees)
+        collect_adaptables(t.root, t.id, t.file, m.adaptables, m.findings);
+    }
   }
 
   if (layout->requirements.empty())
     m.findings.push_back(
         make_finding("load-file", "no requirements file (requirements.fret or requirements.json)",
                      {display_path(dir, dir), 0, 0}));
-  else if (auto parsed = parse_requirements(m, layout->requirements))
+  else if (auto parsed = parse_requirements(m, layout->requirements, folder))
     m.requirements = std::move(*parsed);
   if (!layout->requirements.empty()) m.requirements_file = display_path(layout->requirements, dir);
 
-  if (layout->domain) load_domain(m, *layout->domain);
+  if (layout->domain) load_domain(m, *layout->domain, folder);
   if (options.nodes_file)
     load_nodes(m, *options.nodes_file, read_options);
-  else if (layout->nodes)
+  else if (layout->nodes &&
+           inside_or_report(*layout->nodes, folder, display_path(*layout->nodes, dir), m.findings))
     load_nodes(m, *layout->nodes, read_options);
 
-  load_alternatives(m, layout->alternatives, read_options);
+  load_alternatives(m, layout->alternatives, read_options, folder);
   report_layout_mistakes(m, *layout);
   for (const auto& uplink : options.uplinks) merge_uplink(m, uplink, read_options);
   fretish::Classification classified = fretish::classify_requirements(m.requirements, m.findings);

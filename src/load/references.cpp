@@ -134,7 +134,8 @@ void selection_references(Mission& m) {
   for (const auto& s : m.selections) {
     selected.insert({s.adaptable, s.alternative});
     if (!adaptable_ids.count(s.adaptable)) {
-      if (id_missing) continue;  // bt-structure reports the <Adaptable> without an ID
+      if (id_missing) continue;            // bt-structure reports the <Adaptable> without an ID
+      if (m.tree.trees.empty()) continue;  // mission.xml is unreadable (reported): nodes unknown
       std::vector<std::string> known(adaptable_ids.begin(), adaptable_ids.end());
       Finding f =
           make_finding("ref-unknown-adaptable",

@@ -1,7 +1,7 @@
 #include "load/unknowable.hpp"
 
+#include <algorithm>
 #include <cctype>
-#include <map>
 #include <set>
 
 namespace uabt::load {
@@ -46,40 +46,18 @@ void unparsed_requirements(Mission& m) {
   }
 }
 
-// Variables an invalid declaration taints, each with the reason: the invalid ones and,
-// through each assumption, every variable that shares an assumption with a tainted one.
-std::map<std::string, std::string> tainted_variables(const Mission& m) {
-  std::map<std::string, std::string> tainted;
-  for (const auto& v : m.domain.variables)
-    if (!v.invalid.empty())
-      tainted.emplace(v.name, "the declaration of '" + v.name + "' is invalid (" +
-                                  where(v.location) + ": " + v.invalid + ")");
-  for (bool grew = !tainted.empty(); grew;) {
-    grew = false;
-    for (const auto& a : m.domain.assumptions) {
-      if (!a.expr) continue;
-      const auto names = fretish::identifiers_of(*a.expr);
-      const std::string* reason = nullptr;
-      for (const auto& n : names)
-        if (auto it = tainted.find(n); it != tainted.end() && reason == nullptr)
-          reason = &it->second;
-      if (reason == nullptr) continue;
-      const std::string why = *reason;
-      for (const auto& n : names) grew |= tainted.emplace(n, why).second;
-    }
-  }
-  return tainted;
-}
-
+// A declaration that cannot be used as written (an empty range, a refused enum) leaves the
+// domain unknown: a range [4, 2] has no state at all, and an unbounded stand-in would give
+// witnesses outside what was declared. No guard is checked until it is fixed, as with an
+// inconsistent domain.
 void invalid_declarations(Mission& m) {
-  const auto tainted = tainted_variables(m);
-  if (tainted.empty()) return;
-  for (const auto& s : m.selections) {
-    if (!s.guard) continue;
-    for (const auto& name : fretish::identifiers_of(*s.guard))
-      if (auto it = tainted.find(name); it != tainted.end())
-        m.not_verified.emplace(s.adaptable, it->second);
-  }
+  const auto invalid = std::find_if(m.domain.variables.begin(), m.domain.variables.end(),
+                                    [](const fretish::Variable& v) { return !v.invalid.empty(); });
+  if (invalid == m.domain.variables.end()) return;
+  const std::string why = "the declaration of '" + invalid->name + "' is invalid (" +
+                          where(invalid->location) + ": " + invalid->invalid + ")";
+  for (const auto& site : m.adaptables)
+    if (!site.id.empty()) m.not_verified.emplace(site.id, why);
 }
 
 }  // namespace

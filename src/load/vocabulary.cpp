@@ -104,17 +104,22 @@ std::string vocabulary_files(const Mission& m) {
   return m.has_domain_file ? "domain.fret" : "nodes.xml";
 }
 
-// A line of domain.fret that does not parse may declare any name: "" when there is none,
-// else where it is.
-std::string unparsed_declaration(const Mission& m) {
+// A line of domain.fret that does not parse may declare any name, and so may an enum whose
+// literals were refused (too many of them): "" when there is neither, else what it is and where.
+std::string unknown_declaration(const Mission& m) {
   for (const auto& f : m.findings)
     if (f.check == "fretish-syntax" && fs_name(f.location.file) == "domain.fret")
-      return f.location.file + ":" + std::to_string(f.location.line);
+      return "the line of domain.fret that does not parse (" + f.location.file + ":" +
+             std::to_string(f.location.line) + ")";
+  for (const auto& v : m.domain.variables)
+    if (v.type == fretish::VarType::enumeration && !v.invalid.empty() && v.enum_values.empty())
+      return "the refused declaration of '" + v.name + "' (" + v.location.file + ":" +
+             std::to_string(v.location.line) + ")";
   return {};
 }
 
 void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
-  const std::string unparsed = unparsed_declaration(m);
+  const std::string unknown = unknown_declaration(m);
   const std::vector<std::string> declared = declared_names(m);
   const std::set<std::string> known(declared.begin(), declared.end());
   const std::string files = vocabulary_files(m);
@@ -127,10 +132,9 @@ void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
       if (known.count(id->text) || !reported.insert(id->text).second) continue;
       if (id->text == "FTP") continue;  // FRET's own name: report_first_time_point
       m.undeclared.insert(id->text);
-      if (!unparsed.empty()) {  // unknowable: the broken line may declare it
-        const std::string why = source_of(use) + " reads '" + id->text +
-                                "', which the line of domain.fret that does not parse (" +
-                                unparsed + ") may declare";
+      if (!unknown.empty()) {  // unknowable: the broken declaration may declare it
+        const std::string why =
+            source_of(use) + " reads '" + id->text + "', which " + unknown + " may declare";
         for (const auto& site : m.adaptables)
           if (!site.id.empty() && (use.adaptable.empty() || use.adaptable == site.id))
             m.not_verified.emplace(site.id, why);

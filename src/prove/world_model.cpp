@@ -372,6 +372,8 @@ WorldModel load_world(const std::filesystem::path& path, const std::string& disp
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw WorldError({display, 0, 0}, "is a directory, not a file: the world model is a JSON file");
+  if (mission != nullptr && !lies_inside(path, mission->dir))
+    throw WorldError({display, 0, 0}, outside_folder_error("the mission folder"));
   std::string error;
   const auto text = read_text_file(path, error);
   if (!text) throw WorldError({display, 0, 0}, error);

@@ -225,7 +225,9 @@ std::vector<Encoder::DomainPart> Encoder::domain_parts(std::vector<Finding>& fin
   const std::vector<Slot> declared = slots_;
   for (const Slot& slot : declared) {
     const fretish::Variable* v = slot.declaration;
-    if (v == nullptr) continue;
+    // An invalid declaration is reported as domain-invalid; its empty range or refused values
+    // are no part of the domain (no check is made over it until it is fixed).
+    if (v == nullptr || !v->invalid.empty()) continue;
     if (slot.sort == Sort::enumeration) {
       const int n = static_cast<int>(v->enum_values.size());
       std::string values;

@@ -15,12 +15,6 @@ using fretish::Expr;
 using fretish::ExprKind;
 using fretish::ExprPtr;
 
-struct Source {
-  ExprPtr expr;
-  SourceLocation where;  // the file, and a place when the expression has none
-  std::string what;      // "the guard of Req1"
-};
-
 // One division and the conditions under which it is evaluated at all.
 struct Division {
   const Expr* division;
@@ -57,8 +51,9 @@ struct DomainSession {
   explicit DomainSession(const fretish::Domain& domain, const Options& options)
       : encoder(domain), session(encoder, options, statistics) {
     std::vector<Finding> ignored;  // the domain's own findings are verify's
-    ready = detail::check_domain(session, encoder.domain_parts(ignored), ignored) ==
-            detail::Answer::sat;
+    ready = detail::domain_known(domain) &&
+            detail::check_domain(session, encoder.domain_parts(ignored), ignored) ==
+                detail::Answer::sat;
   }
   // A state where `question` holds.
   std::optional<State> witness(const Expr& question, const SourceLocation& where) {
@@ -97,9 +92,9 @@ std::optional<State> zero_divisor_state(const fretish::Domain& domain,
 }
 
 std::vector<Finding> check_divisions(const load::Mission& mission, const Options& options) {
-  std::vector<Source> sources;
+  std::vector<DivisionSource> sources;
   for (const auto& s : mission.selections)
-    if (s.guard) sources.push_back({s.guard, s.guard_location, "the guard of " + s.id});
+    if (s.guard) sources.push_back({s.guard, s.guard_location, "the guard of " + s.id, &s});
   for (const auto& r : mission.properties) {
     std::string component = r.component;
     for (char& c : component) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -112,19 +107,38 @@ std::vector<Finding> check_divisions(const load::Mission& mission, const Options
   }
   for (const auto& a : mission.domain.assumptions)
     if (a.expr) sources.push_back({a.expr, a.location, "assumption " + a.name});
+  return check_divisions(mission.domain, sources, options);
+}
 
-  std::vector<std::pair<const Source*, Division>> divisions;
-  for (const Source& s : sources) {
+std::vector<Finding> check_divisions(const fretish::Domain& domain_declared,
+                                     const std::vector<DivisionSource>& sources,
+                                     const Options& options) {
+  std::vector<std::pair<const DivisionSource*, Division>> divisions;
+  bool literal_zero = false;
+  for (const DivisionSource& s : sources) {
+    literal_zero |= s.literal_zero;
     std::vector<Division> found;
     std::vector<ExprPtr> context;
     collect(s.expr, context, found);
     for (auto& d : found) divisions.emplace_back(&s, std::move(d));
   }
   std::vector<Finding> out;
-  if (divisions.empty()) return out;
+  if (divisions.empty() && !literal_zero) return out;
 
-  DomainSession domain(mission.domain, options);
+  DomainSession domain(domain_declared, options);
   if (!domain.ready) return out;
+  for (const DivisionSource& s : sources) {
+    if (!s.literal_zero) continue;
+    std::vector<Finding> typing;
+    domain.encoder.lower_condition(*s.expr, s.where, typing);
+    for (auto& f : typing) {  // "'x / 0' divides by zero; …", at the division
+      if (f.check != "arith-division-by-zero") continue;
+      f.message = f.message.substr(0, f.message.find(" divides by zero")) + " in " + s.what +
+                  " divides by zero: " + s.consequence;
+      f.location = s.where;
+      out.push_back(std::move(f));
+    }
+  }
   for (const auto& [source, d] : divisions) {
     const ExprPtr divisor = d.division->args[1];
     const ExprPtr zero = is_zero(divisor);
@@ -148,9 +162,13 @@ std::vector<Finding> check_divisions(const load::Mission& mission, const Options
                              "'" + fretish::to_fretish(*d.division) + "' in " + source->what +
                                  " divides by zero when " + fretish::to_fretish(*divisor) +
                                  " = 0, which the domain allows (" + state_text(witness) +
-                                 "): the solver then gives it any value",
+                                 "): " + source->consequence,
                              at);
     f.witness = witness;
+    if (source->selection != nullptr) {
+      f.adaptable = source->selection->adaptable;
+      f.requirements = {source->selection->id};
+    }
     f.notes.push_back(
         "make the divisor non-zero where it is used (e.g. `d != 0 & x / d > 2`), or multiply "
         "out the comparison");

@@ -19,6 +19,12 @@ std::string where(const SourceLocation& l) {
 
 }  // namespace
 
+bool domain_known(const fretish::Domain& domain) {
+  for (const auto& v : domain.variables)
+    if (!v.invalid.empty()) return false;
+  return true;
+}
+
 Answer check_domain(Session& session, const std::vector<smt::Encoder::DomainPart>& parts,
                     std::vector<Finding>& findings) {
   if (parts.empty()) {  // no ranges, no enums, no assumptions: every assignment is a state

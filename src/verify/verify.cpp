@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <map>
 #include <set>
 #include <thread>
 
@@ -208,6 +209,16 @@ void report_not_verified(const load::AdaptableSite& site, const std::string& rea
 }  // namespace
 
 Result verify_mission(const load::Mission& mission, const Options& options) {
+  // A guard that divides by zero has no meaning where it does: its node's overlap, gap and
+  // reachability would be verdicts about the solver's choice of quotient, so it is not verified.
+  std::vector<Finding> divisions = check_divisions(mission, options);
+  std::map<std::string, std::string> dividing_by_zero;  // adaptable node -> why
+  for (const auto& f : divisions)
+    if (!f.adaptable.empty() && !f.requirements.empty())
+      dividing_by_zero.emplace(f.adaptable, "the guard of " + f.requirements.front() +
+                                                " divides by zero in a state of the domain (" +
+                                                f.location.file + ":" +
+                                                std::to_string(f.location.line) + ")");
   std::vector<NodeJob> jobs;
   std::set<std::string> seen;
   Result skipped;
@@ -217,6 +228,10 @@ Result verify_mission(const load::Mission& mission, const Options& options) {
     if (site.id.empty() || !seen.insert(site.id).second) continue;
     order.push_back(site.id);
     if (auto it = mission.not_verified.find(site.id); it != mission.not_verified.end()) {
+      report_not_verified(site, it->second, skipped);
+      continue;
+    }
+    if (auto it = dividing_by_zero.find(site.id); it != dividing_by_zero.end()) {
       report_not_verified(site, it->second, skipped);
       continue;
     }
@@ -238,7 +253,7 @@ Result verify_mission(const load::Mission& mission, const Options& options) {
     result.statistics.prefiltered += o.node.statistics.prefiltered;
   }
   for (auto& f : skipped.findings) result.findings.push_back(std::move(f));
-  for (auto& f : check_divisions(mission, options)) result.findings.push_back(std::move(f));
+  for (auto& f : divisions) result.findings.push_back(std::move(f));
   for (auto& f : tree::check_trees(mission)) result.findings.push_back(std::move(f));
   for (auto& f : tree::check_blackboard_and_scripts(mission, options))
     result.findings.push_back(std::move(f));

@@ -14,6 +14,8 @@ std::vector<Finding> check_blackboard_and_scripts(const load::Mission& mission,
     DomainQuestions questions(mission, options);
     for (auto& f : check_script_decided(graph, mission, questions)) out.push_back(std::move(f));
     for (auto& f : check_script_range(graph, mission, questions)) out.push_back(std::move(f));
+    for (auto& f : check_script_divisions(graph, mission, questions, options))
+      out.push_back(std::move(f));
   }
   return out;
 }

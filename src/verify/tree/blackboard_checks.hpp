@@ -31,6 +31,11 @@ std::vector<Finding> check_script_decided(const FlowGraph& graph, const load::Mi
 std::vector<Finding> check_script_range(const FlowGraph& graph, const load::Mission& mission,
                                         DomainQuestions& questions);
 
+// guard-division-by-zero, arith-division-by-zero: a script's division over the domain whose
+// divisor is zero, or can be where it is evaluated, checked as a guard's division is.
+std::vector<Finding> check_script_divisions(const FlowGraph& graph, const load::Mission& mission,
+                                            DomainQuestions& questions, const Options& options);
+
 // The blackboard and script checks above on the mission, its alternatives and merged uplinks.
 std::vector<Finding> check_blackboard_and_scripts(const load::Mission& mission,
                                                   const Options& options);

@@ -1,5 +1,7 @@
 #include "verify/tree/domain_questions.hpp"
 
+#include "verify/domain_check.hpp"
+
 namespace uabt::verify::tree {
 
 DomainQuestions::DomainQuestions(const load::Mission& mission, const Options& options)
@@ -7,7 +9,7 @@ DomainQuestions::DomainQuestions(const load::Mission& mission, const Options& op
   std::vector<Finding> ignored;  // the domain's own findings are verify's
   parts_ = encoder_.domain_parts(ignored);
   for (const auto& p : parts_) literals_.push_back(session_.guard(p.constraint, "domain"));
-  ready_ = session_.check(literals_) == detail::Answer::sat;
+  ready_ = detail::domain_known(mission.domain) && session_.check(literals_) == detail::Answer::sat;
 }
 
 bool DomainQuestions::over_domain(const fretish::Expr& e) const {

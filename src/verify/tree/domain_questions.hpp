@@ -18,7 +18,8 @@ class DomainQuestions {
  public:
   DomainQuestions(const load::Mission& mission, const Options& options);
 
-  // false: the domain is empty or undecided (verify reports that), or the condition does not
+  // false: the domain is empty, undecided or has an invalid declaration (verify reports
+  // that), or the condition does not
   // type-check over it; no question is answered then.
   bool usable() const { return ready_; }
 
