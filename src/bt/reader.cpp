@@ -335,6 +335,8 @@ class TextParser {
       model.family = entry->Name();
       model.id = attribute_or_empty(entry, "ID");
       model.line = at.line;
+      model.column = at.column;
+      model.file = at.file;
       if (model.id.empty()) {
         findings_.push_back(structure_finding(
             "<" + model.family + "> in <TreeNodesModel> needs an ID", file_, at.line, at.column));

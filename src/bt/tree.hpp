@@ -52,6 +52,8 @@ struct NodeModel {
   std::string id;
   std::vector<Port> ports;
   int line = 0;
+  int column = 0;    // of the entry's '<' (0 when generated, not read)
+  std::string file;  // displayed path of the file that holds the entry ("" when generated)
 };
 
 struct Document {

@@ -245,7 +245,7 @@ Result compile_mission(const load::Mission& m, const Options& options) {
     for (const fretish::Expr* atom : load::boolean_atoms(*s.guard)) {
       const fretish::Variable* v = m.domain.find(atom->text);
       if (v == nullptr || v->type != fretish::VarType::boolean) continue;
-      add_model(doc.node_models, known, bt::NodeModel{"Condition", atom->text, {}, 0});
+      add_model(doc.node_models, known, bt::NodeModel{"Condition", atom->text, {}, 0, 0, ""});
     }
   }
   // A leaf named after a boolean of the domain reads that boolean: a condition, whatever its
@@ -255,7 +255,7 @@ Result compile_mission(const load::Mission& m, const Options& options) {
     if (!n.children.empty() || n.tag != n.kind()) return;
     const fretish::Variable* v = m.domain.find(n.tag);
     if (v != nullptr && v->type == fretish::VarType::boolean)
-      add_model(doc.node_models, known, bt::NodeModel{"Condition", n.tag, {}, 0});
+      add_model(doc.node_models, known, bt::NodeModel{"Condition", n.tag, {}, 0, 0, ""});
   };
   for (const auto& t : doc.trees) leaves(t.root);
   result.ok = !has_errors(result.findings);

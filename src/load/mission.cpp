@@ -254,25 +254,6 @@ void load_domain(Mission& m, const fs::path& path, const Folder& folder, bool pa
   }
 }
 
-// The column of the element on `line` of `text` that has ID="id" (0 when it is not there: the
-// entry came from an included file).
-int entry_column(const std::string& text, int line, const std::string& id) {
-  std::size_t begin = 0;
-  for (int k = 1; k < line && begin != std::string::npos; ++k) {
-    begin = text.find('\n', begin);
-    if (begin != std::string::npos) ++begin;
-  }
-  if (begin == std::string::npos) return 0;
-  const std::string row = text.substr(begin, text.find('\n', begin) - begin);
-  for (const char quote : {'"', '\''}) {
-    const std::size_t at = row.find(std::string("ID=") + quote + id + quote);
-    if (at == std::string::npos) continue;
-    const std::size_t open = row.rfind('<', at);
-    if (open != std::string::npos) return static_cast<int>(open) + 1;
-  }
-  return 0;
-}
-
 // A --nodes file outside the mission is named relative to the mission directory too
 // (display_path), like every finding's file, so that the mission's path in front of it opens it.
 // nodes.xml lists what the robot registers with BehaviorTree.CPP's factory, which already holds
@@ -281,18 +262,14 @@ int entry_column(const std::string& text, int line, const std::string& id) {
 void load_nodes(Mission& m, const fs::path& path, const bt::ReadOptions& read_options) {
   auto doc = bt::read_document(path, read_options, m.findings);
   if (!doc) return;
-  std::string error;
-  const std::string text = read_text_file(path, error).value_or("");
   for (const auto& model : doc->node_models) {
     const bt::BuiltinNode* builtin = bt::find_builtin(model.id);
     if (builtin == nullptr || builtin->v3 || bt::family_named(model.family) == bt::Family::subtree)
       continue;
-    const int column = entry_column(text, model.line, model.id);
-    if (column == 0) continue;  // an included file's entry: its own line is not known here
     Finding f = make_finding("ref-duplicate-id",
                              "node ID '" + model.id + "' is built into BehaviorTree.CPP 4.x, and " +
-                                 doc->file + " registers it again",
-                             {doc->file, model.line, column});
+                                 model.file + " registers it again",
+                             {model.file, model.line, model.column});
     f.notes.push_back(
         "BehaviorTree.CPP refuses to register an ID twice: remove the entry (the built-in needs "
         "none), or give the robot's own node another ID");

@@ -40,13 +40,15 @@ uabt::load::Mission generated(int nodes) {
   battery.lower = "0";
   battery.upper = "100";
   m.domain.variables.push_back(battery);
-  uabt::bt::NodeModel plan{"Action", "Plan", {{"output_port", "out", "double", "", ""}}, 0};
+  uabt::bt::NodeModel plan{"Action", "Plan", {{"output_port", "out", "double", "", ""}}, 0, 0, ""};
   uabt::bt::NodeModel follow{
       "Action",
       "Follow",
       {{"input_port", "in", "double", "", ""}, {"input_port", "speed", "double", "", ""}},
-      0};
-  uabt::bt::NodeModel ready{"Condition", "Ready", {}, 0};
+      0,
+      0,
+      ""};
+  uabt::bt::NodeModel ready{"Condition", "Ready", {}, 0, 0, ""};
   m.nodes = std::vector<uabt::bt::NodeModel>{plan, follow, ready};
   std::vector<Node> blocks;
   int line = 1;

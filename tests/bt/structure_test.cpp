@@ -76,8 +76,8 @@ TEST(Structure, LeavesHaveNoChildren) {
 
 TEST(Structure, ModelledCustomControlsAndDecoratorsMayHaveChildren) {
   StructureOptions options;
-  options.node_models = {NodeModel{"Decorator", "Throttle", {}, 0},
-                         NodeModel{"Control", "Vote", {}, 0}};
+  options.node_models = {NodeModel{"Decorator", "Throttle", {}, 0, 0, ""},
+                         NodeModel{"Control", "Vote", {}, 0, 0, ""}};
   EXPECT_TRUE(check(in_tree("<Vote><Throttle><A/></Throttle><B/></Vote>"), options).empty());
   only(check(in_tree("<Throttle><A/><B/></Throttle>"), options),
        "Throttle must have exactly 1 child, has 2");

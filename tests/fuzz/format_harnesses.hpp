@@ -493,6 +493,7 @@ class TraceHarness {
       switch (v.kind) {
         case monitor::TraceValue::Kind::boolean: out[name] = v.boolean; break;
         case monitor::TraceValue::Kind::text: out[name] = v.text; break;
+        case monitor::TraceValue::Kind::none: out[name] = nullptr; break;  // no value
         case monitor::TraceValue::Kind::number:
           // Integers as integers (a double holds those the reader gave exactly).
           if (v.integer && v.number >= 0 && v.number < 1.8e19)
