@@ -63,8 +63,7 @@ struct Folder {
 bool inside_or_report(const fs::path& path, const Folder& folder, const std::string& shown,
                       std::vector<Finding>& findings) {
   if (lies_inside(path, folder.path)) return true;
-  findings.push_back(
-      make_finding("load-file", shown + ": " + outside_folder_error(folder.what), {shown, 0, 0}));
+  findings.push_back(make_finding("load-file", outside_folder_error(folder.what), {shown, 0, 0}));
   return false;
 }
 

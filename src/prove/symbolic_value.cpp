@@ -437,12 +437,6 @@ class FretishEncoder {
 
 }  // namespace
 
-SymValue fretish_value(z3::context& ctx, const fretish::Expr& e,
-                       const std::function<SymValue(const std::string&)>& resolve,
-                       const std::string& where) {
-  return FretishEncoder(ctx, resolve, where).value(e);
-}
-
 z3::expr fretish_bool(z3::context& ctx, const fretish::Expr& e,
                       const std::function<SymValue(const std::string&)>& resolve,
                       const std::string& where) {

@@ -64,9 +64,6 @@ z3::expr script_truth(const SymValue& v, const std::string& where);
 
 // A FRETISH expression over observables, with fretish/evaluate.cpp's meaning on the typed
 // subset it accepts. `resolve` gives an identifier's value (throws when unknown).
-SymValue fretish_value(z3::context& ctx, const fretish::Expr& e,
-                       const std::function<SymValue(const std::string&)>& resolve,
-                       const std::string& where);
 z3::expr fretish_bool(z3::context& ctx, const fretish::Expr& e,
                       const std::function<SymValue(const std::string&)>& resolve,
                       const std::string& where);

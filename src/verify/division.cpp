@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "smt/encoder.hpp"
+#include "smt/rational.hpp"
 #include "verify/domain_check.hpp"
 #include "verify/session.hpp"
 
@@ -21,6 +22,14 @@ struct Division {
   std::vector<ExprPtr> context;
 };
 
+bool is_literal_zero(const Expr& e) {
+  if (e.kind == ExprKind::negate && e.args.size() == 1 && e.args[0])
+    return is_literal_zero(*e.args[0]);
+  if (e.kind != ExprKind::number) return false;
+  const auto value = smt::parse_rational(e.text);
+  return value && value->is_zero();
+}
+
 // Every division whose divisor is not a number, with the conjuncts that hold wherever its
 // value matters: the other operands of each `&` on the way down, the premise of `=>`, the
 // condition (or its negation) of an ite branch.
@@ -28,7 +37,7 @@ void collect(const ExprPtr& e, std::vector<ExprPtr>& context, std::vector<Divisi
   if (!e) return;
   const auto& args = e->args;
   if ((e->kind == ExprKind::div || e->kind == ExprKind::mod) && args.size() == 2 && args[1] &&
-      args[1]->kind != ExprKind::number)
+      args[1]->kind != ExprKind::number && !is_literal_zero(*args[1]))
     out.push_back({e.get(), context});
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::size_t added = 0;
@@ -70,6 +79,15 @@ struct DomainSession {
   detail::Session session;
   bool ready = false;
 };
+
+// Every division in `e` whose divisor is written as zero (`x / 0`, `x mod -0.0`).
+void literal_zero_divisions(const Expr& e, std::vector<const Expr*>& out) {
+  if ((e.kind == ExprKind::div || e.kind == ExprKind::mod) && e.args.size() == 2 && e.args[1] &&
+      is_literal_zero(*e.args[1]))
+    out.push_back(&e);
+  for (const ExprPtr& a : e.args)
+    if (a) literal_zero_divisions(*a, out);
+}
 
 ExprPtr is_zero(const ExprPtr& divisor) {
   return fretish::make_expr(ExprKind::eq, {divisor, fretish::make_number("0")});
@@ -128,16 +146,14 @@ std::vector<Finding> check_divisions(const fretish::Domain& domain_declared,
   DomainSession domain(domain_declared, options);
   if (!domain.ready) return out;
   for (const DivisionSource& s : sources) {
-    if (!s.literal_zero) continue;
-    std::vector<Finding> typing;
-    domain.encoder.lower_condition(*s.expr, s.where, typing);
-    for (auto& f : typing) {  // "'x / 0' divides by zero; …", at the division
-      if (f.check != "arith-division-by-zero") continue;
-      f.message = f.message.substr(0, f.message.find(" divides by zero")) + " in " + s.what +
-                  " divides by zero: " + s.consequence;
-      f.location = s.where;
-      out.push_back(std::move(f));
-    }
+    if (!s.literal_zero || !s.expr) continue;
+    std::vector<const Expr*> by_zero;
+    literal_zero_divisions(*s.expr, by_zero);
+    for (const Expr* d : by_zero)
+      out.push_back(make_finding(
+          "arith-division-by-zero",
+          "'" + fretish::to_fretish(*d) + "' in " + s.what + " divides by zero: " + s.consequence,
+          s.where));
   }
   for (const auto& [source, d] : divisions) {
     const ExprPtr divisor = d.division->args[1];

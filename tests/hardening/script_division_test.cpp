@@ -42,6 +42,19 @@ TEST(ScriptDivision, ALiteralZeroDivisorIsAnError) {
   EXPECT_EQ(f->location.column, 7);
 }
 
+// A negated zero is a zero written out too: one finding, named after the division as written.
+TEST(ScriptDivision, ANegatedLiteralZeroDivisorIsOneError) {
+  const GateRun run = gate_with_script("wind / -0.0 &gt; 1");
+  ASSERT_TRUE(run.outcome) << run.load_error;
+  EXPECT_FALSE(run.passed()) << run.text();
+  EXPECT_EQ(findings_of(run, "guard-division-by-zero"), "") << run.text();
+  const Finding* f = run.error_in("alternatives/navigation/on_dust.xml", "arith-division-by-zero");
+  ASSERT_NE(f, nullptr) << run.text();
+  EXPECT_EQ(f->message,
+            "'wind / -0.0' in the script `wind / -0.0 > 1` of ScriptCondition divides by zero: "
+            "BehaviorTree.CPP's script then gives infinity or fails");
+}
+
 TEST(ScriptDivision, ADivisorZeroInEveryStateIsAnError) {
   const GateRun run = gate_with_script("wind / (battery - battery) &gt; 1");
   ASSERT_TRUE(run.outcome) << run.load_error;

@@ -51,7 +51,8 @@ TEST(Symlinks, AnAlternativeOutsideTheFolderIsNotRead) {
   EXPECT_FALSE(run.passed()) << run.text();
   const Finding* f = run.error_in("alternatives/navigation/on_dust.xml", "load-file");
   ASSERT_NE(f, nullptr) << run.text();
-  EXPECT_EQ(f->message, "alternatives/navigation/on_dust.xml: " + kOutside);
+  // The file is named once, by the finding's place.
+  EXPECT_EQ(f->message, kOutside);
   EXPECT_EQ(run.first("ref-unknown-alternative"), nullptr) << run.text();
 }
 
@@ -62,7 +63,9 @@ TEST(Symlinks, ADomainLinkedOutsideIsNeverEchoed) {
   const CliRun cli = run_cli({"verify", m.dir().string()});
   EXPECT_EQ(cli.exit_code, 1) << cli.output;
   EXPECT_EQ(cli.output.find("topsecretword"), std::string::npos) << cli.output;
-  EXPECT_NE(cli.output.find("domain.fret: " + kOutside), std::string::npos) << cli.output;
+  EXPECT_NE(cli.output.find("domain.fret: error: " + kOutside), std::string::npos) << cli.output;
+  // The file is named once.
+  EXPECT_EQ(cli.output.find("domain.fret: domain.fret"), std::string::npos) << cli.output;
 }
 
 TEST(Symlinks, EveryFileOfTheMissionIsConfined) {
@@ -76,7 +79,7 @@ TEST(Symlinks, EveryFileOfTheMissionIsConfined) {
     ASSERT_TRUE(run.outcome) << path << ": " << run.load_error;
     const Finding* f = run.error_in(path, "load-file");
     ASSERT_NE(f, nullptr) << path << ":\n" << run.text();
-    EXPECT_EQ(f->message, path + ": " + kOutside);
+    EXPECT_EQ(f->message, kOutside);
     EXPECT_EQ(run.text().find("topsecretword"), std::string::npos) << run.text();
   }
 }
@@ -106,8 +109,8 @@ TEST(Symlinks, AnUplinkPackageFileLinkedOutsideIsNotRead) {
   const auto mission = load::load_mission(m.dir(), options, error);
   ASSERT_TRUE(mission) << error;
   const std::string text = format_text(mission->findings);
-  EXPECT_NE(text.find("requirements.fret: leads outside the uplink package through a symbolic "
-                      "link; uabt reads only files inside it"),
+  EXPECT_NE(text.find("requirements.fret: error: leads outside the uplink package through a "
+                      "symbolic link; uabt reads only files inside it"),
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("topsecretword"), std::string::npos) << text;
