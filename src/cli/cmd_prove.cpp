@@ -2,13 +2,12 @@
 
 #include "base/diagnostics.hpp"
 #include "base/files.hpp"
-#include "bt/xml_io.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
 #include "gate/gate.hpp"
+#include "gate/proof_report.hpp"
 #include "gate/proofs.hpp"
-#include "prove/outcome.hpp"
 #include "report/text.hpp"
 
 namespace uabt::cli {
@@ -97,48 +96,45 @@ void register_prove(CLI::App& app, int& exit_code) {
       none.complete = true;
       emit(args->output,
            args->format == "json"
-               ? prove::result_json(none, prove::report_proofs(none), outcome.mission->name,
-                                    tool_version())
+               ? gate::result_json(none, gate::report_proofs(none), outcome.mission->name,
+                                   tool_version())
                : "prove: " + outcome.mission->name +
                      " states no guarantees (requirements that choose no alternative and are "
                      "not about the Environment): nothing to prove\n");
       return;
     }
-    std::vector<Finding> ignored;
-    auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", ignored);
     // Every message names the lines the user wrote: a node of the compiled tree (which prove
-    // holds in memory and never writes) by the place it comes from, and, in text, every file
-    // as opened from the current directory, as `uabt verify` names them.
+    // holds in memory and never writes) by the place it comes from (prove_checked), and, in
+    // text, every file as opened from the current directory, as `uabt verify` names them.
     const std::string prefix = path_prefix_for(outcome.mission->dir);
-    const auto for_user = [&](const std::string& text) {
-      return with_user_path(doc ? gate::at_source(text, outcome, *doc) : text, prefix);
+    prove::Options options;
+    options.depth = args->depth;
+    options.engine = args->engine;
+    std::vector<Finding> warnings;
+    const auto warn = [&] {
+      TextOptions text;
+      text.path_prefix = prefix;
+      std::cerr << format_text(warnings, text);
     };
     prove::Result result;
     try {
-      const prove::WorldModel world = prove::mission_world(*outcome.mission);
-      prove::Options options;
-      options.depth = args->depth;
-      options.engine = args->engine;
-      if (!world.warnings.empty()) {
-        TextOptions text;
-        text.path_prefix = path_prefix_for(outcome.mission->dir);
-        std::cerr << format_text(world.warnings, text);
-      }
-      result = prove::prove(*outcome.mission, *doc, world, options);
+      result = gate::prove_checked(outcome, *outcome.mission, options, &warnings);
+      warn();
     } catch (const prove::WorldError& e) {
+      warn();
       // world.json named as opened from the current directory, like every other finding.
-      std::cerr << path_prefix_for(outcome.mission->dir) << e.what()
-                << (e.check == "load-file" ? "" : " [" + e.check + "]") << "\n";
+      std::cerr << prefix << e.what() << (e.check == "load-file" ? "" : " [" + e.check + "]")
+                << "\n";
       exit_code = kExitUsage;
       return;
     } catch (const std::exception& e) {
-      std::cerr << "uabt: prove: " << for_user(e.what()) << "\n";
+      warn();
+      std::cerr << "uabt: prove: " << with_user_path(e.what(), prefix) << "\n";
       // A counterexample its replay disagrees with is uabt's fault, not the mission's.
       const bool internal = std::string_view(e.what()).find("internal error") != std::string::npos;
       exit_code = internal ? kExitUsage : kExitFail;
       return;
     }
-    if (doc) gate::name_sources(result, outcome, *doc);
     std::map<std::string, std::string> written;
     if (!args->counterexamples.empty()) {
       make_output_directory(args->counterexamples, "--counterexamples");
@@ -152,11 +148,11 @@ void register_prove(CLI::App& app, int& exit_code) {
     }
     exit_code = result.passed() ? kExitPass : kExitFail;
     // Every format draws from the one model of the proofs (the gate's reports too).
-    report::Proofs proofs = prove::report_proofs(result, written);
+    report::Proofs proofs = gate::report_proofs(result, written);
     proofs.mission_path = args->mission;
     if (!args->selection.empty()) proofs.run_options = "--selection " + args->selection;
     if (args->format == "json") {
-      emit(args->output, prove::result_json(result, proofs, outcome.mission->name, tool_version()));
+      emit(args->output, gate::result_json(result, proofs, outcome.mission->name, tool_version()));
       return;
     }
     if (args->format == "html") {
@@ -164,7 +160,7 @@ void register_prove(CLI::App& app, int& exit_code) {
       return;
     }
     report::ReportInput input = report_input(*outcome.mission, {"prove"});
-    input.findings = prove::findings_of(result, written, proofs);
+    input.findings = gate::findings_of(result, written, proofs);
     input.uri_prefix = sarif_uri_prefix(args->mission, "");
     if (args->format == "sarif") {
       write_findings(input, "sarif", args->output);

@@ -5,8 +5,9 @@
 
 #include "base/suggest.hpp"
 #include "bt/xml_io.hpp"
+#include "gate/proof_report.hpp"
+#include "gate/proofs.hpp"
 #include "monitor/property_set.hpp"
-#include "prove/outcome.hpp"
 #include "report/reports.hpp"
 
 namespace uabt::gate {
@@ -28,41 +29,30 @@ const fretish::Requirement* find(const Requirements& in, const std::string& id) 
   return nullptr;
 }
 
-// `mission` (compiled as `xml`) proving `guarantees` in its own world: its assumptions and
-// Environment requirements stay, its guarantees are replaced. Verdicts by requirement id.
-std::map<std::string, prove::Answer> prove_on(const load::Mission& mission, const std::string& xml,
+// `checked`'s mission proving `guarantees` on its compiled tree in its own world: its assumptions
+// and Environment requirements stay, its guarantees are replaced. Verdicts by requirement id.
+std::map<std::string, prove::Answer> prove_on(const Outcome& checked,
                                               const Requirements& guarantees,
                                               const prove::Options& options) {
   std::map<std::string, prove::Answer> out;
-  if (guarantees.empty()) return out;
-  std::vector<Finding> ignored;
-  auto doc = bt::parse_document(xml, "compiled.xml", ignored);
-  load::Mission probe = mission;
+  load::Mission probe = *checked.mission;
   probe.properties.erase(
       std::remove_if(probe.properties.begin(), probe.properties.end(),
                      [](const fretish::Requirement& r) { return !monitor::is_assumption(r); }),
       probe.properties.end());
   probe.properties.insert(probe.properties.end(), guarantees.begin(), guarantees.end());
-  const auto not_checked = [&](const std::string& why) {
+  try {
+    for (const prove::Answer& a : prove_checked(checked, probe, options).answers)
+      out[a.requirement] = a;
+  } catch (const std::exception& e) {
     for (const auto& g : guarantees) {
-      prove::Answer a;
+      prove::Answer& a = out[g.id];
       a.requirement = g.id;
       a.text = g.text;
       a.location = g.location;
       a.verdict = prove::Verdict::unsupported;
-      a.reason = why;
-      out[g.id] = a;
+      a.reason = e.what();
     }
-  };
-  if (!doc) {
-    not_checked("the compiled tree does not read back");
-    return out;
-  }
-  try {
-    const prove::Result result = prove::prove(probe, *doc, prove::mission_world(mission), options);
-    for (const prove::Answer& a : result.answers) out[a.requirement] = a;
-  } catch (const std::exception& e) {
-    not_checked(e.what());
   }
   return out;
 }
@@ -122,11 +112,16 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
   // The old statements on both versions; the new ones come from the gate's own proof step.
   std::map<std::string, prove::Answer> on_board, on_merged;
   if (!changed.empty() && !merged.compiled_xml.empty()) {
-    on_merged = prove_on(now, merged.compiled_xml, changed, options.prove);
-    const compile::Result compiled = compile::compile_mission(running, options.compile);
-    if (compiled.ok)
-      on_board =
-          prove_on(running, bt::write_document(compiled.document, {}), changed, options.prove);
+    on_merged = prove_on(merged, changed, options.prove);
+    Outcome board;  // the version on board, compiled and read back
+    board.mission = std::make_unique<load::Mission>(running);
+    board.compiled = compile::compile_mission(running, options.compile);
+    if (board.compiled.ok) {
+      std::vector<Finding> ignored;
+      board.compiled_xml = bt::write_document(board.compiled.document, {});
+      board.compiled_tree = bt::parse_document(board.compiled_xml, "compiled.xml", ignored);
+      on_board = prove_on(board, changed, options.prove);
+    }
   }
   std::map<std::string, std::string> new_status;
   if (merged.report.proofs)
@@ -197,7 +192,7 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
             "{\"" +
             std::string(restated ? "weaken" : "retire") + "\": {\"" + g.id + "\": \"why\"}}");
       if (answer != on_merged.end() && answer->second.counterexample) {
-        for (const std::string& line : prove::table_lines(*answer->second.counterexample))
+        for (const std::string& line : table_lines(*answer->second.counterexample))
           f.notes.push_back(line);
         for (const std::string& note : answer->second.counterexample->notes)
           f.notes.push_back(note);

@@ -47,10 +47,10 @@ Outcome check_mission(load::Mission mission, const Options& options,
     // Conformance reads the tree back from the bytes that will be uplinked, not from the
     // in-memory document, so that the writer is validated too.
     std::vector<Finding> read_findings;
-    auto reread = bt::parse_document(out.compiled_xml, "compiled.xml", read_findings);
+    out.compiled_tree = bt::parse_document(out.compiled_xml, "compiled.xml", read_findings);
     report.findings.insert(report.findings.end(), read_findings.begin(), read_findings.end());
-    if (reread) {
-      out.conformance = conform::conform_tree(m, *reread, options.conform);
+    if (out.compiled_tree) {
+      out.conformance = conform::conform_tree(m, *out.compiled_tree, options.conform);
       report.stages.push_back("conform");
       report.findings.insert(report.findings.end(), out.conformance.findings.begin(),
                              out.conformance.findings.end());

@@ -40,6 +40,8 @@ struct Outcome {
   verify::Result verification;
   compile::Result compiled;
   std::string compiled_xml;  // "" when the mission did not compile
+  // compiled_xml as read back (what conform checks and prove proves); none when it does not.
+  std::optional<bt::Document> compiled_tree;
   conform::Result conformance;
   report::ReportInput report;
   std::optional<campaign::Campaign> campaign;  // set by add_test_campaign when it built one

@@ -1,8 +1,10 @@
 #include "gate/proofs.hpp"
 
-#include "bt/xml_io.hpp"
+#include <stdexcept>
+
+#include "gate/proof_report.hpp"
 #include "monitor/property_set.hpp"
-#include "prove/outcome.hpp"
+#include "prove/world_model.hpp"
 #include "report/reports.hpp"
 #include "runtime/source_map.hpp"
 
@@ -25,33 +27,40 @@ void add_proofs_not_run(Outcome& outcome, const std::string& reason) {
   outcome.report.proofs = std::move(proofs);
 }
 
-std::string at_source(const std::string& text, const Outcome& outcome,
-                      const bt::Document& compiled) {
-  if (!outcome.mission) return text;
-  return runtime::with_source_places(text, compiled, *outcome.mission, outcome.compiled.trace);
-}
-
-void name_sources(prove::Result& result, const Outcome& outcome, const bt::Document& compiled) {
-  for (std::string& note : result.notes) note = at_source(note, outcome, compiled);
-  result.engine_reason = at_source(result.engine_reason, outcome, compiled);
-  if (result.vacuity)
-    result.vacuity->message = at_source(result.vacuity->message, outcome, compiled);
-  for (prove::Answer& a : result.answers) a.reason = at_source(a.reason, outcome, compiled);
+prove::Result prove_checked(const Outcome& checked, const load::Mission& mission,
+                            const prove::Options& options, std::vector<Finding>* warnings) {
+  if (!checked.compiled_tree) throw std::runtime_error("the compiled tree does not read back");
+  const auto at_source = [&](const std::string& text) {
+    return runtime::with_source_places(text, *checked.compiled_tree, *checked.mission,
+                                       checked.compiled.trace);
+  };
+  const prove::WorldModel world = prove::mission_world(mission);
+  if (warnings) *warnings = world.warnings;
+  prove::Result result;
+  try {
+    result = prove::prove(mission, *checked.compiled_tree, world, options);
+  } catch (const prove::WorldError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(at_source(e.what()));
+  }
+  for (std::string& note : result.notes) note = at_source(note);
+  result.engine_reason = at_source(result.engine_reason);
+  if (result.vacuity) result.vacuity->message = at_source(result.vacuity->message);
+  for (prove::Answer& a : result.answers) a.reason = at_source(a.reason);
+  return result;
 }
 
 void add_proofs(Outcome& outcome, const prove::Options& options, const ProofReporting& reporting) {
-  if (!outcome.mission || !prove::has_guarantees(*outcome.mission) || outcome.compiled_xml.empty())
+  // Conform reports a compiled tree that does not read back.
+  if (!outcome.mission || !prove::has_guarantees(*outcome.mission) || !outcome.compiled_tree)
     return;
   report::Proofs replay;  // how findings and reports tell to replay a counterexample
   replay.mission_path = reporting.mission_path;
   replay.run_options = reporting.run_options;
-  std::vector<Finding> found;
-  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", found);
-  if (!doc) return;  // conform reports a compiled tree that does not read back
+  std::vector<Finding> found, warnings;
   try {
-    const prove::WorldModel world = prove::mission_world(*outcome.mission);
-    prove::Result result = prove::prove(*outcome.mission, *doc, world, options);
-    name_sources(result, outcome, *doc);
+    const prove::Result result = prove_checked(outcome, *outcome.mission, options, &warnings);
     std::map<std::string, std::string> written;
     if (!reporting.counterexample_dir.empty())
       for (const prove::Answer& a : result.answers)
@@ -59,9 +68,9 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
           written[a.requirement] = (std::filesystem::path(reporting.counterexample_dir) /
                                     report::counterexample_file_name(a.requirement))
                                        .generic_string();
-    found = prove::findings_of(result, written, replay);
-    found.insert(found.end(), world.warnings.begin(), world.warnings.end());
-    outcome.report.proofs = prove::report_proofs(result, written);
+    found = findings_of(result, written, replay);
+    found.insert(found.end(), warnings.begin(), warnings.end());
+    outcome.report.proofs = report_proofs(result, written);
     outcome.report.proofs->mission_path = replay.mission_path;
     outcome.report.proofs->run_options = replay.run_options;
   } catch (const prove::WorldError& e) {
@@ -69,7 +78,7 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
     found.back().severity = Severity::error;  // world.json cannot be used: whatever the check
     add_proofs_not_run(outcome, "world.json cannot be read");
   } catch (const std::exception& e) {
-    const std::string why = "the mission cannot be proved: " + at_source(e.what(), outcome, *doc);
+    const std::string why = std::string("the mission cannot be proved: ") + e.what();
     found = {make_finding("prove-bounded", why, {outcome.mission->requirements_file, 0, 0})};
     add_proofs_not_run(outcome, why);
   }

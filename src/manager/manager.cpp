@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "base/diagnostics.hpp"
-#include "bt/xml_io.hpp"
 #include "gate/uplink.hpp"
 #include "runtime/condition_count.hpp"
 #include "runtime/property_monitor.hpp"
@@ -23,11 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Version {
-  gate::Outcome outcome;
-  bt::Document document;  // the compiled tree as read back from its bytes
-};
-
 fs::path package_path(const fs::path& dir, const std::string& uplink) {
   return dir / uplink;
 }
@@ -41,18 +35,13 @@ load::Mission load_version(const fs::path& dir, const std::vector<std::string>& 
   return std::move(*mission);
 }
 
-// A gated version: the compiled tree is read back from the bytes the gate passed (with
+// A gated version: the gate read its compiled tree back from the bytes it passed (with
 // `unverified`, from the bytes it compiled although its checks failed).
-Version admitted(gate::Outcome outcome, bool unverified = false) {
-  Version v{std::move(outcome), {}};
-  if (v.outcome.passed() || (unverified && !v.outcome.compiled_xml.empty())) {
-    std::vector<Finding> findings;
-    auto doc = bt::parse_document(v.outcome.compiled_xml, "compiled.xml", findings);
-    if (!doc)
-      throw std::runtime_error("compiled tree does not read back: " + format_text(findings));
-    v.document = std::move(*doc);
-  }
-  return v;
+gate::Outcome admitted(gate::Outcome outcome, bool unverified = false) {
+  if ((outcome.passed() || (unverified && !outcome.compiled_xml.empty())) && !outcome.compiled_tree)
+    throw std::runtime_error("compiled tree does not read back: " +
+                             format_text(outcome.report.findings));
+  return outcome;
 }
 
 std::string lower_case(std::string text) {
@@ -155,18 +144,18 @@ ManagerRun BehaviorTreeManager::run() {
   if (replay)
     for (const Finding& f : checked.report.findings)
       if (f.severity == Severity::error) result.unverified.push_back(f);
-  Version running = admitted(std::move(checked), replay);
+  gate::Outcome running = admitted(std::move(checked), replay);
 
-  check_against_mission(*running.outcome.mission);
+  check_against_mission(*running.mission);
 
   RunOptions run_options;
   run_options.max_ticks = options_.max_ticks;
   run_options.log_conditions = false;  // the leaf log is not kept (see the loop below)
   run_options.engine.smart_selection = options_.smart_selection;
   std::vector<bt::NodeModel> robot_nodes;
-  if (running.outcome.mission->nodes) robot_nodes = *running.outcome.mission->nodes;
-  Runner runner(running.document, scenario_, run_options, robot_nodes);
-  PropertyMonitor properties(*running.outcome.mission, runner.engine());
+  if (running.mission->nodes) robot_nodes = *running.mission->nodes;
+  Runner runner(*running.compiled_tree, scenario_, run_options, robot_nodes);
+  PropertyMonitor properties(*running.mission, runner.engine());
 
   SelectionObserver selections(runner.engine(), [&](const Selection& s) {
     TraceEvent e;
@@ -174,7 +163,7 @@ ManagerRun BehaviorTreeManager::run() {
     e.event = "select";
     e.adaptable = s.adaptable;
     e.requirement = s.requirement;
-    e.alternative = alternative_name(*running.outcome.mission, s.adaptable, s.alternative);
+    e.alternative = alternative_name(*running.mission, s.adaptable, s.alternative);
     properties.select(e.adaptable, e.alternative, e.requirement);
     result.trace.push_back(std::move(e));
   });
@@ -190,23 +179,23 @@ ManagerRun BehaviorTreeManager::run() {
     std::vector<std::string> candidate = accepted;
     candidate.push_back(event.uplink);
     // As `uabt gate MISSION --uplink DIR` decides it, against the version running now.
-    Version next = admitted(gate::run_uplink_gate(
-        *running.outcome.mission, load_version(dir_, candidate), options_.gate, "runtime"));
-    if (!next.outcome.passed()) {
+    gate::Outcome next = admitted(gate::run_uplink_gate(
+        *running.mission, load_version(dir_, candidate), options_.gate, "runtime"));
+    if (!next.passed()) {
       e.verdict = "rejected";
-      for (const auto& f : next.outcome.report.findings)
+      for (const auto& f : next.report.findings)
         if (f.severity == Severity::error) e.findings.push_back(f);
     } else {
       e.verdict = "accepted";
       // New trees (alternatives) first, so that a changed selection tree can call them.
-      for (const auto& def : next.document.trees) {
+      for (const auto& def : next.compiled_tree->trees) {
         if (!r.engine().has_tree(def.id)) {
           r.engine().define_tree(def);
           e.swapped.push_back(def.id);
         }
       }
-      for (const auto& def : next.document.trees) {
-        const bt::TreeDef* old = running.document.find_tree(def.id);
+      for (const auto& def : next.compiled_tree->trees) {
+        const bt::TreeDef* old = running.compiled_tree->find_tree(def.id);
         if (old == nullptr || old->root == def.root) continue;
         SwapResult swap = r.engine().replace_tree(def.id, def, SwapPolicy::halt_then_swap);
         e.halted += swap.halted;
@@ -216,7 +205,7 @@ ManagerRun BehaviorTreeManager::run() {
       running = std::move(next);
       // The new version's properties from the next tick on; the swapped-in trees' nodes are
       // observed too.
-      for (const PropertyViolation& v : properties.adopt(*running.outcome.mission, r.ticks()))
+      for (const PropertyViolation& v : properties.adopt(*running.mission, r.ticks()))
         result.trace.push_back(violation_event(v));
     }
     e.latency_ms =
@@ -281,8 +270,8 @@ ManagerRun BehaviorTreeManager::run() {
     const NodeInfo& info = runner.engine().info(result.error->node);
     const std::string compiled_at = info.location.file + ":" + std::to_string(info.location.line) +
                                     ":" + std::to_string(info.location.column);
-    const auto source = source_of(runner.engine().tree_path(result.error->node),
-                                  *running.outcome.mission, running.outcome.compiled.trace);
+    const auto source = source_of(runner.engine().tree_path(result.error->node), *running.mission,
+                                  running.compiled.trace);
     if (source && result.error->message.starts_with(compiled_at))
       result.error->message = source->file + ":" + std::to_string(source->line) + ":" +
                               std::to_string(source->column) +

@@ -380,6 +380,12 @@ WorldModel load_world(const std::filesystem::path& path, const std::string& disp
   return parse_world(*text, display, mission);
 }
 
+WorldModel mission_world(const load::Mission& mission) {
+  std::error_code ec;
+  if (!std::filesystem::exists(mission.dir / "world.json", ec)) return {};
+  return load_world(mission.dir / "world.json", "world.json", &mission);
+}
+
 std::vector<std::string> assigned_names(std::string_view script) {
   std::vector<std::string> out;
   std::size_t i = 0;

@@ -75,6 +75,8 @@ WorldModel parse_world(std::string_view text, const std::string& file,
 // A path that is not a regular file (a directory) is an error too.
 WorldModel load_world(const std::filesystem::path& path, const std::string& display,
                       const load::Mission* mission = nullptr);
+// The mission's world.json, or the unconstrained world when it has none. Throws WorldError.
+WorldModel mission_world(const load::Mission& mission);
 
 // The names a script assigns (`x = …`, `x := …`, `x += …`), in order: the state an effect
 // writes.

@@ -1,7 +1,7 @@
 #pragma once
 // What a report shows of `uabt prove` (ARCHITECTURE §10): every guarantee with its verdict and, for
-// a violated one, its counterexample as a tick-by-tick timeline. Filled by the prove stage; the
-// report stage only draws it.
+// a violated one, its counterexample as a tick-by-tick timeline. Filled by the gate from prove's
+// plain result; the report stage only draws it.
 #include <cstdint>
 #include <optional>
 #include <string>

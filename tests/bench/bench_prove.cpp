@@ -11,7 +11,7 @@
 #include "bench_support.hpp"
 #include "bt/xml_io.hpp"
 #include "gate/gate.hpp"
-#include "prove/outcome.hpp"
+#include "prove/world_model.hpp"
 #include "prove_families.hpp"
 
 namespace {

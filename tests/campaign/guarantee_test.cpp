@@ -11,8 +11,8 @@
 #include "campaign/guarantee.hpp"
 #include "cli/cli_support.hpp"
 #include "load/load_test_support.hpp"
-#include "prove/outcome.hpp"
 #include "prove/reach.hpp"
+#include "prove/world_model.hpp"
 #include "temp_mission.hpp"
 
 namespace uabt::testing {

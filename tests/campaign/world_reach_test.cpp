@@ -13,8 +13,8 @@
 #include "campaign/world_reach.hpp"
 #include "cli/cli_support.hpp"
 #include "load/load_test_support.hpp"
-#include "prove/outcome.hpp"
 #include "prove/reach.hpp"
+#include "prove/world_model.hpp"
 #include "temp_mission.hpp"
 
 namespace uabt::testing {

@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "bt/xml_io.hpp"
 #include "gate/gate.hpp"
-#include "prove/outcome.hpp"
+#include "gate/proof_report.hpp"
+#include "gate/proofs.hpp"
 #include "report/reports.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
@@ -62,15 +62,11 @@ TEST(GateProofReports, ProveJsonAndFindingsJsonHaveOneShape) {
     report::write_reports(outcome.report, out.dir(), outcome.compiled_xml);
     const auto gate_json = nlohmann::json::parse(read(out.dir() / "findings.json"))["proofs"];
 
-    std::vector<Finding> ignored;
-    const auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", ignored);
-    ASSERT_TRUE(doc);
     prove::Options options;
     options.engine = engine;
-    const prove::Result result =
-        prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), options);
+    const prove::Result result = prove_checked(outcome, *outcome.mission, options);
     auto prove_json = nlohmann::json::parse(
-        prove::result_json(result, prove::report_proofs(result), "sample_drilling", "test"));
+        result_json(result, report_proofs(result), "sample_drilling", "test"));
     EXPECT_EQ(prove_json["verdict"], "fail");
     for (const char* key : {"tool", "version", "mission", "verdict"}) prove_json.erase(key);
     EXPECT_EQ(prove_json, gate_json) << engine;

@@ -436,7 +436,7 @@ TEST(Vacuity, AnInitialConditionNoStateSatisfiesIsAnErrorAtTheExpression) {
   EXPECT_EQ(r.vacuity->location.column, 14);
   for (const auto& a : r.answers) EXPECT_EQ(a.verdict, Verdict::vacuous) << a.requirement;
   EXPECT_FALSE(r.passed());
-  const auto findings = prove::findings_of(r);
+  const auto findings = gate::findings_of(r);
   ASSERT_EQ(findings.size(), 1u);
   EXPECT_EQ(findings[0].check, "prove-vacuous");
   EXPECT_EQ(findings[0].severity, Severity::error);
@@ -488,7 +488,7 @@ TEST(Vacuity, ATriggerThatNeverHoldsIsProvedWithAWarning) {
   EXPECT_TRUE(soon.has_trigger);
   EXPECT_EQ(soon.first_trigger, 0u);
   bool warned = false;
-  for (const auto& f : prove::findings_of(r))
+  for (const auto& f : gate::findings_of(r))
     if (f.check == "prove-trigger-unreachable") {
       warned = true;
       EXPECT_EQ(f.requirements, std::vector<std::string>{"CoolsSoon"});
@@ -507,7 +507,7 @@ TEST(Vacuity, AReachableTriggerSaysWhenItFirstHolds) {
   ASSERT_EQ(hold.verdict, Verdict::proved);
   EXPECT_TRUE(hold.has_trigger);
   EXPECT_EQ(hold.first_trigger, 1u);
-  for (const auto& f : prove::findings_of(r)) EXPECT_NE(f.check, "prove-trigger-unreachable");
+  for (const auto& f : gate::findings_of(r)) EXPECT_NE(f.check, "prove-trigger-unreachable");
 }
 
 }  // namespace

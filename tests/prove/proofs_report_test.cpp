@@ -14,7 +14,7 @@ report::Proofs proofs_of(const std::filesystem::path& dir, const std::string& na
   std::map<std::string, std::string> written;
   for (const auto& a : r.answers)
     if (a.counterexample) written[a.requirement] = "cex/" + a.requirement + ".json";
-  report::Proofs proofs = prove::report_proofs(r, written);
+  report::Proofs proofs = gate::report_proofs(r, written);
   proofs.mission_path = "missions/" + name;
   return proofs;
 }

@@ -10,7 +10,8 @@
 #include "base/diagnostics.hpp"
 #include "bt/xml_io.hpp"
 #include "gate/gate.hpp"
-#include "prove/outcome.hpp"
+#include "gate/proof_report.hpp"
+#include "prove/world_model.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
@@ -27,10 +28,8 @@ inline prove::Result prove_dir(const std::filesystem::path& dir, prove::Options 
   gate_options.compile.selection_forced = true;
   gate::Outcome outcome = gate::check_mission(std::move(*mission), gate_options, "test");
   EXPECT_FALSE(outcome.compiled_xml.empty()) << format_text(outcome.report.findings);
-  std::vector<Finding> findings;
-  auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
   const prove::WorldModel world = prove::mission_world(*outcome.mission);
-  return prove::prove(*outcome.mission, *doc, world, options);
+  return prove::prove(*outcome.mission, *outcome.compiled_tree, world, options);
 }
 
 // A mission gated once, to prove with either engine.

@@ -59,7 +59,7 @@ TEST(Prove, ADepthBoundGivesBoundedNotProved) {
   EXPECT_FALSE(r.complete);
   EXPECT_EQ(answer(r, "CoolBit").verdict, Verdict::bounded);
   EXPECT_EQ(answer(r, "CoolBit").depth, 2u);
-  const auto findings = prove::findings_of(r);
+  const auto findings = gate::findings_of(r);
   ASSERT_EQ(findings.size(), 2u);
   EXPECT_EQ(findings[0].check, "prove-bounded");
   EXPECT_EQ(findings[0].location.line, 5);

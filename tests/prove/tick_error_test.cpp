@@ -67,7 +67,7 @@ TEST(TickError, BothEnginesNameTheTickThatStopsEveryRunAndWarnOfTheUnreachableTr
     EXPECT_TRUE(trim.trigger_decided);
     EXPECT_EQ(trim.first_trigger, 0u);
     std::vector<std::string> unreachable;
-    for (const Finding& f : prove::findings_of(r))
+    for (const Finding& f : gate::findings_of(r))
       if (f.check == "prove-trigger-unreachable") unreachable.push_back(f.requirements.at(0));
     EXPECT_EQ(unreachable, std::vector<std::string>{"TrimAfterDescent"});
     EXPECT_EQ(answer(r, "StaysDown").verdict, Verdict::proved);

@@ -1,28 +1,21 @@
-#include "prove/outcome.hpp"
+#include "gate/proof_report.hpp"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "report/reports.hpp"
 
-namespace uabt::prove {
+namespace uabt::gate {
 
 using Json = nlohmann::ordered_json;
 
-WorldModel mission_world(const load::Mission& mission) {
-  const auto path = mission.dir / "world.json";
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) return {};
-  return load_world(path, "world.json", &mission);
-}
-
-std::vector<std::string> table_lines(const Counterexample& cex) {
+std::vector<std::string> table_lines(const prove::Counterexample& cex) {
   std::vector<std::string> header = {"tick", "root"};
   if (!cex.rows.empty())
     for (const auto& [name, value] : cex.rows.front().values) header.push_back(name);
   header.push_back("actions");
   std::vector<std::vector<std::string>> cells = {header};
-  for (const TickRow& r : cex.rows) {
+  for (const prove::TickRow& r : cex.rows) {
     std::vector<std::string> row = {std::to_string(r.tick), r.root};
     for (const auto& [name, value] : r.values) row.push_back(value.to_string());
     std::string actions;
@@ -47,7 +40,7 @@ std::vector<std::string> table_lines(const Counterexample& cex) {
   return out;
 }
 
-std::vector<Finding> findings_of(const Result& result,
+std::vector<Finding> findings_of(const prove::Result& result,
                                  const std::map<std::string, std::string>& written,
                                  const report::Proofs& replay) {
   std::vector<Finding> out;
@@ -55,16 +48,16 @@ std::vector<Finding> findings_of(const Result& result,
     Finding f =
         make_finding("prove-vacuous", "no guarantee can be proved: " + result.vacuity->message,
                      result.vacuity->location);
-    for (const Answer& a : result.answers)
-      if (a.verdict == Verdict::vacuous) f.requirements.push_back(a.requirement);
+    for (const prove::Answer& a : result.answers)
+      if (a.verdict == prove::Verdict::vacuous) f.requirements.push_back(a.requirement);
     f.notes.push_back(
         "a proof over runs that cannot happen, or cannot go on, would hold of any "
         "guarantee: fix the world model (domain assumptions, world.json) first");
     out.push_back(std::move(f));
   }
-  for (const Answer& a : result.answers) {
-    if (a.verdict == Verdict::vacuous) continue;
-    if (a.verdict == Verdict::proved) {
+  for (const prove::Answer& a : result.answers) {
+    if (a.verdict == prove::Verdict::vacuous) continue;
+    if (a.verdict == prove::Verdict::proved) {
       if (a.has_trigger && a.trigger_decided && a.first_trigger == 0) {
         Finding f = make_finding("prove-trigger-unreachable",
                                  "guarantee '" + a.requirement +
@@ -84,7 +77,7 @@ std::vector<Finding> findings_of(const Result& result,
       continue;
     }
     Finding f;
-    if (a.verdict == Verdict::violated) {
+    if (a.verdict == prove::Verdict::violated) {
       f = make_finding("prove-violated",
                        "guarantee '" + a.requirement + "' is violated at tick " +
                            std::to_string(a.depth) + ": " + a.text,
@@ -95,7 +88,7 @@ std::vector<Finding> findings_of(const Result& result,
                           report::replay_command(replay, it->second) + "`)");
       for (const std::string& line : table_lines(*a.counterexample)) f.notes.push_back(line);
       for (const std::string& note : a.counterexample->notes) f.notes.push_back(note);
-    } else if (a.verdict == Verdict::bounded) {
+    } else if (a.verdict == prove::Verdict::bounded) {
       f = make_finding("prove-bounded",
                        "guarantee '" + a.requirement + "' holds up to tick " +
                            std::to_string(a.depth) + " but is not proved: " + a.text,
@@ -114,7 +107,7 @@ std::vector<Finding> findings_of(const Result& result,
   return out;
 }
 
-std::string result_json(const Result& result, const report::Proofs& proofs,
+std::string result_json(const prove::Result& result, const report::Proofs& proofs,
                         const std::string& mission, const std::string& version) {
   Json j = Json::object();
   j["tool"] = "uabt";
@@ -126,7 +119,7 @@ std::string result_json(const Result& result, const report::Proofs& proofs,
   return j.dump(2) + "\n";
 }
 
-report::Proofs report_proofs(const Result& result,
+report::Proofs report_proofs(const prove::Result& result,
                              const std::map<std::string, std::string>& written) {
   report::Proofs out;
   out.engine = result.engine;
@@ -139,15 +132,15 @@ report::Proofs report_proofs(const Result& result,
   if (result.vacuity)
     out.vacuity = report::ProofVacuity{result.vacuity->message, result.vacuity->location};
   out.notes = result.notes;
-  for (const Answer& a : result.answers) {
+  for (const prove::Answer& a : result.answers) {
     report::ProofAnswer p;
     p.requirement = a.requirement;
     p.text = a.text;
     p.location = a.location;
-    p.verdict = verdict_name(a.verdict);
+    p.verdict = prove::verdict_name(a.verdict);
     p.reason = a.reason;
     p.depth = a.depth;
-    if (result.engine == "symbolic" && a.verdict == Verdict::proved)
+    if (result.engine == "symbolic" && a.verdict == prove::Verdict::proved)
       p.method = a.by_pdr ? "IC3/PDR" : "k-induction";
     if (a.has_trigger && a.trigger_decided) p.first_trigger = a.first_trigger;
     if (a.counterexample) {
@@ -157,7 +150,7 @@ report::Proofs report_proofs(const Result& result,
       if (const auto it = written.find(a.requirement); it != written.end())
         c.scenario_file = it->second;
       c.notes = a.counterexample->notes;
-      for (const TickRow& row : a.counterexample->rows) {
+      for (const prove::TickRow& row : a.counterexample->rows) {
         report::ProofTick t{row.tick, row.root, row.values, {}};
         // "Drill started": the event is the last word (the leaf's label may hold spaces).
         for (const std::string& what : row.actions) {
@@ -176,4 +169,4 @@ report::Proofs report_proofs(const Result& result,
   return out;
 }
 
-}  // namespace uabt::prove
+}  // namespace uabt::gate
