@@ -4,7 +4,6 @@
 #include <map>
 
 #include "base/suggest.hpp"
-#include "bt/xml_io.hpp"
 #include "gate/proof_report.hpp"
 #include "gate/proofs.hpp"
 #include "monitor/property_set.hpp"
@@ -113,15 +112,11 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
   std::map<std::string, prove::Answer> on_board, on_merged;
   if (!changed.empty() && !merged.compiled_xml.empty()) {
     on_merged = prove_on(merged, changed, options.prove);
-    Outcome board;  // the version on board, compiled and read back
+    Outcome board;  // the version on board, compiled and read back as the gate does
     board.mission = std::make_unique<load::Mission>(running);
-    board.compiled = compile::compile_mission(running, options.compile);
-    if (board.compiled.ok) {
-      std::vector<Finding> ignored;
-      board.compiled_xml = bt::write_document(board.compiled.document, {});
-      board.compiled_tree = bt::parse_document(board.compiled_xml, "compiled.xml", ignored);
-      on_board = prove_on(board, changed, options.prove);
-    }
+    std::vector<Finding> ignored;
+    compile_and_read_back(running, options.compile, board, ignored);
+    if (board.compiled_tree) on_board = prove_on(board, changed, options.prove);
   }
   std::map<std::string, std::string> new_status;
   if (merged.report.proofs)

@@ -34,20 +34,13 @@ Outcome check_mission(load::Mission mission, const Options& options,
                          out.verification.findings.end());
   report.coverage = out.verification.coverage;
 
-  out.compiled = compile::compile_mission(m, options.compile);
+  std::vector<Finding> read_findings;
+  compile_and_read_back(m, options.compile, out, read_findings);
   report.findings.insert(report.findings.end(), out.compiled.findings.begin(),
                          out.compiled.findings.end());
   if (out.compiled.ok) {
     report.stages.push_back("compile");
-    bt::WriteOptions write_options;
-    write_options.format = options.compile.bt_format;
-    out.compiled_xml = bt::write_document(out.compiled.document, write_options);
     report.compiled_tree_file = "compiled.xml";
-
-    // Conformance reads the tree back from the bytes that will be uplinked, not from the
-    // in-memory document, so that the writer is validated too.
-    std::vector<Finding> read_findings;
-    out.compiled_tree = bt::parse_document(out.compiled_xml, "compiled.xml", read_findings);
     report.findings.insert(report.findings.end(), read_findings.begin(), read_findings.end());
     if (out.compiled_tree) {
       out.conformance = conform::conform_tree(m, *out.compiled_tree, options.conform);
@@ -59,6 +52,18 @@ Outcome check_mission(load::Mission mission, const Options& options,
   keep_rejected_candidate(out);
   sort_findings(report.findings);
   return out;
+}
+
+void compile_and_read_back(const load::Mission& mission, const compile::Options& options,
+                           Outcome& out, std::vector<Finding>& read_findings) {
+  out.compiled = compile::compile_mission(mission, options);
+  if (!out.compiled.ok) return;
+  bt::WriteOptions write_options;
+  write_options.format = options.bt_format;
+  out.compiled_xml = bt::write_document(out.compiled.document, write_options);
+  // Read back from the bytes that will be uplinked, not taken from the in-memory document, so
+  // that conform validates the writer too.
+  out.compiled_tree = bt::parse_document(out.compiled_xml, "compiled.xml", read_findings);
 }
 
 void keep_rejected_candidate(Outcome& outcome) {

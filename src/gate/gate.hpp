@@ -62,6 +62,12 @@ Outcome run_gate(load::Mission mission, const Options& options, const std::strin
 Outcome check_mission(load::Mission mission, const Options& options,
                       const std::string& tool_version);
 
+// Compiles `mission` into `out.compiled` and, when it compiles, writes `out.compiled_xml` and
+// reads it back into `out.compiled_tree` (what conform checks and prove proves); the read-back
+// findings go to `read_findings`.
+void compile_and_read_back(const load::Mission& mission, const compile::Options& options,
+                           Outcome& out, std::vector<Finding>& read_findings);
+
 // A failing gate keeps the candidate as compiled.rejected.xml: the report and what it says
 // about the tree point there. Call after adding findings; nothing when the outcome passes.
 void keep_rejected_candidate(Outcome& outcome);

@@ -331,13 +331,6 @@ class Checker {
     return ok ? TypeInfo{Sort::boolean} : invalid();
   }
 
-  static bool is_literal_zero(const Expr& e) {
-    if (e.kind == ExprKind::negate && e.args.size() == 1) return is_literal_zero(*e.args[0]);
-    if (e.kind != ExprKind::number) return false;
-    const auto r = parse_rational(e.text);
-    return r && r->is_zero();
-  }
-
   static bool is_natural_literal(const Expr& e) {
     return e.kind == ExprKind::number && is_integer_literal(e.text) && e.text[0] != '-';
   }
@@ -430,6 +423,14 @@ class Checker {
 };
 
 }  // namespace
+
+bool is_literal_zero(const Expr& e) {
+  if (e.kind == ExprKind::negate && e.args.size() == 1 && e.args[0])
+    return is_literal_zero(*e.args[0]);
+  if (e.kind != ExprKind::number) return false;
+  const auto r = parse_rational(e.text);
+  return r && r->is_zero();
+}
 
 bool check_condition(const Expr& condition, const fretish::Domain& domain,
                      const SourceLocation& where, Typing& typing, std::vector<Finding>& findings) {

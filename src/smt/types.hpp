@@ -47,6 +47,9 @@ bool check_condition(const fretish::Expr& condition, const fretish::Domain& doma
 const fretish::Variable* find_variable(const fretish::Domain& domain, const std::string& name);
 int enum_literal_index(const fretish::Variable& enum_variable, const std::string& literal);
 
+// A number written as zero (`0`, `0.0`, `-0`): a divisor every state makes zero.
+bool is_literal_zero(const fretish::Expr& e);
+
 // FRET's arithmetic functions (absInt … ite) and their arity.
 bool is_known_function(const std::string& name, std::size_t& arity);
 

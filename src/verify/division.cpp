@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "smt/encoder.hpp"
-#include "smt/rational.hpp"
+#include "smt/types.hpp"
 #include "verify/domain_check.hpp"
 #include "verify/session.hpp"
 
@@ -22,14 +22,6 @@ struct Division {
   std::vector<ExprPtr> context;
 };
 
-bool is_literal_zero(const Expr& e) {
-  if (e.kind == ExprKind::negate && e.args.size() == 1 && e.args[0])
-    return is_literal_zero(*e.args[0]);
-  if (e.kind != ExprKind::number) return false;
-  const auto value = smt::parse_rational(e.text);
-  return value && value->is_zero();
-}
-
 // Every division whose divisor is not a number, with the conjuncts that hold wherever its
 // value matters: the other operands of each `&` on the way down, the premise of `=>`, the
 // condition (or its negation) of an ite branch.
@@ -37,7 +29,7 @@ void collect(const ExprPtr& e, std::vector<ExprPtr>& context, std::vector<Divisi
   if (!e) return;
   const auto& args = e->args;
   if ((e->kind == ExprKind::div || e->kind == ExprKind::mod) && args.size() == 2 && args[1] &&
-      args[1]->kind != ExprKind::number && !is_literal_zero(*args[1]))
+      args[1]->kind != ExprKind::number && !smt::is_literal_zero(*args[1]))
     out.push_back({e.get(), context});
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::size_t added = 0;
@@ -83,7 +75,7 @@ struct DomainSession {
 // Every division in `e` whose divisor is written as zero (`x / 0`, `x mod -0.0`).
 void literal_zero_divisions(const Expr& e, std::vector<const Expr*>& out) {
   if ((e.kind == ExprKind::div || e.kind == ExprKind::mod) && e.args.size() == 2 && e.args[1] &&
-      is_literal_zero(*e.args[1]))
+      smt::is_literal_zero(*e.args[1]))
     out.push_back(&e);
   for (const ExprPtr& a : e.args)
     if (a) literal_zero_divisions(*a, out);
