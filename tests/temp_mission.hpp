@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "test_support.hpp"
 
@@ -54,6 +55,30 @@ inline std::string alternative_tree(const std::string& id, const std::string& bo
   return "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"" + id + "\">\n    " + body +
          "\n  </BehaviorTree>\n</root>\n";
 }
+
+// A mission of one adaptable node `node` whose alternatives only stop, with its domain and
+// requirements.
+inline std::map<std::string, std::string> one_node_mission(
+    const std::string& node, const std::string& domain, const std::string& requirements,
+    const std::vector<std::string>& alternatives) {
+  std::map<std::string, std::string> files{
+      {"mission.xml", mission_with("<Adaptable ID=\"" + node + "\"/>")},
+      {"domain.fret", domain},
+      {"requirements.fret", requirements}};
+  for (const auto& a : alternatives)
+    files["alternatives/" + node + "/" + a + ".xml"] = alternative_tree(a);
+  return files;
+}
+
+// Two versions of such a mission, "old" and "new", that differ in their requirements.
+struct TwoVersions {
+  TwoVersions(const std::string& node, const std::string& domain,
+              const std::string& old_requirements, const std::string& new_requirements,
+              const std::vector<std::string>& alternatives)
+      : old_version(one_node_mission(node, domain, old_requirements, alternatives), "old"),
+        new_version(one_node_mission(node, domain, new_requirements, alternatives), "new") {}
+  TempMission old_version, new_version;
+};
 
 inline std::string read_all(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

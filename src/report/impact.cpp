@@ -1,10 +1,11 @@
 #include "report/impact.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 #include "base/diagnostics.hpp"
+#include "base/number_text.hpp"
 #include "report/common.hpp"
+#include "report/coverage_view.hpp"
 
 namespace uabt::report {
 
@@ -20,8 +21,14 @@ Json name_or_null(const std::string& name) {
   return name.empty() ? Json(nullptr) : Json(name);
 }
 
-Json share_json(std::uint64_t part, std::uint64_t whole) {
-  return whole == 0 ? Json(nullptr) : Json(static_cast<double>(part) / static_cast<double>(whole));
+// A share as JSON: from the counts as before (null over an empty domain), the measured one's
+// number as number_json writes it, null when neither.
+Json share_json(const verify::NodeImpact& node, const verify::Exact& share) {
+  if (node.counted) return node.states == 0 ? Json(nullptr) : Json(share.value);
+  return node.measured ? uabt::number_json(share.value) : Json(nullptr);
+}
+Json share_exact_json(const verify::NodeImpact& node, const verify::Exact& share) {
+  return node.measured ? Json(share.text) : Json(nullptr);
 }
 
 std::string states_phrase(std::uint64_t n) {
@@ -36,13 +43,15 @@ std::string move_text(const verify::SelectionChange& c) {
   return side(c.from, c.from_requirement) + " -> " + side(c.to, c.to_requirement);
 }
 
+// Measured but not counted: how much of the space changes, in the coverage section's words.
+bool shares_only(const verify::NodeImpact& node) {
+  return node.measured && !node.counted;
+}
+
 }  // namespace
 
-std::string exact_share(std::uint64_t part, std::uint64_t whole) {
-  if (part == 0 || whole == 0) return "0";
-  const std::uint64_t g = std::gcd(part, whole);
-  if (part == whole) return "1";
-  return std::to_string(part / g) + "/" + std::to_string(whole / g);
+std::string space_share(const verify::Exact& share) {
+  return detail::share_text({share.value, share.text}) + " of the space";
 }
 
 std::string impact_text(const verify::Impact& impact) {
@@ -51,15 +60,18 @@ std::string impact_text(const verify::Impact& impact) {
     out += node.adaptable + ": " + node.status;
     if (node.counted)
       out += " (" + std::to_string(node.changed_states) + " of " + std::to_string(node.states) +
-             " states, " + exact_share(node.changed_states, node.states) +
-             ", change their alternative)";
+             " states, " + node.changed_share.text + ", change their alternative)";
+    else if (shares_only(node))
+      out += " (" + space_share(node.changed_share) + " changes its alternative)";
     else if (!node.not_counted_reason.empty() && node.status == "changed")
       out += " (states not counted: " + node.not_counted_reason + ")";
     out += "\n";
     for (const auto& c : node.changes) {
       out += "  " + move_text(c);
       if (node.counted)
-        out += ": " + states_phrase(c.states) + " (" + exact_share(c.states, node.states) + ")";
+        out += ": " + states_phrase(c.states) + " (" + c.share.text + ")";
+      else if (shares_only(node))
+        out += ": " + space_share(c.share);
       out += "\n    e.g. " + format_state(c.example) + "\n";
     }
   }
@@ -79,8 +91,8 @@ Json impact_nodes_json(const verify::Impact& impact) {
       j["from_requirement"] = name_or_null(c.from_requirement);
       j["to_requirement"] = name_or_null(c.to_requirement);
       j["states"] = counted ? Json(c.states) : Json(nullptr);
-      j["share"] = counted ? share_json(c.states, node.states) : Json(nullptr);
-      j["share_exact"] = counted ? Json(exact_share(c.states, node.states)) : Json(nullptr);
+      j["share"] = share_json(node, c.share);
+      j["share_exact"] = share_exact_json(node, c.share);
       j["example"] = detail::witness_json(c.example);
       changes.push_back(std::move(j));
     }
@@ -90,9 +102,8 @@ Json impact_nodes_json(const verify::Impact& impact) {
     j["counted"] = counted;
     j["states"] = counted ? Json(node.states) : Json(nullptr);
     j["changed_states"] = counted ? Json(node.changed_states) : Json(nullptr);
-    j["changed_share"] = counted ? share_json(node.changed_states, node.states) : Json(nullptr);
-    j["changed_share_exact"] =
-        counted ? Json(exact_share(node.changed_states, node.states)) : Json(nullptr);
+    j["changed_share"] = share_json(node, node.changed_share);
+    j["changed_share_exact"] = share_exact_json(node, node.changed_share);
     j["not_counted_reason"] =
         counted || node.not_counted_reason.empty() ? Json(nullptr) : Json(node.not_counted_reason);
     j["changes"] = std::move(changes);
@@ -132,7 +143,9 @@ std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
                  " this adaptable node's requirements";
     else if (node.counted)
       message += std::to_string(node.changed_states) + " of " + states_phrase(node.states) + " (" +
-                 exact_share(node.changed_states, node.states) + ") change their alternative";
+                 node.changed_share.text + ") change their alternative";
+    else if (shares_only(node))
+      message += space_share(node.changed_share) + " changes its alternative";
     else
       message +=
           "some states change their alternative (not counted: " + node.not_counted_reason + ")";
@@ -141,7 +154,9 @@ std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
     for (const auto& c : node.changes) {
       std::string note = move_text(c);
       if (node.counted)
-        note += ": " + states_phrase(c.states) + " (" + exact_share(c.states, node.states) + ")";
+        note += ": " + states_phrase(c.states) + " (" + c.share.text + ")";
+      else if (shares_only(node))
+        note += ": " + space_share(c.share);
       note += ", e.g. " + format_state(c.example);
       f.notes.push_back(std::move(note));
       for (const auto* alt : {&c.from, &c.to})

@@ -12,15 +12,17 @@
 namespace uabt::report {
 
 // `uabt diff` output: per adaptable node, which states change their selected alternative.
-// JSON numbers are numbers; a space that was not counted gives null counts and shares.
+// JSON numbers are numbers. A node over real variables gives null counts and its measured
+// shares; a space that was neither counted nor measured gives null counts and shares.
 std::string impact_text(const verify::Impact& impact);
 std::string impact_json(const verify::Impact& impact);
 
 // The node list of impact_json, shared with the gate's report of an uplink.
 nlohmann::ordered_json impact_nodes_json(const verify::Impact& impact);
 
-// "1/4": the exact share `part` of `whole`, reduced ("0" when part is 0, "1" when equal).
-std::string exact_share(std::uint64_t part, std::uint64_t whole);
+// "20.0% of the space", "33.3% (1/3) of the space": a measured share of a node whose variables
+// are not all discrete, in the words of the coverage section.
+std::string space_share(const verify::Exact& share);
 
 // One `uplink-behaviour-change` note per adaptable node whose selection changes, located at
 // the node in `mission` (the merged version), each move as a note with its count, share and

@@ -28,10 +28,11 @@ std::string alternative_text(const std::string& alternative) {
   return alternative.empty() ? "(nothing: the node fails)" : alternative;
 }
 
-std::string count_text(const verify::NodeImpact& node, std::uint64_t part) {
-  if (!node.counted) return "not counted";
-  return std::to_string(part) + " (" + exact_share(part, node.states) + ", " +
-         percent(part, node.states) + ")";
+std::string count_text(const verify::NodeImpact& node, const verify::SelectionChange& change) {
+  if (node.counted)
+    return std::to_string(change.states) + " (" + change.share.text + ", " +
+           percent(change.states, node.states) + ")";
+  return node.measured ? space_share(change.share) : "not counted";
 }
 
 std::string node_summary(const verify::NodeImpact& node) {
@@ -39,10 +40,12 @@ std::string node_summary(const verify::NodeImpact& node) {
   if (node.status == "added" || node.status == "removed")
     return "the uplink " + std::string(node.status == "added" ? "adds" : "removes") +
            " this node's requirements";
-  if (!node.counted) return "some states change (not counted: " + node.not_counted_reason + ")";
-  return std::to_string(node.changed_states) + " of " + std::to_string(node.states) + " states (" +
-         exact_share(node.changed_states, node.states) + ", " +
-         percent(node.changed_states, node.states) + ") change their alternative";
+  if (node.counted)
+    return std::to_string(node.changed_states) + " of " + std::to_string(node.states) +
+           " states (" + node.changed_share.text + ", " +
+           percent(node.changed_states, node.states) + ") change their alternative";
+  if (node.measured) return space_share(node.changed_share) + " changes its alternative";
+  return "some states change (not counted: " + node.not_counted_reason + ")";
 }
 
 // A Markdown code span for identifiers and states (they hold no backtick or '|').
@@ -154,7 +157,7 @@ std::string uplink_markdown(const UplinkChange& uplink) {
     out += "\n  | From | To | States | Example |\n  |---|---|---:|---|\n";
     for (const auto& c : node.changes)
       out += "  | " + span(alternative_text(c.from)) + " | " + span(alternative_text(c.to)) +
-             " | " + count_text(node, c.states) + " | " + span(format_state(c.example)) + " |\n";
+             " | " + count_text(node, c) + " | " + span(format_state(c.example)) + " |\n";
   }
   return out;
 }
@@ -192,9 +195,8 @@ std::string uplink_html(const UplinkChange& uplink) {
         "</thead>\n<tbody>\n";
     for (const auto& c : node.changes)
       out += "<tr><td>" + html_code(alternative_text(c.from)) + "</td><td>" +
-             html_code(alternative_text(c.to)) + "</td><td>" +
-             html_escape(count_text(node, c.states)) + "</td><td>" +
-             html_code(format_state(c.example)) + "</td></tr>\n";
+             html_code(alternative_text(c.to)) + "</td><td>" + html_escape(count_text(node, c)) +
+             "</td><td>" + html_code(format_state(c.example)) + "</td></tr>\n";
     out += "</tbody></table>\n";
   }
   out += "</section>\n";

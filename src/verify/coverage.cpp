@@ -18,11 +18,11 @@ Exact exact_of(const Fraction& f) {
   return {f.text(), f.to_double()};
 }
 
-namespace {
-
 Fraction ratio(const Fraction& part, const Fraction& whole) {
   return whole.is_zero() ? Fraction(0) : part / whole;
 }
+
+namespace {
 
 // Certified bounds of a share when some atom is not measured: the part that surely belongs
 // over the largest possible domain, and the part that may belong over the smallest.
@@ -221,12 +221,7 @@ Coverage count_coverage(const std::string& adaptable,
       cov.overlap_states = t.overlap.sure.count();
     } else {
       for (auto& a : cov.alternatives) a.states = a.enabled_states = 0;
-      for (const auto& d : space.dimensions())
-        if (d.component >= 0) {
-          const auto& axes = space.components()[static_cast<std::size_t>(d.component)].axes;
-          cov.not_counted_reason = "the guards range over the real variable " + axes[0].variable;
-          break;
-        }
+      cov.not_counted_reason = "the guards range over the real variable " + space.first_real();
     }
     fill_regions(space, requirements, t, findings, cov);
     fill_map(space, domain, t, requirements.size(), cov);

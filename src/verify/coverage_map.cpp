@@ -293,7 +293,7 @@ void fill_map(const Space& space, const fretish::Domain& domain, const NodeTruth
     shape.outcomes.assign(agg.outcomes.begin(), agg.outcomes.end());
     shape.overlap = agg.overlap;
     shape.uncertain = agg.uncertain;
-    shape.gap_share = exact_of(total.is_zero() ? Fraction(0) : agg.gap / total);
+    shape.gap_share = exact_of(ratio(agg.gap, total));
     if (joint) {
       const auto& comp = space.components()[dims[px.dim].component];
       shape.points = comp.cells[xk].shape;

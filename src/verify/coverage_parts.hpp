@@ -19,6 +19,8 @@ struct NodeTruths {
 };
 
 Exact exact_of(const Fraction& f);
+// part / whole; 0 when the whole is empty.
+Fraction ratio(const Fraction& part, const Fraction& whole);
 
 // The gap and every overlapping pair as a few boxes each (greedy maximal boxes).
 // Grown first from the witnesses of the gap and overlap `findings`.

@@ -380,7 +380,7 @@ void cover(const Space& space, const Bits& may, const Bits& sure, const Bits& do
     const Bits inside = boxes.members(box);
     const Fraction m = space.measure(inside & sure);
     r.measure = exact_of(m);
-    r.share = exact_of(total.is_zero() ? Fraction(0) : m / total);
+    r.share = exact_of(ratio(m, total));
     r.exact = (inside & ~sure).count() == 0;
     out.push_back(std::move(r));
   }

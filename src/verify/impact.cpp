@@ -5,17 +5,17 @@
 #include <optional>
 #include <set>
 
-#include "base/number_fit.hpp"
 #include "smt/assign.hpp"
+#include "smt/atoms.hpp"
 #include "smt/encoder.hpp"
 #include "smt/evaluate.hpp"
 #include "smt/solver.hpp"
+#include "verify/coverage_parts.hpp"
+#include "verify/space.hpp"
 
 namespace uabt::verify {
 
 namespace {
-
-constexpr std::uint64_t kMaxCountedStates = std::uint64_t{1} << 24;
 
 struct Choice {
   const fretish::Expr* guard;  // nullptr: default
@@ -37,113 +37,94 @@ fretish::Domain merged_domain(const load::Mission& before, const load::Mission& 
   return d;
 }
 
-// First enabled choice in a state, evaluated without the solver (for counting).
-std::optional<std::size_t> selected(const std::vector<Choice>& choices,
-                                    const fretish::Domain& domain, const State& state) {
-  for (std::size_t i = 0; i < choices.size(); ++i) {
-    if (choices[i].guard == nullptr) return i;
-    auto holds = smt::try_evaluate(*choices[i].guard, domain, state);
-    if (holds.value_or(false)) return i;
+using detail::Bits;
+
+// Where each alternative is selected (the first choice whose guard holds) within `domain`;
+// "": where none holds and the node fails. A guard that has no value in a state (a division
+// by zero) does not hold there.
+std::map<std::string, Bits> selected(detail::Space& space, const std::vector<Choice>& choices,
+                                     const Bits& domain) {
+  const std::uint64_t size = space.size();
+  std::map<std::string, Bits> out;
+  Bits claimed(size, false);
+  for (const auto& c : choices) {
+    const Bits enabled = c.guard ? space.truth(*c.guard).sure : Bits(size, true);
+    Bits& at = out.try_emplace(c.alternative, size, false).first->second;
+    at = at | (enabled & domain & ~claimed);
+    claimed = claimed | enabled;
   }
-  return std::nullopt;
+  Bits& none = out.try_emplace("", size, false).first->second;
+  none = none | (domain & ~claimed);
+  return out;
 }
 
-// Exact counts by enumeration over the discrete variables the two versions read.
-void count_changes(const std::vector<Choice>& old_choices, const std::vector<Choice>& new_choices,
-                   const fretish::Domain& domain, NodeImpact& impact) {
-  std::set<std::string> used;
-  auto collect = [&](const fretish::Expr& e) {
-    for (const auto& name : fretish::identifiers_of(e))
-      if (domain.find(name) != nullptr) used.insert(name);
+// Counts (discrete variables) or measures (real ones) the states whose selection changes, over
+// the space of the variables both versions' guards and the assumptions read, cut at the
+// boundaries of all their atoms.
+void measure_changes(const std::vector<Choice>& old_choices, const std::vector<Choice>& new_choices,
+                     const fretish::Domain& domain, const smt::Typing& typing, NodeImpact& impact) {
+  std::set<std::string> names;
+  std::vector<const fretish::Expr*> atoms, assumptions;
+  auto read = [&](const fretish::Expr& e) {
+    detail::variables_of(e, typing, names);
+    for (const fretish::Expr* a : smt::atom_occurrences(e, typing)) atoms.push_back(a);
   };
-  for (const auto& c : old_choices)
-    if (c.guard) collect(*c.guard);
-  for (const auto& c : new_choices)
-    if (c.guard) collect(*c.guard);
-  for (const auto& a : domain.assumptions)
-    if (a.expr) collect(*a.expr);
-
-  struct Axis {
-    const fretish::Variable* variable;
-    std::vector<Value> values;
-  };
-  std::vector<Axis> axes;
-  std::uint64_t total = 1;
-  for (const auto& v : domain.variables) {
-    if (!used.count(v.name)) continue;
-    Axis axis{&v, {}};
-    switch (v.type) {
-      case fretish::VarType::boolean:
-        axis.values = {Value::of_bool(false), Value::of_bool(true)};
-        break;
-      case fretish::VarType::enumeration:
-        for (const auto& lit : v.enum_values) axis.values.push_back(Value::of_enum(lit));
-        break;
-      case fretish::VarType::integer: {
-        if (v.lower.empty() || v.upper.empty()) {
-          impact.not_counted_reason = "'" + v.name + "' is an unbounded integer";
-          return;
-        }
-        long long lo = 0, hi = 0;
-        try {
-          lo = std::stoll(v.lower);
-          hi = std::stoll(v.upper);
-        } catch (...) {
-          impact.not_counted_reason = "the bounds of '" + v.name + "' are not integers";
-          return;
-        }
-        const std::optional<std::uint64_t> size = integer_range_size(lo, hi);
-        if (!size || *size > kMaxCountedStates) {
-          impact.not_counted_reason = "'" + v.name + "' has too many values to count";
-          return;
-        }
-        for (std::uint64_t i = 0; i < *size; ++i)
-          axis.values.push_back(Value::of_int(lo + static_cast<long long>(i)));
-        break;
-      }
-      case fretish::VarType::real:
-        impact.not_counted_reason = "'" + v.name + "' is a real number";
-        return;
-    }
-    if (axis.values.empty()) return;
-    total *= axis.values.size();
-    if (total > kMaxCountedStates) {
-      impact.not_counted_reason = "more than 2^24 states";
+  for (const auto* choices : {&old_choices, &new_choices})
+    for (const auto& c : *choices)
+      if (c.guard) read(*c.guard);
+  for (const auto& a : domain.assumptions) {
+    const smt::TypeInfo* t = a.expr ? typing.find(*a.expr) : nullptr;
+    if (t == nullptr || t->sort != smt::Sort::boolean) continue;
+    assumptions.push_back(a.expr.get());
+    read(*a.expr);
+  }
+  detail::Space space(domain, typing);
+  NodeImpact out = impact;  // filled in full, or not at all
+  try {
+    std::string reason = space.plan(names, atoms);
+    if (reason.empty()) reason = space.unmeasured();
+    if (!reason.empty()) {
+      impact.not_counted_reason = reason;
       return;
     }
-    axes.push_back(std::move(axis));
-  }
-
-  std::map<std::pair<std::string, std::string>, std::uint64_t> counts;
-  std::vector<std::size_t> index(axes.size(), 0);
-  State state;
-  for (const auto& axis : axes) state.push_back({axis.variable->name, axis.values[0]});
-  std::uint64_t states = 0, changed = 0;
-  for (std::uint64_t n = 0; n < total; ++n) {
-    for (std::size_t k = 0; k < axes.size(); ++k) state[k].second = axes[k].values[index[k]];
-    bool in_domain = true;
-    for (const auto& a : domain.assumptions)
-      if (a.expr && !smt::try_evaluate(*a.expr, domain, state).value_or(false)) in_domain = false;
-    if (in_domain) {
-      ++states;
-      auto o = selected(old_choices, domain, state);
-      auto w = selected(new_choices, domain, state);
-      const std::string from = o ? old_choices[*o].alternative : "";
-      const std::string to = w ? new_choices[*w].alternative : "";
-      if (from != to) {
-        ++changed;
-        ++counts[{from, to}];
-      }
+    Bits in_domain(space.size(), true);
+    for (const fretish::Expr* a : assumptions) in_domain = in_domain & space.truth(*a).sure;
+    const detail::Fraction whole = space.measure(in_domain);
+    if (space.has_reals() && whole.is_zero()) {
+      impact.not_counted_reason =
+          "the domain has measure zero over the real variable " + space.first_real();
+      return;
     }
-    for (std::size_t k = 0; k < axes.size(); ++k) {  // odometer
-      if (++index[k] < axes[k].values.size()) break;
-      index[k] = 0;
+    const auto from = selected(space, old_choices, in_domain);
+    const auto to = selected(space, new_choices, in_domain);
+    Bits kept(space.size(), false);
+    for (const auto& [alternative, set] : from)
+      if (const auto it = to.find(alternative); it != to.end()) kept = kept | (set & it->second);
+    const Bits changed = in_domain & ~kept;
+    out.measured = true;
+    out.changed_share = detail::exact_of(detail::ratio(space.measure(changed), whole));
+    for (auto& change : out.changes) {
+      const auto f = from.find(change.from), t = to.find(change.to);
+      const Bits moved =
+          f != from.end() && t != to.end() ? f->second & t->second : Bits(space.size(), false);
+      change.share = detail::exact_of(detail::ratio(space.measure(moved), whole));
+      if (!space.has_reals()) change.states = moved.count();
     }
+    if (space.has_reals()) {
+      out.not_counted_reason = "the guards range over the real variable " + space.first_real();
+    } else {
+      out.counted = true;
+      out.states = in_domain.count();
+      out.changed_states = changed.count();
+    }
+  } catch (const detail::FractionOverflow& e) {
+    impact.not_counted_reason = e.what();
+    return;
+  } catch (const smt::EvaluationError& e) {
+    impact.not_counted_reason = e.what();
+    return;
   }
-  impact.counted = true;
-  impact.states = states;
-  impact.changed_states = changed;
-  for (auto& change : impact.changes) change.states = counts[{change.from, change.to}];
+  impact = std::move(out);
 }
 
 }  // namespace
@@ -252,7 +233,7 @@ Impact selection_impact(const load::Mission& before, const load::Mission& after,
                 return std::tie(a.from, a.to) < std::tie(b.from, b.to);
               });
     impact.status = impact.changes.empty() ? "unchanged" : "changed";
-    count_changes(old_choices, new_choices, domain, impact);
+    measure_changes(old_choices, new_choices, domain, encoder.typing(), impact);
     result.nodes.push_back(std::move(impact));
   }
   result.findings.insert(result.findings.end(), type_findings.begin(), type_findings.end());

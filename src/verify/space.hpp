@@ -54,6 +54,11 @@ class Space {
   const std::vector<Dimension>& dimensions() const { return dims_; }
   const std::vector<RealComponent>& components() const { return components_; }
   bool has_reals() const { return !components_.empty(); }
+  // The first real variable the space cuts into cells ("" when none).
+  const std::string& first_real() const {
+    static const std::string none;
+    return components_.empty() ? none : components_.front().axes.front().variable;
+  }
   // Why some atom is not measured exactly (first reason), "" when every atom is.
   const std::string& unmeasured() const { return unmeasured_; }
 

@@ -201,6 +201,73 @@ TEST(CliUplink, DiffExitCodeAndUplink) {
   EXPECT_NE(json.out.find("\"OnMud\": true"), std::string::npos) << json.out;
 }
 
+// A discrete mission's behaviour change is counted in states, to the byte as it always was.
+TEST(CliUplink, DiffOfADiscreteMissionKeepsItsCountsToTheByte) {
+  EXPECT_EQ(
+      uabt("diff missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/retire_rocks").out,
+      "navigation: changed (1 of 3 states, 1/3, change their alternative)\n"
+      "  on_rocks (Req2) -> hold_position (Safe): 1 state (1/3)\n"
+      "    e.g. OnDust=false, OnRocks=true\n");
+  const std::string json =
+      uabt(
+          "diff missions/msl_curiosity --uplink missions/msl_curiosity/uplinks/retire_rocks "
+          "--format json")
+          .out;
+  const std::string node = json.substr(0, json.find("      \"changes\""));
+  EXPECT_EQ(node,
+            "{\n"
+            "  \"tool\": \"uabt\",\n"
+            "  \"changed\": true,\n"
+            "  \"nodes\": [\n"
+            "    {\n"
+            "      \"adaptable\": \"navigation\",\n"
+            "      \"status\": \"changed\",\n"
+            "      \"counted\": true,\n"
+            "      \"states\": 3,\n"
+            "      \"changed_states\": 1,\n"
+            "      \"changed_share\": 0.3333333333333333,\n"
+            "      \"changed_share_exact\": \"1/3\",\n"
+            "      \"not_counted_reason\": null,\n");
+  EXPECT_NE(json.find("          \"states\": 1,\n"
+                      "          \"share\": 0.3333333333333333,\n"
+                      "          \"share_exact\": \"1/3\",\n"),
+            std::string::npos)
+      << json;
+}
+
+// A real guard boundary that moves changes a measured share of the space, not "not counted".
+TEST(CliUplink, DiffMeasuresTheShareOfARealSpaceThatChanges) {
+  auto requirements = [](const std::string& threshold) {
+    return "Windy: In nav if wind > " + threshold +
+           " Mission shall satisfy selected_alt = slow\n"
+           "Calm: In nav Mission shall satisfy selected_alt = fast\n";
+  };
+  const uabt::testing::TwoVersions v("nav", "real wind in [0, 10]\n", requirements("6"),
+                                     requirements("4"), {"fast", "slow"});
+  const std::string versions =
+      "'" + v.old_version.dir().string() + "' '" + v.new_version.dir().string() + "'";
+  const CliRun text = uabt("diff " + versions + " --exit-code");
+  EXPECT_EQ(text.exit_code, 1) << text.out;
+  EXPECT_EQ(text.out.rfind("nav: changed (20.0% of the space changes its alternative)\n"
+                           "  fast (Calm) -> slow (Windy): 20.0% of the space\n"
+                           "    e.g. wind=",
+                           0),
+            0u)
+      << text.out;
+  const std::string json = uabt("diff " + versions + " --format json").out;
+  EXPECT_NE(json.find("      \"states\": null,\n"
+                      "      \"changed_states\": null,\n"
+                      "      \"changed_share\": 0.2,\n"
+                      "      \"changed_share_exact\": \"1/5\",\n"),
+            std::string::npos)
+      << json;
+  EXPECT_NE(json.find("          \"states\": null,\n"
+                      "          \"share\": 0.2,\n"
+                      "          \"share_exact\": \"1/5\",\n"),
+            std::string::npos)
+      << json;
+}
+
 TEST(CliUplink, RunRefusesAMissingUplinkBeforeTheRunStarts) {
   CliRun run = uabt(
       "run missions/msl_curiosity --scenario "

@@ -312,7 +312,7 @@ TEST(UplinkImpact, CountsEqualBruteForceOnSmallDomains) {
   EXPECT_GE(rounds_with_several_moves, 4);
 }
 
-TEST(UplinkImpact, AnUncountedSpaceIsNullInJson) {
+TEST(UplinkImpact, ARealSpaceIsMeasuredNotCountedInJson) {
   const auto dir = uabt::testing::mission_dir("exploration");
   TempMission t(std::map<std::string, std::string>{
       {"uplinks/steeper/requirements.fret",
@@ -325,9 +325,16 @@ TEST(UplinkImpact, AnUncountedSpaceIsNullInJson) {
   EXPECT_EQ(node["counted"], false);
   EXPECT_TRUE(node["states"].is_null());
   EXPECT_TRUE(node["changed_states"].is_null());
-  EXPECT_TRUE(node["changed_share"].is_null());
+  // Sand (1 of 3 terrains), battery 40..100 (61 of 101 values), slope in [-20, -15) or
+  // (15, 20] (10 of 90): 610 of 27270.
+  EXPECT_EQ(node["changed_share_exact"], "61/2727") << node.dump();
+  EXPECT_DOUBLE_EQ(node["changed_share"].get<double>(), 61.0 / 2727);
   EXPECT_EQ(node["status"], "changed");
-  ASSERT_FALSE(node["changes"].empty());
+  ASSERT_EQ(node["changes"].size(), 1u) << node.dump();
+  EXPECT_EQ(node["changes"][0]["from"], "rocks_alternative");
+  EXPECT_EQ(node["changes"][0]["to"], "sand_alternative");
+  EXPECT_EQ(node["changes"][0]["share_exact"], "61/2727");
+  EXPECT_TRUE(node["changes"][0]["states"].is_null());
   const auto& example = node["changes"][0]["example"];
   EXPECT_TRUE(example["slope"].is_number()) << example.dump();
   EXPECT_TRUE(example["battery"].is_number_integer()) << example.dump();
