@@ -93,9 +93,14 @@ std::vector<Finding> findings_of(const prove::Result& result,
                        "guarantee '" + a.requirement + "' holds up to tick " +
                            std::to_string(a.depth) + " but is not proved: " + a.text,
                        a.location);
-      f.notes.push_back("the search stopped at depth " + std::to_string(a.depth) + " after " +
-                        std::to_string(result.states) +
-                        " states; raise --depth or shrink the world to decide it");
+      f.notes.push_back(
+          result.engine == "symbolic"
+              ? "the symbolic engine checked every run up to tick " + std::to_string(a.depth) +
+                    " but could not prove it for longer runs; try --engine explicit, or shrink "
+                    "the world to decide it"
+              : "the search stopped at depth " + std::to_string(a.depth) + " after " +
+                    std::to_string(result.states) +
+                    " states; raise --depth or shrink the world to decide it");
     } else {
       f = make_finding("fretish-unsupported",
                        "guarantee '" + a.requirement + "' cannot be proved: " + a.reason,

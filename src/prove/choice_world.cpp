@@ -159,7 +159,9 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
   }
   if (may_run) {
     if (pick == 0) {
-      elapsed = c ? now : 1;
+      elapsed = c == nullptr                                          ? 1
+                : static_cast<std::uint64_t>(c->max_ticks) > horizon_ ? std::min(now, c->min_ticks)
+                                                                      : now;
       return NodeStatus::running;
     }
     --pick;

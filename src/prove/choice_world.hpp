@@ -122,6 +122,12 @@ class ChoiceWorld : public runtime::World {
   // contract only whether it runs, as nothing else about it matters): the world's state.
   const std::vector<std::int64_t>& elapsed() const { return elapsed_; }
   void set_elapsed(const std::vector<std::int64_t>& e) { elapsed_ = e; }
+  // The longest run the explicit engine can explore (a breadth-first search holds at least one
+  // state per tick of depth, so its state limit bounds it). An action whose contract allows
+  // more ticks than that is never made to end by its maximum within an explored run, so the
+  // ticks it runs past its minimum look alike: its count stops there, and `"ticks": [1,
+  // 9223372036854775807]` costs two states instead of one per tick.
+  void set_horizon(std::uint64_t ticks) { horizon_ = ticks; }
 
  private:
   const WorldModel& model_;
@@ -130,6 +136,7 @@ class ChoiceWorld : public runtime::World {
   const fretish::Domain* domain_ = nullptr;
   std::vector<Leaf> leaves_;
   std::vector<std::int64_t> elapsed_;
+  std::uint64_t horizon_ = UINT64_MAX;
   const std::vector<std::vector<std::int32_t>>* forced_ = nullptr;
   const std::vector<std::vector<std::vector<runtime::ScriptValue>>>* forced_outputs_ = nullptr;
   std::vector<std::size_t> forced_next_;

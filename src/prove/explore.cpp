@@ -164,6 +164,8 @@ class Search {
     // once, leave the same state): a choice point reached again in the same mid-tick state
     // has nothing new below it.
     m_.choice->chooser.seen = [this](std::uint32_t site) { return seen_mid_tick(site); };
+    m_.choice->set_horizon(o_.depth != 0 ? std::min<std::uint64_t>(o_.depth, o_.max_states)
+                                         : o_.max_states);
     m_.observables->track_open(true);
     // A tick is resumed at the choice it changes, not ticked again from its start.
     trail_ = std::make_unique<runtime::TickTrail>(*m_.engine);
@@ -175,6 +177,7 @@ class Search {
       ~Unset() {
         s.m_.choice->chooser.seen = nullptr;
         s.m_.choice->chooser.reached = nullptr;
+        s.m_.choice->set_horizon(UINT64_MAX);
         s.m_.observables->track_open(false);
         s.trail_.reset();
       }

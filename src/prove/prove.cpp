@@ -308,6 +308,7 @@ Result prove_symbolic(Model& model, const Options& options) {
   // The runtime's own error at the tick BMC found (the explicit engine's note).
   if (search.error)
     r.notes.push_back(kTickErrorNote + replay_tick_error(model, search.error->path));
+  if (!search.stopped_early.empty()) r.notes.push_back(search.stopped_early);
   if (!search.error_decided && !r.vacuity)
     r.notes.push_back("no tick up to tick " + std::to_string(search.depth) +
                       " stops with an error; whether a later one does is not decided");

@@ -70,6 +70,13 @@ struct Options {
   std::uint64_t depth = 0;             // 0: until every reachable state is explored
   std::size_t max_states = 2'000'000;  // beyond it the answer is bounded
   std::string engine = "auto";         // auto | explicit | symbolic
+  // What the symbolic engine may spend, in Z3's resource count (its own tally of solver steps:
+  // the same for the same question on any machine, unlike a clock). Depths and frames bound
+  // the search's length, not its work: one check or one IC3/PDR frame can take hours. Each
+  // check and query gets what is left; when it is spent the search stops, and what it left
+  // open is bounded at the depth BMC had checked. The heaviest shipped or tested mission
+  // spends about 30 million; Z3 counts 0.5 to 1 million a second on one core.
+  std::uint64_t symbolic_resources = 100'000'000;
 };
 
 struct Result {

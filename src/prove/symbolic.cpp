@@ -72,6 +72,50 @@ bool is_variable(const z3::expr& e) {
   return e.is_app() && e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED;
 }
 
+// The search's resource budget (Options::symbolic_resources), read off Z3's count of the context's
+// steps, which every solver's statistics report.
+class Budget {
+ public:
+  Budget(z3::context& ctx, z3::solver& meter, std::uint64_t total)
+      : ctx_(ctx), meter_(meter), total_(total) {}
+  std::uint64_t left() const {
+    const z3::stats stats = meter_.statistics();
+    std::uint64_t spent = 0;
+    for (unsigned i = 0; i < stats.size(); ++i)
+      if (stats.key(i) == "rlimit count") spent = stats.uint_value(i);
+    return spent < total_ ? total_ - spent : 0;
+  }
+  // The check `s` runs next may spend at most what is left; false when nothing is (Z3 reads a
+  // limit of 0 as none, so the check must not run). `params` are the solver's own: setting
+  // parameters again resets those not given.
+  bool limit(z3::solver& s, z3::params& params) const {
+    const unsigned resources = limit_now();
+    if (resources == 0) return false;
+    params.set("rlimit", resources);
+    s.set(params);
+    return true;
+  }
+  // The same for IC3/PDR, whose queries read the context's limit while it is set.
+  struct Scoped {
+    z3::context& ctx;
+    Scoped(z3::context& c, unsigned resources) : ctx(c) {
+      ctx.set("rlimit", std::to_string(resources).c_str());
+    }
+    ~Scoped() { ctx.set("rlimit", "0"); }
+    Scoped(const Scoped&) = delete;
+    Scoped& operator=(const Scoped&) = delete;
+  };
+  unsigned limit_now() const {
+    return static_cast<unsigned>(std::min<std::uint64_t>(left(), UINT32_MAX));
+  }
+  std::uint64_t total() const { return total_; }
+
+ private:
+  z3::context& ctx_;
+  z3::solver& meter_;
+  std::uint64_t total_;
+};
+
 // IC3/PDR (Z3's Spacer) on the goals k-induction could not prove: Horn clauses over an
 // invariant of the states between ticks, with at most `levels` frames (deterministic, unlike a
 // timeout). One query asks whether any of them can be reached; only when one can is each asked
@@ -82,7 +126,8 @@ struct PdrAnswers {
 };
 
 PdrAnswers spacer_answers(z3::context& ctx, SymbolicTick& tick, const Goals& goals,
-                          const std::vector<std::size_t>& open, unsigned levels) {
+                          const std::vector<std::size_t>& open, unsigned levels,
+                          const Budget& budget) {
   PdrAnswers out;
   out.proved.assign(goals.size(), false);
   out.reachable.assign(goals.size(), false);
@@ -151,6 +196,9 @@ PdrAnswers spacer_answers(z3::context& ctx, SymbolicTick& tick, const Goals& goa
     fp.add_rule(b0, ctx.str_symbol("bad0"));
     fp.add_rule(b1, ctx.str_symbol("bad"));
     z3::expr goal = bad();
+    const unsigned resources = budget.limit_now();
+    if (resources == 0) return z3::unknown;
+    const Budget::Scoped limit(ctx, resources);
     try {
       return fp.query(goal);
     } catch (const z3::exception&) {
@@ -217,11 +265,27 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     s.add(l == meaning);
     return l;
   };
+  const Budget budget(ctx, bmc, options.symbolic_resources);
+  // A check without an answer (the budget spent, or one Z3 cannot decide) stops the search:
+  // BMC cannot go deeper, and k-induction needs every shallower depth checked.
+  struct NoAnswer {
+    std::string why;
+  };
+  auto no_answer = [&](z3::solver& s, std::uint64_t k) {
+    if (budget.left() == 0)
+      return NoAnswer{"the symbolic engine spent its budget (" + std::to_string(budget.total()) +
+                      " of Z3's resource units) at tick " + std::to_string(k)};
+    return NoAnswer{"Z3 could not decide a check at tick " + std::to_string(k) + " (" +
+                    s.reason_unknown() + ")"};
+  };
   auto holds_under = [&](z3::solver& s, std::initializer_list<z3::expr> assumptions) {
     z3::expr_vector a(ctx);
     for (const z3::expr& e : assumptions) a.push_back(e);
     ++(&s == &bmc ? out.bmc_checks : out.induction_checks);
-    return s.check(a) == z3::sat;
+    if (!budget.limit(s, arithmetic)) throw no_answer(s, out.depth + 1);
+    const z3::check_result r = s.check(a);
+    if (r == z3::unknown) throw no_answer(s, out.depth + 1);
+    return r == z3::sat;
   };
   std::vector<SymState> path{tick.fresh()};
   std::vector<TickInputs> inputs;
@@ -308,7 +372,8 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
     for (std::size_t g : open)
       if (!reachable[g] && (!guarantees_only || goals.is_guarantee(g))) asked.push_back(g);
     if (asked.empty()) return;
-    const PdrAnswers pdr = spacer_answers(ctx, tick, goals, asked, levels);
+    const PdrAnswers pdr = spacer_answers(ctx, tick, goals, asked, levels, budget);
+    if (budget.left() == 0) throw no_answer(bmc, out.depth + 1);
     out.pdr_queries += pdr.queries;
     for (std::size_t g : asked) {
       proved[g] = pdr.proved[g];
@@ -322,63 +387,74 @@ SymbolicSearch symbolic_search(Model& m, const Options& options) {
   std::vector<std::vector<z3::expr>> ind_fails;  // per transition, per goal: a literal
   ind.add(tick.domain(ind_states[0]) && ind_states[0].started[0]);
   const std::uint64_t pdr_k = std::min<std::uint64_t>(bound, kInductionBeforePdr);
-  for (std::uint64_t k = 1; k <= bound; ++k) {
-    // Base case: every run of k ticks.
-    bmc_to(k);
-    if (stopped || open.empty()) break;
+  try {
+    for (std::uint64_t k = 1; k <= bound; ++k) {
+      // Base case: every run of k ticks.
+      bmc_to(k);
+      if (stopped || open.empty()) break;
 
-    // Induction step: k transitions from any state, pairwise distinct sources.
-    const std::string u = "i" + std::to_string(k) + ".";
-    TickEncoding step = tick.encode(ind_states.back(), tick.inputs(u + "in."), false, true);
-    ind.add(step.valid);
-    ind_states.push_back(pin(ind, tick, step.next, u));
-    // A proof must also rule out a wake-up loop deeper than the encoding.
-    std::vector<z3::expr> fails;
-    for (std::size_t g = 0; g < goals.size(); ++g)
-      fails.push_back(wanted[g] ? literal(ind, goals.bad(step, g) || step.overflow)
-                                : ctx.bool_val(false));
-    ind_fails.push_back(std::move(fails));
-    for (std::size_t g : open) {
-      if (reachable[g]) continue;
-      out.induction_k = k;
-      z3::expr_vector a(ctx);
-      for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) a.push_back(!ind_fails[j][g]);
-      a.push_back(ind_fails.back()[g]);
-      // The simple-path constraints (sources pairwise distinct), added lazily: only for
-      // the pairs a counterexample to induction repeats. The answer is the one all pairs
-      // give: unsat under some of them is unsat under all, and a model that repeats no
-      // pair satisfies all of them.
-      for (;;) {
-        ++out.induction_checks;
-        if (ind.check(a) == z3::unsat) {
-          proved[g] = true;
-          proved_k[g] = k;
-          break;
-        }
-        const z3::model model = ind.get_model();
-        bool repeated = false;
-        for (std::size_t x = 0; x + 1 < k; ++x)
-          for (std::size_t y = x + 1; y < k; ++y) {
-            const z3::expr same = tick.same(ind_states[x], ind_states[y]);
-            if (model.eval(same, true).is_true()) {
-              ind.add(!same);
-              repeated = true;
-            }
+      // Induction step: k transitions from any state, pairwise distinct sources.
+      const std::string u = "i" + std::to_string(k) + ".";
+      TickEncoding step = tick.encode(ind_states.back(), tick.inputs(u + "in."), false, true);
+      ind.add(step.valid);
+      ind_states.push_back(pin(ind, tick, step.next, u));
+      // A proof must also rule out a wake-up loop deeper than the encoding.
+      std::vector<z3::expr> fails;
+      for (std::size_t g = 0; g < goals.size(); ++g)
+        fails.push_back(wanted[g] ? literal(ind, goals.bad(step, g) || step.overflow)
+                                  : ctx.bool_val(false));
+      ind_fails.push_back(std::move(fails));
+      for (std::size_t g : open) {
+        if (reachable[g]) continue;
+        out.induction_k = k;
+        z3::expr_vector a(ctx);
+        for (std::size_t j = 0; j + 1 < ind_fails.size(); ++j) a.push_back(!ind_fails[j][g]);
+        a.push_back(ind_fails.back()[g]);
+        // The simple-path constraints (sources pairwise distinct), added lazily: only for
+        // the pairs a counterexample to induction repeats. The answer is the one all pairs
+        // give: unsat under some of them is unsat under all, and a model that repeats no
+        // pair satisfies all of them.
+        for (;;) {
+          ++out.induction_checks;
+          if (!budget.limit(ind, arithmetic)) throw no_answer(ind, out.depth + 1);
+          const z3::check_result r = ind.check(a);
+          if (r == z3::unsat) {
+            proved[g] = true;
+            proved_k[g] = k;
+            break;
           }
-        if (!repeated) break;
+          // Undecided: not proved at this k (or, the budget spent, at all).
+          if (r == z3::unknown) {
+            if (budget.left() == 0) throw no_answer(ind, out.depth + 1);
+            break;
+          }
+          const z3::model model = ind.get_model();
+          bool repeated = false;
+          for (std::size_t x = 0; x + 1 < k; ++x)
+            for (std::size_t y = x + 1; y < k; ++y) {
+              const z3::expr same = tick.same(ind_states[x], ind_states[y]);
+              if (model.eval(same, true).is_true()) {
+                ind.add(!same);
+                repeated = true;
+              }
+            }
+          if (!repeated) break;
+        }
       }
+      std::erase_if(open, [&](std::size_t g) { return proved[g]; });
+      if (k != pdr_k || open.empty()) continue;
+      // What k-induction has not proved by now it will rarely prove later. IC3/PDR is asked
+      // first with a few frames, which proves most guarantees; BMC then runs ahead, so that a
+      // guarantee a short run violates, or a trigger a short run reaches, costs neither
+      // IC3/PDR's full search nor deeper induction; IC3/PDR with all its frames takes what is
+      // still open.
+      ask_pdr(kPdrFirstLevels, true);
+      bmc_to(std::min(bound, kBmcBeforePdr));
+      if (stopped || open.empty()) break;
+      ask_pdr(kPdrMaxLevel, false);
     }
-    std::erase_if(open, [&](std::size_t g) { return proved[g]; });
-    if (k != pdr_k || open.empty()) continue;
-    // What k-induction has not proved by now it will rarely prove later. IC3/PDR is asked
-    // first with a few frames, which proves most guarantees; BMC then runs ahead, so that a
-    // guarantee a short run violates, or a trigger a short run reaches, costs neither
-    // IC3/PDR's full search nor deeper induction; IC3/PDR with all its frames takes what is
-    // still open.
-    ask_pdr(kPdrFirstLevels, true);
-    bmc_to(std::min(bound, kBmcBeforePdr));
-    if (stopped || open.empty()) break;
-    ask_pdr(kPdrMaxLevel, false);
+  } catch (const NoAnswer& e) {
+    out.stopped_early = e.why;
   }
   for (std::size_t p = 0; p < count; ++p) {
     out.proved[p] = proved[p];

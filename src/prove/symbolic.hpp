@@ -54,6 +54,9 @@ struct SymbolicSearch {
   // used); error_decided when that, or that no tick does, is known.
   std::optional<Finding> error;
   bool error_decided = true;
+  // Why the search stopped before its bound with guarantees open ("" when it did not): the
+  // resource budget spent, or a check Z3 could not decide.
+  std::string stopped_early;
 };
 
 // BMC with increasing depth (a violation is found at its shortest tick) and k-induction with

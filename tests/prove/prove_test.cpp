@@ -106,6 +106,46 @@ TEST(Prove, CounterexampleRunsOnTheRuntime) {
   EXPECT_EQ(run.log.back().event, runtime::LeafEvent::action_started);
 }
 
+// A contract whose maximum no explored run reaches ("ticks": [2, 9223372036854775807]: as long
+// as it takes) answers as a short one does, and completely: the ticks past the minimum look
+// alike, so they are not counted one state each. A small state limit makes a counter per tick
+// show as an incomplete (bounded) search.
+TEST(Prove, AContractWithoutAReachableMaximumCostsNoStatePerTick) {
+  prove::Options options;
+  options.max_states = 5'000;
+  for (const char* ticks : {"[2, 3]", "[2, 9223372036854775807]"}) {
+    SCOPED_TRACE(ticks);
+    auto files = mission_files("sample_drilling");
+    files["alternatives/drilling/rotary.xml"] = kFixedRotary;
+    files["world.json"] =
+        std::string(R"({"initial": "!IsBitCool", "actions": {"Drill": {"ticks": )") + ticks +
+        R"(, "on_success": "IsBitCool = false", "on_failure": "IsBitCool = false"},
+        "CoolDown": {"ticks": )" +
+        ticks + R"(, "on_success": "IsBitCool = true"}}})";
+    TempMission m(files);
+    const prove::Result r = prove_dir(m.dir(), options);
+    EXPECT_TRUE(r.complete);
+    EXPECT_EQ(answer(r, "CoolBit").verdict, Verdict::proved);
+    EXPECT_EQ(answer(r, "OneTool").verdict, Verdict::proved);
+  }
+  for (const char* ticks : {"2", "[2, 9223372036854775807]"}) {
+    SCOPED_TRACE(ticks);
+    auto files = hot_bit_after_a_drill();
+    files["world.json"] =
+        std::string(R"({"initial": "IsBitCool", "actions": {"Drill": {"ticks": )") + ticks +
+        R"(, "results": ["success"], "on_success": "IsBitCool = false"},
+        "CoolDown": {"ticks": 1, "results": ["success"], "on_success": "IsBitCool = true"}}})";
+    TempMission m(files);
+    const prove::Result r = prove_dir(m.dir(), options);
+    const prove::Answer& a = answer(r, "Cool");
+    ASSERT_EQ(a.verdict, Verdict::violated);
+    EXPECT_EQ(a.counterexample->tick, 2u);
+    EXPECT_EQ(
+        nlohmann::json::parse(a.counterexample->scenario)["actions"]["Drill"]["runs"][0]["ticks"],
+        2);
+  }
+}
+
 // An Environment requirement is an assumption: runs that break it are not runs of the world.
 TEST(Prove, EnvironmentRequirementsRestrictTheWorld) {
   auto files = mission_files("sample_drilling");

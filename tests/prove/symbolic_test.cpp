@@ -79,6 +79,52 @@ TEST(SymbolicAgreement, CuriosityIsProvedByOneIcQueryForAllOpenGuarantees) {
   EXPECT_EQ(by_pdr, 3u);
 }
 
+// The symbolic engine spends a budget of Z3's resource count (deterministic, unlike a clock),
+// not unbounded time: a search that would need more stops, keeps what it found (a violation
+// BMC reached is real) and leaves every other guarantee bounded at the depth BMC checked, with
+// a note saying so. sample_drilling needs about 2 million units: 20,000 decide nothing,
+// 1 million find CoolBit's violation at tick 1 but not OneTool's proof, the default both.
+TEST(SymbolicBudget, ASearchStopsAtItsBudgetAndKeepsOnlyWhatItDecided) {
+  const Gated g(mission_dir("sample_drilling"));
+  ASSERT_TRUE(g.ok());
+  auto prove_with = [&](std::uint64_t resources) {
+    prove::Options o;
+    o.engine = "symbolic";
+    o.symbolic_resources = resources;
+    return prove::prove(*g.outcome->mission, *g.doc, g.world, o);
+  };
+  auto notes = [](const prove::Result& r) {
+    std::string out;
+    for (const auto& n : r.notes) out += n + "\n";
+    return out;
+  };
+  const prove::Result none = prove_with(20'000);
+  EXPECT_FALSE(none.complete);
+  EXPECT_EQ(answer(none, "CoolBit").verdict, Verdict::bounded);
+  EXPECT_EQ(answer(none, "OneTool").verdict, Verdict::bounded);
+  EXPECT_EQ(answer(none, "OneTool").depth, 0u);
+  EXPECT_NE(notes(none).find("the symbolic engine spent its budget (20000 of Z3's resource "
+                             "units) at tick 1\n"),
+            std::string::npos)
+      << notes(none);
+  const prove::Result some = prove_with(1'000'000);
+  EXPECT_EQ(answer(some, "CoolBit").verdict, Verdict::violated);
+  EXPECT_EQ(answer(some, "CoolBit").counterexample->tick, 1u);
+  EXPECT_EQ(answer(some, "OneTool").verdict, Verdict::bounded);
+  EXPECT_NE(notes(some).find("spent its budget"), std::string::npos) << notes(some);
+  const prove::Result all = prove_with(prove::Options{}.symbolic_resources);
+  EXPECT_EQ(answer(all, "CoolBit").verdict, Verdict::violated);
+  EXPECT_EQ(answer(all, "OneTool").verdict, Verdict::proved);
+  EXPECT_EQ(notes(all).find("spent its budget"), std::string::npos) << notes(all);
+  // What a bounded symbolic answer tells the user: which engine stopped where, and what to try.
+  const auto findings = gate::findings_of(none);
+  ASSERT_FALSE(findings.empty());
+  EXPECT_EQ(findings[0].check, "prove-bounded");
+  EXPECT_EQ(findings[0].notes.at(0),
+            "the symbolic engine checked every run up to tick 0 but could not prove it for longer "
+            "runs; try --engine explicit, or shrink the world to decide it");
+}
+
 // The missions of prove_test.cpp: sample_drilling (Repeat, wake-up re-ticks) and its
 // variants, as shipped and with one drilling cycle instead of the Repeat.
 TEST(SymbolicAgreement, DrillingMissions) {
