@@ -116,7 +116,8 @@ nlohmann::ordered_json value_json(const Value& value) {
     case Value::Kind::integer: return value.integer;
     case Value::Kind::enumeration: return value.text;
     case Value::Kind::real: {
-      if (value.text == number_text(value.real) && std::isfinite(value.real)) return value.real;
+      if (value.text == number_text(value.real) && std::isfinite(value.real))
+        return number_json(value.real);
       std::string decimal = value.text;
       if (!is_plain_decimal(decimal) && !fraction_to_decimal(value.text, decimal))
         return value.text;
@@ -128,7 +129,7 @@ nlohmann::ordered_json value_json(const Value& value) {
           std::from_chars(decimal.data(), decimal.data() + decimal.size(), number);
       if (ec != std::errc() || ptr != decimal.data() + decimal.size() || !std::isfinite(number))
         return value.text;
-      return number;
+      return number_json(number);
     }
   }
   return value.to_string();

@@ -25,9 +25,9 @@ std::string number_text(std::int64_t value);
 nlohmann::ordered_json number_json(double value);
 
 // A value (a witness, a state, what a property read) as JSON: booleans as JSON booleans,
-// integers as JSON integers, reals as JSON reals (`-2.0` stays a real, so that a scenario made
-// of it reads back with the same types; a real whose exact value is no double, such as the
-// solver's 1/3, as its exact text), enumeration values as strings.
+// numbers as number_json writes them (a whole real as an integer, `-2`: a reader types a
+// number by its variable's declaration, fretish::number_is_integer; a real whose exact value
+// is no double, such as the solver's 1/3, as its exact text), enumeration values as strings.
 nlohmann::ordered_json value_json(const Value& value);
 
 // A number read at run time (by a monitor, from a trace) as a Value: integer-valued numbers

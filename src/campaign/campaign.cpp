@@ -647,8 +647,7 @@ RunRecord observe_trace(const load::Mission& mission, const std::string& content
         value = Value::of_bool(v.boolean);
       else if (v.kind == monitor::TraceValue::Kind::text)
         value = Value::of_enum(v.text);
-      else if (v.integer && mission.domain.find(name) != nullptr &&
-               mission.domain.find(name)->type == fretish::VarType::integer)
+      else if (fretish::number_is_integer(mission.domain.find(name), v.number, v.integer))
         value = Value::of_int(static_cast<std::int64_t>(v.number));
       else
         value = Value::of_real(v.number, number_text(v.number));

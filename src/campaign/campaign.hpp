@@ -14,6 +14,7 @@
 #include "compile/compile.hpp"
 #include "load/mission.hpp"
 #include "prove/world_model.hpp"
+#include "runtime/scenario.hpp"
 #include "verify/impact.hpp"
 #include "verify/verify.hpp"
 
@@ -179,6 +180,9 @@ class Replayer {
   // tree, reset to exactly its fresh state: a Replayer runs one scenario at a time.
   RunRecord run(const std::string& json, const std::string& file,
                 const std::set<std::string>& stop_after = {}) const;
+  // A scenario (JSON text) parsed, its numbers typed by the mission's declarations
+  // (runtime::type_numbers). Throws runtime::ScenarioError when it does not parse.
+  runtime::Scenario scenario(const std::string& json, const std::string& file) const;
 
  private:
   struct Impl;

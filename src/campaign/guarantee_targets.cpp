@@ -172,8 +172,7 @@ Play play(const load::Mission& traps, const Replayer& replayer, const std::strin
     options.log_conditions = false;
     std::vector<bt::NodeModel> models;
     if (traps.nodes) models = *traps.nodes;
-    runtime::Runner runner(replayer.document(), runtime::parse_scenario(json, file), options,
-                           models);
+    runtime::Runner runner(replayer.document(), replayer.scenario(json, file), options, models);
     runtime::PropertyMonitor monitor(traps, runner.engine());
     runtime::SelectionObserver selections(runner.engine(), [&](const runtime::Selection& s) {
       std::string name = s.alternative;

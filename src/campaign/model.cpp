@@ -779,9 +779,7 @@ std::vector<Model::Pick> Model::minimise(
 
 std::string state_json(const State& state) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (const auto& [name, v] : state)
-    j[name] = v.kind == Value::Kind::real && v.text == number_text(v.real) ? number_json(v.real)
-                                                                           : value_json(v);
+  for (const auto& [name, v] : state) j[name] = value_json(v);
   return j.dump();
 }
 

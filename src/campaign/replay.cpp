@@ -90,6 +90,12 @@ Replayer::Replayer(const load::Mission& mission, const compile::Options& options
 
 Replayer::~Replayer() = default;
 
+runtime::Scenario Replayer::scenario(const std::string& json, const std::string& file) const {
+  runtime::Scenario scenario = runtime::parse_scenario(json, file);
+  runtime::type_numbers(scenario, impl_->vocabulary);
+  return scenario;
+}
+
 const bt::Document& Replayer::document() const {
   return impl_->document;
 }
@@ -98,7 +104,7 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
                         const std::set<std::string>& stop_after) const {
   RunRecord record;
   record.source = file;
-  runtime::Scenario scenario = runtime::parse_scenario(json, file);
+  runtime::Scenario scenario = this->scenario(json, file);
   // Names and values that do not fit the mission are refused, as `uabt run` refuses them.
   const std::vector<std::string> misfits = runtime::check_scenario(scenario, impl_->vocabulary);
   if (!misfits.empty()) {

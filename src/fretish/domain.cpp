@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 namespace uabt::fretish {
@@ -25,6 +26,13 @@ const char* var_type_name(VarType t) {
     case VarType::enumeration: return "enum";
   }
   return "boolean";
+}
+
+bool number_is_integer(std::optional<VarType> declared, double number, bool written_integer) {
+  if (declared == VarType::real) return false;
+  if (declared != VarType::integer) return written_integer;
+  // In range first (this also refuses NaN), then whole.
+  return written_integer || (number >= -0x1p63 && number < 0x1p63 && std::trunc(number) == number);
 }
 
 const Variable* Domain::find(const std::string& name) const {

@@ -33,6 +33,15 @@ struct Variable {
   std::string invalid;
 };
 
+// Whether a number written for a variable (in a scenario, a trace, world.json) is an integer:
+// the type declared for the variable decides, not how JSON writes the number. A real
+// variable's number is a real (`12` as well as `12.5`); an integer variable's is an integer
+// when it is whole and within 64 bits (`12`, `12.0`). Without a number type declared
+// (nullopt, a boolean, an enum) the number is what JSON writes, `written_integer` (`12`, a
+// whole number within 64 bits, is an integer; `12.0` a real), and so is a number that fits no
+// integer (12.5 for an integer variable), for the reader's type check to refuse.
+bool number_is_integer(std::optional<VarType> declared, double number, bool written_integer);
+
 // The declaration as domain.fret writes it: "integer wind in [0, 15]", "enum terrain in {…}".
 std::string declaration_text(const Variable& v);
 // Same name aside, the same type, bounds (by value) and set of enum literals.
@@ -62,5 +71,12 @@ struct Domain {
   // Name of the enum variable that has `literal` among its values, if exactly one has.
   const Variable* enum_owning(const std::string& literal) const;
 };
+
+// number_is_integer for a number written for the variable `declared` (nullptr: a name the
+// domain does not declare).
+inline bool number_is_integer(const Variable* declared, double number, bool written_integer) {
+  return number_is_integer(declared != nullptr ? std::optional(declared->type) : std::nullopt,
+                           number, written_integer);
+}
 
 }  // namespace uabt::fretish

@@ -87,7 +87,7 @@ BehaviorTreeManager::BehaviorTreeManager(fs::path mission_dir, Scenario scenario
     : dir_(std::move(mission_dir)), scenario_(std::move(scenario)), options_(std::move(options)) {}
 
 // The scenario's names and values against the mission and every uplink it may receive.
-void BehaviorTreeManager::check_against_mission(const load::Mission& mission) const {
+void BehaviorTreeManager::fit_to_mission(const load::Mission& mission) {
   ScenarioVocabulary vocabulary;
   vocabulary.add(mission);
   std::vector<std::string> errors;
@@ -107,6 +107,7 @@ void BehaviorTreeManager::check_against_mission(const load::Mission& mission) co
     std::string error;  // a package that does not load is the gate's to reject, at its tick
     if (auto merged = load::load_mission(dir_, with_uplink, error)) vocabulary.add(*merged);
   }
+  type_numbers(scenario_, vocabulary);
   const std::vector<std::string> names = check_scenario(scenario_, vocabulary);
   errors.insert(errors.end(), names.begin(), names.end());
   if (errors.empty()) return;
@@ -146,7 +147,7 @@ ManagerRun BehaviorTreeManager::run() {
       if (f.severity == Severity::error) result.unverified.push_back(f);
   gate::Outcome running = admitted(std::move(checked), replay);
 
-  check_against_mission(*running.mission);
+  fit_to_mission(*running.mission);
 
   RunOptions run_options;
   run_options.max_ticks = options_.max_ticks;

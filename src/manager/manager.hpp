@@ -82,9 +82,10 @@ class BehaviorTreeManager {
   ManagerRun run();
 
  private:
-  // Throws ScenarioError ("file:line:col: error: …" lines) when the scenario's names or values
-  // do not fit the mission (scenario_check.hpp).
-  void check_against_mission(const load::Mission& mission) const;
+  // Types the scenario's numbers by the mission's declarations (those of the uplinks it
+  // receives too), then throws ScenarioError ("file:line:col: error: …" lines) when its names
+  // or values do not fit the mission (scenario_check.hpp).
+  void fit_to_mission(const load::Mission& mission);
 
   std::filesystem::path dir_;
   Scenario scenario_;

@@ -18,27 +18,25 @@ std::optional<Val> to_val(const TraceValue& v, const fretish::Variable* declared
                           std::string& error) {
   using fretish::VarType;
   Val out;
+  // The declared type decides what a number is (12 for a real variable is a real); an
+  // undeclared number is what JSON writes.
+  const bool integer = fretish::number_is_integer(declared, v.number, v.integer);
   switch (v.kind) {
     case TraceValue::Kind::boolean: out = Val::of_bool(v.boolean); break;
     case TraceValue::Kind::number:
-      // A declared type decides; an undeclared number is an integer as JSON wrote it.
-      out = (declared != nullptr ? declared->type == fretish::VarType::integer : v.integer)
-                ? Val::of_integer(v.number)
-                : Val::of_number(v.number);
+      out = integer ? Val::of_integer(v.number) : Val::of_number(v.number);
       break;
     case TraceValue::Kind::text: out = Val::of_symbol(symbols.id(v.text)); break;
     case TraceValue::Kind::none: return out;  // no value, whatever the type
   }
   if (declared == nullptr) return out;
-  const bool fits = (declared->type == VarType::boolean && v.kind == TraceValue::Kind::boolean) ||
-                    ((declared->type == VarType::integer || declared->type == VarType::real) &&
-                     v.kind == TraceValue::Kind::number &&
-                     (declared->type == VarType::real ||
-                      // Whole, and within 64 bits (casting 1e31 to an integer is undefined).
-                      (std::trunc(v.number) == v.number && std::fabs(v.number) < 0x1p63))) ||
-                    (declared->type == VarType::enumeration && v.kind == TraceValue::Kind::text &&
-                     std::find(declared->enum_values.begin(), declared->enum_values.end(),
-                               v.text) != declared->enum_values.end());
+  const bool fits =
+      (declared->type == VarType::boolean && v.kind == TraceValue::Kind::boolean) ||
+      ((declared->type == VarType::integer || declared->type == VarType::real) &&
+       v.kind == TraceValue::Kind::number && (declared->type == VarType::real || integer)) ||
+      (declared->type == VarType::enumeration && v.kind == TraceValue::Kind::text &&
+       std::find(declared->enum_values.begin(), declared->enum_values.end(), v.text) !=
+           declared->enum_values.end());
   if (!fits) {
     error = std::string("the domain declares it ") + fretish::var_type_name(declared->type);
     return std::nullopt;

@@ -37,7 +37,8 @@ bool read_value(const std::string& name, const json& v, std::uint64_t tick, int 
   } else if (v.is_number()) {
     value.kind = TraceValue::Kind::number;
     value.number = v.get<double>();
-    value.integer = v.is_number_integer();
+    value.integer =
+        v.is_number_integer() && !(v.is_number_unsigned() && v.get<std::uint64_t>() > INT64_MAX);
     if (!std::isfinite(value.number)) {
       reader.error(line, 1, "'" + name + "' is not a finite number");
       return false;

@@ -17,7 +17,9 @@ struct TraceValue {
   enum class Kind { boolean, number, text, none } kind = Kind::boolean;
   bool boolean = false;
   double number = 0;
-  bool integer = false;  // the JSON number has no fraction or exponent
+  // JSON writes a whole number within 64 bits (`12`, not `12.0`): what the number is for a
+  // name the domain does not declare (fretish::number_is_integer).
+  bool integer = false;
   std::string text;
 };
 

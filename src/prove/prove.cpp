@@ -10,6 +10,7 @@
 #include "prove/symbolic.hpp"
 #include "prove/symbolic_value.hpp"
 #include "runtime/runner.hpp"
+#include "runtime/scenario_check.hpp"
 #include "runtime/trace.hpp"
 
 namespace uabt::prove {
@@ -157,6 +158,10 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
   cex.tick = f.tick;
   cex.scenario = std::move(scenario);
   runtime::Scenario parsed = runtime::parse_scenario(cex.scenario, "counterexample.json");
+  // Its numbers typed as `uabt run` types them, by the mission's declarations.
+  runtime::ScenarioVocabulary vocabulary;
+  vocabulary.add(m.mission);
+  runtime::type_numbers(parsed, vocabulary);
   std::vector<bt::NodeModel> models;
   if (m.mission.nodes) models = *m.mission.nodes;
   runtime::Runner runner(m.doc, std::move(parsed), runtime::RunOptions{}, models);

@@ -266,6 +266,9 @@ ActionContract contract(const std::string& name, const Json& j, const Locator& l
                                                   "not " +
                                                   v.dump());
         }
+        // Typed as a scenario's output is, by the port's type: `2` for a double port is 2.0.
+        if (vocabulary != nullptr)
+          runtime::type_number(written, vocabulary->scenario.output_type(name, port));
         if (vocabulary != nullptr && vocabulary->scenario.is_leaf(name)) {
           bool at_value = false;
           const std::string why = vocabulary->scenario.output_misfit(name, port, written, at_value);

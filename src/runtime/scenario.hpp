@@ -50,7 +50,9 @@ struct ScenarioEvent {
 //    (an action may also list "runs": [{"ticks": 3, "result": "failure", "effects": {…}}, …]
 //     and "outputs": {"waypoint": 3}, what it writes to its output ports, as may a run)
 //    "events": [{"at": 15, "set": {"OnDust": false}}, {"at": 40, "uplink": "uplinks/on_mud"}]}
-// JSON booleans, integers, reals and strings become state values (strings hold enum values).
+// JSON booleans, integers, reals and strings become state values (strings hold enum values);
+// a number's type is what JSON writes until type_numbers (scenario_check.hpp) gives it the
+// type its variable is declared.
 // A counterexample `uabt prove` writes also says which guarantee it violates:
 //   "counterexample_of": "CoolBit"
 struct Scenario {

@@ -78,20 +78,52 @@ void add_document(const bt::Document& doc, ScenarioVocabulary& v) {
   for (const bt::NodeModel& model : doc.node_models) add_model(model, v);
 }
 
-// What a port's C++ type (nodes.xml's type=) takes, "" for a type uabt does not judge.
-std::string port_misfit(const ScriptValue& value, const std::string& type) {
-  using K = ScriptValue::Kind;
-  if (type == "bool") return value.kind == K::boolean ? "" : "is not a boolean (true or false)";
-  if (type == "double" || type == "float")
-    return value.kind == K::integer || value.kind == K::real ? "" : "is not a number";
+// What a port's C++ type (nodes.xml's type=) holds, as a domain type (a string as an enum);
+// nullopt for a type uabt does not judge.
+std::optional<fretish::VarType> port_value_type(const std::string& type) {
+  using fretish::VarType;
+  if (type == "bool") return VarType::boolean;
+  if (type == "double" || type == "float") return VarType::real;
   static const std::set<std::string> integers = {
       "int",     "unsigned",           "unsigned int", "long",     "unsigned long", "long long",
       "short",   "unsigned long long", "int8_t",       "int16_t",  "int32_t",       "int64_t",
       "uint8_t", "uint16_t",           "uint32_t",     "uint64_t", "size_t",        "std::size_t"};
-  if (integers.contains(type)) return value.kind == K::integer ? "" : "is not an integer";
+  if (integers.contains(type)) return VarType::integer;
   if (type == "std::string" || type == "string" || type.starts_with("std::__cxx11::basic_string"))
-    return value.kind == K::string ? "" : "is not a string";
+    return VarType::enumeration;
+  return std::nullopt;
+}
+
+// What a port's C++ type takes, "" for a type uabt does not judge.
+std::string port_misfit(const ScriptValue& value, const std::string& type) {
+  using K = ScriptValue::Kind;
+  const auto held = port_value_type(type);
+  if (!held) return "";
+  switch (*held) {
+    case fretish::VarType::boolean:
+      return value.kind == K::boolean ? "" : "is not a boolean (true or false)";
+    case fretish::VarType::real:
+      return value.kind == K::integer || value.kind == K::real ? "" : "is not a number";
+    case fretish::VarType::integer: return value.kind == K::integer ? "" : "is not an integer";
+    case fretish::VarType::enumeration: return value.kind == K::string ? "" : "is not a string";
+  }
   return "";
+}
+
+// The output (or inout) port `port` of node `kind` in `ports`, nullptr when it has none;
+// `outputs` collects the names of its output ports.
+const bt::Port* output_port(const std::map<std::string, std::vector<bt::Port>>& ports,
+                            const std::string& kind, const std::string& port,
+                            std::set<std::string>* outputs = nullptr) {
+  const auto it = ports.find(kind);
+  const bt::Port* found = nullptr;
+  if (it != ports.end())
+    for (const bt::Port& p : it->second)
+      if (p.direction == "output_port" || p.direction == "inout_port") {
+        if (outputs != nullptr) outputs->insert(p.name);
+        if (p.name == port && found == nullptr) found = &p;
+      }
+  return found;
 }
 
 }  // namespace
@@ -146,15 +178,8 @@ std::string ScenarioVocabulary::output_misfit(const std::string& action, const s
                                               const ScriptValue& value, bool& at_value) const {
   at_value = false;
   const std::string kind = base_name(action);
-  const auto it = ports.find(kind);
   std::set<std::string> outputs;
-  const bt::Port* found = nullptr;
-  if (it != ports.end())
-    for (const bt::Port& p : it->second)
-      if (p.direction == "output_port" || p.direction == "inout_port") {
-        outputs.insert(p.name);
-        if (p.name == port) found = &p;
-      }
+  const bt::Port* found = output_port(ports, kind, port, &outputs);
   if (found == nullptr) {
     if (outputs.empty())
       return "'" + kind + "' has no output port in nodes.xml, so it writes no '" + port + "'";
@@ -169,6 +194,49 @@ std::string ScenarioVocabulary::output_misfit(const std::string& action, const s
   return "the value of output port '" + port + "' of '" + kind + "', " +
          (value.is_string() ? "\"" + value.to_string() + "\"" : value.to_string()) + ", " + why +
          " (the port's type is " + found->type + ")";
+}
+
+std::optional<fretish::VarType> ScenarioVocabulary::state_type(const std::string& key) const {
+  const auto it = variables.find(key);
+  if (it == variables.end()) return std::nullopt;
+  return it->second.type;
+}
+
+std::optional<fretish::VarType> ScenarioVocabulary::output_type(const std::string& action,
+                                                                const std::string& port) const {
+  const bt::Port* found = output_port(ports, base_name(action), port);
+  if (found == nullptr) return std::nullopt;
+  return port_value_type(found->type);
+}
+
+void type_number(ScriptValue& value, std::optional<fretish::VarType> declared) {
+  using K = ScriptValue::Kind;
+  if (value.kind != K::integer && value.kind != K::real) return;
+  const bool integer =
+      fretish::number_is_integer(declared, value.as_double(), value.kind == K::integer);
+  if (integer && value.kind == K::real)
+    value = ScriptValue::of_int(static_cast<std::int64_t>(value.real));
+  else if (!integer && value.kind == K::integer)
+    value = ScriptValue::of_real(static_cast<double>(value.integer));
+}
+
+void type_numbers(Scenario& scenario, const ScenarioVocabulary& vocabulary) {
+  const auto state = [&](StateAssignment& assignment) {
+    for (auto& [key, value] : assignment) type_number(value, vocabulary.state_type(key));
+  };
+  const auto outputs = [&](const std::string& action, StateAssignment& assignment) {
+    for (auto& [port, value] : assignment) type_number(value, vocabulary.output_type(action, port));
+  };
+  state(scenario.initial);
+  for (ScenarioEvent& e : scenario.events) state(e.set);
+  for (auto& [name, spec] : scenario.actions) {
+    state(spec.effects);
+    outputs(name, spec.outputs);
+    for (ActionRun& run : spec.runs) {
+      state(run.effects);
+      outputs(name, run.outputs);
+    }
+  }
 }
 
 void ScenarioVocabulary::add(const load::Mission& mission) {

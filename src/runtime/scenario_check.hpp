@@ -3,6 +3,7 @@
 // with "did you mean" for a likely typo.
 #pragma once
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -31,7 +32,23 @@ struct ScenarioVocabulary {
   // value, not the port's name, is wrong.
   std::string output_misfit(const std::string& action, const std::string& port,
                             const ScriptValue& value, bool& at_value) const;
+  // The type declared for what a scenario gives state variable `key`: the domain's; nullopt
+  // when the domain does not declare it.
+  std::optional<fretish::VarType> state_type(const std::string& key) const;
+  // The type of what `action` writes to its output port `port`: the port's type in nodes.xml
+  // as a domain type (double a real, int an integer, ...); nullopt when it declares none.
+  std::optional<fretish::VarType> output_type(const std::string& action,
+                                              const std::string& port) const;
 };
+
+// `value`, when a number, as the type `declared` gives it (fretish::number_is_integer): the
+// integer 12 becomes the real 12 for a real variable, the real 12.0 the integer 12 for an
+// integer one; any other value is left as it is.
+void type_number(ScriptValue& value, std::optional<fretish::VarType> declared);
+// Every number of `scenario` typed by what it is for: a state value (initial, events,
+// effects) by the domain's declaration, an output by its port's type. A number for a name
+// nothing declares keeps the type JSON gives it. check_scenario judges the typed scenario.
+void type_numbers(Scenario& scenario, const ScenarioVocabulary& vocabulary);
 
 // " (did you mean 'x'?)" for the closest of `known` within two edits (a third of the name at
 // most), "" when none is close.
@@ -44,7 +61,8 @@ std::string misfit(const ScriptValue& value, const fretish::Variable& var);
 std::string misfit_message(const std::string& name, const ScriptValue& value,
                            const fretish::Variable& var);
 
-// "file:line:col: error: …" lines, empty when the scenario fits.
+// "file:line:col: error: …" lines, empty when the scenario (its numbers typed, type_numbers)
+// fits.
 std::vector<std::string> check_scenario(const Scenario& scenario,
                                         const ScenarioVocabulary& vocabulary);
 

@@ -20,7 +20,8 @@ std::string lower_case(std::string text) {
 std::string reads_text(const std::vector<std::pair<std::string, ScriptValue>>& reads) {
   std::string out;
   for (const auto& [key, value] : reads)
-    out += (out.empty() ? "" : ", ") + key + "=" + (value.empty() ? "unset" : value.to_string());
+    out += (out.empty() ? "" : ", ") + key + "=" +
+           (value.empty() ? "unset" : to_value(value).to_string());
   return out;
 }
 
@@ -67,14 +68,8 @@ void NodeTracer::on_node_ticked(NodeId node, NodeStatus result) {
 }
 
 Json value_json(const ScriptValue& v) {
-  switch (v.kind) {
-    case ScriptValue::Kind::boolean: return v.boolean;
-    case ScriptValue::Kind::integer: return v.integer;
-    case ScriptValue::Kind::real: return v.real;
-    case ScriptValue::Kind::string: return v.text;
-    case ScriptValue::Kind::empty: break;
-  }
-  return nullptr;
+  if (v.empty()) return nullptr;
+  return uabt::value_json(to_value(v));
 }
 
 std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
@@ -115,7 +110,7 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
         j["swapped"] = e.swapped;
         j["halted"] = e.halted;
       }
-      j["latency_ms"] = e.latency_ms;
+      j["latency_ms"] = number_json(e.latency_ms);
       Json findings = Json::array();
       for (const auto& f : e.findings)
         findings.push_back({{"check", f.check},

@@ -60,7 +60,8 @@ class NodeTracer : public Observer {
 };
 
 std::string trace_json_lines(const std::vector<TraceEvent>& trace);
-// A state value as it appears in the trace: a JSON boolean, number or string; null when unset.
+// A state value as it appears in the trace and in scenarios: uabt::value_json's JSON boolean,
+// number (a whole real as an integer) or string; null when unset.
 nlohmann::ordered_json value_json(const ScriptValue& value);
 // One line per event; a completed root's status is left to the final "mission <verdict>"
 // line, so that the outcome is printed once. Uplink packages and the files of a rejected one's

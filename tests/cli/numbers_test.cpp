@@ -5,11 +5,15 @@
 // --gtest_filter='Numbers.*'.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -212,6 +216,195 @@ TEST(Units, MillisecondsInARequirementCountTicksOfTheDeclaredPeriod) {
             std::string::npos)
       << no_period.out;
   EXPECT_NE(no_period.exit_code, 0);
+}
+
+}  // namespace
+
+namespace {
+
+using uabt::testing::CliRun;
+
+// A real variable whose values are whole (speed 12, doubled to 24) and that the tree changes by
+// a fraction: `speed = speed - 0.5` only runs when the blackboard holds speed as a real, as
+// BehaviorTree.CPP refuses a real assigned into an integer entry. An integer variable beside it.
+const std::map<std::string, std::string> kWhole = {
+    {"mission.xml",
+     "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
+     "  <BehaviorTree ID=\"MainTree\">\n"
+     "    <Repeat num_cycles=\"3\"><Sequence><Adaptable ID=\"move\"/>"
+     "<Script code=\"speed = speed - 0.5\"/></Sequence></Repeat>\n"
+     "  </BehaviorTree>\n</root>\n"},
+    {"alternatives/move/fast.xml",
+     "<root BTCPP_format=\"4\"><BehaviorTree ID=\"fast\"><Drive/></BehaviorTree></root>\n"},
+    {"alternatives/move/slow.xml",
+     "<root BTCPP_format=\"4\"><BehaviorTree ID=\"slow\"><Creep/></BehaviorTree></root>\n"},
+    {"domain.fret", "real speed in [0, 100]\ninteger battery in [0, 100]\n"},
+    {"requirements.fret",
+     "Calm: In move if speed < 30 & battery > 20 Mission shall satisfy selected_alt = fast\n"
+     "Other: In move Mission shall satisfy selected_alt = slow\n"
+     "Bounded: Mission shall always satisfy speed < 40\n"},
+    {"world.json",
+     "{\"initial\": \"speed = 12 & battery = 50\", \"actions\": {\"Drive\": {\"ticks\": 2, "
+     "\"on_success\": \"speed = speed * 2\"}, \"Creep\": {\"ticks\": 1}}}\n"}};
+
+// A whole number written with a fraction part (`12.0`): what a real is written as when its
+// writer does not know that its reader types it by the declaration.
+bool has_whole_real(const std::string& text) {
+  for (std::size_t at = text.find(".0"); at != std::string::npos; at = text.find(".0", at + 1)) {
+    std::size_t end = at + 2;
+    while (end < text.size() && text[end] == '0') ++end;
+    if (at > 0 && std::isdigit(static_cast<unsigned char>(text[at - 1])) &&
+        (end == text.size() || !std::isdigit(static_cast<unsigned char>(text[end]))))
+      return true;
+  }
+  return false;
+}
+
+// prove's counterexample writes the whole real speed as 12, 24 and 47; `uabt run` replays it to
+// the same violation at the same tick (speed is a real on the blackboard, so the script's
+// fraction fits it), its monitor trace writes 12 too, and `uabt monitor` reads that trace back to
+// the run's verdicts.
+TEST(Numbers, WholeRealsOfACounterexampleAreIntegersAndReplay) {
+  TempMission m(kWhole, "whole");
+  const std::string dir = m.dir().parent_path().string();
+  const CliRun prove = uabt::testing::run_uabt_in(dir, "prove whole --counterexamples cex");
+  EXPECT_NE(prove.out.find("guarantee 'Bounded' is violated at tick 3"), std::string::npos)
+      << prove.out;
+  const std::string scenario = read(m.dir().parent_path() / "cex/Bounded.json");
+  EXPECT_NE(scenario.find("\"initial\": {\n    \"speed\": 12,\n    \"battery\": 50\n  }"),
+            std::string::npos)
+      << scenario;
+  EXPECT_NE(scenario.find("\"effects\": {\n            \"speed\": 24\n"), std::string::npos)
+      << scenario;
+  EXPECT_NE(scenario.find("\"effects\": {\n            \"speed\": 47\n"), std::string::npos)
+      << scenario;
+  EXPECT_FALSE(has_whole_real(scenario)) << scenario;
+
+  const CliRun run = uabt::testing::run_uabt_in(
+      dir, "run whole --scenario cex/Bounded.json --monitor-trace monitor.jsonl");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("tick 3: guarantee Bounded violated (speed=46)\ntick 3: mission success\n"
+                         "selection Calm: held\nselection Other: held\n"
+                         "property Bounded: violated from tick 3\n"),
+            std::string::npos)
+      << run.out;
+  const std::string trace = read(m.dir().parent_path() / "monitor.jsonl");
+  EXPECT_NE(trace.find("\n{\"tick\":1,\"state\":{\"speed\":12},\"select\":{\"move\":[{"
+                       "\"alternative\":\"fast\",\"read\":{\"speed\":12,\"battery\":50}}]}}\n"),
+            std::string::npos)
+      << trace;
+  EXPECT_NE(trace.find("{\"tick\":3,\"state\":{\"speed\":46}"), std::string::npos) << trace;
+  EXPECT_FALSE(has_whole_real(trace)) << trace;
+  const CliRun monitor = uabt::testing::run_uabt_in(dir, "monitor whole monitor.jsonl");
+  EXPECT_EQ(monitor.out,
+            "whole/requirements.fret:1:7: Calm (selection): held\n"
+            "whole/requirements.fret:2:8: Other (selection): held\n"
+            "whole/requirements.fret:3:10: Bounded: violated from tick 3 (speed=46)\n"
+            "verdict: fail (3 ticks; 2 held, 1 violated, 0 not monitored)\n");
+}
+
+// Every scenario `uabt tests` writes gives speed and what Drive makes of it as whole numbers,
+// and each replays with `uabt run` without an error.
+TEST(Numbers, WholeRealsOfTheCampaignAreIntegersAndReplay) {
+  TempMission m(kWhole, "whole");
+  const std::string dir = m.dir().parent_path().string();
+  const CliRun tests = uabt::testing::run_uabt_in(dir, "tests whole --out tests");
+  EXPECT_EQ(tests.exit_code, 0) << tests.out;
+  int scenarios = 0;
+  for (const auto& e : fs::directory_iterator(m.dir().parent_path() / "tests")) {
+    if (!e.path().filename().string().starts_with("move-")) continue;
+    ++scenarios;
+    const std::string name = e.path().filename().string();
+    const std::string text = read(e.path());
+    EXPECT_FALSE(has_whole_real(text)) << name << "\n" << text;
+    const auto j = nlohmann::json::parse(text);
+    EXPECT_TRUE(j["initial"]["speed"].is_number_integer()) << name << "\n" << text;
+    EXPECT_TRUE(j["actions"]["Drive"]["effects"]["speed"].is_number_integer()) << name << "\n"
+                                                                               << text;
+    const CliRun run = uabt::testing::run_uabt_in(dir, "run whole --scenario tests/" + name);
+    EXPECT_EQ(run.out.find("error"), std::string::npos) << name << "\n" << run.out;
+    EXPECT_NE(run.out.find("mission success"), std::string::npos) << name << "\n" << run.out;
+  }
+  EXPECT_EQ(scenarios, 5) << tests.out;
+}
+
+// A number is what its variable's declaration makes it, however JSON writes it: 12 for the
+// real speed is a real (the script's fraction fits it), 50.0 for the integer battery an integer;
+// 12.5 for battery is refused where it is written, in a scenario and in a trace.
+TEST(Numbers, ANumberIsWhatItsVariableIsDeclared) {
+  auto files = kWhole;
+  files["scenarios/typed.json"] =
+      "{\"max_ticks\": 1, \"initial\": {\"speed\": 12, \"battery\": 50.0},\n"
+      " \"actions\": {\"Drive\": {\"ticks\": 1}}}\n";
+  files["scenarios/fraction.json"] =
+      "{\"max_ticks\": 1, \"initial\": {\"speed\": 12,\n"
+      "                             \"battery\": 12.5}}\n";
+  files["typed.jsonl"] = "{\"tick\": 1, \"state\": {\"speed\": 12, \"battery\": 50.0}}\n";
+  files["fraction.jsonl"] =
+      "{\"tick\": 1, \"state\": {\"speed\": 12, \"battery\": 50}}\n"
+      "{\"tick\": 2, \"state\": {\"battery\": 12.5}}\n";
+  // 12 / 8 is 1 for integers, 1.5 for reals.
+  files["eighth.fret"] = "Eighth: Mission shall always satisfy speed / 8 > 1.4 & battery = 50\n";
+  TempMission m(files, "whole");
+  const std::string dir = m.dir().parent_path().string();
+
+  const CliRun typed =
+      uabt::testing::run_uabt_in(dir, "run whole --scenario whole/scenarios/typed.json");
+  EXPECT_EQ(typed.exit_code, 0) << typed.out;
+  EXPECT_NE(typed.out.find("tick 1: mission success\n"), std::string::npos) << typed.out;
+  const CliRun fraction =
+      uabt::testing::run_uabt_in(dir, "run whole --scenario whole/scenarios/fraction.json");
+  EXPECT_NE(fraction.exit_code, 0) << fraction.out;
+  EXPECT_NE(fraction.out.find("whole/scenarios/fraction.json:2:41: error: battery = 12.5 is not "
+                              "an integer (declared integer at "),
+            std::string::npos)
+      << fraction.out;
+
+  const CliRun read_back = uabt::testing::run_uabt_in(
+      dir, "monitor whole/eighth.fret whole/typed.jsonl --domain whole/domain.fret");
+  EXPECT_EQ(read_back.out,
+            "whole/eighth.fret:1:9: Eighth: held\n"
+            "verdict: pass (1 ticks; 1 held, 0 violated, 0 not monitored)\n");
+  const CliRun refused = uabt::testing::run_uabt_in(dir, "monitor whole whole/fraction.jsonl");
+  EXPECT_EQ(refused.exit_code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("whole/fraction.jsonl:2:1: error: 'battery' at tick 2 does not fit "
+                             "its type: the domain declares it integer [trace-invalid]"),
+            std::string::npos)
+      << refused.out;
+
+  // `uabt coverage` reads the trace's battery as the integer 50: a state of the guard's space.
+  const CliRun coverage = uabt::testing::run_uabt_in(dir, "coverage whole whole/typed.jsonl");
+  EXPECT_NE(coverage.out.find("visited: speed in (0, 30), just below the boundary 30"),
+            std::string::npos)
+      << coverage.out;
+}
+
+// What `uabt gate` wrote into reports/ gives every whole number within 64 bits as a JSON
+// integer: a witness's real wind of 40 is 40, not 40.0.
+TEST(Numbers, ShippedReportsWriteWholeNumbersAsIntegers) {
+  int files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(fs::path(UABT_SOURCE_DIR) / "reports")) {
+    const std::string ext = e.path().extension().string();
+    if (!e.is_regular_file() || (ext != ".json" && ext != ".sarif")) continue;
+    ++files;
+    std::vector<std::string> whole;
+    std::function<void(const nlohmann::json&, const std::string&)> walk =
+        [&](const nlohmann::json& j, const std::string& at) {
+          if (j.is_number_float()) {
+            const double x = j.get<double>();
+            if (std::trunc(x) == x && std::fabs(x) < 0x1p63) whole.push_back(at + " = " + j.dump());
+          } else if (j.is_object()) {
+            for (const auto& [key, value] : j.items()) walk(value, at + "/" + key);
+          } else if (j.is_array()) {
+            for (std::size_t i = 0; i < j.size(); ++i) walk(j[i], at + "/" + std::to_string(i));
+          }
+        };
+    walk(nlohmann::json::parse(read(e.path())), "");
+    std::string list;
+    for (const auto& w : whole) list += w + "\n";
+    EXPECT_TRUE(whole.empty()) << e.path().string() << ":\n" << list;
+  }
+  EXPECT_GT(files, 20);
 }
 
 }  // namespace

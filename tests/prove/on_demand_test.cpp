@@ -199,7 +199,7 @@ TEST(OnDemand, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
   const double battery = scenario["initial"]["battery"].get<double>();
   EXPECT_GT(battery, 10.0) << charged.counterexample->scenario;
   EXPECT_LT(battery, 30.0) << charged.counterexample->scenario;
-  EXPECT_EQ(scenario["initial"]["battery"].dump(), "20.0") << charged.counterexample->scenario;
+  EXPECT_EQ(scenario["initial"]["battery"].dump(), "20") << charged.counterexample->scenario;
   // The wide integer compared with 100 reserve - 500: at most 500 (reserve 10) or 2500.
   EXPECT_EQ(answer(e, "Light").verdict, Verdict::proved);
   // auto takes the explicit engine now.
@@ -220,7 +220,7 @@ TEST(OnDemand, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
   ASSERT_TRUE(at_breakpoint.counterexample);
   EXPECT_EQ(
       nlohmann::json::parse(at_breakpoint.counterexample->scenario)["initial"]["battery"].dump(),
-      "10.0");
+      "10");
 }
 
 // The same mission where Bump may fail, and its failure is explored first: the battery's cell
@@ -243,7 +243,7 @@ TEST(OnDemand, ACellIsCutAgainInATickResumedAtAnActionsOutcome) {
   EXPECT_EQ(charged.depth, 1u);
   ASSERT_TRUE(charged.counterexample);
   EXPECT_EQ(nlohmann::json::parse(charged.counterexample->scenario)["initial"]["battery"].dump(),
-            "20.0")
+            "20")
       << charged.counterexample->scenario;
 }
 

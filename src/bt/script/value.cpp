@@ -96,7 +96,7 @@ Value to_value(const ScriptValue& value) {
   switch (value.kind) {
     case ScriptValue::Kind::boolean: return Value::of_bool(value.boolean);
     case ScriptValue::Kind::integer: return Value::of_int(value.integer);
-    case ScriptValue::Kind::real: return Value::of_real(value.real, value.to_string());
+    case ScriptValue::Kind::real: return Value::of_real(value.real, number_text(value.real));
     case ScriptValue::Kind::string: return Value::of_enum(value.text);
     case ScriptValue::Kind::empty: break;
   }
