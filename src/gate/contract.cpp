@@ -30,9 +30,11 @@ const fretish::Requirement* find(const Requirements& in, const std::string& id) 
 
 // `checked`'s mission proving `guarantees` on its compiled tree in its own world: its assumptions
 // and Environment requirements stay, its guarantees are replaced. Verdicts by requirement id.
+// `engine`, when given, is set to the engine that decided.
 std::map<std::string, prove::Answer> prove_on(const Outcome& checked,
                                               const Requirements& guarantees,
-                                              const prove::Options& options) {
+                                              const prove::Options& options,
+                                              std::string* engine = nullptr) {
   std::map<std::string, prove::Answer> out;
   load::Mission probe = *checked.mission;
   probe.properties.erase(
@@ -41,8 +43,9 @@ std::map<std::string, prove::Answer> prove_on(const Outcome& checked,
       probe.properties.end());
   probe.properties.insert(probe.properties.end(), guarantees.begin(), guarantees.end());
   try {
-    for (const prove::Answer& a : prove_checked(checked, probe, options).answers)
-      out[a.requirement] = a;
+    const prove::Result result = prove_checked(checked, probe, options);
+    for (const prove::Answer& a : result.answers) out[a.requirement] = a;
+    if (engine != nullptr) *engine = result.engine;
   } catch (const std::exception& e) {
     for (const auto& g : guarantees) {
       prove::Answer& a = out[g.id];
@@ -110,8 +113,9 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
 
   // The old statements on both versions; the new ones come from the gate's own proof step.
   std::map<std::string, prove::Answer> on_board, on_merged;
+  std::string merged_engine;
   if (!changed.empty() && !merged.compiled_xml.empty()) {
-    on_merged = prove_on(merged, changed, options.prove);
+    on_merged = prove_on(merged, changed, options.prove, &merged_engine);
     Outcome board;  // the version on board, compiled and read back as the gate does
     board.mission = std::make_unique<load::Mission>(running);
     std::vector<Finding> ignored;
@@ -126,7 +130,8 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
   std::vector<report::ContractChange> contract;
   for (const auto& g : after)
     if (find(before, g.id) == nullptr)
-      contract.push_back({g.id, "added", "", g.text, "", "", new_status[g.id], "", "", false});
+      contract.push_back(
+          {g.id, "added", "", g.text, "", "", new_status[g.id], "", "", false, std::nullopt});
   for (const auto& g : changed) {
     const fretish::Requirement* restated = find(after, g.id);
     const auto answer = on_merged.find(g.id);
@@ -146,7 +151,8 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
                                   restated ? new_status[g.id] : "",
                                   agreed ? agreed->kind : "",
                                   agreed ? agreed->reason : "",
-                                  holds};
+                                  holds,
+                                  std::nullopt};
     const SourceLocation at = restated ? restated->location : removal_location(now, g.id);
     const std::string old_on_merged = change.old_after.empty() ? "not checked" : change.old_after;
     Finding f;
@@ -191,6 +197,7 @@ void check_contract(const load::Mission& running, Outcome& merged, const Options
           f.notes.push_back(line);
         for (const std::string& note : answer->second.counterexample->notes)
           f.notes.push_back(note);
+        change.old_on_merged = report_answer(answer->second, merged_engine);
       }
     }
     f.requirements = {g.id};

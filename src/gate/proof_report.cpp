@@ -138,40 +138,46 @@ report::Proofs report_proofs(const prove::Result& result,
     out.vacuity = report::ProofVacuity{result.vacuity->message, result.vacuity->location};
   out.notes = result.notes;
   for (const prove::Answer& a : result.answers) {
-    report::ProofAnswer p;
-    p.requirement = a.requirement;
-    p.text = a.text;
-    p.location = a.location;
-    p.verdict = prove::verdict_name(a.verdict);
-    p.reason = a.reason;
-    p.depth = a.depth;
-    if (result.engine == "symbolic" && a.verdict == prove::Verdict::proved)
-      p.method = a.by_pdr ? "IC3/PDR" : "k-induction";
-    if (a.has_trigger && a.trigger_decided) p.first_trigger = a.first_trigger;
-    if (a.counterexample) {
-      report::ProofCounterexample c;
-      c.tick = a.counterexample->tick;
-      c.scenario = a.counterexample->scenario;
-      if (const auto it = written.find(a.requirement); it != written.end())
-        c.scenario_file = it->second;
-      c.notes = a.counterexample->notes;
-      for (const prove::TickRow& row : a.counterexample->rows) {
-        report::ProofTick t{row.tick, row.root, row.values, {}};
-        // "Drill started": the event is the last word (the leaf's label may hold spaces).
-        for (const std::string& what : row.actions) {
-          const auto space = what.rfind(' ');
-          if (space == std::string::npos)
-            t.actions.emplace_back(what, "");
-          else
-            t.actions.emplace_back(what.substr(0, space), what.substr(space + 1));
-        }
-        c.ticks.push_back(std::move(t));
-      }
-      p.counterexample = std::move(c);
-    }
-    out.answers.push_back(std::move(p));
+    const auto it = written.find(a.requirement);
+    out.answers.push_back(
+        report_answer(a, result.engine, it == written.end() ? std::string() : it->second));
   }
   return out;
+}
+
+report::ProofAnswer report_answer(const prove::Answer& a, const std::string& engine,
+                                  const std::string& scenario_file) {
+  report::ProofAnswer p;
+  p.requirement = a.requirement;
+  p.text = a.text;
+  p.location = a.location;
+  p.verdict = prove::verdict_name(a.verdict);
+  p.reason = a.reason;
+  p.depth = a.depth;
+  if (engine == "symbolic" && a.verdict == prove::Verdict::proved)
+    p.method = a.by_pdr ? "IC3/PDR" : "k-induction";
+  if (a.has_trigger && a.trigger_decided) p.first_trigger = a.first_trigger;
+  if (a.counterexample) {
+    report::ProofCounterexample c;
+    c.tick = a.counterexample->tick;
+    c.scenario = a.counterexample->scenario;
+    c.scenario_file = scenario_file;
+    c.notes = a.counterexample->notes;
+    for (const prove::TickRow& row : a.counterexample->rows) {
+      report::ProofTick t{row.tick, row.root, row.values, {}};
+      // "Drill started": the event is the last word (the leaf's label may hold spaces).
+      for (const std::string& what : row.actions) {
+        const auto space = what.rfind(' ');
+        if (space == std::string::npos)
+          t.actions.emplace_back(what, "");
+        else
+          t.actions.emplace_back(what.substr(0, space), what.substr(space + 1));
+      }
+      c.ticks.push_back(std::move(t));
+    }
+    p.counterexample = std::move(c);
+  }
+  return p;
 }
 
 }  // namespace uabt::gate

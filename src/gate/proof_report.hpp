@@ -27,6 +27,11 @@ std::vector<std::string> table_lines(const prove::Counterexample& cex);
 std::string result_json(const prove::Result& result, const report::Proofs& proofs,
                         const std::string& mission, const std::string& version);
 
+// What the report shows of one answer of a result of `engine`; its counterexample's scenario
+// is (or will be) written to `scenario_file` ("" when it is not written).
+report::ProofAnswer report_answer(const prove::Answer& answer, const std::string& engine,
+                                  const std::string& scenario_file = "");
+
 // What the report shows of a result: `written` maps a requirement id to the path its
 // counterexample's scenario is (or will be) written to.
 report::Proofs report_proofs(const prove::Result& result,

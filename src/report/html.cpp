@@ -87,7 +87,22 @@ std::string state_words(const State& state) {
   return out;
 }
 
-void finding_html(const Finding& finding, std::string& out) {
+// Where the report draws a finding's counterexample as a timeline: "#proofs" for a violated
+// guarantee, the uplink section's article for a guarantee an uplink breaks; "" when nowhere.
+std::string timeline_link(const ReportInput& input, const Finding& finding) {
+  if (finding.check == "prove-violated") return "#proofs";
+  if (!input.uplink || finding.requirements.size() != 1) return "";
+  if (finding.check != "uplink-guarantee-weakened" && finding.check != "uplink-guarantee-removed")
+    return "";
+  const auto& contract = input.uplink->contract;
+  for (std::size_t k = 0; k < contract.size(); ++k)
+    if (contract[k].requirement == finding.requirements.front() && contract[k].old_on_merged &&
+        contract[k].old_on_merged->counterexample)
+      return "#" + detail::uplink_counterexample_id(k);
+  return "";
+}
+
+void finding_html(const Finding& finding, const std::string& timeline, std::string& out) {
   const char* severity = severity_name(finding.severity);
   out += std::string("<article class=\"finding ") + severity + "\">\n";
   out += std::string("<p><span class=\"sev\">") + severity + "</span> " + code(finding.check) +
@@ -101,17 +116,25 @@ void finding_html(const Finding& finding, std::string& out) {
   if (!finding.node_path.empty())
     meta += (meta.empty() ? "" : " · ") + std::string("Node: ") + code(finding.node_path);
   if (!meta.empty()) out += "<p class=\"meta\">" + meta + "</p>\n";
-  if (finding.check == "prove-violated" && !finding.notes.empty()) {
-    // The counterexample's table keeps its columns; the Proofs section draws its timeline.
+  if (!timeline.empty() && !finding.notes.empty()) {
+    // The counterexample's table keeps its columns; another section draws its timeline.
     std::string table;
     for (const auto& note : finding.notes) table += html_escape(note) + "\n";
-    out += "<pre>" + table +
-           "</pre>\n<p class=\"meta\"><a href=\"#proofs\">The counterexample "
-           "as a timeline</a></p>\n";
+    out += "<pre>" + table + "</pre>\n<p class=\"meta\"><a href=\"" + html_escape(timeline) +
+           "\">The counterexample as a timeline</a></p>\n";
   } else if (!finding.notes.empty()) {
     out += "<ul class=\"meta\">\n";
     for (const auto& note : finding.notes) out += "<li>" + html_escape(note) + "</li>\n";
     out += "</ul>\n";
+  }
+  if (!finding.related.empty()) {
+    // The places the terminal lists after the notes (SARIF's relatedLocations), in their order:
+    // a path of ticks from the root, the ancestors of a node, the other half of a conflict.
+    out += "<ol class=\"meta related\">\n";
+    for (const auto& r : finding.related)
+      out += "<li>" + code(detail::location_text(r.location)) + " " + html_escape(r.message) +
+             "</li>\n";
+    out += "</ol>\n";
   }
   if (!finding.witness.empty()) {
     out +=
@@ -143,14 +166,14 @@ void findings_section(const ReportInput& input, const std::vector<std::string>& 
                          input.adaptables.end();
     out += "<h3>Adaptable node " + code(adaptable) +
            (in_tree ? "" : " <span class=\"meta\">(not in the mission tree)</span>") + "</h3>\n";
-    for (const Finding* f : group) finding_html(*f, out);
+    for (const Finding* f : group) finding_html(*f, timeline_link(input, *f), out);
   }
   std::vector<const Finding*> mission_wide;
   for (const auto& f : input.findings)
     if (f.adaptable.empty()) mission_wide.push_back(&f);
   if (!mission_wide.empty()) {
     out += "<h3>Mission-wide</h3>\n";
-    for (const Finding* f : mission_wide) finding_html(*f, out);
+    for (const Finding* f : mission_wide) finding_html(*f, timeline_link(input, *f), out);
   }
   out += "</section>\n";
 }
@@ -259,7 +282,7 @@ std::string to_html(const ReportInput& input) {
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<title>uabt report: " +
       html_escape(mission) + " " + html_escape(verdict) + "</title>\n<style>" + kStyle +
-      (input.proofs ? detail::proofs_style() : "") + "</style>\n</head>\n<body>\n";
+      (input.proofs || input.uplink ? detail::proofs_style() : "") + "</style>\n</head>\n<body>\n";
   out += std::string("<header class=\"") + (passed ? "pass" : "fail") +
          "\">\n<div class=\"badge\">" + html_escape(verdict) + "</div>\n<div>\n<h1>Mission " +
          html_escape(mission) + "</h1>\n<p>" +

@@ -27,6 +27,9 @@ struct ContractChange {
   std::string consent;    // "retire" | "weaken" when uplink.json allows it, else ""
   std::string consent_reason;
   bool old_holds = false;  // the merged mission satisfies the old text (proved)
+  // Weakened or removed: the old text, as proved on the merged mission, with the run that
+  // breaks it (its counterexample) when prove found one.
+  std::optional<ProofAnswer> old_on_merged;
 };
 
 struct UplinkChange {

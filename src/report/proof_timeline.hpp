@@ -36,6 +36,13 @@ struct TimelineRow {
 // the order it first does something.
 std::vector<TimelineRow> timeline_of(const ProofCounterexample& cex);
 
+// A counterexample as <article class="cex" id=`id`>: `heading` (HTML), the requirement `a`
+// states, its timeline, its notes, the command that replays it (with `replay`: the mission and
+// the options to run it with) and its scenario. The Proofs section draws every violated
+// guarantee with it, the uplink section every guarantee an uplink breaks.
+void counterexample_html(const std::string& id, const std::string& heading, const ProofAnswer& a,
+                         const ProofCounterexample& cex, const Proofs* replay, std::string& out);
+
 // CSS of the report page and of the timeline.
 const char* page_style();
 const char* proofs_style();

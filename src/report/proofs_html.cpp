@@ -31,10 +31,13 @@ std::string cell_html(const detail::TimelineCell& cell, bool violating) {
          html_escape(cell.text) + "</td>";
 }
 
-void timeline_html(const ProofAnswer& a, const ProofCounterexample& cex, const Proofs& proofs,
-                   std::size_t index, std::string& out) {
-  out += "<article class=\"cex\" id=\"cex-" + std::to_string(index) + "\">\n<h3>" +
-         code(a.requirement) + " is violated at tick " + std::to_string(cex.tick) + "</h3>\n";
+}  // namespace
+
+namespace detail {
+
+void counterexample_html(const std::string& id, const std::string& heading, const ProofAnswer& a,
+                         const ProofCounterexample& cex, const Proofs* replay, std::string& out) {
+  out += "<article class=\"cex\" id=\"" + html_escape(id) + "\">\n<h3>" + heading + "</h3>\n";
   out += "<p class=\"req\">" + code(detail::location_text(a.location)) + " " + html_escape(a.text) +
          "</p>\n";
   out += "<div class=\"scroll\"><table class=\"timeline\">\n<thead><tr><th>tick</th>";
@@ -55,17 +58,15 @@ void timeline_html(const ProofAnswer& a, const ProofCounterexample& cex, const P
       "<span class=\"key viol\"></span>the violating tick</p>\n";
   for (const std::string& note : cex.notes)
     out += "<p class=\"cex-note\">" + html_escape(note) + "</p>\n";
-  out += "<p>Replay: " + code(replay_command(proofs, cex.scenario_file)) +
-         (cex.scenario_file.empty() ? " (save the scenario below as <code>cex.json</code>)" : "") +
-         " runs the same violation at tick " + std::to_string(cex.tick) + ".</p>\n";
+  if (replay != nullptr)
+    out +=
+        "<p>Replay: " + code(replay_command(*replay, cex.scenario_file)) +
+        (cex.scenario_file.empty() ? " (save the scenario below as <code>cex.json</code>)" : "") +
+        " runs the same violation at tick " + std::to_string(cex.tick) + ".</p>\n";
   out += "<details><summary>The scenario" +
          (cex.scenario_file.empty() ? std::string() : " " + code(cex.scenario_file)) +
          "</summary>\n<pre>" + html_escape(cex.scenario) + "</pre>\n</details>\n</article>\n";
 }
-
-}  // namespace
-
-namespace detail {
 
 const char* proofs_style() {
   return R"css(
@@ -122,7 +123,10 @@ std::string proofs_html(const Proofs& proofs) {
     out += "<p class=\"meta\">Note: " + html_escape(note) + "</p>\n";
   for (std::size_t i = 0; i < proofs.answers.size(); ++i)
     if (const auto& cex = proofs.answers[i].counterexample)
-      timeline_html(proofs.answers[i], *cex, proofs, i, out);
+      detail::counterexample_html(
+          "cex-" + std::to_string(i),
+          code(proofs.answers[i].requirement) + " is violated at tick " + std::to_string(cex->tick),
+          proofs.answers[i], *cex, &proofs, out);
   out += "</section>\n";
   return out;
 }

@@ -273,6 +273,14 @@ struct Frame {
   }
 };
 
+// Whether a shape is an axis-parallel rectangle (x0,y0) (x1,y0) (x1,y1) (x0,y1), as cells over
+// discrete or independent variables are; a cell a sloped line cuts is a polygon, even one with
+// four corners and two sides on the box.
+bool is_box(const std::vector<std::pair<double, double>>& p) {
+  return p.size() == 4 && p[0].second == p[1].second && p[1].first == p[2].first &&
+         p[2].second == p[3].second && p[3].first == p[0].first;
+}
+
 // An extent [lo, hi] in pixels too thin to see, widened to the minimum around its centre.
 void widen(double& lo, double& hi) {
   if (hi - lo >= kMinVisible) return;
@@ -327,10 +335,9 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
         y0 = std::min(y0, f.py(y));
         y1 = std::max(y1, f.py(y));
       }
-      const bool rect = shape.points.size() == 4 &&
-                        shape.points[0].second == shape.points[1].second &&
-                        shape.points[1].first == shape.points[2].first;
+      const bool rect = is_box(shape.points);
       const bool tiny = (gap || shape.overlap) && (x1 - x0 < kMinVisible || y1 - y0 < kMinVisible);
+      std::string tag, geometry;  // the shape as drawn, for the overlap's hatching over it
       if (rect || tiny) {
         // Too thin to see: widened to the minimum around its centre, its share written beside.
         widen(x0, x1);
@@ -343,6 +350,9 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
                fill_of(shape.outcomes[k], prefix) + "\"/>";
         g += "</g>";
         (tiny ? lines : areas) += g;
+        tag = "rect";
+        geometry = "x=\"" + num(x0) + "\" y=\"" + num(y0) + "\" width=\"" + num(x1 - x0) +
+                   "\" height=\"" + num(y1 - y0) + "\"";
         if (tiny && gap) {
           // Beside the shape: right of a thin column, above a thin row; never on another label.
           const std::string text =
@@ -370,21 +380,16 @@ void draw_panel(const verify::CoverageMap& map, const verify::MapPanel& panel, c
                  "</polygon>";
         if (shape.outcomes.size() > 1)
           areas += "<polygon points=\"" + pts + "\" fill=\"url(#" + prefix + "-mixed)\"/>";
+        tag = "polygon";
+        geometry = "points=\"" + pts + "\"";
       }
       if (shape.outcomes.size() > 1) seen.mixed = true;
       if (shape.overlap) {
+        // The whole cell hatched over its alternative's colour and outlined, as its legend says.
         seen.overlap = true;
-        double cx = 0, cy = 0;
-        for (const auto& [x, y] : shape.points) {
-          cx += f.px(x);
-          cy += f.py(y);
-        }
-        cx /= static_cast<double>(shape.points.size());
-        cy /= static_cast<double>(shape.points.size());
-        const double r = std::clamp(std::min(x1 - x0, y1 - y0) / 5, 1.5, 5.0);
-        lines += "<circle cx=\"" + num(cx) + "\" cy=\"" + num(cy) + "\" r=\"" + num(r) +
-                 "\" fill=\"" + kOverlapColour + "\" stroke=\"#fff\" stroke-width=\"0.75\">" +
-                 title + "</circle>";
+        lines += "<" + tag + " class=\"overlap\" " + geometry + " fill=\"url(#" + prefix +
+                 "-overlap-mark)\" stroke=\"" + kOverlapColour +
+                 "\" stroke-width=\"1.5\" stroke-dasharray=\"4 2\">" + title + "</" + tag + ">";
       }
       if (gap) seen.gap = true;
       if (shape.uncertain) seen.uncertain = true;
@@ -448,7 +453,7 @@ std::string visited_marks(const std::vector<verify::MapMark>& visited, std::size
     const char* style =
         "\" fill=\"#000\" fill-opacity=\"0.12\" stroke=\"#000\" stroke-width=\"2\">";
     const auto& p = mark.points;
-    if (p.size() == 4 && p[0].second == p[1].second && p[1].first == p[2].first) {
+    if (is_box(p)) {
       double x0 = std::min(f.px(p[0].first), f.px(p[2].first));
       double x1 = std::max(f.px(p[0].first), f.px(p[2].first));
       double y0 = std::min(f.py(p[0].second), f.py(p[2].second));
@@ -510,7 +515,10 @@ std::string coverage_map_svg(const load::Mission&, const verify::Coverage& cover
                     coverage.alternatives[i].name + " — " + coverage.alternatives[i].requirement});
   if (seen.gap)
     rows.push_back({"url(#" + prefix + "-gap)", "gap — no guard holds, the node fails"});
-  if (seen.overlap) rows.push_back({kOverlapColour, "dot: two or more guards hold"});
+  if (seen.overlap)
+    rows.push_back({"url(#" + prefix + "-overlap-mark)",
+                    "hatched, dashed outline: two or more guards hold (the first in priority "
+                    "order is selected)"});
   if (seen.boundary)
     rows.push_back({kGapColour,
                     "thick line or point: a boundary (measure 0) in the gap (red) or "
@@ -519,7 +527,10 @@ std::string coverage_map_svg(const load::Mission&, const verify::Coverage& cover
     rows.push_back({"url(#" + prefix + "-mixed)",
                     "striped: the alternative depends on variables off the map"});
   if (seen.uncertain)
-    rows.push_back({"#f4f4f4", "not measured exactly: a nonlinear atom decides inside"});
+    rows.push_back({"#f4f4f4",
+                    "not measured exactly: an atom that is not linear, or relates more than "
+                    "two variables (a guard's or an assumption's), cuts the cell; it is painted "
+                    "whole"});
   if (!visited.empty()) {
     const bool boundary = std::any_of(visited.begin(), visited.end(),
                                       [](const verify::MapMark& m) { return m.points.size() < 3; });
@@ -539,7 +550,14 @@ std::string coverage_map_svg(const load::Mission&, const verify::Coverage& cover
   out += "<defs><pattern id=\"" + prefix +
          "-mixed\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" "
          "patternTransform=\"rotate(45)\"><rect width=\"2\" height=\"6\" fill=\"#fff\" "
-         "fill-opacity=\"0.7\"/></pattern></defs>";
+         "fill-opacity=\"0.7\"/></pattern>";
+  // The overlap's hatching, over an alternative's colour: dark stripes on nothing.
+  if (seen.overlap)
+    out += "<pattern id=\"" + prefix +
+           "-overlap-mark\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" "
+           "patternTransform=\"rotate(-45)\"><rect width=\"1.5\" height=\"6\" fill=\"" +
+           kOverlapColour + "\"/></pattern>";
+  out += "</defs>";
   out += text_at(kMargin, 18, title, " font-weight=\"600\"");
   out += text_at(kMargin, 34,
                  "Cells follow the exact boundaries of the guards; thin gaps are widened to " +

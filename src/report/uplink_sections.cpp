@@ -3,6 +3,7 @@
 #include "base/diagnostics.hpp"
 #include "report/common.hpp"
 #include "report/impact.hpp"
+#include "report/proof_timeline.hpp"
 
 namespace uabt::report::detail {
 
@@ -86,6 +87,10 @@ Json or_null(int number) {
 }
 
 }  // namespace
+
+std::string uplink_counterexample_id(std::size_t index) {
+  return "uplink-cex-" + std::to_string(index);
+}
 
 Json uplink_json(const UplinkChange& uplink) {
   Json merges = Json::array();
@@ -178,6 +183,17 @@ std::string uplink_html(const UplinkChange& uplink) {
       out += "</tr>\n";
     }
     out += "</tbody></table>\n";
+    // The run of the merged mission that breaks a guarantee's old statement, drawn as the
+    // Proofs section draws a violation.
+    for (std::size_t k = 0; k < uplink.contract.size(); ++k) {
+      const ContractChange& c = uplink.contract[k];
+      if (!c.old_on_merged || !c.old_on_merged->counterexample) continue;
+      const ProofCounterexample& cex = *c.old_on_merged->counterexample;
+      counterexample_html(uplink_counterexample_id(k),
+                          "The merged mission breaks what " + html_code(c.requirement) +
+                              " said before, at tick " + std::to_string(cex.tick),
+                          *c.old_on_merged, cex, nullptr, out);
+    }
   }
   out +=
       "<table><caption>Where the merge put each requirement</caption>\n<thead><tr><th>Requirement"

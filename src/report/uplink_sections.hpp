@@ -13,6 +13,9 @@ namespace uabt::report::detail {
 // location}], "behaviour_change": [nodes as in `uabt diff --format json`]}
 nlohmann::ordered_json uplink_json(const UplinkChange& uplink);
 
+// The HTML id of the counterexample of `uplink.contract[index]` in uplink_html.
+std::string uplink_counterexample_id(std::size_t index);
+
 // A Markdown section (### Uplink …) and an HTML <section id="uplink">.
 std::string uplink_markdown(const UplinkChange& uplink);
 std::string uplink_html(const UplinkChange& uplink);

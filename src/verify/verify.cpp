@@ -84,6 +84,35 @@ void regions_from_findings(Coverage& cov, const std::vector<Finding>& findings,
   }
 }
 
+// Where the space was measured exactly, the gap finding states its region as the coverage
+// table does: each box with the assumption lines that cut it, instead of the solver's cubes,
+// which bound the region by the guards' atoms alone and so take in states the domain's
+// assumptions rule out.
+void exact_gap_notes(Coverage& cov, std::vector<Finding>& findings) {
+  if (!cov.measured || cov.gap_regions.empty()) return;
+  for (const Region& r : cov.gap_regions)
+    if (!r.exact || !r.measured) return;
+  std::vector<std::string> region;
+  for (const Region& r : cov.gap_regions) region.push_back(r.text());
+  if (cov.gap_regions_omitted > 0)
+    region.push_back("\u2026 and " + std::to_string(cov.gap_regions_omitted) + " more");
+  for (Finding& f : findings) {
+    if (f.check != "guard-gap" || f.adaptable != cov.adaptable) continue;
+    std::vector<std::string> notes;
+    bool placed = false;
+    for (auto& note : f.notes) {
+      if (note.rfind("uncovered: ", 0) != 0) {
+        notes.push_back(std::move(note));
+      } else if (!placed) {
+        for (const auto& text : region) notes.push_back("uncovered: " + text);
+        placed = true;
+      }
+    }
+    f.notes = std::move(notes);
+  }
+  cov.gap_region = std::move(region);
+}
+
 // One adaptable node to analyse and its requirements in priority order (empty: none names it).
 struct NodeJob {
   std::string adaptable;
@@ -160,6 +189,7 @@ NodeOutcome analyse_node(const load::Mission& mission, const NodeJob& job, const
   for (std::size_t k = 0; k < node.guards.size() && k < cov.alternatives.size(); ++k)
     cov.alternatives[k].reachable = node.guards[k].selectable == Answer::sat;
   cov.gap_region = std::move(region);
+  exact_gap_notes(cov, result.findings);
   if (!cov.measured && !cov.bounded) regions_from_findings(cov, result.findings, reqs);
   result.coverage.push_back(std::move(cov));
   return out;

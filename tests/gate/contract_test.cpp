@@ -72,6 +72,37 @@ TEST(UplinkContract, ShippedMudPackageWeakensHoldOnUnknownWithConsent) {
   EXPECT_EQ(o.report.banner(), "PASS with 1 guarantee weakened");
 }
 
+// report.html draws the run of the merged mission that breaks the old statement as the Proofs
+// section draws a violation (ticks as columns, the violating tick marked), and the finding links
+// to it, instead of listing the ticks as bullet text.
+TEST(UplinkContract, ReportDrawsTheRunThatBreaksTheOldStatementAsATimeline) {
+  const Outcome o = gate_uplink(kCuriosity, "uplinks/on_mud");
+  const report::ContractChange* c = change(o, "HoldOnUnknown");
+  ASSERT_NE(c, nullptr);
+  ASSERT_TRUE(c->old_on_merged && c->old_on_merged->counterexample);
+  EXPECT_EQ(c->old_on_merged->counterexample->tick, 2u);
+  const std::string html = report::to_html(o.report);
+  const auto uplink = html.find("<section id=\"uplink\">");
+  const auto article = html.find(
+      "<article class=\"cex\" id=\"uplink-cex-0\">\n<h3>The merged mission breaks what "
+      "<code>HoldOnUnknown</code> said before, at tick 2</h3>\n");
+  ASSERT_NE(uplink, std::string::npos);
+  ASSERT_NE(article, std::string::npos) << html;
+  EXPECT_GT(article, uplink);
+  EXPECT_LT(article, html.find("</section>", uplink));
+  const std::string drawn = html.substr(article, html.find("</article>", article) - article);
+  EXPECT_NE(drawn.find("<thead><tr><th>tick</th><th>1</th><th class=\"viol\">2</th></tr></thead>"),
+            std::string::npos)
+      << drawn;
+  EXPECT_NE(drawn.find("<tr class=\"value\"><th><code>navigation.selected</code></th><td>on_mud"
+                       "</td><td class=\"viol\">on_mud</td></tr>"),
+            std::string::npos)
+      << drawn;
+  EXPECT_NE(html.find("<a href=\"#uplink-cex-0\">The counterexample as a timeline</a>"),
+            std::string::npos);
+  EXPECT_EQ(html.find("<li>tick  root"), std::string::npos) << "the ticks as bullet text";
+}
+
 // dust_storm restates it as "upon !OnDust & !OnRocks & !DustStorm …": in a storm on unknown
 // ground the rover waits the storm out (and then drives on rocks), so the old statement fails
 // on the merged mission too: weakened, with consent.

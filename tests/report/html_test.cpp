@@ -3,8 +3,10 @@
 #include <tinyxml2.h>
 
 #include "fretish/expr.hpp"
+#include "load/mission.hpp"
 #include "report/reports.hpp"
 #include "report_fixtures.hpp"
+#include "test_support.hpp"
 #include "verify/verify.hpp"
 
 namespace uabt::report {
@@ -201,6 +203,32 @@ TEST(HtmlReport, RequirementsInPriorityOrderFromTheMission) {
   EXPECT_FALSE(has(html, "http://"));
 }
 
+// bb-read-before-write's witness is the path of ticks from the root to the read: the page lists
+// it in order, as the terminal does, not only SARIF.
+TEST(HtmlReport, BlackboardReadBeforeWriteShowsItsPathOfTicks) {
+  std::string error;
+  const auto mission = load::load_mission(testing::mission_dir("blackboard_defects"), {}, error);
+  ASSERT_TRUE(mission) << error;
+  ReportInput input;
+  input.mission_name = "blackboard_defects";
+  input.findings = verify::verify_mission(*mission, {}).findings;
+  input.mission = &*mission;
+  const std::string html = to_html(input);
+  EXPECT_TRUE(
+      has(html,
+          "<ol class=\"meta related\">\n"
+          "<li><code>mission.xml:6:5</code> ticks Sequence &#39;survey&#39;</li>\n"
+          "<li><code>mission.xml:7:7</code> ticks Fallback &#39;find_target&#39;</li>\n"
+          "<li><code>mission.xml:8:9</code> ticks Sequence &#39;locate&#39;</li>\n"
+          "<li><code>mission.xml:9:11</code> ticks IsTargetVisible</li>\n"
+          "<li><code>mission.xml:9:11</code> IsTargetVisible fails</li>\n"
+          "<li><code>mission.xml:12:9</code> ticks Wait</li>\n"
+          "<li><code>mission.xml:12:9</code> Wait succeeds</li>\n"
+          "<li><code>mission.xml:14:7</code> ticks ScriptCondition &#39;in_reach&#39;</li>\n"
+          "</ol>\n"))
+      << html;
+}
+
 TEST(HtmlReport, ByteIdenticalAcrossCalls) {
   const load::Mission mission = exploration_mission();
   ReportInput input = testing::failing_input();
@@ -264,7 +292,22 @@ TEST(CoverageMapSvg, BooleanNodeShowsEachState) {
   EXPECT_TRUE(has(svg, "<title>OnDust &amp; OnRocks: on_dust; two or more guards hold</title>"));
   EXPECT_TRUE(has(svg, "<title>!OnDust &amp; OnRocks: on_rocks</title>"));
   EXPECT_TRUE(has(svg, "<title>!OnDust &amp; !OnRocks: gap (no guard holds)"));
-  EXPECT_TRUE(has(svg, "<circle")) << "the overlap cell is marked";
+  // The overlap is the whole cell hatched and outlined over its alternative's colour, with a
+  // legend entry, not a dot at its centre.
+  EXPECT_TRUE(has(svg,
+                  "<rect class=\"overlap\" x=\"284\" y=\"52\" width=\"220\" height=\"150\" "
+                  "fill=\"url(#uabt-map-84d2a3c65f-overlap-mark)\" stroke=\"#4d4d4d\" "
+                  "stroke-width=\"1.5\" stroke-dasharray=\"4 2\"><title>OnDust &amp; OnRocks: "
+                  "on_dust; two or more guards hold</title></rect>"))
+      << svg;
+  EXPECT_TRUE(has(svg, "<pattern id=\"uabt-map-84d2a3c65f-overlap-mark\""));
+  EXPECT_TRUE(has(svg,
+                  "fill=\"url(#uabt-map-84d2a3c65f-overlap-mark)\" stroke=\"#333\" "
+                  "stroke-width=\"0.5\"/><text x=\"32\" y=\""));
+  EXPECT_TRUE(has(svg,
+                  ">hatched, dashed outline: two or more guards hold (the first in priority "
+                  "order is selected)</text>"));
+  EXPECT_FALSE(has(svg, "<circle"));
 }
 
 TEST(CoverageMapSvg, AssumptionsLeaveImpossibleStatesEmpty) {
@@ -288,6 +331,38 @@ TEST(CoverageMapSvg, RealVariablesAreDrawnAtTheirExactBoundaries) {
                   "<title>slope in [5, 10) &amp; battery in [31, 100]: sand_alternative; two "
                   "or more guards hold</title>"));
   EXPECT_TRUE(has(svg, "<title>slope in [-45, 5) &amp; battery in [0, 30]: gap (no guard holds)"));
+}
+
+// depth and pressure with the domain's sloped assumption 8 * pressure <= depth + 80: the cell
+// depth in (0, 50) & pressure in (5, 20) holds states above the line the assumption rules out,
+// so the gap there is the quadrilateral (0, 5) (50, 5) (50, 16.25) (0, 10), not its box.
+TEST(CoverageMapSvg, ACellASlopedAssumptionCutsIsDrawnAsItsPolygon) {
+  load::Mission mission;
+  mission.name = "dive";
+  mission.domain.variables = {variable("depth", fretish::VarType::real, "0", "100"),
+                              variable("pressure", fretish::VarType::real, "0", "20")};
+  fretish::Assumption slope;
+  slope.name = "slope";
+  slope.expr = make_expr(ExprKind::le,
+                         {make_expr(ExprKind::mul, {make_number("8"), make_identifier("pressure")}),
+                          make_expr(ExprKind::add, {make_identifier("depth"), make_number("80")})});
+  mission.domain.assumptions.push_back(std::move(slope));
+  auto shallow =
+      make_expr(ExprKind::logical_and,
+                {make_expr(ExprKind::lt, {make_identifier("depth"), make_number("50")}),
+                 make_expr(ExprKind::lt, {make_identifier("pressure"), make_number("5")})});
+  auto deep = make_expr(ExprKind::ge, {make_identifier("depth"), make_number("50")});
+  mission.selections = {selection("Shallow", "dive", "slow", std::move(shallow), 1),
+                        selection("Deep", "dive", "fast", std::move(deep), 2)};
+  const verify::Coverage coverage = verified(mission, "dive");
+  ASSERT_TRUE(coverage.measured) << coverage.not_measured_reason;
+  EXPECT_EQ(coverage.gap_share.text, "65/256");
+  const std::string svg = coverage_map_svg(mission, coverage);
+  ASSERT_TRUE(well_formed_xml(svg));
+  // x: depth 0..100 over 64..504 px; y: pressure 0..20 over 352..52 px.
+  EXPECT_TRUE(has(svg, "<polygon points=\"64,277 284,277 284,108.25 64,202\" fill=\"url(#")) << svg;
+  EXPECT_FALSE(has(svg, "<rect x=\"64\" y=\"108.25\" width=\"220\" height=\"168.75\""))
+      << "the cell's bounding box paints states the assumption rules out";
 }
 
 TEST(CoverageMapSvg, BoundaryOverlapIsALine) {

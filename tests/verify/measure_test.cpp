@@ -157,6 +157,35 @@ TEST(Measure, TwoVariableLinearAtomGivesExactPolygons) {
   expect_findings_in_regions(m, r);
 }
 
+// The gap finding states its region as the coverage table does: the box, and the domain's
+// sloped assumption (8 * pressure <= depth + 80) where it cuts the box. The box alone would
+// take in pressure up to 20 at depth 0, which the assumption rules out above 10.
+TEST(Measure, GapFindingStatesTheRegionASlopedAssumptionCuts) {
+  const auto m = make_mission(
+      "Shallow: In dive if depth < 50 & pressure < 5 Mission shall satisfy selected_alt = slow\n"
+      "Deep: In dive if depth >= 50 Mission shall satisfy selected_alt = fast\n",
+      "real depth in [0, 100]\nreal pressure in [0, 20]\n"
+      "assume slope: 8 * pressure <= depth + 80\n");
+  const auto r = verify_checked(m);
+  const auto& c = only_coverage(r);
+  ASSERT_TRUE(c.measured) << c.not_measured_reason;
+  EXPECT_EQ(c.gap_share.text, "65/256");
+  const auto gaps = findings_of(r, "guard-gap");
+  ASSERT_EQ(gaps.size(), 1u);
+  std::vector<std::string> uncovered;
+  for (const auto& note : gaps[0]->notes)
+    if (note.rfind("uncovered: ", 0) == 0) uncovered.push_back(note);
+  EXPECT_EQ(uncovered,
+            (std::vector<std::string>{
+                "uncovered: depth in [0, 50) & pressure in [5, 20] & depth - 8*pressure > -80",
+                "uncovered: depth in [0, 50) & depth - 8*pressure = -80"}));
+  EXPECT_EQ(texts(c.gap_regions),
+            (std::vector<std::string>{"depth in [0, 50) & pressure in [5, 20] & depth - "
+                                      "8*pressure > -80",
+                                      "depth in [0, 50) & depth - 8*pressure = -80"}));
+  expect_findings_in_regions(m, r);
+}
+
 TEST(Measure, OverlapOnALineHasMeasureZeroAndIsListed) {
   const auto m = make_mission(
       "R1: In nav if 2 * x - y >= 4 Mission shall satisfy selected_alt = a\n"
