@@ -31,6 +31,9 @@ struct Finding {
     std::string message;
   };
   std::vector<Related> related;
+  // Findings of the same check in the same file that follow this one and are not listed: one
+  // mistake repeated 20,000 times is reported 20 times and then counted (sort_findings).
+  std::size_t more_like_it = 0;
 };
 
 // Builds a finding with the check's default severity from the catalogue.
@@ -38,7 +41,15 @@ Finding make_finding(const std::string& check, std::string message, SourceLocati
 
 bool has_errors(const std::vector<Finding>& findings);
 
-// Sorts findings by file, line, column, check and message so output is deterministic.
+// How many findings of one check one file lists; the rest are counted on the last one listed.
+inline constexpr std::size_t kFindingsListedPerCheckAndFile = 20;
+
+// Sorts findings by file, line, column, check and message so output is deterministic, and
+// keeps the first kFindingsListedPerCheckAndFile of each check in each file: the last one kept
+// counts the others (`more_like_it`, and a note "and N more like it" every format prints).
 void sort_findings(std::vector<Finding>& findings);
+
+// The findings a list stands for: its size plus every `more_like_it`.
+std::size_t findings_count(const std::vector<Finding>& findings);
 
 }  // namespace uabt

@@ -154,16 +154,27 @@ void collect_adaptables(const bt::Node& node, const std::string& tree_id, const 
   }
 }
 
-// Line `number` (1-based) of `text`, "" when there is none.
-std::string line_of(const std::string& text, int number) {
-  std::size_t begin = 0;
-  for (int k = 1; k < number && begin != std::string::npos; ++k) {
-    begin = text.find('\n', begin);
-    if (begin != std::string::npos) ++begin;
+// The lines of `text`, indexed once: a file with a syntax error on every line must not be
+// scanned again for each of them.
+class Lines {
+ public:
+  explicit Lines(const std::string& text) : text_(text) {
+    starts_.push_back(0);
+    for (std::size_t k = 0; k < text.size(); ++k)
+      if (text[k] == '\n') starts_.push_back(k + 1);
   }
-  if (number < 1 || begin == std::string::npos) return {};
-  return text.substr(begin, text.find('\n', begin) - begin);
-}
+  // Line `number` (1-based), "" when there is none.
+  std::string operator()(int number) const {
+    if (number < 1 || static_cast<std::size_t>(number) > starts_.size()) return {};
+    const std::size_t begin = starts_[static_cast<std::size_t>(number) - 1];
+    const std::size_t end = text_.find('\n', begin);
+    return text_.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+  }
+
+ private:
+  const std::string& text_;
+  std::vector<std::size_t> starts_;
+};
 
 // Parses a requirements file: the mission's own, or an uplink package's (then the caller
 // merges it).
@@ -176,9 +187,10 @@ std::optional<std::vector<fretish::Requirement>> parse_requirements(Mission& m,
   fretish::ParseResult parsed = path.extension() == ".json"
                                     ? fretish::parse_fret_json(*text, shown, m.domain)
                                     : fretish::parse_requirements_file(*text, shown);
+  const Lines lines(*text);
   for (const auto& f : parsed.findings)
     if (f.check == "fretish-syntax")
-      m.unparsed_requirements.emplace_back(f.location, line_of(*text, f.location.line));
+      m.unparsed_requirements.emplace_back(f.location, lines(f.location.line));
   m.findings.insert(m.findings.end(), parsed.findings.begin(), parsed.findings.end());
   return std::move(parsed.requirements);
 }

@@ -172,9 +172,9 @@ SeverityCounts count_severities(const std::vector<Finding>& findings) {
   SeverityCounts counts;
   for (const auto& f : findings) {
     switch (f.severity) {
-      case Severity::error: ++counts.errors; break;
-      case Severity::warning: ++counts.warnings; break;
-      case Severity::note: ++counts.notes; break;
+      case Severity::error: counts.errors += 1 + f.more_like_it; break;
+      case Severity::warning: counts.warnings += 1 + f.more_like_it; break;
+      case Severity::note: counts.notes += 1 + f.more_like_it; break;
     }
   }
   return counts;

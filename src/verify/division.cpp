@@ -22,28 +22,49 @@ struct Division {
   std::vector<ExprPtr> context;
 };
 
+// What holds on the way down to a subexpression: a conjunction's other operands (the `&` and
+// the operand taken, so that a wide conjunction costs one entry, not one per sibling), the
+// premise of `=>`, the condition (or its negation) of an ite branch.
+struct ContextPart {
+  const Expr* conjunction = nullptr;  // every operand of it but `taken`
+  std::size_t taken = 0;
+  ExprPtr condition;  // when `conjunction` is null
+};
+
+std::vector<ExprPtr> conditions_of(const std::vector<ContextPart>& path) {
+  std::vector<ExprPtr> out;
+  for (const ContextPart& part : path) {
+    if (!part.conjunction) {
+      out.push_back(part.condition);
+      continue;
+    }
+    for (std::size_t j = 0; j < part.conjunction->args.size(); ++j)
+      if (j != part.taken) out.push_back(part.conjunction->args[j]);
+  }
+  return out;
+}
+
 // Every division whose divisor is not a number, with the conjuncts that hold wherever its
-// value matters: the other operands of each `&` on the way down, the premise of `=>`, the
-// condition (or its negation) of an ite branch.
-void collect(const ExprPtr& e, std::vector<ExprPtr>& context, std::vector<Division>& out) {
+// value matters.
+void collect(const ExprPtr& e, std::vector<ContextPart>& path, std::vector<Division>& out) {
   if (!e) return;
   const auto& args = e->args;
   if ((e->kind == ExprKind::div || e->kind == ExprKind::mod) && args.size() == 2 && args[1] &&
       args[1]->kind != ExprKind::number && !smt::is_literal_zero(*args[1]))
-    out.push_back({e.get(), context});
+    out.push_back({e.get(), conditions_of(path)});
   for (std::size_t i = 0; i < args.size(); ++i) {
-    std::size_t added = 0;
-    if (e->kind == ExprKind::logical_and) {
-      for (std::size_t j = 0; j < args.size(); ++j)
-        if (j != i) context.push_back(args[j]), ++added;
-    } else if (e->kind == ExprKind::implies && i == 1) {
-      context.push_back(args[0]), ++added;
-    } else if (e->kind == ExprKind::call && e->text == "ite" && args.size() == 3 && i > 0) {
-      context.push_back(i == 1 ? args[0] : fretish::make_expr(ExprKind::logical_not, {args[0]}));
-      ++added;
-    }
-    collect(args[i], context, out);
-    context.resize(context.size() - added);
+    bool added = true;
+    if (e->kind == ExprKind::logical_and)
+      path.push_back({e.get(), i, nullptr});
+    else if (e->kind == ExprKind::implies && i == 1)
+      path.push_back({nullptr, 0, args[0]});
+    else if (e->kind == ExprKind::call && e->text == "ite" && args.size() == 3 && i > 0)
+      path.push_back(
+          {nullptr, 0, i == 1 ? args[0] : fretish::make_expr(ExprKind::logical_not, {args[0]})});
+    else
+      added = false;
+    collect(args[i], path, out);
+    if (added) path.pop_back();
   }
 }
 
@@ -128,8 +149,8 @@ std::vector<Finding> check_divisions(const fretish::Domain& domain_declared,
   for (const DivisionSource& s : sources) {
     literal_zero |= s.literal_zero;
     std::vector<Division> found;
-    std::vector<ExprPtr> context;
-    collect(s.expr, context, found);
+    std::vector<ContextPart> path;
+    collect(s.expr, path, found);
     for (auto& d : found) divisions.emplace_back(&s, std::move(d));
   }
   std::vector<Finding> out;
