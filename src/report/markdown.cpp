@@ -147,6 +147,7 @@ std::string to_markdown(const ReportInput& input) {
     for (const auto& finding : input.findings) {
       std::string message = md(finding.message);
       if (!finding.adaptable.empty()) message += " (node " + code(finding.adaptable) + ")";
+      if (finding.more_like_it > 0) message += "; " + md(finding.notes.back());
       out += std::string("| ") + severity_name(finding.severity) + " | " + code(finding.check) +
              " | " + code(detail::location_text(finding.location)) + " | " + message + " |\n";
     }

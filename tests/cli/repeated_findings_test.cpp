@@ -75,6 +75,19 @@ TEST(RepeatedFindings, JsonAndSarifCarryTheSameCount) {
   EXPECT_NE(sarif.out.find("and 480 more like it"), std::string::npos);
 }
 
+TEST(RepeatedFindings, TheGateReportsCountEveryFindingAndListTwenty) {
+  const TempMission m = undeclared_mission();
+  const auto out = m.dir().parent_path() / "out";
+  const auto run = run_shell("'" UABT_BINARY "' gate '" + m.dir().string() + "' --out '" +
+                             out.string() + "' 2>&1");
+  EXPECT_EQ(run.exit_code, 1);
+  for (const char* file : {"summary.md", "report.html", "junit.xml", "findings.txt"}) {
+    const std::string text = uabt::testing::read_all(out / file);
+    EXPECT_EQ(count_of(text, "and 480 more like it in this file"), 1u) << file;
+  }
+  EXPECT_NE(uabt::testing::read_all(out / "summary.md").find("500 errors"), std::string::npos);
+}
+
 TEST(RepeatedFindings, ARequirementsFileOfNoiseGivesAShortReport) {
   TempMission m = undeclared_mission();
   std::string noise;
