@@ -34,9 +34,7 @@ const TypeInfo& Typing::at(const Expr& e) const {
 }
 
 const Variable* find_variable(const fretish::Domain& domain, const std::string& name) {
-  for (const auto& v : domain.variables)
-    if (v.name == name) return &v;
-  return nullptr;
+  return domain.find(name);
 }
 
 int enum_literal_index(const Variable& enum_variable, const std::string& literal) {
