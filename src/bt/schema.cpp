@@ -231,7 +231,12 @@ std::string write_schema(const std::vector<NodeModel>& models) {
     std::map<std::string, const Port*> ports;
     for (const auto& p : e.ports) ports.emplace(p.name, &p);
     for (const auto& [name, p] : ports) {
-      if (!is_xml_name(name) || name.find(':') != std::string::npos || name == "name") continue;
+      // Only a port BT.CPP sets from an attribute has one (`name`, `ID`, `_skipIf`, …: the
+      // common attributes declare those BT.CPP reads itself), and never `xmlns`, which XML
+      // Schema reserves for namespace declarations (allowed on every element anyway).
+      if (!is_xml_name(name) || name.find(':') != std::string::npos || !is_port_attribute(name) ||
+          name == "xmlns")
+        continue;
       xsd += "    <xs:attribute name=\"" + name + "\"";
       if (const std::string type = attribute_type(*p); !type.empty())
         xsd += " type=\"" + type + "\"";

@@ -161,6 +161,26 @@ TEST(SchemaCli, XmllintAcceptsGoodTreesAndRejectsWhatTheLoaderRejects) {
   }
 }
 
+// A port named like an attribute BT.CPP reads itself (_skipIf) or named xmlns gets no attribute
+// of its own: xmllint compiles the schema (it refused "Duplicate attribute use '_skipIf'" and an
+// attribute named xmlns), and a node using _skipIf as every node may validates.
+TEST(SchemaCli, XmllintCompilesTheSchemaOfPortsNamedLikeReservedAttributes) {
+  if (!have_xmllint()) GTEST_SKIP() << "xmllint (libxml2-utils) is not installed";
+  TempMission dir(mission_files("<Stop/>"));
+  std::ofstream(dir.dir() / "nodes.xml")
+      << "<root BTCPP_format=\"4\">\n<TreeNodesModel>\n  <Action ID=\"Stop\">\n"
+         "    <input_port name=\"_skipIf\" type=\"int\"/>\n    <input_port name=\"xmlns\"/>\n"
+         "    <input_port name=\"speed\" type=\"double\"/>\n  </Action>\n"
+         "</TreeNodesModel>\n</root>\n";
+  ASSERT_EQ(run_uabt_in(dir.dir().string(), "schema nodes.xml -o nodes.xsd").exit_code, 0);
+  const fs::path tree = dir.dir() / "tree.xml";
+  std::ofstream(tree) << alternative_tree("t", "<Stop speed=\"1.5\" _skipIf=\"done\"/>");
+  const CliRun ok = xmllint(dir.dir() / "nodes.xsd", tree);
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  std::ofstream(tree) << alternative_tree("t", "<Stop _skipIf=\"done\"/>");
+  EXPECT_NE(xmllint(dir.dir() / "nodes.xsd", tree).exit_code, 0) << "speed is required";
+}
+
 // Every shipped mission's trees, alternatives and uplinked alternatives validate against the
 // schema of the nodes its compiled tree registers (its <TreeNodesModel>).
 TEST(SchemaCli, EveryShippedMissionValidates) {

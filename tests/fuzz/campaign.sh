@@ -13,7 +13,7 @@ cd "$(dirname "$0")/../.."
 seconds=${1:-600}
 work=${2:-$(mktemp -d)}
 [ $# -ge 2 ] && shift 2 || shift $#
-targets=${*:-fretish domain fret_json bt_xml pipeline world uplink scenario trace}
+targets=${*:-fretish domain fret_json bt_xml pipeline world uplink scenario scenario_uplink nodes trace}
 bin=${UABT_FUZZ_BUILD_DIR:-build-fuzz}/tests/fuzz
 mkdir -p "$work"
 found=0

@@ -1,7 +1,7 @@
 #pragma once
-// The checks behind fuzz_world, fuzz_uplink, fuzz_scenario and fuzz_trace, shared with
-// test_hardening's replay of their inputs. Each harness writes a small fixed mission (the
-// drilling sample: one adaptable node, two alternatives, guarantees, a domain) into a
+// The checks behind fuzz_world, fuzz_uplink, fuzz_scenario, fuzz_scenario_uplink and fuzz_trace,
+// shared with test_hardening's replay of their inputs. Each harness writes a small fixed mission
+// (the drilling sample: one adaptable node, two alternatives, guarantees, a domain) into a
 // temporary directory once, then runs one input through the entry point a command uses and
 // returns "" when every invariant holds, otherwise what went wrong.
 
@@ -30,6 +30,7 @@
 #include "gate/gate.hpp"
 #include "gate/uplink.hpp"
 #include "load/mission.hpp"
+#include "manager/manager.hpp"
 #include "monitor/check_trace.hpp"
 #include "monitor/trace.hpp"
 #include "prove/prove.hpp"
@@ -37,6 +38,7 @@
 #include "runtime/runner.hpp"
 #include "runtime/scenario.hpp"
 #include "runtime/scenario_check.hpp"
+#include "runtime/trace.hpp"
 
 namespace uabt::fuzz {
 
@@ -83,6 +85,20 @@ inline const std::string kDrillingRequirements =
     "CoolBit: Mission shall always satisfy Drill.running -> IsBitCool\n"
     "OneTool: Mission shall always satisfy !(Drill.running & CoolDown.running)\n";
 
+// The drilling sample with the guarantees it proves (CoolBit, which rotary breaks, left out),
+// on which an uplink can pass the gate; kCoolRequirements is a package's requirements.fret
+// that passes it when placed before Soft.
+inline void write_uplink_drilling(const TempMission& m) {
+  write_drilling(m,
+                 "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
+                 "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
+                 "OneTool: Mission shall always satisfy !(Drill.running & CoolDown.running)\n");
+}
+
+inline const std::string kCoolRequirements =
+    "Cool: In drilling if !HardRock & !IsBitCool Mission shall satisfy selected_alt = percussive\n"
+    "OneTool: Mission shall always satisfy !(Drill.running & CoolDown.running)\n";
+
 inline std::string located(const SourceLocation& l) {
   return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
 }
@@ -101,6 +117,19 @@ inline std::string check_message_location(const std::string& message, const std:
     return "error '" + message + "' is at " + std::to_string(line) + ":" + std::to_string(column) +
            " of a text of " + std::to_string(line_count(text)) + " lines";
   return {};
+}
+
+// `text` as the scenario `file`, or nothing when parse_scenario refuses it; then `problem` says
+// what is wrong with the refusal ("" when it names the file at an existing line:col).
+inline std::optional<runtime::Scenario> parse_scenario_located(const std::string& text,
+                                                               const char* file,
+                                                               std::string& problem) {
+  try {
+    return runtime::parse_scenario(text, file);
+  } catch (const runtime::ScenarioError& e) {
+    problem = check_message_location(e.what(), file, text);
+    return std::nullopt;
+  }
 }
 
 // Every finding located in `file` is at a line that exists in `text`, with a column; errors
@@ -246,15 +275,8 @@ class UplinkHarness {
   static constexpr const char* kFile = "uplinks/fuzz/uplink.json";
 
   UplinkHarness() {
-    detail::write_drilling(
-        dir_,
-        "Hard: In drilling if HardRock Mission shall satisfy selected_alt = percussive\n"
-        "Soft: In drilling Mission shall satisfy selected_alt = rotary\n"
-        "OneTool: Mission shall always satisfy !(Drill.running & CoolDown.running)\n");
-    dir_.write("uplinks/fuzz/requirements.fret",
-               "Cool: In drilling if !HardRock & !IsBitCool Mission shall satisfy "
-               "selected_alt = percussive\n"
-               "OneTool: Mission shall always satisfy !(Drill.running & CoolDown.running)\n");
+    detail::write_uplink_drilling(dir_);
+    dir_.write("uplinks/fuzz/requirements.fret", detail::kCoolRequirements);
     std::string error;
     if (auto m = load::load_mission(dir_.dir(), {}, error))
       running_ = std::make_unique<load::Mission>(std::move(*m));
@@ -386,12 +408,10 @@ class ScenarioHarness {
   std::string check(std::string_view data) const {
     if (!compiled_->ready()) return "the fixed mission does not compile";
     const std::string text(data);
-    runtime::Scenario scenario;
-    try {
-      scenario = runtime::parse_scenario(text, kFile);
-    } catch (const runtime::ScenarioError& e) {
-      return detail::check_message_location(e.what(), kFile, text);
-    }
+    std::string refused;
+    const auto parsed = detail::parse_scenario_located(text, kFile, refused);
+    if (!parsed) return refused;
+    const runtime::Scenario& scenario = *parsed;
     for (const std::string& misfit : runtime::check_scenario(scenario, compiled_->vocabulary))
       if (std::string p = detail::check_message_location(misfit, kFile, text); !p.empty()) return p;
     if (!runtime::check_scenario(scenario, compiled_->vocabulary).empty()) return {};
@@ -424,6 +444,170 @@ class ScenarioHarness {
 
   detail::TempMission dir_{"drilling"};
   std::unique_ptr<detail::CompiledMission> compiled_;
+};
+
+// A scenario with uplink events for the drilling sample, run as `uabt run` runs it: the Behavior
+// Tree Manager admits the mission, checks the scenario against it and every package it names,
+// and takes each due uplink through the gate mid-run (at most 40 ticks). Three fixed packages:
+// uplinks/cool adds a requirement and passes, uplinks/overlap adds one that overlaps Hard and
+// fails, uplinks/rotary_v2 is a new version of an alternative and passes. Every error names
+// scenarios/fuzz.json at an existing line:col; a run ends with a known verdict within its
+// bound; the due uplink events are traced in order, each at its tick, accepted without findings
+// or rejected with located errors; the first one is decided as `uabt gate --uplink` decides its
+// package on the starting mission, and uplinks/overlap is never accepted; the accepted ones are
+// the run's accepted uplinks, and a property an uplink added is monitored from an accepted
+// uplink's tick; the same scenario runs twice to the same trace and property verdicts.
+class ScenarioUplinkHarness {
+ public:
+  static constexpr const char* kFile = "scenarios/fuzz.json";
+  static constexpr std::int64_t kMaxTicks = 40;
+
+  ScenarioUplinkHarness() {
+    detail::write_uplink_drilling(dir_);
+    dir_.write("uplinks/cool/requirements.fret", detail::kCoolRequirements);
+    dir_.write("uplinks/cool/uplink.json", "{\"place\": {\"Cool\": {\"before\": \"Soft\"}}}\n");
+    dir_.write("uplinks/overlap/requirements.fret",
+               "Rock: In drilling if HardRock Mission shall satisfy selected_alt = rotary\n");
+    dir_.write("uplinks/rotary_v2/alternatives/drilling/rotary.xml",
+               "<root BTCPP_format=\"4\" main_tree_to_execute=\"rotary\">\n"
+               "  <BehaviorTree ID=\"rotary\">\n"
+               "    <Sequence>\n"
+               "      <Fallback>\n"
+               "        <IsBitCool/>\n"
+               "        <CoolDown/>\n"
+               "      </Fallback>\n"
+               "      <Drill name=\"Drill\" mode=\"rotary\"/>\n"
+               "    </Sequence>\n"
+               "  </BehaviorTree>\n"
+               "</root>\n");
+    // What `uabt gate MISSION --uplink DIR` decides for each package on the starting mission.
+    std::string error;
+    const auto running = load::load_mission(dir_.dir(), {}, error);
+    if (!running) return;
+    for (const std::string package : {"uplinks/cool", "uplinks/overlap", "uplinks/rotary_v2"}) {
+      load::LoadOptions with;
+      with.uplinks.push_back(dir_.dir() / package);
+      if (auto merged = load::load_mission(dir_.dir(), with, error))
+        alone_[package] =
+            gate::run_uplink_gate(*running, std::move(*merged), gate_options(), "fuzz").passed();
+    }
+  }
+  const std::filesystem::path& dir() const { return dir_.dir(); }
+  // The gate's verdict on `package` alone on the starting mission (false when unknown).
+  bool passes_alone(const std::string& package) const {
+    const auto it = alone_.find(package);
+    return it != alone_.end() && it->second;
+  }
+
+  std::string check(std::string_view data) const {
+    if (alone_.size() != 3) return "the fixed mission or its packages do not load";
+    const std::string text(data);
+    std::string refused;
+    const auto parsed = detail::parse_scenario_located(text, kFile, refused);
+    if (!parsed) return refused;
+    const runtime::Scenario& scenario = *parsed;
+    manager::ManagerOptions options;
+    options.gate = gate_options();
+    options.max_ticks = std::min(scenario.max_ticks, kMaxTicks);
+    manager::ManagerRun first;
+    try {
+      first = manager::BehaviorTreeManager(dir_.dir(), scenario, options).run();
+    } catch (const runtime::ScenarioError& e) {
+      // One "file:line:col: error: …" line per misfit.
+      const std::string what = e.what();
+      for (std::size_t at = 0; at < what.size();) {
+        const std::size_t end = std::min(what.find('\n', at), what.size());
+        if (std::string p = detail::check_message_location(what.substr(at, end - at), kFile, text);
+            !p.empty())
+          return p;
+        at = end + 1;
+      }
+      return {};
+    } catch (const manager::NotAdmitted& e) {
+      return "the mission was not admitted: " + detail::first_error(e.findings);
+    }
+    if (std::string p = check_run(scenario, first, options.max_ticks); !p.empty()) return p;
+    const manager::ManagerRun second =
+        manager::BehaviorTreeManager(dir_.dir(), scenario, options).run();
+    if (summary(first) != summary(second))
+      return "the same scenario ran twice differently:\n" + summary(first) + "then\n" +
+             summary(second);
+    return {};
+  }
+
+ private:
+  static gate::Options gate_options() {
+    gate::Options options;
+    options.verify.threads = 1;
+    options.prove.max_states = 20000;
+    return options;
+  }
+
+  static std::string summary(const manager::ManagerRun& run) {
+    return manager::trace_summary(run) + manager::property_summary(run) +
+           "verdict: " + run.verdict + "\n";
+  }
+
+  std::string check_run(const runtime::Scenario& scenario, const manager::ManagerRun& run,
+                        std::int64_t max_ticks) const {
+    static const std::vector<std::string> verdicts = {"success", "failure", "skipped", "timeout",
+                                                      "error"};
+    if (std::find(verdicts.begin(), verdicts.end(), run.verdict) == verdicts.end())
+      return "the run ended with the verdict '" + run.verdict + "'";
+    if (run.ticks > static_cast<std::uint64_t>(max_ticks))
+      return "the run took " + std::to_string(run.ticks) + " ticks, more than its bound " +
+             std::to_string(max_ticks);
+    if ((run.verdict == "error") != run.error.has_value())
+      return "the verdict '" + run.verdict + "' and the run's error disagree";
+    std::vector<const runtime::ScenarioEvent*> due;
+    for (const runtime::ScenarioEvent& e : scenario.events)
+      if (!e.uplink.empty()) due.push_back(&e);
+    std::vector<std::string> accepted;
+    std::set<std::uint64_t> accepted_ticks;
+    std::size_t n = 0;
+    for (const runtime::TraceEvent& e : run.trace) {
+      if (e.event != "uplink") continue;
+      if (n == due.size()) return "an uplink event no scenario event asked for: " + e.uplink;
+      const runtime::ScenarioEvent& asked = *due[n];
+      const auto at = static_cast<std::uint64_t>(std::max<std::int64_t>(asked.at, 1));
+      if (e.uplink != asked.uplink || e.tick != at)
+        return "uplink event " + std::to_string(n) + " is " + e.uplink + " at tick " +
+               std::to_string(e.tick) + ", the scenario asked for " + asked.uplink + " at " +
+               std::to_string(at);
+      if (e.verdict == "accepted") {
+        if (!e.findings.empty()) return "uplink " + e.uplink + " accepted with findings";
+        if (e.uplink == "uplinks/overlap") return "uplinks/overlap was accepted";
+        accepted.push_back(e.uplink);
+        accepted_ticks.insert(e.tick);
+      } else if (e.verdict == "rejected") {
+        if (e.findings.empty()) return "uplink " + e.uplink + " rejected without a finding";
+        for (const Finding& f : e.findings)
+          if (f.severity != Severity::error || f.location.file.empty() || f.location.line < 0)
+            return "uplink " + e.uplink + " rejected with '" + f.message + "' [" + f.check +
+                   "] at '" + detail::located(f.location) + "'";
+      } else {
+        return "uplink " + e.uplink + " has the verdict '" + e.verdict + "'";
+      }
+      if (n == 0 && alone_.count(e.uplink) && (e.verdict == "accepted") != passes_alone(e.uplink))
+        return "the first uplink, " + e.uplink + ", was " + e.verdict + " mid-run but the gate " +
+               (passes_alone(e.uplink) ? "passes" : "rejects") + " it on the starting mission";
+      ++n;
+    }
+    for (std::size_t i = n; i < due.size(); ++i)
+      if (due[i]->at <= static_cast<std::int64_t>(run.ticks))
+        return "the uplink " + due[i]->uplink + " due at tick " + std::to_string(due[i]->at) +
+               " of a run of " + std::to_string(run.ticks) + " ticks was not taken";
+    if (run.accepted_uplinks != accepted)
+      return "the run's accepted uplinks are not those its trace accepts";
+    for (const monitor::PropertyResult& p : run.properties)
+      if (p.monitored_from && accepted_ticks.count(*p.monitored_from) == 0)
+        return "property " + p.id + " is monitored from tick " + std::to_string(*p.monitored_from) +
+               ", when no uplink was accepted";
+    return {};
+  }
+
+  detail::TempMission dir_{"drilling"};
+  std::map<std::string, bool> alone_;  // package -> passes the gate on the starting mission
 };
 
 // A monitor trace (JSON lines, `uabt monitor` and `run --monitor-trace`): read_trace, then

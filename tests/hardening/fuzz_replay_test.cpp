@@ -8,8 +8,10 @@
 #include <functional>
 #include <sstream>
 
+#include "bt/schema.hpp"
 #include "fuzz/entry_points.hpp"
 #include "fuzz/format_harnesses.hpp"
+#include "fuzz/nodes_harness.hpp"
 #include "fuzz/pipeline_harness.hpp"
 #include "test_support.hpp"
 
@@ -102,6 +104,53 @@ TEST(FuzzReplay, Scenario) {
 
 TEST(FuzzReplay, Trace) {
   replay_target<fuzz::TraceHarness>("trace", 3);
+}
+
+TEST(FuzzReplay, Nodes) {
+  replay_target<fuzz::NodesHarness>("nodes", 5, 2000u);  // a longer solver limit, as above
+}
+
+TEST(FuzzReplay, ScenarioUplink) {
+  replay_target<fuzz::ScenarioUplinkHarness>("scenario_uplink", 5);
+}
+
+// The nodes target reaches the schema, not only the loader's errors: its complete seed loads
+// without an error and gives a schema with the robot's node.
+TEST(FuzzReplay, NodesHarnessCompleteSeedLoadsAndWritesASchema) {
+  const fuzz::NodesHarness harness;
+  ASSERT_EQ(harness.check(contents(source_dir() / "tests/fuzz/corpus/nodes/complete.xml"), 2000),
+            "");
+  std::string error;
+  const auto mission = load::load_mission(harness.dir(), {}, error);
+  ASSERT_TRUE(mission.has_value()) << error;
+  EXPECT_FALSE(has_errors(mission->findings));
+  ASSERT_TRUE(mission->nodes.has_value());
+  EXPECT_NE(bt::write_schema(*mission->nodes).find("<xs:complexType name=\"node_Drill\">"),
+            std::string::npos);
+}
+
+// The scenario-uplink target takes uplinks through the gate mid-run: of its fixed packages the
+// gate passes two and rejects the overlapping one, and its first seed sees all three verdicts.
+TEST(FuzzReplay, ScenarioUplinkHarnessPackagesAreAcceptedAndRejectedMidRun) {
+  const fuzz::ScenarioUplinkHarness harness;
+  EXPECT_TRUE(harness.passes_alone("uplinks/cool"));
+  EXPECT_TRUE(harness.passes_alone("uplinks/rotary_v2"));
+  EXPECT_FALSE(harness.passes_alone("uplinks/overlap"));
+  const fs::path seed = source_dir() / "tests/fuzz/corpus/scenario_uplink/all_three.json";
+  ASSERT_EQ(harness.check(contents(seed)), "");
+  manager::ManagerOptions options;
+  options.max_ticks = 40;
+  const manager::ManagerRun run =
+      manager::BehaviorTreeManager(
+          harness.dir(), runtime::parse_scenario(contents(seed), "scenarios/fuzz.json"), options)
+          .run();
+  EXPECT_EQ(run.accepted_uplinks, (std::vector<std::string>{"uplinks/rotary_v2", "uplinks/cool"}));
+  std::vector<std::string> verdicts;
+  for (const runtime::TraceEvent& e : run.trace)
+    if (e.event == "uplink") verdicts.push_back(e.uplink + " " + e.verdict);
+  EXPECT_EQ(verdicts,
+            (std::vector<std::string>{"uplinks/overlap rejected", "uplinks/rotary_v2 accepted",
+                                      "uplinks/cool accepted"}));
 }
 
 // The uplink target reaches the uplink gate's contract, not only the loader's errors: its
@@ -208,6 +257,37 @@ TEST(FuzzReplay, WriterOutputParsesForIdsThatAreNotXmlNames) {
     const std::string written = bt::write_document(*doc);
     std::vector<Finding> again;
     EXPECT_TRUE(bt::parse_document(written, "written.xml", again).has_value()) << written;
+  }
+}
+
+// Caught by fuzz_nodes' schema check
+// (regressions/nodes/schema-port-named-skipIf-declared-twice.xml, schema-port-named-xmlns.xml): a
+// port named _skipIf was declared as an attribute of its node besides the common attribute group's
+// _skipIf, and a port named xmlns as an attribute XML Schema forbids, so the schema did not compile
+// (xmllint: "Duplicate attribute use"). A port BehaviorTree.CPP does not set from an attribute, and
+// xmlns, now have no attribute of their own.
+TEST(FuzzReplay, SchemaDeclaresNoAttributeForReservedPortNames) {
+  std::vector<Finding> findings;
+  const auto doc = bt::parse_document(
+      "<root BTCPP_format=\"4\"><TreeNodesModel><Action ID=\"Drill\">"
+      "<input_port name=\"_skipIf\" type=\"int\"/><input_port name=\"xmlns\"/>"
+      "<input_port name=\"ID\"/><input_port name=\"mode\"/>"
+      "</Action></TreeNodesModel></root>",
+      "nodes.xml", findings);
+  ASSERT_TRUE(doc.has_value());
+  const std::string xsd = bt::write_schema(doc->node_models);
+  const std::size_t at = xsd.find("  <xs:complexType name=\"node_Drill\">");
+  ASSERT_NE(at, std::string::npos) << xsd;
+  EXPECT_EQ(xsd.substr(at, xsd.find("</xs:complexType>", at) - at),
+            "  <xs:complexType name=\"node_Drill\">\n"
+            "    <xs:attribute name=\"mode\" type=\"xs:string\" use=\"required\"/>\n"
+            "    <xs:attributeGroup ref=\"commonAttributeGroup\"/>\n  ");
+  for (const fs::path& file : inputs_of("nodes", "regressions")) {
+    SCOPED_TRACE(file.filename().string());
+    std::vector<Finding> read;
+    const auto models = bt::parse_document(contents(file), "nodes.xml", read);
+    ASSERT_TRUE(models.has_value());
+    EXPECT_EQ(fuzz::detail::SchemaCheck().check(bt::write_schema(models->node_models)), "");
   }
 }
 
