@@ -639,7 +639,8 @@ RunRecord observe_trace(const load::Mission& mission, const std::string& content
   for (const auto& tick : trace->ticks) {
     for (const auto& [name, v] : tick.state) {
       if (v.kind == monitor::TraceValue::Kind::none) {  // no value at this tick
-        std::erase_if(now, [&](const auto& entry) { return entry.first == name; });
+        // An init-capture: clang before 16 cannot capture a structured binding.
+        std::erase_if(now, [&key = name](const auto& entry) { return entry.first == key; });
         continue;
       }
       Value value;

@@ -567,8 +567,9 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
           const __int128 f = root.floor();
           for (__int128 x = f - 1; x <= f; ++x) {
             if (x < INT64_MIN || x >= INT64_MAX) continue;
-            const auto at = [&](__int128 value) {
-              return linear->holds_at(coefficient * Fraction::of(value, 1) + linear->constant);
+            // An init-capture: clang before 16 cannot capture a structured binding.
+            const auto at = [&, &c = coefficient](__int128 value) {
+              return linear->holds_at(c * Fraction::of(value, 1) + linear->constant);
             };
             if (at(x) != at(x + 1)) cuts[name].insert(static_cast<std::int64_t>(x));
           }

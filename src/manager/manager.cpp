@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 
 #include "base/diagnostics.hpp"
@@ -70,6 +71,29 @@ void check_counterexample_of(const Scenario& scenario, const load::Mission& miss
       (guarantees.empty() ? "it states none" : "its guarantees: " + guarantees) + ")");
 }
 
+// One "file:line:col: error: …" line per misfit: a name the scenario wrote with "\n" (or
+// another control character) in it is shown escaped, a newline as backslash-n.
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (const char c : message) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (u < 0x20 || u == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", u);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 TraceEvent violation_event(const PropertyViolation& v) {
   TraceEvent e;
   e.tick = v.tick;
@@ -112,7 +136,7 @@ void BehaviorTreeManager::fit_to_mission(const load::Mission& mission) {
   errors.insert(errors.end(), names.begin(), names.end());
   if (errors.empty()) return;
   std::string text;
-  for (const std::string& e : errors) text += (text.empty() ? "" : "\n") + e;
+  for (const std::string& e : errors) text += (text.empty() ? "" : "\n") + one_line(e);
   throw ScenarioError(text);
 }
 

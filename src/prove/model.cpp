@@ -177,8 +177,9 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       written_by[out.entry].push_back(&out);
     }
   for (const auto& [entry, writers] : written_by) {
-    auto it =
-        std::find_if(vars.begin(), vars.end(), [&](const StateVar& v) { return v.name == entry; });
+    // An init-capture: clang before 16 cannot capture a structured binding.
+    auto it = std::find_if(vars.begin(), vars.end(),
+                           [&name = entry](const StateVar& v) { return v.name == name; });
     if (it == vars.end()) {
       fretish::Variable decl;
       decl.name = entry;

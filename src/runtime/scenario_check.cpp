@@ -273,7 +273,10 @@ std::vector<std::string> check_scenario(const Scenario& scenario,
   check_state(scenario.initial, "/initial");
   for (const ScenarioEvent& e : scenario.events)
     check_state(e.set, "/events/" + std::to_string(e.index) + "/set");
-  for (const auto& [name, spec] : scenario.actions) {
+  // Not a structured binding: clang before 16 cannot capture one in the lambda below.
+  for (const auto& action : scenario.actions) {
+    const std::string& name = action.first;
+    const ActionSpec& spec = action.second;
     if (!vocabulary.is_leaf(name))
       errors.push_back(scenario.where("/actions/" + name) + ": error: action '" + name +
                        "' is not a leaf of the mission" +

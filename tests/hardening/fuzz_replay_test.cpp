@@ -291,6 +291,28 @@ TEST(FuzzReplay, SchemaDeclaresNoAttributeForReservedPortNames) {
   }
 }
 
+// Found by fuzz_scenario_uplink
+// (regressions/scenario_uplink/uplink-path-with-newline-splits-the-error-line.json): an uplink
+// package written "uplin\n/cool" put a line break into `uabt run`'s error, so its second half
+// was a line that names no file. Each misfit is one line again, the name escaped.
+TEST(FuzzReplay, ScenarioMisfitWithANewlineInANameStaysOneLine) {
+  const fuzz::ScenarioUplinkHarness harness;
+  const std::string text = "{\"events\": [{\"at\": 2, \"uplink\": \"uplin\\n/cool\"}]}\n";
+  try {
+    manager::BehaviorTreeManager(harness.dir(), runtime::parse_scenario(text, "scenarios/s.json"))
+        .run();
+    FAIL() << "the scenario was accepted";
+  } catch (const runtime::ScenarioError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_EQ(what.rfind("scenarios/s.json:1:33: error: uplink package 'uplin\\n/cool' is not a "
+                         "directory (a path from the mission directory ",
+                         0),
+              0u)
+        << what;
+  }
+}
+
 // The harness's fixed mission with the shipped requirements passes the gate: the pipeline
 // target reaches compile and conform, not only the loader's errors.
 TEST(FuzzReplay, PipelineHarnessMissionPasses) {
