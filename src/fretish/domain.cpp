@@ -35,28 +35,57 @@ bool number_is_integer(std::optional<VarType> declared, double number, bool writ
   return written_integer || (number >= -0x1p63 && number < 0x1p63 && std::trunc(number) == number);
 }
 
+namespace detail {
+
+void NameIndex::update(const std::vector<Variable>& variables) const {
+  if (variables.size() < indexed_) clear();
+  for (; indexed_ < variables.size(); ++indexed_) {
+    const Variable& v = variables[indexed_];
+    names_.try_emplace(v.name, indexed_);
+    if (v.type != VarType::enumeration) continue;
+    for (const std::string& literal : v.enum_values) {
+      auto [it, added] = literals_.try_emplace(literal, indexed_);
+      if (!added && it->second != indexed_) it->second = kAmbiguous;
+    }
+  }
+}
+
+std::size_t NameIndex::variable(const std::vector<Variable>& variables,
+                                const std::string& name) const {
+  std::lock_guard lock(mutex_);
+  update(variables);
+  auto it = names_.find(name);
+  if (it != names_.end() && variables[it->second].name != name) {  // replaced in place
+    clear();
+    update(variables);
+    it = names_.find(name);
+  }
+  return it == names_.end() ? kNone : it->second;
+}
+
+std::size_t NameIndex::enum_owner(const std::vector<Variable>& variables,
+                                  const std::string& literal) const {
+  std::lock_guard lock(mutex_);
+  update(variables);
+  const auto it = literals_.find(literal);
+  return it == literals_.end() ? kNone : it->second;
+}
+
+}  // namespace detail
+
 const Variable* Domain::find(const std::string& name) const {
-  for (const Variable& v : variables)
-    if (v.name == name) return &v;
-  return nullptr;
+  const std::size_t k = index_.variable(variables, name);
+  return k == detail::NameIndex::kNone ? nullptr : &variables[k];
 }
 
 Variable* Domain::find(const std::string& name) {
-  for (Variable& v : variables)
-    if (v.name == name) return &v;
-  return nullptr;
+  const std::size_t k = index_.variable(variables, name);
+  return k == detail::NameIndex::kNone ? nullptr : &variables[k];
 }
 
 const Variable* Domain::enum_owning(const std::string& literal) const {
-  const Variable* owner = nullptr;
-  for (const Variable& v : variables) {
-    if (v.type != VarType::enumeration) continue;
-    if (std::find(v.enum_values.begin(), v.enum_values.end(), literal) == v.enum_values.end())
-      continue;
-    if (owner != nullptr) return nullptr;  // ambiguous: more than one enum has it
-    owner = &v;
-  }
-  return owner;
+  const std::size_t k = index_.enum_owner(variables, literal);
+  return k >= detail::NameIndex::kAmbiguous ? nullptr : &variables[k];
 }
 
 std::string declaration_text(const Variable& v) {

@@ -1,8 +1,10 @@
 #pragma once
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "base/location.hpp"
@@ -59,8 +61,45 @@ struct Assumption {
 // case; nullopt for ticks.
 std::optional<double> seconds_per_unit(std::string_view unit);
 
+namespace detail {
+
+// Where each name and enum literal of a domain's variables is, so that a lookup costs the same
+// for 20,000 variables as for 20: a guard that names every one of them is checked in linear
+// time. Built on demand over the variables added since the last lookup (variables are only
+// ever appended), under a lock, since verify's threads look names up concurrently. A copy
+// starts empty: it indexes its own vector.
+class NameIndex {
+ public:
+  static constexpr std::size_t kNone = SIZE_MAX, kAmbiguous = SIZE_MAX - 1;
+  NameIndex() = default;
+  NameIndex(const NameIndex&) {}
+  NameIndex& operator=(const NameIndex&) {
+    std::lock_guard lock(mutex_);
+    clear();
+    return *this;
+  }
+  // The position of the variable `name` in `variables` (the first, as a scan finds it), or
+  // kNone.
+  std::size_t variable(const std::vector<Variable>& variables, const std::string& name) const;
+  // The position of the only enum variable with the literal, kAmbiguous or kNone.
+  std::size_t enum_owner(const std::vector<Variable>& variables, const std::string& literal) const;
+
+ private:
+  void update(const std::vector<Variable>& variables) const;
+  void clear() const {
+    names_.clear();
+    literals_.clear();
+    indexed_ = 0;
+  }
+  mutable std::mutex mutex_;
+  mutable std::unordered_map<std::string, std::size_t> names_, literals_;
+  mutable std::size_t indexed_ = 0;
+};
+
+}  // namespace detail
+
 struct Domain {
-  std::vector<Variable> variables;
+  std::vector<Variable> variables;  // only appended to: index_ relies on it
   std::vector<Assumption> assumptions;
   // `tick 100 ms`: seconds per tick, so that durations in time units become ticks.
   std::optional<double> tick_seconds;
@@ -70,6 +109,9 @@ struct Domain {
   Variable* find(const std::string& name);
   // Name of the enum variable that has `literal` among its values, if exactly one has.
   const Variable* enum_owning(const std::string& literal) const;
+
+ private:
+  detail::NameIndex index_;
 };
 
 // number_is_integer for a number written for the variable `declared` (nullptr: a name the

@@ -137,6 +137,13 @@ std::pair<std::uint64_t, std::uint64_t> hash128(const std::string& bytes) {
   return {avalanche(h1), avalanche(h2)};
 }
 
+// What a saved engine state holds in memory, for Options::explicit_memory.
+std::uint64_t bytes_of(const EngineState& e) {
+  return sizeof e + e.status.size() * sizeof e.status[0] +
+         e.counters.size() * sizeof e.counters[0] + e.child_done.size() +
+         e.values.size() * sizeof e.values[0];
+}
+
 bool completed(NodeStatus s) {
   return s == NodeStatus::success || s == NodeStatus::failure || s == NodeStatus::skipped;
 }
@@ -182,10 +189,11 @@ class Search {
         s.trail_.reset();
       }
     } unset{*this};
+    ticks_at_start_ = m_.engine->stats().node_ticks;
     expand(base_, UINT32_MAX, true);
     std::uint64_t depth = 1;
     while (!frontier_.empty() && !all_violated() && !result_.vacuous &&
-           !m_.environment->refined()) {
+           !m_.environment->refined() && result_.budget_spent.empty()) {
       if (o_.depth != 0 && depth >= o_.depth) break;
       if (nodes_.size() >= o_.max_states) break;
       std::vector<std::uint32_t> next;
@@ -195,17 +203,33 @@ class Search {
         // Only its place in the paths is needed once a state is expanded.
         release(nodes_[i]);
         if (!memo_on_) m_.choice->chooser.seen = nullptr;  // not even asked from now on
-        if (nodes_.size() >= o_.max_states || result_.vacuous) break;
+        if (nodes_.size() >= o_.max_states || result_.vacuous || spent()) break;
       }
       ++depth;
     }
-    result_.complete = frontier_.empty() && !result_.vacuous;
+    result_.complete = frontier_.empty() && !result_.vacuous && result_.budget_spent.empty();
     result_.depth = depth;
     result_.states = nodes_.size();
     return std::move(result_);
   }
 
  private:
+  // Options::explicit_steps and explicit_memory.
+  std::uint64_t steps() const {
+    return m_.engine->stats().node_ticks - ticks_at_start_ + key_bytes_ + 256 * result_.transitions;
+  }
+  bool spent() {
+    if (!result_.budget_spent.empty()) return true;
+    if (steps() > o_.explicit_steps)
+      result_.budget_spent = std::to_string(o_.explicit_steps) +
+                             " steps: node ticks, the bytes of the states it compared, and 256 "
+                             "a transition";
+    else if (kept_bytes_ > o_.explicit_memory)
+      result_.budget_spent = std::to_string(o_.explicit_memory >> 20) + " MiB of states kept";
+    return !result_.budget_spent.empty();
+  }
+  std::uint64_t ticks_at_start_ = 0, key_bytes_ = 0, kept_bytes_ = 0;
+
   bool all_violated() const {
     for (std::size_t i = 0; i < m_.properties.size(); ++i)
       if (!m_.properties[i].assumption && m_.properties[i].layout && !result_.violations[i])
@@ -248,6 +272,7 @@ class Search {
     key.append(reinterpret_cast<const char*>(mid_monitors_->data()),
                mid_monitors_->size() * sizeof(std::uint64_t));
     key.append(reinterpret_cast<const char*>(&site), sizeof site);
+    key_bytes_ += key.size();
     // Two independent 64-bit hashes: a collision would wrongly skip choices.
     const bool seen = !mid_tick_.insert(hash128(key)).second;
     memo_hits_ += seen;
@@ -313,7 +338,8 @@ class Search {
         } catch (const ChoicePruned&) {
         }
         m_.environment->end_tick();
-      } while (m_.choice->chooser.advance(prefix));
+      } while (!spent() && m_.choice->chooser.advance(prefix));
+      if (!result_.budget_spent.empty()) return;
     }
     if (outcomes.kept == 0 && !outcomes.errors) vacuous(from, first, outcomes);
   }
@@ -429,8 +455,10 @@ class Search {
     // them they do not matter, and states that differ only in them are one state.
     m_.environment->end_tick();
     key_of(*trail_, m_.choice->elapsed(), next.monitors, done, key_);
+    key_bytes_ += key_.size();
     if (!seen_.insert(key_).second) return;
     next.engine = EngineState::save(*m_.engine);
+    kept_bytes_ += key_.size() + bytes_of(next.engine);
     next.elapsed = m_.choice->elapsed();
     next.parent = from_index;
     next.step = std::move(step);

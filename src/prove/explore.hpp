@@ -37,6 +37,8 @@ struct SearchResult {
   std::vector<std::uint64_t> first_trigger;  // per property: first tick its trigger holds, 0 never
   std::uint64_t states = 0, transitions = 0, depth = 0;
   bool complete = false;
+  // Stopped by Options::explicit_steps or explicit_memory: what was spent, "" when neither.
+  std::string budget_spent;
   std::optional<std::string> tick_error;  // the first reachable tick error: "tick N of a run: …"
   std::optional<Vacuity> vacuous;
 };

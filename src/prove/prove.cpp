@@ -287,6 +287,10 @@ Result prove_explicit(Model& model, const Options& options) {
   r.depth = search.depth;
   r.complete = search.complete;
   if (search.tick_error) r.notes.push_back(kTickErrorNote + *search.tick_error);
+  if (!search.budget_spent.empty())
+    r.notes.push_back("the explicit-state engine spent its budget (" + search.budget_spent +
+                      ") at tick " + std::to_string(search.depth) +
+                      "; give the actions `ticks` in world.json, or try --engine symbolic");
   if (search.vacuous) r.vacuity = Vacuity{search.vacuous->message, search.vacuous->location};
   add_answers(model, search.violations, r, [&](std::size_t i, Answer& a) {
     a.verdict = search.vacuous    ? Verdict::vacuous

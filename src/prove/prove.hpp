@@ -77,6 +77,16 @@ struct Options {
   // open is bounded at the depth BMC had checked. The heaviest shipped or tested mission
   // spends about 30 million; Z3 counts 0.5 to 1 million a second on one core.
   std::uint64_t symbolic_resources = 100'000'000;
+  // What the explicit-state engine may spend: steps (node ticks, the bytes of every state it
+  // compares, and 256 for each transition's fixed cost), and memory (the bytes of the states
+  // it keeps). States bound what the search keeps, not its work: a Sequence of 2,000 actions
+  // without a world.json contract has 4,000 states, but each tick may end in any of them, and
+  // each state of a large tree is large. When either is spent the search stops, and what is
+  // not violated is bounded at the depth it reached. Both are deterministic, like the
+  // symbolic budget. One core at 2.5 GHz does about 140 million steps a second (so the
+  // default is about a minute); the shipped missions spend under a million.
+  std::uint64_t explicit_steps = 10'000'000'000;
+  std::uint64_t explicit_memory = std::uint64_t{1} << 30;
 };
 
 struct Result {

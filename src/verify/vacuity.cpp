@@ -398,17 +398,17 @@ std::vector<fretish::ExprPtr> independent_parts(const fretish::ExprPtr& guard,
   }
   // Parts in the order of their first conjunct; a conjunct that reads no name (a constant
   // comparison) stays with the first part.
-  std::vector<std::string> roots;
+  std::string first_root;
+  std::unordered_map<std::string, std::size_t> part_of_root;
   std::vector<std::vector<fretish::ExprPtr>> members;
   for (std::size_t i = 0; i < conjuncts.size(); ++i) {
-    const std::string root = names[i].empty() ? (roots.empty() ? "" : roots[0]) : find(names[i][0]);
-    const auto it = std::find(roots.begin(), roots.end(), root);
-    if (it == roots.end()) {
-      roots.push_back(root);
-      members.push_back({conjuncts[i]});
-    } else {
-      members[static_cast<std::size_t>(it - roots.begin())].push_back(conjuncts[i]);
+    const std::string root = names[i].empty() ? first_root : find(names[i][0]);
+    const auto [it, added] = part_of_root.try_emplace(root, members.size());
+    if (added) {
+      if (members.empty()) first_root = root;
+      members.emplace_back();
     }
+    members[it->second].push_back(conjuncts[i]);
   }
   if (members.size() == 1) return {guard};
   std::vector<fretish::ExprPtr> parts;

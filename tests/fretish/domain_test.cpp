@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "fretish/domain.hpp"
@@ -184,6 +185,60 @@ TEST(FretishDomain, TickPeriod) {
   period("tick fast", syntax);
   ASSERT_EQ(syntax.size(), 1u);
   EXPECT_EQ(syntax[0].check, "fretish-syntax");
+}
+
+// Lookups go through an index built over the variables added since the last lookup; it must
+// answer as a scan of the vector would, for names added later, in a copy that grows on its
+// own, and from several threads at once (verify looks names up from its per-node threads).
+TEST(FretishDomain, LookupsAnswerAsAScanAndSeeVariablesAddedLater) {
+  fretish::Domain d;
+  const auto add = [&](fretish::Domain& to, const std::string& name, VarType type,
+                       std::vector<std::string> literals = {}) {
+    fretish::Variable v;
+    v.name = name;
+    v.type = type;
+    v.enum_values = std::move(literals);
+    to.variables.push_back(std::move(v));
+  };
+  add(d, "terrain", VarType::enumeration, {"dust", "rocks"});
+  add(d, "battery", VarType::integer);
+  EXPECT_EQ(d.find("battery"), &d.variables[1]);
+  EXPECT_EQ(d.find("wind"), nullptr);
+  EXPECT_EQ(d.enum_owning("rocks"), &d.variables[0]);
+  EXPECT_EQ(d.enum_owning("sand"), nullptr);
+
+  // Added after a lookup: found; a second variable of the same name: the first still answers;
+  // a literal two enums declare: no owner.
+  add(d, "wind", VarType::real);
+  add(d, "battery", VarType::real);
+  add(d, "ground", VarType::enumeration, {"sand", "rocks"});
+  EXPECT_EQ(d.find("wind"), &d.variables[2]);
+  EXPECT_EQ(d.find("battery"), &d.variables[1]);
+  EXPECT_EQ(d.enum_owning("sand"), &d.variables[4]);
+  EXPECT_EQ(d.enum_owning("rocks"), nullptr);
+  EXPECT_EQ(d.enum_owning("dust"), &d.variables[0]);
+
+  // A copy answers with its own variables, and grows without changing the original.
+  fretish::Domain copy = d;
+  add(copy, "slope", VarType::real);
+  EXPECT_EQ(copy.find("wind"), &copy.variables[2]);
+  EXPECT_EQ(copy.find("slope"), &copy.variables[5]);
+  EXPECT_EQ(d.find("slope"), nullptr);
+
+  // 20,000 names, looked up from four threads at once.
+  fretish::Domain big;
+  for (int i = 0; i < 20000; ++i) add(big, "A" + std::to_string(i), VarType::boolean);
+  std::vector<int> wrong(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&big, &wrong, t] {
+      for (int i = t; i < 20000; i += 3)
+        if (big.find("A" + std::to_string(i)) != &big.variables[static_cast<std::size_t>(i)])
+          ++wrong[static_cast<std::size_t>(t)];
+      if (big.find("B0") != nullptr) ++wrong[static_cast<std::size_t>(t)];
+    });
+  for (auto& thread : threads) thread.join();
+  EXPECT_EQ(wrong, std::vector<int>(4, 0));
 }
 
 }  // namespace

@@ -65,6 +65,44 @@ TEST(Prove, ADepthBoundGivesBoundedNotProved) {
   EXPECT_EQ(findings[0].location.line, 5);
 }
 
+// The explicit engine's work is bounded by steps, not only by states: a Sequence of actions
+// without a world.json contract has few states, but each tick may end in any of them and each
+// state is compared by all of its bytes. With the budget spent the answer is bounded, with a
+// note naming the budget, and the gate fails closed on it.
+TEST(Prove, TheExplicitBudgetStopsTheSearchWithBoundedAndANote) {
+  auto files = mission_files("sample_drilling");
+  std::string hops;
+  for (int i = 0; i < 60; ++i) hops += "        <Hop/>\n";
+  std::string rotary = kFixedRotary;
+  const std::string drill = "      <Drill mode=\"rotary\"/>";
+  rotary.replace(rotary.find(drill), 0, "      <Sequence>\n" + hops + "      </Sequence>\n");
+  files["alternatives/drilling/rotary.xml"] = rotary;
+  TempMission m(files);
+  const prove::Result whole = prove_dir(m.dir());
+  EXPECT_TRUE(whole.complete);
+  EXPECT_EQ(answer(whole, "CoolBit").verdict, Verdict::proved);
+  for (const std::string& note : whole.notes) EXPECT_EQ(note.find("budget"), std::string::npos);
+
+  prove::Options options;
+  options.explicit_steps = 20'000;
+  const prove::Result cut = prove_dir(m.dir(), options);
+  EXPECT_FALSE(cut.complete);
+  EXPECT_LT(cut.states, whole.states);
+  EXPECT_EQ(answer(cut, "CoolBit").verdict, Verdict::bounded);
+  EXPECT_EQ(answer(cut, "OneTool").verdict, Verdict::bounded);
+  ASSERT_EQ(cut.notes.size(), 1u);
+  EXPECT_EQ(cut.notes[0].rfind("the explicit-state engine spent its budget (20000 steps: node "
+                               "ticks, the bytes of the states it compared, and 256 a "
+                               "transition) at tick ",
+                               0),
+            0u)
+      << cut.notes[0];
+  const auto findings = gate::findings_of(cut);
+  ASSERT_FALSE(findings.empty());
+  EXPECT_EQ(findings[0].check, "prove-bounded");
+  EXPECT_EQ(findings[0].severity, Severity::error);
+}
+
 // Only a later tick can break this one: the second drilling cycle on a hot bit.
 TEST(Prove, CounterexampleIsTheShortest) {
   TempMission m(hot_bit_after_a_drill());
