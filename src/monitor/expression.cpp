@@ -253,8 +253,13 @@ std::string CompiledExpression::message(const Val& v) const {
   return fretish::fault_text(v.fault);
 }
 
-Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& error) {
+Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& error,
+                                 Reader* reader) {
   unset_.clear();
+  struct Reading {
+    Reader*& in;
+    ~Reading() { in = nullptr; }
+  } reading{reader_ = reader};
   if (!temporal_nodes_.empty() && !update_temporal(frame, error)) return {};
   const Val v = eval(root_, frame);
   if (!v.known()) error = message(v);
@@ -274,8 +279,9 @@ Val CompiledExpression::evaluate(const std::vector<Val>& frame, std::string& err
   return v;
 }
 
-bool CompiledExpression::evaluate_bool(const std::vector<Val>& frame, std::string& error) {
-  const Val v = evaluate(frame, error);
+bool CompiledExpression::evaluate_bool(const std::vector<Val>& frame, std::string& error,
+                                       Reader* reader) {
+  const Val v = evaluate(frame, error, reader);
   if (!error.empty()) return false;
   if (v.kind != Val::Kind::boolean) {
     error = std::string("the expression is ") + kind_name(v.kind) + ", not a boolean";
@@ -289,11 +295,16 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame) {
   switch (n.kind) {
     case K::constant: return n.constant;
     case K::variable: {
+      if (reader_ != nullptr) reader_->reach(n.slot);
       const Val& v = frame[static_cast<std::size_t>(n.slot)];
       if (!v.known() && unset_.empty()) unset_ = n.name;
       return v;
     }
     case K::apply: {
+      if (reader_ != nullptr &&
+          (n.op == fretish::Op::logical_and || n.op == fretish::Op::logical_or ||
+           n.op == fretish::Op::implies || n.op == fretish::Op::ite))
+        return eval_lazily(n, frame);
       Val small[3];
       std::vector<Val> many;
       Val* args = small;
@@ -314,6 +325,85 @@ Val CompiledExpression::eval(int id, const std::vector<Val>& frame) {
     case K::prev_occ: return Val::of_bool(temporal_[static_cast<std::size_t>(n.state)].value);
   }
   return {};
+}
+
+// fretish::apply's value, from the arguments it depends on: the ones it reads before it returns.
+Val CompiledExpression::eval_lazily(const N& n, const std::vector<Val>& frame) {
+  using fretish::Op;
+  const std::size_t count = n.args.size();
+  Val small[3];
+  std::vector<Val> many;
+  Val* args = small;
+  if (count > 3) {
+    many.resize(count);
+    args = many.data();
+  }
+  const auto arg = [&](std::size_t k) { return args[k] = eval(n.args[k], frame); };
+  switch (n.op) {
+    case Op::logical_and:
+    case Op::logical_or: {
+      // The first known operand that decides, or that is not a boolean, is where apply stops.
+      const bool decisive = n.op == Op::logical_or;
+      std::size_t k = 0;
+      while (k < count) {
+        const Val a = arg(k++);
+        if (a.known() && (a.kind != Val::Kind::boolean || a.truth() == decisive)) break;
+      }
+      return fretish::apply(n.op, args, k);
+    }
+    case Op::implies: {
+      // A known premise that is not a boolean decides (a type error); a false one does when the
+      // rest cannot be a known value of another kind (a fold of two or more never is): any
+      // boolean then stands for the rest.
+      const Val a = arg(0);
+      if (a.known() && (a.kind != Val::Kind::boolean ||
+                        (!a.truth() && (count > 2 || never_other_than_boolean(n.args[1]))))) {
+        const Val decided[2] = {a, Val::of_bool(true)};
+        return fretish::apply(Op::implies, decided, 2);
+      }
+      for (std::size_t k = 1; k < count; ++k) arg(k);
+      return fretish::apply(Op::implies, args, count);
+    }
+    case Op::ite: {
+      // The branch taken; the other only when it could make an integer branch real. Without a
+      // known condition, the first branch's kind.
+      const Val c = arg(0);
+      if (c.known() && c.kind != Val::Kind::boolean) return fretish::apply(Op::ite, args, 3);
+      if (!c.known()) {
+        arg(1);
+        return fretish::apply(Op::ite, args, 3);
+      }
+      const std::size_t taken = c.truth() ? 1 : 2;
+      const Val out = arg(taken);
+      if (out.kind == Val::Kind::number && out.integer) arg(3 - taken);
+      return fretish::apply(Op::ite, args, 3);
+    }
+    default: break;
+  }
+  for (std::size_t k = 0; k < count; ++k) arg(k);
+  return fretish::apply(n.op, args, count);
+}
+
+bool CompiledExpression::never_other_than_boolean(int id) const {
+  using fretish::Op;
+  const N& n = nodes_[static_cast<std::size_t>(id)];
+  switch (n.kind) {
+    case K::constant: return !n.constant.known() || n.constant.kind == Val::Kind::boolean;
+    case K::variable: return reader_ != nullptr && reader_->boolean(n.slot);
+    case K::apply:
+      if (n.op == Op::ite)
+        return never_other_than_boolean(n.args[1]) && never_other_than_boolean(n.args[2]);
+      // The connectives and relations: a boolean, or no value.
+      return n.op == Op::logical_not || n.op == Op::logical_and || n.op == Op::logical_or ||
+             n.op == Op::logical_xor || n.op == Op::implies || n.op == Op::iff ||
+             (n.op >= Op::eq && n.op <= Op::ge);
+    case K::previous: return false;
+    case K::first_tick:
+    case K::persisted:
+    case K::occurred:
+    case K::prev_occ: return true;
+  }
+  return false;
 }
 
 }  // namespace uabt::monitor

@@ -41,6 +41,20 @@ struct Resolved {
 };
 using Resolver = std::function<Resolved(const std::string&)>;
 
+// How an evaluation reads a variable whose value may not be chosen yet (a model checker's
+// environment, chosen when first read): with a reader, an expression reaches each variable just
+// before it reads it from the frame, and reads no argument its value does not depend on.
+class Reader {
+ public:
+  virtual ~Reader() = default;
+  // `slot` is about to be read: its value is in the frame afterwards (the reader may write it
+  // there, into the very frame the evaluation reads).
+  virtual void reach(int slot) = 0;
+  // Whether `slot`'s value, reached now, is sure not to be a known value of another kind than
+  // boolean (without reaching it).
+  virtual bool boolean(int slot) const = 0;
+};
+
 // absReal, ite, preBool, persisted, …: FRET's functions the monitor evaluates.
 bool is_monitored_function(const std::string& name);
 
@@ -73,9 +87,12 @@ class CompiledExpression {
   bool has_temporal_functions() const { return !temporal_nodes_.empty(); }
 
   // Evaluates the expression at this tick; `error` is set on a type error (then the value is
-  // missing). Call exactly once per tick: pre* keep the previous tick's value.
-  Val evaluate(const std::vector<Val>& frame, std::string& error);
-  bool evaluate_bool(const std::vector<Val>& frame, std::string& error);
+  // missing). Call exactly once per tick: pre* keep the previous tick's value. With `reader`,
+  // every variable is reached before it is read, and `&`, `|`, `=>` and ite read their
+  // arguments left to right and stop once the value is decided (fretish::apply's value on all
+  // of them); the temporal functions and pre* still read all of theirs.
+  Val evaluate(const std::vector<Val>& frame, std::string& error, Reader* reader = nullptr);
+  bool evaluate_bool(const std::vector<Val>& frame, std::string& error, Reader* reader = nullptr);
 
   const std::vector<int>& variables() const { return variables_; }  // slots read
 
@@ -102,7 +119,12 @@ class CompiledExpression {
   };
   int build(const fretish::Expr& e, const Resolver& resolve, std::string& error);
   Val eval(int node, const std::vector<Val>& frame);
-  std::string unset_;  // this tick: the first variable read that has no value
+  // An `&`, `|`, `=>` or ite node with reader_: its arguments until its value is decided.
+  Val eval_lazily(const N& n, const std::vector<Val>& frame);
+  // Whether node's value cannot be a known value of another kind than boolean.
+  bool never_other_than_boolean(int node) const;
+  Reader* reader_ = nullptr;  // this evaluation's
+  std::string unset_;         // this tick: the first variable read that has no value
   std::string message(const Val& v) const;
 
   std::vector<N> nodes_;

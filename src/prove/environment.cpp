@@ -39,13 +39,12 @@ std::optional<Fraction> fraction_of(const runtime::ScriptValue& v) {
 }  // namespace
 
 Environment::Environment(Model& m) : m_(m) {
-  std::vector<std::size_t> var_of_frame;
   for (std::size_t i = 0; i < m.vars.size(); ++i) {
     const StateVar& v = m.vars[i];
     if (v.frame >= 0) {
-      if (var_of_frame.size() <= static_cast<std::size_t>(v.frame))
-        var_of_frame.resize(static_cast<std::size_t>(v.frame) + 1, SIZE_MAX);
-      var_of_frame[static_cast<std::size_t>(v.frame)] = i;
+      if (var_of_frame_.size() <= static_cast<std::size_t>(v.frame))
+        var_of_frame_.resize(static_cast<std::size_t>(v.frame) + 1, SIZE_MAX);
+      var_of_frame_[static_cast<std::size_t>(v.frame)] = i;
     }
     if (v.slot != runtime::kNoSlot) {
       if (var_of_slot_.size() <= v.slot) var_of_slot_.resize(v.slot + 1, SIZE_MAX);
@@ -64,9 +63,7 @@ Environment::Environment(Model& m) : m_(m) {
   auto vars_of = [&](const monitor::CompiledExpression& e) {
     std::vector<std::size_t> out;
     for (int slot : e.variables())
-      if (static_cast<std::size_t>(slot) < var_of_frame.size() &&
-          var_of_frame[static_cast<std::size_t>(slot)] != SIZE_MAX)
-        out.push_back(var_of_frame[static_cast<std::size_t>(slot)]);
+      if (const std::size_t i = var_of_frame(slot); i != SIZE_MAX) out.push_back(i);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -336,11 +333,36 @@ void Environment::undo(std::size_t count) {
   for (const Watch& w : watches_) bb.set_watched(m_.vars[w.var].slot);
 }
 
+void Environment::reach(int slot) {
+  const std::size_t i = var_of_frame(slot);
+  if (i == SIZE_MAX) return;
+  const runtime::Blackboard& bb = m_.engine->blackboard();
+  const runtime::SlotId s = m_.vars[i].slot;
+  if (!bb.pending(s)) return;
+  (*monitor_frame_)[static_cast<std::size_t>(slot)] =
+      runtime::TickObservation::value_of(bb.read(s), m_.symbols);
+}
+
+bool Environment::boolean(int slot) const {
+  const std::size_t i = var_of_frame(slot);
+  const auto is_boolean = [](const monitor::Val& v) {
+    return !v.known() || v.kind == monitor::Val::Kind::boolean;
+  };
+  if (i != SIZE_MAX && m_.engine->blackboard().pending(m_.vars[i].slot))
+    return !m_.state_cuts.contains(i) &&
+           std::all_of(choices_[i].begin(), choices_[i].end(), is_boolean);
+  return is_boolean((*monitor_frame_)[static_cast<std::size_t>(slot)]);
+}
+
+void Environment::monitors_read() {
+  // The monitors read every value as it is after the tick.
+  for (std::size_t k = 0; k < watches_.size(); ++k) check(k);
+}
+
 void Environment::resolve_monitor_reads() {
   const runtime::Blackboard& bb = m_.engine->blackboard();
   for (std::size_t v : monitor_reads_) bb.read(m_.vars[v].slot);
-  // The monitors read every value as it is after the tick.
-  for (std::size_t k = 0; k < watches_.size(); ++k) check(k);
+  monitors_read();
 }
 
 void Environment::end_tick() {

@@ -23,7 +23,7 @@ struct Model;
 // world.json's `initial`) satisfiable by the variables not chosen yet, so every run the search
 // takes can go on with a full state that satisfies them. Values nobody reads are never chosen
 // and are not part of the successor state.
-class Environment : public runtime::PendingResolver {
+class Environment : public runtime::PendingResolver, private monitor::Reader {
  public:
   explicit Environment(Model& model);
 
@@ -33,7 +33,19 @@ class Environment : public runtime::PendingResolver {
   // Whether some choice of the environment satisfies the assumptions in this state (when not,
   // the run cannot go on: no tick follows). Cached by the values the assumptions read.
   bool satisfiable();
-  // The monitors' reads, after the tick: resolves what the properties read, in a fixed order.
+  // The monitors' reads after the tick, on `frame` (the state after the tick, for the reads that
+  // follow): a variable still pending is chosen when an atom reaches it, as a read of the tick
+  // would choose it, and its value is written into `frame`. Values no atom's value depends on
+  // are never chosen.
+  monitor::Reader& monitor_reader(std::vector<monitor::Val>& frame) {
+    monitor_frame_ = &frame;
+    return *this;
+  }
+  // After the monitors' reads: the choices cut in the state at hand meet the state after the
+  // tick, which the monitors read.
+  void monitors_read();
+  // Every variable the properties read that is still pending, in a fixed order (a
+  // counterexample's table shows them all), then monitors_read().
   void resolve_monitor_reads();
   // Leaves the tick: nothing pending, every environment variable back at its placeholder value.
   void end_tick();
@@ -68,6 +80,14 @@ class Environment : public runtime::PendingResolver {
     bool first_only = false;        // world.json's initial
   };
   bool active(const Constraint& c) const { return first_ || !c.first_only; }
+  void reach(int slot) override;
+  bool boolean(int slot) const override;
+  std::size_t var_of_frame(int slot) const {
+    return static_cast<std::size_t>(slot) < var_of_frame_.size()
+               ? var_of_frame_[static_cast<std::size_t>(slot)]
+               : SIZE_MAX;
+  }
+
   // Whether the constraints connected to `seeds` through unassigned variables can all hold.
   bool component_satisfiable(std::vector<std::size_t> seeds);
   bool holds(Constraint& c);
@@ -107,6 +127,8 @@ class Environment : public runtime::PendingResolver {
   std::vector<std::uint32_t> options_;                    // resolve()'s scratch
   std::vector<std::size_t> seeds_;
   std::vector<std::size_t> var_of_slot_;
+  std::vector<std::size_t> var_of_frame_;  // Model::vars by monitor::Variables slot
+  std::vector<monitor::Val>* monitor_frame_ = nullptr;
   std::vector<std::size_t> monitor_reads_;
   std::vector<char> assigned_;
   std::vector<char> live_;

@@ -144,6 +144,25 @@ std::uint64_t bytes_of(const EngineState& e) {
          e.values.size() * sizeof e.values[0];
 }
 
+// The monitors' reads after tick `tick`, in the one order the search and its replay share: the
+// state after the tick into `frame`, then property by property its atoms, each environment value
+// still pending chosen when an atom reaches it (so a conjunction of N flags nobody else read
+// branches N + 1 ways, not 2^N). `read(i, inputs)` gets property i's atoms; false stops.
+template <typename Read>
+void read_monitors(Model& m, std::vector<monitor::Val>& frame, std::uint64_t tick, Read&& read) {
+  m.observables->fill(frame);
+  m.fill_state(frame);
+  monitor::Reader& reader = m.environment->monitor_reader(frame);
+  for (std::size_t i = 0; i < m.properties.size(); ++i) {
+    const Property& p = m.properties[i];
+    if (!p.layout) continue;
+    bool inputs[Property::kMaxAtoms] = {};
+    p.read_atoms(frame, inputs, tick, &reader);
+    if (!read(i, inputs)) break;
+  }
+  m.environment->monitors_read();
+}
+
 bool completed(NodeStatus s) {
   return s == NodeStatus::success || s == NodeStatus::failure || s == NodeStatus::skipped;
 }
@@ -242,8 +261,9 @@ class Search {
   // started from, and the choice point.
   bool seen_mid_tick(std::uint32_t site) {
     // Building the key costs a pass over the engine's state: where choices never meet again
-    // (each path of the tick ends in a state of its own), stop looking after a while.
-    if (!memo_on_) return false;
+    // (each path of the tick ends in a state of its own), stop looking after a while. The
+    // monitors' reads after the tick are not looked up: where they stand is not in the key.
+    if (!memo_on_ || monitors_reading_) return false;
     if (++memo_checks_ == kMemoTrial && memo_hits_ * 16 < memo_checks_) {
       memo_on_ = false;
       m_.observables->track_open(false);
@@ -280,6 +300,7 @@ class Search {
   }
   static constexpr std::uint64_t kMemoTrial = 4096;
   bool memo_on_ = true;
+  bool monitors_reading_ = false;  // the monitors' reads after the tick (read_monitors)
   std::uint64_t memo_checks_ = 0, memo_hits_ = 0;
 
   struct PairHash {
@@ -398,9 +419,9 @@ class Search {
   void successor(const Node& from, std::uint32_t from_index, Step step, Outcomes& outcomes,
                  bool resume) {
     NodeStatus root;
+    monitors_reading_ = false;
     try {
       root = resume ? m_.engine->resume_tick() : m_.engine->tick();
-      m_.environment->resolve_monitor_reads();
       ++result_.transitions;
     } catch (const runtime::TickException& e) {
       ++result_.transitions;
@@ -409,22 +430,18 @@ class Search {
       outcomes.errors = true;
       return;
     }
-    step.inner = m_.choice->chooser.taken();
     Node next;
     next.monitors = from.monitors;
     next.tick = from.tick + 1;
     const bool done = completed(root);
-    m_.observables->fill(frame_);
-    m_.fill_state(frame_);
     std::vector<std::size_t>& violated = violated_;
     std::vector<std::size_t>& triggered = triggered_;
     violated.clear();
     triggered.clear();
-    for (std::size_t i = 0; i < m_.properties.size(); ++i) {
+    const Property* excluded = nullptr;
+    monitors_reading_ = true;
+    read_monitors(m_, frame_, next.tick, [&](std::size_t i, const bool* inputs) {
       const Property& p = m_.properties[i];
-      if (!p.layout) continue;
-      bool inputs[Property::kMaxAtoms] = {};
-      p.read_atoms(frame_, inputs, next.tick);
       std::vector<std::uint64_t>& words = words_;
       words.assign(next.monitors.begin() + p.offset,
                    next.monitors.begin() + p.offset + p.layout->words());
@@ -432,13 +449,20 @@ class Search {
       std::copy(words.begin(), words.end(), next.monitors.begin() + p.offset);
       if (p.triggered(scratch_)) triggered.push_back(i);
       const bool fails = !now && (monitor::verdict_is_final_once_violated(p.shape) || done);
-      if (!fails) continue;
-      if (p.assumption) {  // a world the assumptions exclude
-        outcomes.excluded_by = &p;
-        return;
+      if (!fails) return true;
+      if (p.assumption) {  // a world the assumptions exclude: no more need be read
+        excluded = &p;
+        return false;
       }
       violated.push_back(i);
+      return true;
+    });
+    monitors_reading_ = false;
+    if (excluded != nullptr) {
+      outcomes.excluded_by = excluded;
+      return;
     }
+    step.inner = m_.choice->chooser.taken();
     ++outcomes.kept;
     for (std::size_t i : triggered)
       if (result_.first_trigger[i] == 0) result_.first_trigger[i] = next.tick;
@@ -580,6 +604,7 @@ void replay_path(Model& m, const std::vector<Step>& path,
   m.fresh.restore(*m.engine);
   m.choice->set_elapsed(std::vector<std::int64_t>(m.choice->leaves().size(), 0));
   static const std::vector<std::size_t> kNone;
+  std::vector<monitor::Val> frame;
   for (std::size_t t = 0; t < path.size(); ++t) {
     if (symbolic) {
       for (std::size_t i = 0; i < m.vars.size(); ++i)
@@ -596,6 +621,9 @@ void replay_path(Model& m, const std::vector<Step>& path,
     NodeStatus root;
     try {
       root = m.engine->tick();
+      // The choices the search made as the monitors read, in its order; the rest with their
+      // first allowed value.
+      if (!symbolic) read_monitors(m, frame, t + 1, [](std::size_t, const bool*) { return true; });
       m.environment->resolve_monitor_reads();
     } catch (...) {
       m.choice->force(nullptr);

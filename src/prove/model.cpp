@@ -391,11 +391,11 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
 
 Model::~Model() = default;
 
-void Property::read_atoms(const std::vector<monitor::Val>& frame, bool* bits,
-                          std::uint64_t tick) const {
+void Property::read_atoms(const std::vector<monitor::Val>& frame, bool* bits, std::uint64_t tick,
+                          monitor::Reader* reader) const {
   for (std::size_t k = 0; k < atoms.size(); ++k) {
     std::string error;
-    bits[k] = atoms[k]->evaluate_bool(frame, error);
+    bits[k] = atoms[k]->evaluate_bool(frame, error, reader);
     if (!error.empty())
       throw ProveError(requirement->id + ": at tick " + std::to_string(tick) + ": " + error);
   }

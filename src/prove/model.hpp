@@ -73,9 +73,11 @@ struct Property {
   std::string unsupported;
 
   static constexpr std::size_t kMaxAtoms = 16;
-  // This tick's atoms on `frame` into `bits` (kMaxAtoms of them); throws ProveError naming the
-  // property and `tick` on an evaluation error.
-  void read_atoms(const std::vector<monitor::Val>& frame, bool* bits, std::uint64_t tick) const;
+  // This tick's atoms on `frame` into `bits` (kMaxAtoms of them), in order, through `reader`
+  // when given (CompiledExpression::evaluate); throws ProveError naming the property and `tick`
+  // on an evaluation error.
+  void read_atoms(const std::vector<monitor::Val>& frame, bool* bits, std::uint64_t tick,
+                  monitor::Reader* reader = nullptr) const;
   // Whether the mode and the condition hold, from the node values of the layout's last step.
   bool triggered(const std::vector<char>& values) const {
     return (mode_node < 0 || values[static_cast<std::size_t>(mode_node)]) &&

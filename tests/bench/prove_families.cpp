@@ -175,6 +175,46 @@ FamilyMission generate_preflight(const std::filesystem::path& dir, int flags) {
   return m;
 }
 
+FamilyMission generate_recheck(const std::filesystem::path& dir, int flags, bool kept) {
+  if (flags < 2) throw std::invalid_argument("a re-checked checklist has at least two flags");
+  std::string body = "      <Sequence>\n";
+  std::string domain =
+      "# Sensor flags the vehicle reports. No action writes them, so the environment may set\n"
+      "# each of them anew before every tick.\n";
+  std::string actions, models, all_ok, assumptions;
+  for (int i = 1; i <= flags; ++i) {
+    const std::string check = "Check" + std::to_string(i), fix = "Fix" + std::to_string(i);
+    body += "        <Fallback>\n          <" + check + "/>\n          <Sequence>\n            <" +
+            fix + "/>\n            <" + check + "/>\n          </Sequence>\n        </Fallback>\n";
+    domain += "boolean " + check + "\n";
+    models += "    <Condition ID=\"" + check + "\"/>\n    <Action ID=\"" + fix + "\"/>\n";
+    actions +=
+        "    \"" + fix + "\": {\"ticks\": [1, 2], \"results\": [\"success\", \"failure\"]},\n";
+    all_ok += (i > 1 ? " & " : "") + check;
+    assumptions += "Keep" + std::to_string(i) + ": upon " + check +
+                   " Environment shall always satisfy " + check + "\n";
+  }
+  body += "        <Launch/>\n      </Sequence>\n";
+  write(dir / "mission.xml", mission_xml(body));
+  write(dir / "domain.fret", domain);
+  write(dir / "nodes.xml", nodes_xml(models + "    <Action ID=\"Launch\"/>\n"));
+  write(dir / "world.json",
+        "{\n  \"description\": \"A fix takes one or two ticks, succeeds or fails, and does not set "
+        "its flag; the launch takes three ticks.\",\n  \"actions\": {\n" +
+            actions + "    \"Launch\": {\"ticks\": 3, \"results\": [\"success\"]}\n  }\n}\n");
+  write(dir / "requirements.fret",
+        "# The launch runs only while every flag is set.\n"
+        "Ready: Mission shall always satisfy (Launch.running | Launch.success) -> (" +
+            all_ok + ")\n" +
+            (kept ? "# A flag once set stays set.\n" + assumptions : std::string()));
+  FamilyMission m;
+  m.dir = dir;
+  m.tree_nodes = 5 * flags + 3;
+  m.verdicts = {{"Ready", kept ? "proved" : "violated"}};
+  if (!kept) m.violation_ticks = {{"Ready", 2}};
+  return m;
+}
+
 namespace {
 
 std::string alternative(const std::string& id, const std::string& body) {

@@ -53,6 +53,21 @@ FamilyMission generate_checklist(const std::filesystem::path& dir, int checks);
 //   violate it earlier than the first tick.
 FamilyMission generate_preflight(const std::filesystem::path& dir, int flags);
 
+// A checklist that checks each flag again after its fix: N sensor flags Check1 .. CheckN
+// (booleans of domain.fret, conditions of nodes.xml, written by no action, so the environment may
+// set each of them anew before every tick) and a Sequence of N Fallback[CheckK, Sequence[FixK,
+// CheckK]] and then Launch, under KeepRunningUntilFailure (5 N + 3 nodes, N >= 2). FixK takes 1 or
+// 2 ticks and succeeds or fails without touching CheckK; Launch takes 3 ticks and succeeds.
+// Guarantee `Ready`: always (Launch.running | Launch.success) -> (Check1 & … & CheckN).
+// - Without `kept`: violated at tick 2 (N >= 2). In tick 1 Check1 holds, Check2 fails and a
+//   2-tick Fix2 runs; in tick 2 the Sequence resumes at Fix2 without reading Check1 again: Fix2
+//   succeeds, Check2 .. CheckN are read true and Launch starts, while the environment has
+//   cleared Check1. Not at tick 1: every flag is read true in the tick Launch starts in.
+// - With `kept`, the assumptions `KeepK: upon CheckK Environment shall always satisfy CheckK`
+//   (a flag once set stays set): proved. Every flag was read true in the tick Launch started
+//   or earlier, so each is still set while Launch runs or succeeds.
+FamilyMission generate_recheck(const std::filesystem::path& dir, int flags, bool kept = false);
+
 // A lunar sampling sortie (one size): two real environment variables `slope in [0, 30]`
 // (degrees) and `battery in [0, 100]` (percent), an enum `illumination in {sun, shadow, night}`,
 // and the mission's own booleans AtSite and HasSample (conditions, written by actions only), a

@@ -9,6 +9,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "bench/prove_families.hpp"
 #include "cli/cli_support.hpp"
 #include "prove_support.hpp"
 
@@ -222,6 +223,30 @@ TEST(ProveCli, TemporalFunctionsAndFtpAreProvedAndTheirCounterexamplesReplay) {
           << replay.out;
     }
   }
+}
+
+// Twelve flags the environment sets and only the guarantee reads after tick 2: the explicit
+// engine chooses them as the guarantee's conjunction reaches them (2 N^2 + 5 N + 2 transitions,
+// where every flag's two values took tens of thousands), and the counterexample it writes makes
+// the same choices: `uabt run` replays it to the same violation at the same tick.
+TEST(ProveCli, FlagsOnlyAGuaranteeReadsAreChosenAsItReadsThemAndTheCounterexampleReplays) {
+  TempMission scratch({});
+  const auto dir = scratch.dir() / "recheck";
+  bench::generate_recheck(dir, 12);
+  const auto cex = scratch.dir() / "cex";
+  const CliRun r = run("prove " + dir.string() + " --counterexamples " + cex.string());
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("error: guarantee 'Ready' is violated at tick 2"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("(explicit-state engine: 17 states, 350 transitions, runs explored up to "
+                       "tick 2)"),
+            std::string::npos)
+      << r.out;
+  const CliRun replay = run("run " + dir.string() + " --scenario " + (cex / "Ready.json").string());
+  EXPECT_EQ(replay.exit_code, 1) << replay.out;
+  EXPECT_NE(replay.out.find("tick 2: guarantee Ready violated"), std::string::npos) << replay.out;
+  EXPECT_NE(replay.out.find("property Ready: violated from tick 2"), std::string::npos)
+      << replay.out;
 }
 
 // What prove's finite state cannot keep, the value of an earlier tick (preBool, preInt,

@@ -3,6 +3,7 @@
 // expression the same value, or all say it has none.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <optional>
 #include <random>
 #include <string>
@@ -41,17 +42,44 @@ struct Point {
   }
 };
 
-// The three answers for one condition in one state.
+// The answers for one condition in one state; `on_demand`: the monitor's, reaching each
+// variable before it reads it (a model checker's environment, chosen when first read).
 struct Answers {
-  std::optional<bool> witness_checker, monitor, coverage;
-  bool agree() const { return witness_checker == monitor && monitor == coverage; }
+  std::optional<bool> witness_checker, monitor, coverage, on_demand;
+  std::vector<std::string> reached;  // by the on-demand evaluation, in order
+  bool agree() const {
+    return witness_checker == monitor && monitor == coverage && monitor == on_demand;
+  }
   std::string text() const {
     auto one = [](const std::optional<bool>& v) -> std::string {
       return v ? (*v ? "true" : "false") : "no value";
     };
     return "smt::evaluate " + one(witness_checker) + ", monitor " + one(monitor) +
-           ", CompiledCondition " + one(coverage);
+           ", CompiledCondition " + one(coverage) + ", monitor on demand " + one(on_demand);
   }
+};
+
+// Gives a variable its value in the frame when the evaluation reaches it.
+class OnDemand : public monitor::Reader {
+ public:
+  OnDemand(const std::vector<monitor::Val>& values, std::vector<monitor::Val>& frame,
+           const monitor::Variables& names, std::vector<std::string>& reached)
+      : values_(values), frame_(frame), names_(names), reached_(reached) {}
+  void reach(int slot) override {
+    const auto s = static_cast<std::size_t>(slot);
+    if (frame_[s].kind != monitor::Val::Kind::missing) return;
+    frame_[s] = values_[s];
+    reached_.push_back(names_.name(slot));
+  }
+  bool boolean(int slot) const override {
+    return values_[static_cast<std::size_t>(slot)].kind == monitor::Val::Kind::boolean;
+  }
+
+ private:
+  const std::vector<monitor::Val>& values_;
+  std::vector<monitor::Val>& frame_;
+  const monitor::Variables& names_;
+  std::vector<std::string>& reached_;
 };
 
 class Evaluators {
@@ -94,6 +122,11 @@ class Evaluators {
       std::string error;
       const bool v = monitor_->evaluate_bool(frame, error);
       if (error.empty()) out.monitor = v;
+      std::vector<monitor::Val> pending(frame.size());
+      OnDemand reader(frame, pending, variables_, out.reached);
+      error.clear();
+      const bool lazy = monitor_->evaluate_bool(pending, error, &reader);
+      if (error.empty()) out.on_demand = lazy;
     }
     if (coverage_) {
       std::vector<std::int64_t> assignment(variables_.size());
@@ -254,6 +287,28 @@ TEST(EvaluatorAgreement, DivisionByZeroInAnOperandThatDoesNotDecide) {
   const Answers none = answers("10 / x > 1 | x = 1", zero);
   EXPECT_TRUE(none.agree()) << none.text();
   EXPECT_EQ(none.witness_checker, std::nullopt) << none.text();
+}
+
+// Reading on demand, `&`, `|`, `->` and ite read their operands left to right and stop where
+// the value is decided: the variables after that are never reached.
+TEST(EvaluatorAgreement, OnDemandReadsStopWhereTheValueIsDecided) {
+  Point p;  // A, B false; x, y 0
+  p.y = 2;
+  const std::map<std::string, std::vector<std::string>> reached = {
+      {"A & B & x > 0", {"A"}},
+      {"B | A | x = 0 | y = 1", {"B", "A", "x"}},
+      {"A -> B", {"A"}},
+      {"A -> x > 0", {"A"}},
+      {"x = 0 -> A", {"x", "A"}},
+      {"ite(A, x, y) > 1", {"A", "y", "x"}},  // an integer branch is real where the other is
+      {"ite(A, B, y > 1)", {"A", "y"}},
+      {"x != 0 -> 10 / x > 1", {"x"}},
+      {"A xor B", {"A", "B"}}};
+  for (const auto& [text, names] : reached) {
+    const Answers a = answers(text, p);
+    EXPECT_TRUE(a.agree()) << text << ": " << a.text();
+    EXPECT_EQ(a.reached, names) << text;
+  }
 }
 
 // minReal, maxReal and absReal are reals, whatever their arguments: a quotient of one divides
