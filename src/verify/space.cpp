@@ -17,6 +17,11 @@ using fretish::ExprKind;
 namespace {
 
 constexpr std::uint64_t kMaxStates = std::uint64_t{1} << 24;
+// Most (atom, state) pairs counting evaluates: each distinct atom gets a truth table over the
+// whole space. 6,000 atoms over the 400,004 states of an integer in [0, 100000] and two flags
+// would take minutes and gigabytes; then the shares are not counted, and the guard checks
+// (made by the solver) still are.
+constexpr std::uint64_t kMaxAtomStates = std::uint64_t{1} << 27;
 // A real variable's breakpoints from one atom that also reads an integer: one per value.
 constexpr std::uint64_t kMaxBreaksPerAtom = 4096;
 
@@ -226,6 +231,9 @@ std::string Space::plan(const std::set<std::string>& names, const std::vector<co
     size_ *= d.radix;
     dims_.push_back(d);
   }
+  if (plans_.size() > kMaxAtomStates / size_)
+    return "the guards' " + std::to_string(plans_.size()) + " atoms over " + std::to_string(size_) +
+           " states are more than the 2^27 evaluations uabt counts";
   strides_.assign(dims_.size(), 1);
   for (std::size_t k = 1; k < dims_.size(); ++k) strides_[k] = strides_[k - 1] * dims_[k - 1].radix;
   // The weight of each combination of real cells: the product of the cells' lengths or areas.

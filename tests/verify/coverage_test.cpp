@@ -139,6 +139,26 @@ TEST(Coverage, NotCountedWhenRealUnboundedOrTooLarge) {
             std::string::npos);
 }
 
+// Counting gives each distinct atom a truth table over the whole space: 1,500 atoms over an
+// integer of 100,001 values would take minutes and gigabytes, so the shares are not counted
+// and the reason says why; the solver's checks are made as always.
+TEST(Coverage, NotCountedWhenAtomsTimesStatesExceedTheEvaluationLimit) {
+  std::string guard = "depth = 0";
+  for (int k = 1; k < 1500; ++k) guard += " | depth = " + std::to_string(k);
+  const verify::Result r =
+      verify_checked(make_mission("R1: In nav if " + guard +
+                                      " Mission shall satisfy selected_alt = a\n"
+                                      "Safe: In nav Mission shall satisfy selected_alt = b\n",
+                                  "integer depth in [0, 100000]\n"));
+  const auto& cov = r.coverage.at(0);
+  EXPECT_FALSE(cov.counted);
+  EXPECT_EQ(cov.not_counted_reason,
+            "the guards' 1500 atoms over 100001 states are more than the 2^27 evaluations uabt "
+            "counts");
+  EXPECT_TRUE(cov.alternatives.at(0).reachable);
+  EXPECT_TRUE(cov.alternatives.at(1).reachable);
+}
+
 TEST(Coverage, LargestCountedSpaceIsCountedExactly) {
   // 4096 * 4096 = 2^24 states: the limit itself is still counted.
   const verify::Result r = verify_checked(

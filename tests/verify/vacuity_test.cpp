@@ -8,6 +8,34 @@ namespace {
 
 const char* const kDefault = "Safe: In exploration Mission shall satisfy selected_alt = explore\n";
 
+// One solver question per atom, each over the whole guard: beyond 1,000 atoms the guard's atoms
+// are not checked one by one, and one warning says so (the guard's other checks are made).
+TEST(Vacuity, AGuardOfMoreThanAThousandAtomsIsNotCheckedAtomByAtom) {
+  const auto guard = [](int atoms) {
+    std::string g = "depth >= 0";  // vacuous: the domain says so
+    for (int k = 1; k < atoms; ++k) g += " & depth != " + std::to_string(100 + k);
+    return "Deep: In exploration if " + g + " Mission shall satisfy selected_alt = nav_to_base\n";
+  };
+  const std::string domain = "integer depth in [0, 5000]\n";
+  const verify::Result small = verify_checked(make_mission(guard(3) + kDefault, domain));
+  EXPECT_EQ(findings_of(small, "guard-vacuous-atom").size(), 1u);
+  EXPECT_TRUE(findings_of(small, "verification-skipped").empty());
+
+  const verify::Result large = verify_checked(make_mission(guard(1001) + kDefault, domain));
+  EXPECT_TRUE(findings_of(large, "guard-vacuous-atom").empty());
+  const auto skipped = findings_of(large, "verification-skipped");
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_EQ(skipped[0]->severity, Severity::warning);
+  EXPECT_EQ(skipped[0]->message,
+            "the atoms of the guard of Deep (nav_to_base) are not checked for vacuity: it has "
+            "1001 atoms, more than the 1000 uabt checks one by one");
+  EXPECT_EQ(skipped[0]->location.line, 1);
+  EXPECT_EQ(skipped[0]->requirements, (std::vector<std::string>{"Deep"}));
+  // The guard's other checks are made: Safe is shadowed nowhere, Deep is reachable.
+  EXPECT_TRUE(findings_of(large, "guard-unsatisfiable").empty());
+  EXPECT_TRUE(large.coverage.at(0).alternatives.at(0).reachable);
+}
+
 TEST(Vacuity, WeakerThresholdInAConjunctionIsVacuous) {
   const load::Mission m = make_mission(
       std::string("Low: In exploration if battery < 20 & battery < 30 Mission shall satisfy "
