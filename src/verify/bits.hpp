@@ -22,14 +22,13 @@ class Bits {
     for (auto w : words_) n += static_cast<std::uint64_t>(std::popcount(w));
     return n;
   }
-  // Members in [from, to).
-  std::uint64_t count_range(std::uint64_t from, std::uint64_t to) const {
-    std::uint64_t n = 0;
-    while (from < to && from % 64 != 0) n += test(from++) ? 1 : 0;
-    for (; from + 64 <= to; from += 64)
-      n += static_cast<std::uint64_t>(std::popcount(words_[from / 64]));
-    for (; from < to; ++from) n += test(from) ? 1 : 0;
-    return n;
+  // Calls f(i) for each member i, in increasing order: a pass over the words, then over the
+  // members only.
+  template <typename F>
+  void for_each(F&& f) const {
+    for (std::size_t w = 0; w < words_.size(); ++w)
+      for (std::uint64_t x = words_[w]; x != 0; x &= x - 1)
+        f(w * 64 + static_cast<std::uint64_t>(std::countr_zero(x)));
   }
   bool any() const {
     for (auto w : words_)

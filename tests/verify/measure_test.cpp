@@ -114,6 +114,27 @@ TEST(Measure, OneRealVariableByHand) {
   expect_findings_in_regions(m, r);
 }
 
+// A share is measured from the set's members only, grouped by combination of real cells: here
+// a boolean times 101 cells of x, so members span several 64-bit words and two discrete states
+// per cell.
+TEST(Measure, ManyCellsWithADiscreteVariableAreMeasuredExactly) {
+  std::string reqs;
+  for (int k = 0; k < 70; ++k)
+    reqs += "R" + std::to_string(k) + ": In nav if B & x >= " + std::to_string(k) + " & x < " +
+            std::to_string(k + 1) + " Mission shall satisfy selected_alt = a" + std::to_string(k) +
+            "\n";
+  reqs += "Low: In nav if !B | x < 0.5 Mission shall satisfy selected_alt = low\n";
+  const auto r = verify_checked(make_mission(reqs, "boolean B\nreal x in [0, 100]\n"));
+  const auto& c = only_coverage(r);
+  ASSERT_TRUE(c.measured) << c.not_measured_reason;
+  EXPECT_EQ(c.measure.text, "200");  // two values of B, x over a length of 100
+  EXPECT_EQ(share_of(c, "R0"), "1/200");
+  EXPECT_EQ(share_of(c, "R69"), "1/200");
+  EXPECT_EQ(share_of(c, "Low"), "1/2");      // !B; B & x < 0.5 is R0's first
+  EXPECT_EQ(c.gap_share.text, "3/20");       // B & x in [70, 100]
+  EXPECT_EQ(c.overlap_share.text, "1/400");  // B & x in [0, 0.5): R0 and Low
+}
+
 TEST(Measure, BoundaryOverlapAndGapAreListedWithShareZero) {
   const auto overlap = make_mission(
       "R1: In nav if wind <= 15 Mission shall satisfy selected_alt = a\n"
