@@ -1,4 +1,5 @@
 #include "mission_generator.hpp"
+#include "family_files.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -8,13 +9,6 @@
 
 namespace uabt::bench {
 namespace {
-
-void write_file(const std::filesystem::path& path, const std::string& content) {
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << content;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
 
 // Concatenation by append: GCC 12 warns (-Wrestrict, a false positive) on "literal" + string.
 std::string cat(std::initializer_list<std::string> parts) {

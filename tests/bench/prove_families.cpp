@@ -1,4 +1,5 @@
 #include "prove_families.hpp"
+#include "family_files.hpp"
 
 #include <fstream>
 #include <stdexcept>
@@ -7,13 +8,6 @@
 namespace uabt::bench {
 
 namespace {
-
-void write(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
 
 std::string mission_xml(const std::string& body) {
   return "<root BTCPP_format=\"4\" main_tree_to_execute=\"MainTree\">\n"
@@ -72,7 +66,7 @@ FamilyMission generate_binary_tree(const std::filesystem::path& dir, int fallbac
   if (counters < 1) throw std::invalid_argument("the binary tree needs at least one counter");
   BinaryTreeWriter tree{fallback_nodes, counters, 0, {}};
   tree.node(0, 3);
-  write(dir / "mission.xml", mission_xml(tree.xml));
+  write_file(dir / "mission.xml", mission_xml(tree.xml));
   std::string domain = "# Counters the checks read and the actions change.\n";
   std::string initial, actions;
   for (int j = 0; j < counters; ++j) {
@@ -86,12 +80,12 @@ FamilyMission generate_binary_tree(const std::filesystem::path& dir, int fallbac
                "\": {\"ticks\": 1, \"results\": [\"success\", \"failure\"], \"on_success\": \"" +
                v + " = " + v + " > 0 ? " + v + " - 1 : " + v + "\"}";
   }
-  write(dir / "domain.fret", domain);
-  write(dir / "world.json",
-        "{\n  \"initial\": \"" + initial + "\",\n  \"actions\": {\n" + actions + "\n  }\n}\n");
-  write(dir / "requirements.fret",
-        "Bounded: Mission shall always satisfy vv_0 <= 8\n"
-        "BelowMax: Mission shall always satisfy vv_0 < 8\n");
+  write_file(dir / "domain.fret", domain);
+  write_file(dir / "world.json",
+             "{\n  \"initial\": \"" + initial + "\",\n  \"actions\": {\n" + actions + "\n  }\n}\n");
+  write_file(dir / "requirements.fret",
+             "Bounded: Mission shall always satisfy vv_0 <= 8\n"
+             "BelowMax: Mission shall always satisfy vv_0 < 8\n");
   FamilyMission m;
   m.dir = dir;
   m.tree_nodes = fallback_nodes + 1;
@@ -118,14 +112,14 @@ FamilyMission generate_checklist(const std::filesystem::path& dir, int checks) {
                ok + " = true\"},\n";
   }
   body += "          <Work/>\n        </Sequence>\n      </ForceSuccess>\n";
-  write(dir / "mission.xml", mission_xml(body));
-  write(dir / "domain.fret", domain);
-  write(dir / "world.json",
-        "{\n  \"initial\": \"" + initial + "\",\n  \"actions\": {\n" + actions +
-            "    \"Work\": {\"ticks\": 2, \"results\": [\"success\"]}\n  }\n}\n");
-  write(dir / "requirements.fret",
-        "Ready: Mission shall always satisfy Work.running -> (" + all_ok +
-            ")\nNeverWorks: Mission shall always satisfy !Work.running\n");
+  write_file(dir / "mission.xml", mission_xml(body));
+  write_file(dir / "domain.fret", domain);
+  write_file(dir / "world.json",
+             "{\n  \"initial\": \"" + initial + "\",\n  \"actions\": {\n" + actions +
+                 "    \"Work\": {\"ticks\": 2, \"results\": [\"success\"]}\n  }\n}\n");
+  write_file(dir / "requirements.fret",
+             "Ready: Mission shall always satisfy Work.running -> (" + all_ok +
+                 ")\nNeverWorks: Mission shall always satisfy !Work.running\n");
   FamilyMission m;
   m.dir = dir;
   m.tree_nodes = 3 * checks + 4;
@@ -151,22 +145,24 @@ FamilyMission generate_preflight(const std::filesystem::path& dir, int flags) {
     actions += "    \"" + repair + "\": {\"ticks\": [1, 2], \"results\": [\"success\"]},\n";
   }
   body += "          <Launch/>\n        </Sequence>\n      </ForceSuccess>\n";
-  write(dir / "mission.xml", mission_xml(body));
-  write(dir / "domain.fret", domain);
-  write(dir / "nodes.xml", nodes_xml(conditions + nodes + "    <Action ID=\"Launch\"/>\n"));
-  write(dir / "world.json",
-        "{\n  \"description\": \"A repair takes one or two ticks and succeeds without setting its "
-        "flag; the launch takes two ticks.\",\n  \"actions\": {\n" +
-            actions + "    \"Launch\": {\"ticks\": 2, \"results\": [\"success\"]}\n  }\n}\n");
+  write_file(dir / "mission.xml", mission_xml(body));
+  write_file(dir / "domain.fret", domain);
+  write_file(dir / "nodes.xml", nodes_xml(conditions + nodes + "    <Action ID=\"Launch\"/>\n"));
+  write_file(
+      dir / "world.json",
+      "{\n  \"description\": \"A repair takes one or two ticks and succeeds without setting its "
+      "flag; the launch takes two ticks.\",\n  \"actions\": {\n" +
+          actions + "    \"Launch\": {\"ticks\": 2, \"results\": [\"success\"]}\n  }\n}\n");
   const std::string last = std::to_string(flags);
-  write(dir / "requirements.fret",
-        "# A repair runs only for a flag that was found failed (proved).\n"
-        "RepairOnlyWhenNeeded: Mission shall always satisfy Repair_" +
-            last + ".running -> !Ok_" + last +
-            "\n"
-            "# The launch runs only while the first sensor is ok (violated: a repair does not set\n"
-            "# the flag and nothing checks it again).\n"
-            "LaunchOnlyWhenOk: Mission shall always satisfy Launch.running -> Ok_1\n");
+  write_file(
+      dir / "requirements.fret",
+      "# A repair runs only for a flag that was found failed (proved).\n"
+      "RepairOnlyWhenNeeded: Mission shall always satisfy Repair_" +
+          last + ".running -> !Ok_" + last +
+          "\n"
+          "# The launch runs only while the first sensor is ok (violated: a repair does not set\n"
+          "# the flag and nothing checks it again).\n"
+          "LaunchOnlyWhenOk: Mission shall always satisfy Launch.running -> Ok_1\n");
   FamilyMission m;
   m.dir = dir;
   m.tree_nodes = 3 * flags + 4;
@@ -195,18 +191,19 @@ FamilyMission generate_recheck(const std::filesystem::path& dir, int flags, bool
                    " Environment shall always satisfy " + check + "\n";
   }
   body += "        <Launch/>\n      </Sequence>\n";
-  write(dir / "mission.xml", mission_xml(body));
-  write(dir / "domain.fret", domain);
-  write(dir / "nodes.xml", nodes_xml(models + "    <Action ID=\"Launch\"/>\n"));
-  write(dir / "world.json",
-        "{\n  \"description\": \"A fix takes one or two ticks, succeeds or fails, and does not set "
-        "its flag; the launch takes three ticks.\",\n  \"actions\": {\n" +
-            actions + "    \"Launch\": {\"ticks\": 3, \"results\": [\"success\"]}\n  }\n}\n");
-  write(dir / "requirements.fret",
-        "# The launch runs only while every flag is set.\n"
-        "Ready: Mission shall always satisfy (Launch.running | Launch.success) -> (" +
-            all_ok + ")\n" +
-            (kept ? "# A flag once set stays set.\n" + assumptions : std::string()));
+  write_file(dir / "mission.xml", mission_xml(body));
+  write_file(dir / "domain.fret", domain);
+  write_file(dir / "nodes.xml", nodes_xml(models + "    <Action ID=\"Launch\"/>\n"));
+  write_file(
+      dir / "world.json",
+      "{\n  \"description\": \"A fix takes one or two ticks, succeeds or fails, and does not set "
+      "its flag; the launch takes three ticks.\",\n  \"actions\": {\n" +
+          actions + "    \"Launch\": {\"ticks\": 3, \"results\": [\"success\"]}\n  }\n}\n");
+  write_file(dir / "requirements.fret",
+             "# The launch runs only while every flag is set.\n"
+             "Ready: Mission shall always satisfy (Launch.running | Launch.success) -> (" +
+                 all_ok + ")\n" +
+                 (kept ? "# A flag once set stays set.\n" + assumptions : std::string()));
   FamilyMission m;
   m.dir = dir;
   m.tree_nodes = 5 * flags + 3;
@@ -233,60 +230,63 @@ FamilyMission lunar(const std::filesystem::path& dir, bool reserve) {
   const auto charge = [&](int k) {
     return reserve ? "reserve + " + std::to_string(k - 20) : std::to_string(k);
   };
-  write(dir / "mission.xml",
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        "<!-- A lunar sampling sortie, over and over: reach the site, take a sample, stow it.\n"
-        "     How to drive depends on the slope, the battery and the light (re-checked every\n"
-        "     tick); how to sample depends on the battery and the light (chosen once). -->\n" +
-            mission_xml("      <ForceSuccess>\n"
-                        "        <Sequence name=\"sortie\">\n"
-                        "          <Fallback name=\"reach_site\">\n"
-                        "            <AtSite/>\n"
-                        "            <Adaptable ID=\"traverse\" selection=\"reactive\"/>\n"
-                        "          </Fallback>\n"
-                        "          <Fallback name=\"collect\">\n"
-                        "            <HasSample/>\n"
-                        "            <Adaptable ID=\"sample\"/>\n"
-                        "          </Fallback>\n"
-                        "          <StowSample/>\n"
-                        "        </Sequence>\n"
-                        "      </ForceSuccess>\n"));
-  write(dir / "alternatives/traverse/drive_direct.xml",
-        alternative("drive_direct", "    <DriveDirect/>\n"));
-  write(dir / "alternatives/traverse/drive_cautious.xml",
-        alternative("drive_cautious",
-                    "    <Sequence>\n      <ScanHazards/>\n      <DriveSlow/>\n    </Sequence>\n"));
-  write(dir / "alternatives/traverse/hold_position.xml",
-        alternative("hold_position", "    <HoldPosition/>\n"));
-  write(dir / "alternatives/sample/drill_core.xml",
-        alternative("drill_core",
-                    "    <Sequence>\n      <DeployArm/>\n      <DrillCore/>\n    </Sequence>\n"));
-  write(
+  write_file(
+      dir / "mission.xml",
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<!-- A lunar sampling sortie, over and over: reach the site, take a sample, stow it.\n"
+      "     How to drive depends on the slope, the battery and the light (re-checked every\n"
+      "     tick); how to sample depends on the battery and the light (chosen once). -->\n" +
+          mission_xml("      <ForceSuccess>\n"
+                      "        <Sequence name=\"sortie\">\n"
+                      "          <Fallback name=\"reach_site\">\n"
+                      "            <AtSite/>\n"
+                      "            <Adaptable ID=\"traverse\" selection=\"reactive\"/>\n"
+                      "          </Fallback>\n"
+                      "          <Fallback name=\"collect\">\n"
+                      "            <HasSample/>\n"
+                      "            <Adaptable ID=\"sample\"/>\n"
+                      "          </Fallback>\n"
+                      "          <StowSample/>\n"
+                      "        </Sequence>\n"
+                      "      </ForceSuccess>\n"));
+  write_file(dir / "alternatives/traverse/drive_direct.xml",
+             alternative("drive_direct", "    <DriveDirect/>\n"));
+  write_file(
+      dir / "alternatives/traverse/drive_cautious.xml",
+      alternative("drive_cautious",
+                  "    <Sequence>\n      <ScanHazards/>\n      <DriveSlow/>\n    </Sequence>\n"));
+  write_file(dir / "alternatives/traverse/hold_position.xml",
+             alternative("hold_position", "    <HoldPosition/>\n"));
+  write_file(
+      dir / "alternatives/sample/drill_core.xml",
+      alternative("drill_core",
+                  "    <Sequence>\n      <DeployArm/>\n      <DrillCore/>\n    </Sequence>\n"));
+  write_file(
       dir / "alternatives/sample/scoop_regolith.xml",
       alternative("scoop_regolith",
                   "    <Sequence>\n      <DeployArm/>\n      <ScoopRegolith/>\n    </Sequence>\n"));
-  write(dir / "nodes.xml", nodes_xml("    <Condition ID=\"AtSite\"/>\n"
-                                     "    <Condition ID=\"HasSample\"/>\n"
-                                     "    <Action ID=\"DriveDirect\"/>\n"
-                                     "    <Action ID=\"ScanHazards\"/>\n"
-                                     "    <Action ID=\"DriveSlow\"/>\n"
-                                     "    <Action ID=\"HoldPosition\"/>\n"
-                                     "    <Action ID=\"DeployArm\"/>\n"
-                                     "    <Action ID=\"DrillCore\"/>\n"
-                                     "    <Action ID=\"ScoopRegolith\"/>\n"
-                                     "    <Action ID=\"StowSample\"/>\n"));
-  write(dir / "domain.fret",
-        "# The terrain's slope under the rover (degrees) and the battery's charge (percent).\n"
-        "real slope in [0, 30]\n"
-        "real battery in [0, 100]\n"
-        "# The light at the rover: full sun, a crater's shadow, or lunar night.\n"
-        "enum illumination in {sun, shadow, night}\n"
-        "# The mission's own state, written by its actions.\n"
-        "boolean AtSite, HasSample\n" +
-            std::string(reserve ? "# The charge kept for the way back (percent): each sample "
-                                  "raises it.\ninteger reserve in [20, 60]\n"
-                                : ""));
-  write(
+  write_file(dir / "nodes.xml", nodes_xml("    <Condition ID=\"AtSite\"/>\n"
+                                          "    <Condition ID=\"HasSample\"/>\n"
+                                          "    <Action ID=\"DriveDirect\"/>\n"
+                                          "    <Action ID=\"ScanHazards\"/>\n"
+                                          "    <Action ID=\"DriveSlow\"/>\n"
+                                          "    <Action ID=\"HoldPosition\"/>\n"
+                                          "    <Action ID=\"DeployArm\"/>\n"
+                                          "    <Action ID=\"DrillCore\"/>\n"
+                                          "    <Action ID=\"ScoopRegolith\"/>\n"
+                                          "    <Action ID=\"StowSample\"/>\n"));
+  write_file(dir / "domain.fret",
+             "# The terrain's slope under the rover (degrees) and the battery's charge (percent).\n"
+             "real slope in [0, 30]\n"
+             "real battery in [0, 100]\n"
+             "# The light at the rover: full sun, a crater's shadow, or lunar night.\n"
+             "enum illumination in {sun, shadow, night}\n"
+             "# The mission's own state, written by its actions.\n"
+             "boolean AtSite, HasSample\n" +
+                 std::string(reserve ? "# The charge kept for the way back (percent): each sample "
+                                       "raises it.\ninteger reserve in [20, 60]\n"
+                                     : ""));
+  write_file(
       dir / "requirements.fret",
       "# How to reach the site, in priority order; together the guards cover every state once.\n"
       "Direct: In traverse if battery >= " +
@@ -347,7 +347,7 @@ FamilyMission lunar(const std::filesystem::path& dir, bool reserve) {
        at += sampled.size() + 2)
     world.replace(at, 18, "\"" + sampled + "\"");
   if (reserve) world.replace(world.find("!HasSample\""), 11, "!HasSample & reserve = 20\"");
-  write(dir / "world.json", world);
+  write_file(dir / "world.json", world);
   FamilyMission m;
   m.dir = dir;
   // MainTree 10, the selection trees 20 (traverse) and 11 (sample), the alternatives 11.

@@ -1,0 +1,67 @@
+// The scale families (tests/bench/verify_families.*) at small sizes: the generated missions load
+// and verify with exactly the findings the families promise, so a benchmark at full size measures
+// a right answer and the generator cannot rot.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "bench/verify_families.hpp"
+#include "load/mission.hpp"
+#include "temp_mission.hpp"
+#include "verify/verify.hpp"
+
+namespace uabt::testing {
+namespace {
+
+// Per check id, the findings verify lists for the family's mission; the mission must load.
+std::map<std::string, std::size_t> verified(const bench::VerifyFamily& family) {
+  std::string error;
+  auto mission = load::load_mission(family.dir, {}, error);
+  EXPECT_TRUE(mission) << error;
+  if (!mission) return {{"load", 1}};
+  std::map<std::string, std::size_t> counts;
+  for (const Finding& f : verify::verify_mission(*mission, {}).findings) ++counts[f.check];
+  return counts;
+}
+
+TEST(ScaleFamilies, APortedSequenceVerifiesWithoutFindings) {
+  for (int actions : {1, 500}) {
+    TempMission scratch({});
+    const auto family = bench::generate_ported_sequence(scratch.dir() / "m", actions);
+    EXPECT_EQ(verified(family), family.findings) << actions;
+    EXPECT_TRUE(family.findings.empty());
+  }
+}
+
+TEST(ScaleFamilies, ALongDisjunctionIsCheckedAtomByAtomUpToAThousandAtoms) {
+  TempMission scratch({});
+  const auto small = bench::generate_disjunct_guard(scratch.dir() / "small", 40);
+  EXPECT_TRUE(small.findings.empty());
+  EXPECT_EQ(verified(small), small.findings);
+  const auto large = bench::generate_disjunct_guard(scratch.dir() / "large", 1001);
+  EXPECT_EQ(large.findings, (std::map<std::string, std::size_t>{{"verification-skipped", 1}}));
+  EXPECT_EQ(verified(large), large.findings);
+}
+
+TEST(ScaleFamilies, ARealGridIsDisjointAndMeasuredExactly) {
+  TempMission scratch({});
+  const auto family = bench::generate_real_grid(scratch.dir() / "m", 130);  // 3 rows
+  std::string error;
+  auto mission = load::load_mission(family.dir, {}, error);
+  ASSERT_TRUE(mission) << error;
+  const verify::Result r = verify::verify_mission(*mission, {});
+  EXPECT_TRUE(r.findings.empty()) << r.findings.front().check << ": " << r.findings.front().message;
+  const verify::Coverage& c = r.coverage.at(0);
+  ASSERT_TRUE(c.measured) << c.not_measured_reason;
+  // wind in [0, 64] x battery in [0, 3]: each cell 1 x 1 of 192; the default takes the rest.
+  EXPECT_EQ(c.measure.text, "192");
+  EXPECT_EQ(c.alternatives.at(0).share.text, "1/192");
+  EXPECT_EQ(c.alternatives.at(129).share.text, "1/192");
+  EXPECT_EQ(c.alternatives.at(130).share.text, "31/96");  // 62 of the last row's cells
+  EXPECT_EQ(c.overlap_share.text, "0");
+  EXPECT_EQ(c.gap_share.text, "0");
+}
+
+}  // namespace
+}  // namespace uabt::testing
