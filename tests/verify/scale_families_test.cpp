@@ -34,14 +34,15 @@ TEST(ScaleFamilies, APortedSequenceVerifiesWithoutFindings) {
   }
 }
 
-TEST(ScaleFamilies, ALongDisjunctionIsCheckedAtomByAtomUpToAThousandAtoms) {
+// Beyond 1,000 disjuncts the family expects one verification-skipped (BM_VerifyFamily/1/6000
+// checks it): the limit itself is tested on a cheaper guard
+// (Vacuity.AGuardOfMoreThanAThousandAtomsIsNotCheckedAtomByAtom), since 1,001 disjuncts over
+// 100,001 values of depth cost 10^8 coverage evaluations, over 30 s under the sanitizers.
+TEST(ScaleFamilies, ALongDisjunctionVerifiesWithoutFindings) {
   TempMission scratch({});
-  const auto small = bench::generate_disjunct_guard(scratch.dir() / "small", 40);
-  EXPECT_TRUE(small.findings.empty());
-  EXPECT_EQ(verified(small), small.findings);
-  const auto large = bench::generate_disjunct_guard(scratch.dir() / "large", 1001);
-  EXPECT_EQ(large.findings, (std::map<std::string, std::size_t>{{"verification-skipped", 1}}));
-  EXPECT_EQ(verified(large), large.findings);
+  const auto family = bench::generate_disjunct_guard(scratch.dir() / "m", 40);
+  EXPECT_TRUE(family.findings.empty());
+  EXPECT_EQ(verified(family), family.findings);
 }
 
 TEST(ScaleFamilies, ARealGridIsDisjointAndMeasuredExactly) {
