@@ -244,7 +244,19 @@ bool Cuts::cut(const std::optional<Atom>& atom, const std::string& where, bool a
   }
 }
 
+bool Cuts::name_value(const std::string& variable, const std::string& value) {
+  const auto it = enums_.find(variable);
+  if (it == enums_.end() || !it->second.contains(value)) return false;
+  named_[variable].insert(value);
+  return true;
+}
+
 void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool at_tick_start) {
+  if ((e.kind == ExprKind::eq || e.kind == ExprKind::ne) && e.args.size() == 2 &&
+      e.args[0]->kind == ExprKind::identifier && e.args[1]->kind == ExprKind::identifier &&
+      (name_value(e.args[0]->text, e.args[1]->text) ||
+       name_value(e.args[1]->text, e.args[0]->text)))
+    return;
   if (fretish::is_relation(e.kind) && e.args.size() == 2) {
     const FretishAffine affine(numeric_, mission_, integers_);
     std::optional<Atom> a;
@@ -254,6 +266,13 @@ void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool 
     }
     if (cut(a, "the atom `" + fretish::to_fretish(e) + "` (" + where + ")", at_tick_start)) return;
     atom = &e;
+  }
+  if (e.kind == ExprKind::identifier && enums_.contains(e.text)) {
+    add_uncut(e.text, "`" + e.text +
+                          "` is read outside an atom that compares it with one of its "
+                          "values (" +
+                          where + ")");
+    return;
   }
   if (e.kind == ExprKind::identifier && numeric_.contains(e.text)) {
     add_uncut(e.text, atom ? "the atom `" + fretish::to_fretish(*atom) + "` (" + where +
@@ -287,6 +306,19 @@ void Cuts::add(const script::Program& program, const std::string& where) {
     if (e.op != script::Op::compare || e.list_size != 2) continue;
     const std::uint32_t l = program.compare_operands()[e.list_begin];
     const std::uint32_t r = program.compare_operands()[e.list_begin + 1];
+    const script::CompareOp op = program.compare_ops()[e.ops_begin];
+    if (op == script::CompareOp::eq || op == script::CompareOp::ne) {
+      auto value_named = [&](std::uint32_t name, std::uint32_t value) {
+        return nodes[name].op == script::Op::name && nodes[value].op == script::Op::literal &&
+               nodes[value].literal.kind == ScriptValue::Kind::string &&
+               name_value(ScriptAffine::bare(nodes[name].name), nodes[value].literal.to_string());
+      };
+      if (value_named(l, r) || value_named(r, l)) {
+        cover(l);
+        cover(r);
+        continue;
+      }
+    }
     std::optional<Atom> a;
     try {
       a = atom_of(affine.of(l), affine.of(r), numeric_);
@@ -305,12 +337,15 @@ void Cuts::add(const script::Program& program, const std::string& where) {
       add_uncut(name, "the script `" + program.code() + "` (" + where +
                           ") reads it outside a comparison with a constant or with the "
                           "mission's own state");
+    if (enums_.contains(name))
+      add_uncut(name, "the script `" + program.code() + "` (" + where +
+                          ") reads it outside a comparison with one of its values");
   }
 }
 
 void Cuts::add_truth_read(const std::string& variable, const std::string& where) {
-  (void)where;
   if (numeric_.contains(variable)) breaks_[variable].insert(Fraction(0));
+  if (enums_.contains(variable)) add_uncut(variable, where + " reads it as a truth value");
 }
 
 void Cuts::add_uncut(const std::string& variable, const std::string& why) {
@@ -327,6 +362,12 @@ const std::vector<MixedAtom>& Cuts::mixed(const std::string& variable) const {
   static const std::vector<MixedAtom> kNone;
   const auto it = mixed_.find(variable);
   return it == mixed_.end() ? kNone : it->second;
+}
+
+const std::set<std::string, std::less<>>& Cuts::named(const std::string& variable) const {
+  static const std::set<std::string, std::less<>> kNone;
+  const auto it = named_.find(variable);
+  return it == named_.end() ? kNone : it->second;
 }
 
 std::string Cuts::uncut(const std::string& variable) const {
@@ -387,6 +428,19 @@ std::vector<ScriptValue> cell_values(const fretish::Variable& v, const std::set<
     if (i + 1 < points.size()) interval(points[i], points[i + 1]);
   }
   if (!hi && !points.empty()) interval(points.back(), std::nullopt);
+  return out;
+}
+
+std::vector<ScriptValue> enum_cell_values(const fretish::Variable& v,
+                                          const std::set<std::string, std::less<>>& named) {
+  std::vector<ScriptValue> out;
+  bool unnamed_kept = false;
+  for (const std::string& value : v.enum_values) {
+    const bool is_named = named.contains(value);
+    if (!is_named && unnamed_kept) continue;
+    unnamed_kept = unnamed_kept || !is_named;
+    out.push_back(ScriptValue::of_string(value));
+  }
   return out;
 }
 

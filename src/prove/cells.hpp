@@ -41,12 +41,15 @@ class Cuts {
   // `numeric`: the numeric environment variables (integers and reals no action writes).
   // `mission`: the numeric variables of the mission's own state (a value in every state).
   // `integers`: those of either declared integer, whose quotient truncates (not affine).
+  // `enums`: the enumerated environment variables, each with its declared values.
+  using EnumValues = std::map<std::string, std::set<std::string, std::less<>>, std::less<>>;
   explicit Cuts(std::set<std::string, std::less<>> numeric,
                 std::set<std::string, std::less<>> mission = {},
-                std::set<std::string, std::less<>> integers = {})
+                std::set<std::string, std::less<>> integers = {}, EnumValues enums = {})
       : numeric_(std::move(numeric)),
         mission_(std::move(mission)),
-        integers_(std::move(integers)) {}
+        integers_(std::move(integers)),
+        enums_(std::move(enums)) {}
 
   // `where` names the expression for a reason ("requirements.fret:4:1", "a script `x > 2`").
   // `at_tick_start`: an assumption or the initial condition (read with the tick's first state).
@@ -59,6 +62,10 @@ class Cuts {
 
   const std::set<verify::detail::Fraction>& breaks(const std::string& variable) const;
   const std::vector<MixedAtom>& mixed(const std::string& variable) const;
+  // The values of an enumerated variable that some atom names (`terrain = rocks`, a script's
+  // `terrain == 'rocks'`): every value no atom names has the same truth in every atom, so the
+  // values no atom names are one cell.
+  const std::set<std::string, std::less<>>& named(const std::string& variable) const;
   // Why `variable` cannot be cut ("" when it can).
   std::string uncut(const std::string& variable) const;
 
@@ -68,7 +75,12 @@ class Cuts {
             bool at_tick_start);
   // Records `atom` (a breakpoint, or a mixed atom); false when there is none.
   bool cut(const std::optional<detail::Atom>& atom, const std::string& where, bool at_tick_start);
+  // Records the value an (in)equality of an enumerated variable with one of its values names;
+  // false when the operands are not such a pair.
+  bool name_value(const std::string& variable, const std::string& value);
   std::set<std::string, std::less<>> numeric_, mission_, integers_;
+  EnumValues enums_;
+  std::map<std::string, std::set<std::string, std::less<>>, std::less<>> named_;
   std::map<std::string, std::set<verify::detail::Fraction>, std::less<>> breaks_;
   std::map<std::string, std::vector<MixedAtom>, std::less<>> mixed_;
   std::map<std::string, std::string, std::less<>> uncut_;
@@ -80,5 +92,9 @@ class Cuts {
 // Cells of an integer that hold no integer are left out.
 std::vector<runtime::ScriptValue> cell_values(const fretish::Variable& variable,
                                               const std::set<verify::detail::Fraction>& breaks);
+// One value per cell of an enumerated variable: the values some atom names, and the first value
+// (in declaration order) that no atom names, all in declaration order.
+std::vector<runtime::ScriptValue> enum_cell_values(const fretish::Variable& variable,
+                                                   const std::set<std::string, std::less<>>& named);
 
 }  // namespace uabt::prove

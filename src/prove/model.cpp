@@ -425,8 +425,16 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
   for (const StateVar& v : vars)
     if (const fretish::Variable* d = declaration(v.name); d && d->type == fretish::VarType::integer)
       integers.insert(v.name);
-  Cuts cuts(numeric, mission_numbers, integers);
-  if (!numeric.empty()) {
+  // Enumerated environment variables: the values no atom names are one cell.
+  Cuts::EnumValues enums;
+  for (const StateVar& v : vars) {
+    const fretish::Variable* d = declaration(v.name);
+    if (v.relevant && (v.env || (v.port_written && !v.script_written)) && d &&
+        d->type == fretish::VarType::enumeration)
+      enums[v.name].insert(d->enum_values.begin(), d->enum_values.end());
+  }
+  Cuts cuts(numeric, mission_numbers, integers, enums);
+  if (!numeric.empty() || !enums.empty()) {
     auto where = [](const SourceLocation& l) {
       return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
     };
@@ -450,6 +458,11 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
     if (!v.relevant) continue;
     const fretish::Variable* d = declaration(v.name);
     const auto why = unenumerable.find(v.name);
+    if (enums.contains(v.name) && cuts.uncut(v.name).empty()) {
+      v.values = enum_cell_values(*d, cuts.named(v.name));
+      v.cells = v.values.size() < d->enum_values.size();
+      continue;
+    }
     if (numeric.contains(v.name)) {
       const std::string uncut = cuts.uncut(v.name);
       const std::vector<MixedAtom>& mixed = cuts.mixed(v.name);

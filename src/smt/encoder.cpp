@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <stdexcept>
 
+#include "fretish/integer_ranges.hpp"
 #include "smt/assign.hpp"
 #include "smt/division.hpp"
 #include "smt/rational.hpp"
@@ -120,8 +123,10 @@ Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
       return {z3::ite(is_min ? a <= b : a >= b, a, b), sort};
     }
     case ExprKind::logical_not: return {!lower_term(*e.args[0], overrides).e, sort};
-    case ExprKind::logical_and:
-    case ExprKind::logical_or: {
+    case ExprKind::logical_or:
+      if (e.args.size() >= fretish::kMinRangeRun) return {lower_disjunction(e, overrides), sort};
+      [[fallthrough]];
+    case ExprKind::logical_and: {
       z3::expr_vector parts(context_);
       for (const auto& arg : e.args) parts.push_back(lower_term(*arg, overrides).e);
       return {e.kind == ExprKind::logical_and ? z3::mk_and(parts) : z3::mk_or(parts), sort};
@@ -316,6 +321,37 @@ State Encoder::state_of(const z3::model& model) const {
     }
   }
   return state;
+}
+
+z3::expr Encoder::lower_disjunction(const Expr& e, const Overrides& overrides) {
+  z3::expr_vector parts(context_);
+  // The comparisons of each integer variable with a numeral, as ranges (integer_ranges.hpp).
+  std::map<std::string, std::vector<fretish::IntegerRange>> ranges;
+  std::vector<const Expr*> rest;
+  for (const auto& arg : e.args) {
+    auto c = overrides.contains(arg.get()) ? std::nullopt : fretish::integer_comparison(*arg);
+    if (c && typing_.at(*c->variable).sort == Sort::integer && find_slot(c->variable->text)) {
+      auto& mine = ranges[c->variable->text];
+      mine.insert(mine.end(), c->ranges.begin(), c->ranges.end());
+    } else {
+      rest.push_back(arg.get());
+    }
+  }
+  auto bound = [&](__int128 b) { return context_.int_val(static_cast<std::int64_t>(b)); };
+  for (const auto& [name, allowed] : ranges) {
+    const z3::expr x = find_slot(name)->constant;
+    for (const fretish::IntegerRange& r : fretish::merged(allowed)) {
+      if (!r.lo && !r.hi) return context_.bool_val(true);
+      if (r.lo && r.hi && *r.lo == *r.hi)
+        parts.push_back(x == bound(*r.lo));
+      else if (r.lo && r.hi)
+        parts.push_back(bound(*r.lo) <= x && x <= bound(*r.hi));
+      else
+        parts.push_back(r.lo ? x >= bound(*r.lo) : x <= bound(*r.hi));
+    }
+  }
+  for (const Expr* a : rest) parts.push_back(lower_term(*a, overrides).e);
+  return z3::mk_or(parts);
 }
 
 }  // namespace uabt::smt

@@ -81,6 +81,9 @@ class Encoder {
   };
   Term lower_term(const fretish::Expr& e,
                   const std::unordered_map<const fretish::Expr*, z3::expr>& overrides);
+  // A long disjunction, its comparisons of an integer variable with numerals as ranges.
+  z3::expr lower_disjunction(const fretish::Expr& e,
+                             const std::unordered_map<const fretish::Expr*, z3::expr>& overrides);
   z3::expr as_real(const Term& t);
   z3::expr implicit_boolean(const std::string& name);
   std::optional<z3::expr> bound(const Slot& slot, const std::string& text, bool is_lower,

@@ -262,6 +262,95 @@ TEST(OnDemand, AnAtomWithAnotherEnvironmentVariableStillGoesToTheSymbolicEngine)
       << why;
 }
 
+TEST(Cuts, AnEnumComparedWithItsValuesNamesThem) {
+  prove::Cuts cuts({}, {}, {}, {{"terrain", {"sand", "rocks", "mud", "ice"}}});
+  cuts.add(*expression("terrain = rocks | !(sand != terrain)"), "requirements.fret:2:1");
+  cuts.add(runtime::script::Program::parse("terrain == 'mud' && 'rocks' != @terrain"), "a guard");
+  EXPECT_EQ(cuts.named("terrain"), (std::set<std::string, std::less<>>{"mud", "rocks", "sand"}));
+  EXPECT_EQ(cuts.uncut("terrain"), "");
+}
+
+TEST(Cuts, AnEnumReadAnyOtherWayIsNotCut) {
+  const auto uncut = [](auto add) {
+    prove::Cuts cuts({}, {}, {}, {{"terrain", {"sand", "rocks"}}});
+    add(cuts);
+    return cuts.uncut("terrain");
+  };
+  // Compared with another variable, copied by a script, compared by order, read as a condition.
+  EXPECT_NE(uncut([](prove::Cuts& c) { c.add(*expression("terrain = seen_terrain"), "r:1:1"); })
+                .find("`terrain` is read outside an atom that compares it with one of its values "
+                      "(r:1:1)"),
+            std::string::npos);
+  EXPECT_NE(uncut([](prove::Cuts& c) {
+              c.add(runtime::script::Program::parse("last := terrain"), "an effect");
+            }).find("last := terrain"),
+            std::string::npos);
+  EXPECT_NE(uncut([](prove::Cuts& c) {
+              c.add(runtime::script::Program::parse("terrain < 'sand'"), "a guard");
+            }),
+            "");
+  EXPECT_NE(uncut([](prove::Cuts& c) { c.add_truth_read("terrain", "condition terrain"); }), "");
+  // A value the enum does not declare names no cell.
+  EXPECT_NE(uncut([](prove::Cuts& c) { c.add(*expression("terrain = lava"), "r:1:1"); }), "");
+}
+
+TEST(Cells, AnEnumKeepsItsNamedValuesAndTheFirstUnnamedOneInDeclarationOrder) {
+  fretish::Variable terrain = variable(fretish::VarType::enumeration, "", "");
+  terrain.enum_values = {"dust", "sand", "rocks", "mud", "ice"};
+  EXPECT_EQ(texts(prove::enum_cell_values(terrain, {"rocks", "ice"})),
+            (std::vector<std::string>{"dust", "rocks", "ice"}));
+  EXPECT_EQ(texts(prove::enum_cell_values(terrain, {"dust", "sand", "rocks", "mud", "ice"})),
+            (std::vector<std::string>{"dust", "sand", "rocks", "mud", "ice"}));
+  EXPECT_EQ(texts(prove::enum_cell_values(terrain, {})), (std::vector<std::string>{"dust"}));
+}
+
+// The exploration mission with its terrain widened to `values` values: the guards name three,
+// the guarantee none of the others. `copy`: a script of the tree also copies the terrain, which
+// reads every value apart.
+std::map<std::string, std::string> wide_terrain(int values, bool copy) {
+  auto files = mission_files("exploration");
+  std::string names = "sand, rocks, unknown";
+  for (int i = 3; i < values; ++i) names += ", t" + std::to_string(i);
+  files["domain.fret"] =
+      "integer battery in [0, 100]\nreal slope in [-45, 45]\nenum terrain in {" + names + "}\n";
+  files["requirements.fret"] +=
+      "Known: Mission shall always satisfy terrain = sand | terrain = rocks | terrain = unknown\n";
+  if (copy) {
+    const std::string root = "<BehaviorTree ID=\"MainTree\">";
+    auto& xml = files["mission.xml"];
+    const auto at = xml.find(root);
+    EXPECT_NE(at, std::string::npos);
+    xml.insert(xml.find('<', at + root.size()), "<Sequence><Script code=\"seen := terrain\"/>");
+    xml.insert(xml.find("</BehaviorTree>", at), "</Sequence>");
+  }
+  files["world.json"] = R"({"actions": {}})";
+  return files;
+}
+
+// Values no atom names are one cell: the search over 4,000 terrains is the search over four,
+// and the counterexample shows the first unnamed value.
+TEST(OnDemand, EnumValuesNoAtomNamesAreOneCell) {
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  TempMission narrow(wide_terrain(4, false)), wide(wide_terrain(4000, false));
+  const prove::Result n = prove_dir(narrow.dir(), explicit_engine);
+  const prove::Result w = prove_dir(wide.dir(), explicit_engine);
+  EXPECT_EQ(w.states, n.states);
+  EXPECT_EQ(w.transitions, n.transitions);
+  for (const prove::Result* r : {&n, &w}) {
+    const prove::Answer& known = answer(*r, "Known");
+    ASSERT_EQ(known.verdict, Verdict::violated);
+    EXPECT_EQ(known.depth, 1u);
+    ASSERT_TRUE(known.counterexample);
+    EXPECT_EQ(nlohmann::json::parse(known.counterexample->scenario)["initial"]["terrain"], "t3");
+  }
+  // A script that copies the terrain tells every value apart: each is taken.
+  TempMission copied(wide_terrain(40, true));
+  const prove::Result c = prove_dir(copied.dir(), explicit_engine);
+  EXPECT_EQ(answer(c, "Known").verdict, Verdict::violated);
+  EXPECT_GT(c.transitions, n.transitions * 5) << c.transitions << " against " << n.transitions;
+}
+
 TEST(Numbers, PrintAsPeopleWriteThem) {
   // What counterexample tables, the HTML timeline and run's violation lines show.
   monitor::Symbols symbols;

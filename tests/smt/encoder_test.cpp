@@ -190,5 +190,28 @@ TEST(Encoder, AgreesWithTheIndependentEvaluatorOnRandomStates) {
   }
 }
 
+// A long disjunction of an integer's comparisons with numerals is lowered as the union of their
+// ranges: the same truth in every state of the range and beyond it, next to atoms of others.
+TEST(Encoder, ALongDisjunctionOfAnIntegersComparisonsKeepsItsMeaning) {
+  const fretish::Domain d = domain("integer depth in [-100, 100]\nboolean OnDust\n");
+  Encoder encoder(d);
+  std::vector<Finding> findings;
+  std::string text = "OnDust | depth < -90 | depth >= 95 | 50 = depth | depth != depth + 0";
+  for (int k = 0; k < 20; ++k) text += " | depth = " + std::to_string(k);
+  text += " | depth = 21 | -30 >= depth";
+  const auto guard = encoder.lower_condition(*expr(text), kWhere, findings);
+  ASSERT_TRUE(guard);
+  z3::context& c = encoder.context();
+  const z3::expr depth = c.int_const("depth"), on_dust = c.bool_const("OnDust");
+  for (int v = -100; v <= 100; ++v)
+    for (const bool dust : {false, true}) {
+      const bool expected =
+          dust || v < -90 || v >= 95 || v == 50 || (v >= 0 && v < 20) || v == 21 || v <= -30;
+      z3::solver solver(c);
+      solver.add(depth == v && on_dust == c.bool_val(dust) && *guard != c.bool_val(expected));
+      EXPECT_EQ(solver.check(), z3::unsat) << "depth = " << v << ", OnDust = " << dust;
+    }
+}
+
 }  // namespace
 }  // namespace uabt::smt
