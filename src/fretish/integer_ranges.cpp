@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fretish/relation.hpp"
+
 namespace uabt::fretish {
 
 std::vector<IntegerRange> ranges_of(ExprKind op, __int128 c) {
@@ -53,11 +55,7 @@ std::optional<IntegerComparison> integer_comparison(const Expr& e) {
   ExprKind op = e.kind;
   if (variable->kind != ExprKind::identifier) {
     std::swap(variable, numeral);
-    op = op == ExprKind::lt   ? ExprKind::gt
-         : op == ExprKind::le ? ExprKind::ge
-         : op == ExprKind::gt ? ExprKind::lt
-         : op == ExprKind::ge ? ExprKind::le
-                              : op;
+    op = mirrored_relation(op);
   }
   if (variable->kind != ExprKind::identifier) return std::nullopt;
   const auto c = integer_numeral(*numeral);

@@ -405,12 +405,16 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
   // Numeric environment variables are cut into cells by every atom that reads them.
   std::set<std::string, std::less<>> numeric;
   // So are the entries output ports write (and nothing computes): the action may write any
-  // value, and one per cell is all the readers tell apart.
+  // value, and one per cell is all the readers tell apart. Of an enumerated one, the values no
+  // atom names are one cell.
+  Cuts::EnumValues enums;
   for (const StateVar& v : vars) {
     const fretish::Variable* d = declaration(v.name);
-    if (v.relevant && (v.env || (v.port_written && !v.script_written)) && d &&
-        (d->type == fretish::VarType::integer || d->type == fretish::VarType::real))
+    if (!v.relevant || !(v.env || (v.port_written && !v.script_written)) || !d) continue;
+    if (d->type == fretish::VarType::integer || d->type == fretish::VarType::real)
       numeric.insert(v.name);
+    else if (d->type == fretish::VarType::enumeration)
+      enums[v.name].insert(d->enum_values.begin(), d->enum_values.end());
   }
   // The mission's own numeric variables: an atom that compares an environment variable with
   // them is cut in each state, with the values they have there.
@@ -425,14 +429,6 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
   for (const StateVar& v : vars)
     if (const fretish::Variable* d = declaration(v.name); d && d->type == fretish::VarType::integer)
       integers.insert(v.name);
-  // Enumerated environment variables: the values no atom names are one cell.
-  Cuts::EnumValues enums;
-  for (const StateVar& v : vars) {
-    const fretish::Variable* d = declaration(v.name);
-    if (v.relevant && (v.env || (v.port_written && !v.script_written)) && d &&
-        d->type == fretish::VarType::enumeration)
-      enums[v.name].insert(d->enum_values.begin(), d->enum_values.end());
-  }
   Cuts cuts(numeric, mission_numbers, integers, enums);
   if (!numeric.empty() || !enums.empty()) {
     auto where = [](const SourceLocation& l) {
@@ -460,7 +456,6 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
     const auto why = unenumerable.find(v.name);
     if (enums.contains(v.name) && cuts.uncut(v.name).empty()) {
       v.values = enum_cell_values(*d, cuts.named(v.name));
-      v.cells = v.values.size() < d->enum_values.size();
       continue;
     }
     if (numeric.contains(v.name)) {
@@ -470,7 +465,6 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
       // variable with few values is enumerated, as it is without such an atom.
       if (uncut.empty() && (mixed.empty() || why != unenumerable.end())) {
         v.values = cell_values(*d, cuts.breaks(v.name));
-        v.cells = true;
         if (v.values.empty()) v.values.push_back(ScriptValue{});
         if (mixed.empty()) continue;
         StateCut& cut = state_cuts[index];

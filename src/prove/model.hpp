@@ -26,8 +26,6 @@ struct StateVar {
   std::vector<runtime::ScriptValue> values;
   bool env = true;       // no action writes it: the environment may change it every tick
   bool relevant = true;  // something reads it (else it keeps its first value)
-  // `values` are one per cell of its range (ARCHITECTURE §10.1), not every value.
-  bool cells = false;
   // One place in the tree reads it (a condition leaf, or a script that reads no other
   // environment variable), and nothing re-ticks the tree within a tick: once that place has
   // read it, the rest of the tick cannot read it again (unless a monitor or an assumption does).
