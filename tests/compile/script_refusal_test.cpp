@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "base/diagnostics.hpp"
+#include "bt/script/load_check.hpp"
 #include "load/load_test_support.hpp"
 #include "runtime/engine.hpp"
 #include "runtime/runtime_test_support.hpp"
@@ -29,6 +30,36 @@ std::string engine_refusal(const load::Mission& m, const std::string& alternativ
     return "";
   }
   return "no alternative " + alternative;
+}
+
+// A script too deeply nested to parse, 2,000 disjuncts long, is refused in one readable line:
+// the part of the script around the column where parsing stopped, not 30,000 characters.
+TEST(ScriptRefusal, ALongScriptIsQuotedAroundWhereItFails) {
+  std::string code;
+  for (int k = 0; k < 2000; ++k) code += (k ? " || depth == " : "depth == ") + std::to_string(k);
+  const auto why = bt::script::script_refusal("ScriptCondition", code, true);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_EQ(*why,
+            "ScriptCondition: the script `… == 124 || depth == 125 || depth == 126 || depth == "
+            "127 || depth == 128 || depth…` does not parse: expression nested deeper than 128 "
+            "levels (column 1920)");
+  // A short script is quoted whole; an excerpt never cuts a character in two.
+  EXPECT_EQ(*bt::script::script_refusal("Script", "x := (1", false),
+            "Script: the script `x := (1` does not parse: expected ')', found end of script "
+            "(column 8)");
+  const std::string wide = "é := " + std::string(60, '1') + " + ((((" + std::string(60, '2');
+  const auto cut = bt::script::script_refusal("Script", "ééééééééééééééééééééééééé" + wide, false);
+  ASSERT_TRUE(cut.has_value());
+  for (std::size_t i = 0; i + 1 < cut->size(); ++i) {
+    if ((static_cast<unsigned char>((*cut)[i]) & 0xE0) == 0xC0) {
+      EXPECT_EQ(static_cast<unsigned char>((*cut)[i + 1]) & 0xC0, 0x80) << *cut;
+    }
+  }
+  // The character the parser stops at is quoted whole, or named by its value.
+  EXPECT_EQ(*bt::script::script_refusal("Script", "x := é", false),
+            "Script: the script `x := é` does not parse: unexpected character 'é' (column 6)");
+  EXPECT_TRUE(bt::script::script_refusal("Script", "x := \xC3", false)
+                  ->ends_with("does not parse: unexpected byte 0xC3 (column 6)"));
 }
 
 TEST(ScriptRefusal, AnAlternativesBrokenScriptIsRefusedWhereTheEngineRefusesIt) {

@@ -209,7 +209,28 @@ class Lexer {
                           t.column);
       default: break;
     }
-    throw ScriptError(std::string("unexpected character '") + c + "'", t.column);
+    throw ScriptError("unexpected " + character_at(pos_), t.column);
+  }
+
+  // The character at `at` for a message: a whole UTF-8 sequence in quotes, or the byte's value
+  // where it is not printable text, so that a message is always valid UTF-8 (JSON and SARIF
+  // readers refuse anything else).
+  std::string character_at(std::size_t at) const {
+    const auto byte = static_cast<unsigned char>(code_[at]);
+    // A lead byte's sequence length; 0 for a continuation byte or one no UTF-8 text holds.
+    std::size_t length = byte < 0x80                   ? 1
+                         : byte >= 0xC2 && byte < 0xE0 ? 2
+                         : byte >= 0xE0 && byte < 0xF0 ? 3
+                         : byte >= 0xF0 && byte < 0xF5 ? 4
+                                                       : 0;
+    for (std::size_t i = 1; i < length; ++i)
+      if (at + i >= code_.size() || (static_cast<unsigned char>(code_[at + i]) & 0xC0) != 0x80)
+        length = 0;
+    if (length == 0 || (length == 1 && (byte < 0x20 || byte == 0x7F))) {
+      static constexpr char kHex[] = "0123456789ABCDEF";
+      return std::string("byte 0x") + kHex[byte >> 4] + kHex[byte & 0xF];
+    }
+    return "character '" + std::string(code_.substr(at, length)) + "'";
   }
 
   std::string_view code_;

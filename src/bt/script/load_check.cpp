@@ -1,5 +1,7 @@
 #include "bt/script/load_check.hpp"
 
+#include <algorithm>
+
 #include "bt/node_kinds.hpp"
 #include "bt/script/ast.hpp"
 #include "bt/tree.hpp"
@@ -14,14 +16,34 @@ bool is_condition_attribute(std::string_view name) {
   return false;
 }
 
+namespace {
+
+// The part of a long script around `column` (1-based), so that a refusal of a 60,000-character
+// script is one readable line; cut at character boundaries, never inside a UTF-8 sequence.
+std::string excerpt_around(const std::string& code, std::size_t column) {
+  constexpr std::size_t kWhole = 100, kBefore = 40, kAfter = 40;
+  if (code.size() <= kWhole) return code;
+  auto boundary = [&](std::size_t at) {
+    while (at > 0 && at < code.size() && (static_cast<unsigned char>(code[at]) & 0xC0) == 0x80)
+      --at;
+    return at;
+  };
+  const std::size_t at = std::min(column > 0 ? column - 1 : 0, code.size());
+  const std::size_t from = boundary(at > kBefore ? at - kBefore : 0);
+  const std::size_t to = boundary(std::min(code.size(), at + kAfter));
+  return (from > 0 ? "…" : "") + code.substr(from, to - from) + (to < code.size() ? "…" : "");
+}
+
+}  // namespace
+
 std::optional<std::string> script_refusal(const std::string& what, const std::string& code,
                                           bool empty_refused) {
   try {
     if (Script::parse(code).empty() && empty_refused)
       return what + " with an empty script has no result";
   } catch (const ScriptError& e) {
-    return what + ": the script `" + code + "` does not parse: " + e.what() + " (column " +
-           std::to_string(e.column()) + ")";
+    return what + ": the script `" + excerpt_around(code, e.column()) +
+           "` does not parse: " + e.what() + " (column " + std::to_string(e.column()) + ")";
   }
   return std::nullopt;
 }
