@@ -3,7 +3,10 @@
 #include <functional>
 #include <optional>
 
+#include "fretish/integer_ranges.hpp"
+#include "fretish/relation.hpp"
 #include "verify/real_cells.hpp"
+#include "verify/script_reading.hpp"
 
 namespace uabt::prove {
 
@@ -251,7 +254,32 @@ bool Cuts::name_value(const std::string& variable, const std::string& value) {
   return true;
 }
 
+void Cuts::cut_at_range_ends(std::map<std::string, std::vector<fretish::IntegerRange>>& ranges) {
+  for (auto& [variable, allowed] : ranges)
+    for (const fretish::IntegerRange& r : fretish::merged(std::move(allowed))) {
+      if (r.lo) breaks_[variable].insert(Fraction(static_cast<long long>(*r.lo)));
+      if (r.hi) breaks_[variable].insert(Fraction(static_cast<long long>(*r.hi)));
+    }
+}
+
 void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool at_tick_start) {
+  if (e.kind == ExprKind::logical_or && e.args.size() >= fretish::kMinRangeRun) {
+    // As a whole, a long run of an integer's comparisons with numerals only changes truth at the
+    // ends of the union of their ranges (integer_ranges.hpp): cutting there, not at every
+    // numeral, keeps 60,000 `depth = k` disjuncts a handful of cells.
+    std::map<std::string, std::vector<fretish::IntegerRange>> ranges;
+    for (const auto& arg : e.args) {
+      auto c = fretish::integer_comparison(*arg);
+      if (c && numeric_.contains(c->variable->text) && integers_.contains(c->variable->text)) {
+        auto& mine = ranges[c->variable->text];
+        mine.insert(mine.end(), c->ranges.begin(), c->ranges.end());
+      } else {
+        walk(*arg, where, atom, at_tick_start);
+      }
+    }
+    cut_at_range_ends(ranges);
+    return;
+  }
   if ((e.kind == ExprKind::eq || e.kind == ExprKind::ne) && e.args.size() == 2 &&
       e.args[0]->kind == ExprKind::identifier && e.args[1]->kind == ExprKind::identifier &&
       (name_value(e.args[0]->text, e.args[1]->text) ||
@@ -341,6 +369,43 @@ void Cuts::add(const script::Program& program, const std::string& where) {
       add_uncut(name, "the script `" + program.code() + "` (" + where +
                           ") reads it outside a comparison with one of its values");
   }
+}
+
+std::optional<std::pair<std::string, std::vector<fretish::IntegerRange>>> Cuts::integer_run_leaf(
+    const script::Program& program) const {
+  if (program.statements().size() != 1) return std::nullopt;
+  const auto& nodes = program.nodes();
+  const script::Expr& e = nodes[program.statements().front()];
+  if (e.op != script::Op::compare || e.list_size != 2) return std::nullopt;
+  std::uint32_t name = program.compare_operands()[e.list_begin];
+  std::uint32_t value = program.compare_operands()[e.list_begin + 1];
+  fretish::ExprKind op = verify::relation_of(program.compare_ops()[e.ops_begin]);
+  if (nodes[name].op != script::Op::name) {
+    std::swap(name, value);
+    op = fretish::mirrored_relation(op);
+  }
+  if (nodes[name].op != script::Op::name || nodes[value].op != script::Op::literal ||
+      nodes[value].literal.kind != ScriptValue::Kind::integer)
+    return std::nullopt;
+  std::string variable = ScriptAffine::bare(nodes[name].name);
+  if (!numeric_.contains(variable) || !integers_.contains(variable)) return std::nullopt;
+  return std::pair{std::move(variable), fretish::ranges_of(op, nodes[value].literal.integer)};
+}
+
+void Cuts::add_any_of(const std::vector<const script::Program*>& programs,
+                      const std::string& where) {
+  std::map<std::string, std::vector<fretish::IntegerRange>> ranges;
+  for (const script::Program* program : programs) {
+    auto leaf =
+        programs.size() >= fretish::kMinRangeRun ? integer_run_leaf(*program) : std::nullopt;
+    if (!leaf) {
+      add(*program, where);
+      continue;
+    }
+    auto& mine = ranges[leaf->first];
+    mine.insert(mine.end(), leaf->second.begin(), leaf->second.end());
+  }
+  cut_at_range_ends(ranges);
 }
 
 void Cuts::add_truth_read(const std::string& variable, const std::string& where) {

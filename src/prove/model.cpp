@@ -353,7 +353,10 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       if (*p)
         for (const auto& n : (*p)->names()) read.insert(n);
   }
+  disjunctions.clear();
+  bool in_selection_tree = false;
   std::function<void(const bt::Node&)> scan = [&](const bt::Node& n) {
+    const std::size_t first_script = tree_scripts.size();
     for (const auto& [attr, value] : n.attributes) {
       if (attr == "code" || (!attr.empty() && attr[0] == '_')) {
         try {
@@ -375,8 +378,16 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       }
     }
     for (const auto& c : n.children) scan(c);
+    if (in_selection_tree && first_script == tree_scripts.size() - n.children.size() &&
+        fallback_of_conditions(n))
+      disjunctions.push_back({first_script, tree_scripts.size()});
   };
-  for (const auto& t : doc.trees) scan(t.root);
+  for (const auto& t : doc.trees) {
+    in_selection_tree =
+        std::any_of(mission.adaptables.begin(), mission.adaptables.end(),
+                    [&](const load::AdaptableSite& site) { return site.id == t.id; });
+    scan(t.root);
+  }
 
   for (StateVar& v : vars) v.relevant = read.contains(v.name);
   choose_values(unenumerable);
@@ -440,7 +451,17 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
     for (const auto& a : mission.domain.assumptions)
       if (a.expr) cuts.add(*a.expr, where(a.location), true);
     if (world.initial) cuts.add(*world.initial, world.file + ": initial", true);
-    for (const auto& [program, what] : tree_scripts) cuts.add(program, what);
+    std::vector<char> in_disjunction(tree_scripts.size(), 0);
+    for (const auto& [first, last] : disjunctions) {
+      std::vector<const runtime::script::Program*> programs;
+      for (std::size_t i = first; i < last; ++i) {
+        programs.push_back(&tree_scripts[i].first);
+        in_disjunction[i] = 1;
+      }
+      cuts.add_any_of(programs, tree_scripts[first].second);
+    }
+    for (std::size_t i = 0; i < tree_scripts.size(); ++i)
+      if (!in_disjunction[i]) cuts.add(tree_scripts[i].first, tree_scripts[i].second);
     for (const auto& leaf : choice->leaves()) {
       if (leaf.condition) cuts.add_truth_read(leaf.label, "condition " + leaf.name);
       for (const auto* effect : {&leaf.on_success, &leaf.on_failure})
@@ -539,6 +560,20 @@ void Model::mark_read_once() {
   }
   for (const auto& key : port_reads) sites[bare(key)] += 2;
   for (StateVar& v : vars) v.read_once = v.env && v.relevant && sites[v.name] == 1;
+}
+
+bool Model::fallback_of_conditions(const bt::Node& n) {
+  const bt::NodeKind kind = bt::node_kind(n.kind());
+  if (kind != bt::NodeKind::fallback && kind != bt::NodeKind::reactive_fallback) return false;
+  for (const auto& [attr, value] : n.attributes)
+    if (attr != "name") return false;
+  for (const bt::Node& c : n.children) {
+    if (bt::node_kind(c.kind()) != bt::NodeKind::script_condition || !c.children.empty())
+      return false;
+    for (const auto& [attr, value] : c.attributes)
+      if (attr != "name" && attr != "code") return false;
+  }
+  return !n.children.empty();
 }
 
 void Model::fill_state(std::vector<monitor::Val>& frame) const {

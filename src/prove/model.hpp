@@ -126,6 +126,10 @@ struct Model {
   void mark_read_once();
   std::vector<std::pair<runtime::script::Program, std::string>> tree_scripts;  // and where
   std::vector<std::string> port_reads;  // blackboard keys ports read
+  // [first, last) of tree_scripts: the ScriptConditions of a Fallback of a generated selection
+  // tree, of which only the disjunction is seen (Cuts::add_any_of).
+  std::vector<std::pair<std::size_t, std::size_t>> disjunctions;
+  static bool fallback_of_conditions(const bt::Node& n);
   // The declaration an output port's entry that the domain does not declare gets from the
   // port's type (nodes.xml), by entry name.
   std::map<std::string, fretish::Variable, std::less<>> port_entries;

@@ -146,7 +146,7 @@ void TickObservation::begin_tick() {
   for (NodeId n : touched_) last_[n] = NodeStatus::idle;
   touched_.clear();
   before_.clear();
-  open_.clear();
+  set_open({});
   std::fill(last_alternative_.begin(), last_alternative_.end(), -1);
 }
 
@@ -161,7 +161,7 @@ void TickObservation::undo(const Mark& mark) {
     last_[touched_[k - 1]] = before_[k - 1];
   touched_.resize(mark.touched);
   before_.resize(mark.touched);
-  open_ = mark.open;
+  set_open(mark.open);
   last_alternative_ = mark.alternatives;
 }
 
@@ -178,9 +178,37 @@ void TickObservation::on_node_ticked(NodeId node, NodeStatus result) {
   if (parent_.size() != engine_.node_count()) {
     parent_.resize(engine_.node_count());
     for (NodeId n = 0; n < parent_.size(); ++n) parent_[n] = engine_.info(n).parent;
+    is_open_.assign(parent_.size(), 0);
+    open_children_.assign(parent_.size(), 0);
+    for (NodeId n : open_) count_open(n, true);
   }
-  std::erase_if(open_, [&](NodeId child) { return parent_[child] == node; });
-  if (std::find(open_.begin(), open_.end(), node) == open_.end()) open_.push_back(node);
+  // Counted per parent, so that a Fallback of 60,000 children costs one pass when it returns,
+  // not one per child.
+  if (open_children_[node] > 0) {
+    std::erase_if(open_, [&](NodeId child) {
+      if (parent_[child] != node) return false;
+      is_open_[child] = 0;
+      return true;
+    });
+    open_children_[node] = 0;
+  }
+  if (!is_open_[node]) {
+    open_.push_back(node);
+    count_open(node, true);
+  }
+}
+
+void TickObservation::count_open(NodeId node, bool open) {
+  is_open_[node] = open ? 1 : 0;
+  if (parent_[node] != kNoNode) open_children_[parent_[node]] += open ? 1 : -1;
+}
+
+void TickObservation::set_open(const std::vector<NodeId>& open) {
+  if (!is_open_.empty())
+    for (NodeId n : open_) count_open(n, false);
+  open_ = open;
+  if (!is_open_.empty())
+    for (NodeId n : open_) count_open(n, true);
 }
 
 void TickObservation::append_tick_key(std::string& out) const {

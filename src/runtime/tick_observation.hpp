@@ -111,9 +111,13 @@ class TickObservation : public Observer {
   std::vector<ModeObs> modes_;
   std::vector<NodeStatus> last_;  // per node, this tick (idle: not ticked)
   std::vector<NodeId> touched_;
-  std::vector<NodeStatus> before_;  // per touched_: what last_ had before
-  std::vector<NodeId> open_;        // ticked, and their parent has not returned since
-  std::vector<NodeId> parent_;      // per node
+  std::vector<NodeStatus> before_;            // per touched_: what last_ had before
+  std::vector<NodeId> open_;                  // ticked, and their parent has not returned since
+  std::vector<NodeId> parent_;                // per node
+  std::vector<char> is_open_;                 // per node: in open_
+  std::vector<std::uint32_t> open_children_;  // per node: its children in open_
+  void count_open(NodeId node, bool open);
+  void set_open(const std::vector<NodeId>& open);
   bool track_open_ = false;
   std::vector<NodeId> observed_;       // nodes whose returns a property reads
   std::vector<int> last_alternative_;  // per SelectedObs: symbol, -1 for none

@@ -44,18 +44,6 @@ class Translator {
     return false;
   }
 
-  static ExprKind compare_kind(CompareOp op) {
-    switch (op) {
-      case CompareOp::eq: return ExprKind::eq;
-      case CompareOp::ne: return ExprKind::ne;
-      case CompareOp::lt: return ExprKind::lt;
-      case CompareOp::le: return ExprKind::le;
-      case CompareOp::gt: return ExprKind::gt;
-      case CompareOp::ge: return ExprKind::ge;
-    }
-    return ExprKind::eq;
-  }
-
   ExprPtr binary(ExprKind kind, const Expr& e) {
     return fretish::make_expr(kind, {translate(e.a), translate(e.b)});
   }
@@ -101,7 +89,7 @@ class Translator {
     ExprPtr lhs = translate(operands[e.list_begin]);
     for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
       ExprPtr rhs = translate(operands[e.list_begin + i + 1]);
-      links.push_back(fretish::make_expr(compare_kind(ops[e.ops_begin + i]), {lhs, rhs}));
+      links.push_back(fretish::make_expr(relation_of(ops[e.ops_begin + i]), {lhs, rhs}));
       lhs = rhs;
     }
     if (links.size() == 1) return links.front();
@@ -154,6 +142,18 @@ class Translator {
 };
 
 }  // namespace
+
+ExprKind relation_of(CompareOp op) {
+  switch (op) {
+    case CompareOp::eq: return ExprKind::eq;
+    case CompareOp::ne: return ExprKind::ne;
+    case CompareOp::lt: return ExprKind::lt;
+    case CompareOp::le: return ExprKind::le;
+    case CompareOp::gt: return ExprKind::gt;
+    case CompareOp::ge: return ExprKind::ge;
+  }
+  return ExprKind::eq;
+}
 
 ScriptReading parse_script_condition(const std::string& code, const fretish::Domain& domain) {
   ScriptReading reading;

@@ -8,6 +8,9 @@
 
 namespace uabt::verify {
 
+// The FRETISH relation a script comparison operator means (`==` is `=`).
+fretish::ExprKind relation_of(bt::script::CompareOp op);
+
 // A ScriptCondition's `code` read back into a FRETISH condition.
 struct ScriptReading {
   fretish::ExprPtr expr;  // nullptr when `error` says why the code is not a condition

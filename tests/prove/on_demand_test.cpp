@@ -98,6 +98,54 @@ TEST(Cuts, ScriptComparisonsWithConstantsGiveBreakpoints) {
   EXPECT_EQ(cuts.uncut("wind"), "");
 }
 
+// A long run of an integer's comparisons with numerals is cut only where the run's truth can
+// change (the ends of the union of its ranges), in a requirement and in a generated Fallback of
+// ScriptConditions alike; a short run is cut at every numeral, and a real variable's comparisons
+// are never merged as integers.
+TEST(Cuts, ALongRunOfAnIntegersComparisonsIsCutAtTheEndsOfItsRanges) {
+  std::string fretish_run, script_run;
+  for (int k = 0; k < 20; ++k) {
+    fretish_run += (k ? " | depth = " : "depth = ") + std::to_string(k);
+    script_run += (k ? " || depth == " : "depth == ") + std::to_string(k);
+  }
+  prove::Cuts from_requirement({"depth", "wind"}, {}, {"depth"});
+  from_requirement.add(*expression("flag & (" + fretish_run +
+                                   " | 40 <= depth & depth <= 50 | depth > 60 | wind < 3)"),
+                       "requirements.fret:2:5");
+  // `40 <= depth & depth <= 50` is a conjunction, not a comparison: cut as written (40, 50).
+  EXPECT_EQ(
+      from_requirement.breaks("depth"),
+      (std::set<Fraction>{Fraction(0), Fraction(19), Fraction(40), Fraction(50), Fraction(61)}));
+  EXPECT_EQ(from_requirement.breaks("wind"), (std::set<Fraction>{Fraction(3)}));
+  EXPECT_EQ(from_requirement.uncut("depth"), "");
+
+  // The ScriptConditions of a generated Fallback: one disjunction, one condition each.
+  std::vector<runtime::script::Program> conditions;
+  for (int k = 0; k < 20; ++k)
+    conditions.push_back(runtime::script::Program::parse("depth == " + std::to_string(k)));
+  conditions.push_back(runtime::script::Program::parse("40 == depth"));
+  conditions.push_back(runtime::script::Program::parse("depth >= 41 && depth < 61"));
+  std::vector<const runtime::script::Program*> programs;
+  for (const auto& c : conditions) programs.push_back(&c);
+  prove::Cuts from_fallback({"depth"}, {}, {"depth"});
+  from_fallback.add_any_of(programs, "a selection Fallback");
+  EXPECT_EQ(
+      from_fallback.breaks("depth"),
+      (std::set<Fraction>{Fraction(0), Fraction(19), Fraction(40), Fraction(41), Fraction(61)}));
+  EXPECT_EQ(from_fallback.uncut("depth"), "");
+  prove::Cuts few({"depth"}, {}, {"depth"});
+  few.add_any_of({programs.begin(), programs.begin() + 3}, "a selection Fallback");
+  EXPECT_EQ(few.breaks("depth"), (std::set<Fraction>{Fraction(0), Fraction(1), Fraction(2)}));
+
+  prove::Cuts short_run({"depth"}, {}, {"depth"});
+  short_run.add(*expression("depth = 1 | depth = 2 | depth = 3"), "requirements.fret:3:5");
+  EXPECT_EQ(short_run.breaks("depth"), (std::set<Fraction>{Fraction(1), Fraction(2), Fraction(3)}));
+
+  prove::Cuts real_run({"depth"});  // a real: every numeral is a breakpoint
+  real_run.add(*expression(fretish_run), "requirements.fret:4:5");
+  EXPECT_EQ(real_run.breaks("depth").size(), 20u);
+}
+
 // An atom that compares an environment variable with the mission's own state is cut in each
 // state at hand: the Cuts keep it whole, to be cut when the variable is chosen.
 TEST(Cuts, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
@@ -349,6 +397,39 @@ TEST(OnDemand, EnumValuesNoAtomNamesAreOneCell) {
   const prove::Result c = prove_dir(copied.dir(), explicit_engine);
   EXPECT_EQ(answer(c, "Known").verdict, Verdict::violated);
   EXPECT_GT(c.transitions, n.transitions * 5) << c.transitions << " against " << n.transitions;
+}
+
+// msl_curiosity with Req1's guard `OnDust & <depth>` over an integer depth.
+std::map<std::string, std::string> deep_dust(const std::string& depth) {
+  auto files = mission_files("msl_curiosity");
+  files["domain.fret"] += "integer depth in [0, 100000]\n";
+  auto& requirements = files["requirements.fret"];
+  const std::string guard = "if OnDust Mission";
+  const auto at = requirements.find(guard);
+  EXPECT_NE(at, std::string::npos);
+  requirements.replace(at, guard.size(), "if OnDust & (" + depth + ") Mission");
+  return files;
+}
+
+// The compiler writes a guard's disjuncts as the ScriptConditions of a Fallback in the
+// selection tree. No property sees those nodes, so 40 disjuncts `depth = k` are the cells of
+// the one range they make: the search is the search over `0 <= depth & depth <= 39`.
+TEST(OnDemand, ALongDisjunctionOfAGuardIsTheCellsOfItsRange) {
+  prove::Options explicit_engine;
+  explicit_engine.engine = "explicit";
+  std::string run;
+  for (int k = 0; k < 40; ++k) run += (k ? " | depth = " : "depth = ") + std::to_string(k);
+  TempMission disjuncts(deep_dust(run)), range(deep_dust("0 <= depth & depth <= 39"));
+  const prove::Result d = prove_dir(disjuncts.dir(), explicit_engine);
+  const prove::Result r = prove_dir(range.dir(), explicit_engine);
+  EXPECT_EQ(d.states, r.states);
+  EXPECT_EQ(d.transitions, r.transitions);
+  ASSERT_EQ(d.answers.size(), r.answers.size());
+  ASSERT_FALSE(d.answers.empty());
+  for (std::size_t i = 0; i < d.answers.size(); ++i) {
+    EXPECT_EQ(d.answers[i].verdict, r.answers[i].verdict) << i;
+    EXPECT_EQ(d.answers[i].depth, r.answers[i].depth) << i;
+  }
 }
 
 TEST(Numbers, PrintAsPeopleWriteThem) {
