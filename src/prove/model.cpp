@@ -378,7 +378,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       }
     }
     for (const auto& c : n.children) scan(c);
-    if (in_selection_tree && first_script == tree_scripts.size() - n.children.size() &&
+    if (in_selection_tree && tree_scripts.size() - first_script == n.children.size() &&
         fallback_of_conditions(n))
       disjunctions.push_back({first_script, tree_scripts.size()});
   };

@@ -200,7 +200,11 @@ void TickObservation::on_node_ticked(NodeId node, NodeStatus result) {
 
 void TickObservation::count_open(NodeId node, bool open) {
   is_open_[node] = open ? 1 : 0;
-  if (parent_[node] != kNoNode) open_children_[parent_[node]] += open ? 1 : -1;
+  if (parent_[node] == kNoNode) return;
+  if (open)
+    ++open_children_[parent_[node]];
+  else
+    --open_children_[parent_[node]];
 }
 
 void TickObservation::set_open(const std::vector<NodeId>& open) {
