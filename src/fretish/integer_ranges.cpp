@@ -63,4 +63,20 @@ std::optional<IntegerComparison> integer_comparison(const Expr& e) {
   return IntegerComparison{variable, ranges_of(op, *c)};
 }
 
+IntegerRuns integer_runs(
+    const Expr& disjunction,
+    const std::function<bool(const Expr& argument, const IntegerComparison& comparison)>& merge) {
+  IntegerRuns out;
+  for (const auto& arg : disjunction.args) {
+    const auto c = integer_comparison(*arg);
+    if (c && merge(*arg, *c)) {
+      auto& mine = out.ranges[c->variable->text];
+      mine.insert(mine.end(), c->ranges.begin(), c->ranges.end());
+    } else {
+      out.rest.push_back(arg.get());
+    }
+  }
+  return out;
+}
+
 }  // namespace uabt::fretish

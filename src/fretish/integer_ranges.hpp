@@ -1,5 +1,7 @@
 #pragma once
 #include <cstddef>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,5 +37,16 @@ struct IntegerComparison {
   std::vector<IntegerRange> ranges;
 };
 std::optional<IntegerComparison> integer_comparison(const Expr& e);
+
+// A disjunction's arguments split into the integer comparisons `merge` accepts, gathered per
+// variable as the ranges they allow (not yet merged), and the `rest`. The encoder (which
+// lowers the ranges) and the explicit engine's cuts (which cut at their ends) share it.
+struct IntegerRuns {
+  std::map<std::string, std::vector<IntegerRange>> ranges;
+  std::vector<const Expr*> rest;
+};
+IntegerRuns integer_runs(
+    const Expr& disjunction,
+    const std::function<bool(const Expr& argument, const IntegerComparison& comparison)>& merge);
 
 }  // namespace uabt::fretish

@@ -267,16 +267,11 @@ void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool 
     // As a whole, a long run of an integer's comparisons with numerals only changes truth at the
     // ends of the union of their ranges (integer_ranges.hpp): cutting there, not at every
     // numeral, keeps 60,000 `depth = k` disjuncts a handful of cells.
-    std::map<std::string, std::vector<fretish::IntegerRange>> ranges;
-    for (const auto& arg : e.args) {
-      auto c = fretish::integer_comparison(*arg);
-      if (c && numeric_.contains(c->variable->text) && integers_.contains(c->variable->text)) {
-        auto& mine = ranges[c->variable->text];
-        mine.insert(mine.end(), c->ranges.begin(), c->ranges.end());
-      } else {
-        walk(*arg, where, atom, at_tick_start);
-      }
-    }
+    auto [ranges, rest] =
+        fretish::integer_runs(e, [&](const Expr&, const fretish::IntegerComparison& c) {
+          return numeric_.contains(c.variable->text) && integers_.contains(c.variable->text);
+        });
+    for (const Expr* arg : rest) walk(*arg, where, atom, at_tick_start);
     cut_at_range_ends(ranges);
     return;
   }

@@ -15,6 +15,7 @@
 #include "prove/environment.hpp"
 #include "prove/property_formula.hpp"
 #include "prove/prove.hpp"
+#include "runtime/observed_nodes.hpp"
 
 namespace uabt::prove {
 
@@ -383,9 +384,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       disjunctions.push_back({first_script, tree_scripts.size()});
   };
   for (const auto& t : doc.trees) {
-    in_selection_tree =
-        std::any_of(mission.adaptables.begin(), mission.adaptables.end(),
-                    [&](const load::AdaptableSite& site) { return site.id == t.id; });
+    in_selection_tree = runtime::generated_selection_tree(mission, t.id);
     scan(t.root);
   }
 

@@ -13,6 +13,10 @@ namespace uabt::runtime {
 // nodes share means any of them. The selection trees the compiler generates are left out:
 // their nodes differ from one selection style to another, and the gate's static check
 // (gate::mission_observables) knows only the mission's and the alternatives' own nodes.
+// Whether `tree_id` is a selection tree the compiler generates (its ID is an Adaptable's):
+// no property observes its nodes.
+bool generated_selection_tree(const load::Mission& mission, const std::string& tree_id);
+
 std::vector<NodeId> observed_nodes(const Engine& engine, const load::Mission& mission,
                                    const std::string& label);
 

@@ -326,17 +326,11 @@ State Encoder::state_of(const z3::model& model) const {
 z3::expr Encoder::lower_disjunction(const Expr& e, const Overrides& overrides) {
   z3::expr_vector parts(context_);
   // The comparisons of each integer variable with a numeral, as ranges (integer_ranges.hpp).
-  std::map<std::string, std::vector<fretish::IntegerRange>> ranges;
-  std::vector<const Expr*> rest;
-  for (const auto& arg : e.args) {
-    auto c = overrides.contains(arg.get()) ? std::nullopt : fretish::integer_comparison(*arg);
-    if (c && typing_.at(*c->variable).sort == Sort::integer && find_slot(c->variable->text)) {
-      auto& mine = ranges[c->variable->text];
-      mine.insert(mine.end(), c->ranges.begin(), c->ranges.end());
-    } else {
-      rest.push_back(arg.get());
-    }
-  }
+  auto [ranges, rest] =
+      fretish::integer_runs(e, [&](const Expr& arg, const fretish::IntegerComparison& c) {
+        return !overrides.contains(&arg) && typing_.at(*c.variable).sort == Sort::integer &&
+               find_slot(c.variable->text) != nullptr;
+      });
   auto bound = [&](__int128 b) { return context_.int_val(static_cast<std::int64_t>(b)); };
   for (const auto& [name, allowed] : ranges) {
     const z3::expr x = find_slot(name)->constant;
