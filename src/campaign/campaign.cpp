@@ -268,7 +268,9 @@ Campaign build_campaign(const load::Mission& mission, const Options& given) {
   c.skipped = model.skipped();
   for (const auto& [node, why] : model.solved())
     c.notes.push_back("targets of " + node + " solved one by one, not enumerated: " + why);
-  const Replayer replayer(mission, options.compile);
+  const Replayer replayer = options.compiled_tree != nullptr && options.trace != nullptr
+                                ? Replayer(mission, *options.compiled_tree, *options.trace)
+                                : Replayer::compiling(mission, options.compile);
   // A state whose run does not get to its node (the tree takes another branch first) is
   // set aside and the targets planned again, a few times.
   std::vector<std::set<std::uint64_t>> excluded(model.nodes());

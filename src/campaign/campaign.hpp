@@ -14,6 +14,7 @@
 #include "compile/compile.hpp"
 #include "load/mission.hpp"
 #include "prove/world_model.hpp"
+#include "runtime/runner.hpp"
 #include "runtime/scenario.hpp"
 #include "verify/impact.hpp"
 #include "verify/verify.hpp"
@@ -171,8 +172,14 @@ class Model {
 // Runs scenarios on the compiled mission (the runtime `uabt run` uses, without the gate).
 class Replayer {
  public:
-  // Throws std::runtime_error when the mission does not compile.
-  Replayer(const load::Mission& mission, const compile::Options& options);
+  // Runs `compiled_tree`, the mission's compiled tree as read back (compile::read_back), whose
+  // nodes come from where `trace` says.
+  Replayer(const load::Mission& mission, bt::Document compiled_tree,
+           std::vector<compile::TraceEntry> trace);
+  // Compiles the mission and reads it back first. Throws std::runtime_error when it does not
+  // compile or read back.
+  static Replayer compiling(const load::Mission& mission, const compile::Options& options);
+  Replayer(Replayer&&) noexcept;
   ~Replayer();
   // Runs a scenario (JSON text) until every adaptable node of `stop_after` has selected, the
   // root completes, a tick throws or max_ticks is reached; every selection is observed.
@@ -183,6 +190,9 @@ class Replayer {
   // A scenario (JSON text) parsed, its numbers typed by the mission's declarations
   // (runtime::type_numbers). Throws runtime::ScenarioError when it does not parse.
   runtime::Scenario scenario(const std::string& json, const std::string& file) const;
+  // The one tree, reset to exactly its fresh state in `scenario` (built at the first call),
+  // with no observer but those a caller adds and removes; valid until the next call.
+  runtime::Runner& start(runtime::Scenario scenario) const;
 
  private:
   struct Impl;
@@ -213,6 +223,10 @@ struct Options {
   // The world scenarios play in and guarantee targets are solved over; nullptr: the mission's
   // world.json, when it has one.
   const prove::WorldModel* world = nullptr;
+  // The mission's compiled tree as read back and where its nodes come from, when the caller
+  // has them (the gate); nullptr: compiled and read back here with `compile`.
+  const bt::Document* compiled_tree = nullptr;
+  const std::vector<compile::TraceEntry>* trace = nullptr;
   // Guarantee targets: how deep and how many states the prove engines explore (0: every tick).
   std::uint64_t prove_depth = 0;
   std::size_t prove_max_states = 2'000'000;

@@ -168,11 +168,7 @@ Play play(const load::Mission& traps, const Replayer& replayer, const std::strin
   Play out;
   out.run.source = file;
   try {
-    runtime::RunOptions options;
-    options.log_conditions = false;
-    std::vector<bt::NodeModel> models;
-    if (traps.nodes) models = *traps.nodes;
-    runtime::Runner runner(replayer.document(), replayer.scenario(json, file), options, models);
+    runtime::Runner& runner = replayer.start(replayer.scenario(json, file));
     runtime::PropertyMonitor monitor(traps, runner.engine());
     runtime::SelectionObserver selections(runner.engine(), [&](const runtime::Selection& s) {
       std::string name = s.alternative;
@@ -180,8 +176,8 @@ Play play(const load::Mission& traps, const Replayer& replayer, const std::strin
         if (alt.adaptable == s.adaptable && alt.tree_id == s.alternative) name = alt.name;
       monitor.select(s.adaptable, name, s.requirement);
     });
-    runner.engine().add_observer(&selections);
-    runner.engine().add_observer(&monitor);
+    const runtime::Observing observing_selections(runner.engine(), selections);
+    const runtime::Observing observing_monitor(runner.engine(), monitor);
     while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
       runner.step();
       runner.world().clear_log();
@@ -189,8 +185,6 @@ Play play(const load::Mission& traps, const Replayer& replayer, const std::strin
       for (const auto& v : monitor.after_tick(runner.ticks()))
         out.reached.emplace(v.result.id, v.tick);
     }
-    runner.engine().remove_observer(&monitor);
-    runner.engine().remove_observer(&selections);
     out.run.ticks = runner.ticks();
     out.run.verdict = runner.verdict();
     if (runner.error()) out.run.error = runner.error()->message;

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "base/diagnostics.hpp"
-#include "bt/xml_io.hpp"
 #include "campaign/campaign.hpp"
 #include "runtime/blackboard.hpp"
 #include "runtime/runner.hpp"
@@ -41,22 +40,6 @@ class GapObserver : public runtime::Observer {
   std::function<void(const std::string&)> on_gap_;
 };
 
-// Registers an observer for one run; gone however the run ends.
-class Observing {
- public:
-  Observing(runtime::Engine& engine, runtime::Observer& observer)
-      : engine_(engine), observer_(observer) {
-    engine_.add_observer(&observer_);
-  }
-  ~Observing() { engine_.remove_observer(&observer_); }
-  Observing(const Observing&) = delete;
-  Observing& operator=(const Observing&) = delete;
-
- private:
-  runtime::Engine& engine_;
-  runtime::Observer& observer_;
-};
-
 }  // namespace
 
 struct Replayer::Impl {
@@ -70,30 +53,45 @@ struct Replayer::Impl {
   std::unique_ptr<runtime::Runner> runner;
 };
 
-Replayer::Replayer(const load::Mission& mission, const compile::Options& options) {
+Replayer::Replayer(const load::Mission& mission, bt::Document compiled_tree,
+                   std::vector<compile::TraceEntry> trace)
+    : impl_(std::make_unique<Impl>(
+          Impl{mission, std::move(compiled_tree), {}, {}, std::move(trace), {}})) {
+  impl_->vocabulary.add(mission);
+  if (mission.nodes) impl_->robot_nodes = *mission.nodes;
+}
+
+Replayer Replayer::compiling(const load::Mission& mission, const compile::Options& options) {
   compile::Result compiled = compile::compile_mission(mission, options);
   if (!compiled.ok)
     throw std::runtime_error("the mission does not compile:\n" + format_text(compiled.findings));
   // The tree as `uabt run` holds it: read back from the bytes the compiler writes.
-  bt::WriteOptions write_options;
-  write_options.format = options.bt_format;
-  const std::string xml = bt::write_document(compiled.document, write_options);
-  std::vector<Finding> findings;
-  auto doc = bt::parse_document(xml, "compiled.xml", findings);
-  if (!doc)
-    throw std::runtime_error("the compiled tree does not read back:\n" + format_text(findings));
-  impl_ = std::make_unique<Impl>(Impl{mission, std::move(*doc), {}, {}, {}, {}});
-  impl_->vocabulary.add(mission);
-  impl_->trace = std::move(compiled.trace);
-  if (mission.nodes) impl_->robot_nodes = *mission.nodes;
+  compile::ReadBack written = compile::read_back(compiled, options);
+  if (!written.tree)
+    throw std::runtime_error("the compiled tree does not read back:\n" +
+                             format_text(written.findings));
+  return Replayer(mission, std::move(*written.tree), std::move(compiled.trace));
 }
 
+Replayer::Replayer(Replayer&&) noexcept = default;
 Replayer::~Replayer() = default;
 
 runtime::Scenario Replayer::scenario(const std::string& json, const std::string& file) const {
   runtime::Scenario scenario = runtime::parse_scenario(json, file);
   runtime::type_numbers(scenario, impl_->vocabulary);
   return scenario;
+}
+
+runtime::Runner& Replayer::start(runtime::Scenario scenario) const {
+  if (impl_->runner) {
+    impl_->runner->restart(std::move(scenario));
+  } else {
+    runtime::RunOptions options;
+    options.log_conditions = false;
+    impl_->runner = std::make_unique<runtime::Runner>(impl_->document, std::move(scenario), options,
+                                                      impl_->robot_nodes);
+  }
+  return *impl_->runner;
 }
 
 const bt::Document& Replayer::document() const {
@@ -112,14 +110,7 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
     for (const auto& m : misfits) text += (text.empty() ? "" : "\n") + m;
     throw runtime::ScenarioError(text);
   }
-  runtime::RunOptions options;
-  options.log_conditions = false;
-  if (impl_->runner)
-    impl_->runner->restart(std::move(scenario));
-  else
-    impl_->runner = std::make_unique<runtime::Runner>(impl_->document, std::move(scenario), options,
-                                                      impl_->robot_nodes);
-  runtime::Runner& runner = *impl_->runner;
+  runtime::Runner& runner = start(std::move(scenario));
   std::set<std::string> waiting = stop_after;
   std::map<std::string, std::uint64_t> selected_at;  // per node: the last tick it selected
   auto observe = [&](const std::string& adaptable, const std::string& alternative) {
@@ -147,8 +138,8 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
     if (selected_at[adaptable] != runner.ticks() + 1) observe(adaptable, "");
   });
   {
-    const Observing observing_selections(runner.engine(), selections);
-    const Observing observing_gaps(runner.engine(), gaps);
+    const runtime::Observing observing_selections(runner.engine(), selections);
+    const runtime::Observing observing_gaps(runner.engine(), gaps);
     while (!runner.done() && static_cast<std::int64_t>(runner.ticks()) < runner.max_ticks()) {
       runner.step();
       runner.world().clear_log();

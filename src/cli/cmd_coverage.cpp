@@ -99,7 +99,7 @@ void register_coverage(CLI::App& app, int& exit_code) {
       options.criteria = campaign_criteria("all");
       campaign::Model model(*mission, options.criteria);
       apply_selection(args->selection, options.compile);
-      const campaign::Replayer replayer(*mission, options.compile);
+      const auto replayer = campaign::Replayer::compiling(*mission, options.compile);
       // The guarantee targets, solved in world.json's world as `uabt tests` solves them.
       std::optional<prove::WorldModel> world;
       options.world = campaign::load_world(*mission, world);

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "bt/node_kinds.hpp"
+#include "bt/xml_io.hpp"
 #include "compile/guard_rewrite.hpp"
 #include "fretish/requirement.hpp"
 #include "load/references.hpp"
@@ -191,6 +192,15 @@ void add_model(std::vector<bt::NodeModel>& models, std::set<std::string>& known,
 }
 
 }  // namespace
+
+ReadBack read_back(const Result& compiled, const Options& options) {
+  ReadBack out;
+  bt::WriteOptions write_options;
+  write_options.format = options.bt_format;
+  out.xml = bt::write_document(compiled.document, write_options);
+  out.tree = bt::parse_document(out.xml, "compiled.xml", out.findings);
+  return out;
+}
 
 Result compile_mission(const load::Mission& m, const Options& options) {
   Result result;

@@ -52,6 +52,16 @@ struct Result {
   bool ok = false;
 };
 
+// A compiled tree as the robot loads it: the bytes written for `options`, read back by the one
+// XML reader, so that what conform checks, prove proves and the test campaign runs is what is
+// uplinked. `tree` is empty, with `findings` saying why, when the bytes do not read back.
+struct ReadBack {
+  std::string xml;
+  std::optional<bt::Document> tree;
+  std::vector<Finding> findings;
+};
+ReadBack read_back(const Result& compiled, const Options& options);
+
 // The style `adaptable`'s selection is compiled in under `options`.
 SelectionStyle selection_style_of(const load::Mission& mission, const std::string& adaptable,
                                   const Options& options);

@@ -1,6 +1,5 @@
 #include "gate/gate.hpp"
 
-#include "bt/xml_io.hpp"
 #include "gate/proofs.hpp"
 #include "gate/properties.hpp"
 #include "report/reports.hpp"
@@ -58,12 +57,12 @@ void compile_and_read_back(const load::Mission& mission, const compile::Options&
                            Outcome& out, std::vector<Finding>& read_findings) {
   out.compiled = compile::compile_mission(mission, options);
   if (!out.compiled.ok) return;
-  bt::WriteOptions write_options;
-  write_options.format = options.bt_format;
-  out.compiled_xml = bt::write_document(out.compiled.document, write_options);
   // Read back from the bytes that will be uplinked, not taken from the in-memory document, so
   // that conform validates the writer too.
-  out.compiled_tree = bt::parse_document(out.compiled_xml, "compiled.xml", read_findings);
+  compile::ReadBack written = compile::read_back(out.compiled, options);
+  out.compiled_xml = std::move(written.xml);
+  out.compiled_tree = std::move(written.tree);
+  read_findings = std::move(written.findings);
 }
 
 void keep_rejected_candidate(Outcome& outcome) {

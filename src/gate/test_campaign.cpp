@@ -15,6 +15,10 @@ void add_test_campaign(Outcome& outcome, const Options& options, const std::stri
   }
   campaign::Options campaign_options;
   campaign_options.compile = options.compile;
+  if (outcome.compiled_tree) {
+    campaign_options.compiled_tree = &*outcome.compiled_tree;
+    campaign_options.trace = &outcome.compiled.trace;
+  }
   try {
     outcome.campaign = outcome.report.uplink
                            ? campaign::build_uplink_campaign(

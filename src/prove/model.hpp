@@ -16,6 +16,7 @@
 #include "prove/world_model.hpp"
 #include "runtime/engine.hpp"
 #include "runtime/engine_state.hpp"
+#include "runtime/runner.hpp"
 #include "runtime/tick_observation.hpp"
 
 namespace uabt::prove {
@@ -112,6 +113,9 @@ struct Model {
   std::string explicit_refusal;
   // Per variable (Model::vars), the variables cut in each state: their cuts.
   std::map<std::size_t, StateCut> state_cuts;
+  // The runtime `uabt run` runs, over the compiled tree: built for the first counterexample
+  // replayed and restarted for each next one (Runner::restart: exactly a fresh tree).
+  std::unique_ptr<runtime::Runner> replay_runner;
 
   ~Model();
 

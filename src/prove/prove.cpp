@@ -153,7 +153,7 @@ std::string scenario_of(Model& m, const Property& p, const Finding& f) {
 
 // Runs the counterexample on the runtime's simulated world (what `uabt run` does) with the
 // monitoring stage's own monitor; it must violate the property first at the same tick.
-Counterexample replay(const Model& m, const Property& p, const Finding& f, std::string scenario) {
+Counterexample replay(Model& m, const Property& p, const Finding& f, std::string scenario) {
   Counterexample cex;
   cex.tick = f.tick;
   cex.scenario = std::move(scenario);
@@ -162,13 +162,19 @@ Counterexample replay(const Model& m, const Property& p, const Finding& f, std::
   runtime::ScenarioVocabulary vocabulary;
   vocabulary.add(m.mission);
   runtime::type_numbers(parsed, vocabulary);
-  std::vector<bt::NodeModel> models;
-  if (m.mission.nodes) models = *m.mission.nodes;
-  runtime::Runner runner(m.doc, std::move(parsed), runtime::RunOptions{}, models);
+  if (m.replay_runner) {
+    m.replay_runner->restart(std::move(parsed));
+  } else {
+    std::vector<bt::NodeModel> models;
+    if (m.mission.nodes) models = *m.mission.nodes;
+    m.replay_runner =
+        std::make_unique<runtime::Runner>(m.doc, std::move(parsed), runtime::RunOptions{}, models);
+  }
+  runtime::Runner& runner = *m.replay_runner;
   monitor::Variables variables;
   monitor::Symbols symbols;
   runtime::TickObservation obs(runner.engine(), m.mission, m.state_names, variables, symbols);
-  runner.engine().add_observer(&obs);
+  const runtime::Observing observing(runner.engine(), obs);
   std::string reason;
   auto monitor = monitor::RequirementMonitor::compile(
       *p.requirement, [&](const std::string& n) { return obs.resolve(n); }, reason);

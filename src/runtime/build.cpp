@@ -129,11 +129,13 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     throw refuse("<Adaptable ID=\"" + (xml.attribute("ID") ? *xml.attribute("ID") : "") +
                  "\"/> cannot run: compile the mission first (uabt compile)");
   // BT.CPP parses a node's scripts when it builds it; the static checks apply the same rules.
-  for (const auto& [attribute, message] : bt::script::node_script_refusals(xml)) {
+  std::vector<bt::script::NodeScript> scripts = bt::script::parse_node_scripts(xml);
+  for (const bt::script::NodeScript& s : scripts) {
+    if (s.refusal.empty()) continue;
     const auto [line, column] =
-        attribute.empty() ? std::pair{xml.line, xml.column} : xml.attribute_position(attribute);
+        s.attribute.empty() ? std::pair{xml.line, xml.column} : xml.attribute_position(s.attribute);
     throw LoadError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-                    message);
+                    s.refusal);
   }
   const bt::BuiltinNode* builtin = bt::find_builtin(kind_name);
   if (builtin != nullptr && !runs(builtin->kind))
@@ -202,9 +204,11 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     return in;
   };
 
-  // A script compiled now (node_script_refusals above: it parses) and bound to this scope.
-  auto compile = [&](const std::string& code) -> std::uint32_t {
-    script::Program program = script::Program::parse(code);
+  // The script of `attribute`, parsed above, compiled and bound to this scope.
+  auto compile = [&](std::string_view attribute) -> std::uint32_t {
+    auto parsed = std::find_if(scripts.begin(), scripts.end(),
+                               [&](const auto& s) { return s.attribute == attribute; });
+    script::Program program = script::Program::of(std::move(*parsed->script));
     program.bind(bb, scope);
     core.programs.push_back(std::move(program));
     return static_cast<std::uint32_t>(core.programs.size() - 1);
@@ -219,7 +223,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
         core.conditions.emplace_back();
       }
       ConditionScripts& scripts = core.conditions[core.nodes[id].conditions];
-      const auto program = static_cast<std::int32_t>(compile(value));
+      const auto program = static_cast<std::int32_t>(compile(attr));
       (c->pre ? scripts.pre : scripts.post)[c->index] = program;
       continue;
     }
@@ -250,9 +254,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     case Kind::run_once: new_params().in0 = input("then_skip", 1, true); break;
     case Kind::script:
     case Kind::script_condition: {
-      const std::string* code = xml.attribute("code");
-      if (code == nullptr) throw refuse(kind_name + " needs its port 'code'");
-      const std::uint32_t program = compile(*code);
+      const std::uint32_t program = compile("code");  // present: parse_node_scripts above
       new_params().program = program;
       break;
     }

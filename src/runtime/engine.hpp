@@ -217,4 +217,20 @@ class Engine {
   std::unique_ptr<detail::Core> core_;
 };
 
+// An observer registered for one scope: removed however the scope ends, so that an engine kept
+// for the next run never calls an observer that is gone.
+class Observing {
+ public:
+  Observing(Engine& engine, Observer& observer) : engine_(engine), observer_(observer) {
+    engine_.add_observer(&observer_);
+  }
+  ~Observing() { engine_.remove_observer(&observer_); }
+  Observing(const Observing&) = delete;
+  Observing& operator=(const Observing&) = delete;
+
+ private:
+  Engine& engine_;
+  Observer& observer_;
+};
+
 }  // namespace uabt::runtime

@@ -139,7 +139,7 @@ TEST(CampaignRandom, EveryScenarioReachesItsTargetWhenRun) {
     TempMission dir(random_mission(seed));
     const load::Mission m = load(dir.dir());
     const campaign::Campaign c = campaign::build_campaign(m, {});
-    const campaign::Replayer replayer(m, {});
+    const auto replayer = campaign::Replayer::compiling(m, {});
     for (const auto& s : c.scenarios) {
       EXPECT_TRUE(s.problems.empty()) << "seed " << seed << " " << s.name;
       // Run again from its bytes, as `uabt run` reads the file.
@@ -279,7 +279,7 @@ std::map<std::string, std::string> wide_integers_mission() {
 
 // Every scenario of a campaign reaches its purpose, and again when run from its bytes.
 void expect_every_scenario_reaches_its_target(const load::Mission& m, const campaign::Campaign& c) {
-  const campaign::Replayer replayer(m, {});
+  const auto replayer = campaign::Replayer::compiling(m, {});
   for (const auto& s : c.scenarios) {
     EXPECT_TRUE(s.problems.empty()) << s.name;
     const campaign::RunRecord run = replayer.run(s.json, s.name + ".json");
@@ -815,11 +815,11 @@ TEST(CampaignReplay, OneTreeResetBetweenRunsRunsExactlyAsAFreshTree) {
   runs.push_back({read_all(scenarios / "rocks_mid_drive.json"), "again.json", {"navigation"}});
   runs.push_back({c.scenarios.front().json, "first-again.json", {}});
 
-  const campaign::Replayer shared(m, {});
+  const auto shared = campaign::Replayer::compiling(m, {});
   std::size_t left_running = 0;
   for (const auto& r : runs) {
     const campaign::RunRecord reused = shared.run(r.json, r.file, r.stop_after);
-    const campaign::Replayer fresh_tree(m, {});
+    const auto fresh_tree = campaign::Replayer::compiling(m, {});
     const campaign::RunRecord fresh = fresh_tree.run(r.json, r.file, r.stop_after);
     EXPECT_EQ(record_text(reused), record_text(fresh));
     EXPECT_FALSE(fresh.observations.empty()) << r.file;

@@ -180,7 +180,7 @@ TEST(CampaignGuarantees, AResponseAtomDecidesWhereTheTimingJudgesTheResponseNotA
       {"Before/response/Act2.success/true", 2,
        "(at the first tick it holds after its trigger and before Act3.success, else at "
        "Act3.success)"}};
-  const campaign::Replayer replayer(m, {});
+  const auto replayer = campaign::Replayer::compiling(m, {});
   const prove::WorldModel world = prove::mission_world(m);
   std::map<std::string, prove::Goal> goals;
   for (const auto& g : campaign::guarantee_goals(m)) goals[g.id] = g;
@@ -349,7 +349,7 @@ TEST(CampaignGuarantees, RandomWorldsReachedTargetsAreReachedAndUnreachableOnesA
     ASSERT_FALSE(c.targets.empty()) << label;
     expect_scenarios_reach_their_goals(c, dir.dir(), dir.dir().parent_path(), label);
     // Every target said unreachable: the explicit engine proves its trap.
-    const campaign::Replayer replayer(m, {});
+    const auto replayer = campaign::Replayer::compiling(m, {});
     const prove::WorldModel world = prove::mission_world(m);
     std::map<std::string, prove::Goal> goals;
     for (const auto& g : campaign::guarantee_goals(m)) goals[g.id] = g;

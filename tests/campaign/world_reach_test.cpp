@@ -226,7 +226,7 @@ TEST(CampaignWorldReach, ProveAgreesWithTheCampaignOnEveryTargetOfTheShippedMiss
         asked[t].push_back(goal(reach.back()->node, u));
       }
     }
-    const campaign::Replayer replayer(m, options.compile);
+    const auto replayer = campaign::Replayer::compiling(m, options.compile);
     const prove::WorldModel world = prove::mission_world(m);
     const std::vector<prove::Reach> answers =
         prove::reach(m, replayer.document(), world, goals, prove::Options{});

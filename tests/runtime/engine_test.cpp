@@ -186,6 +186,25 @@ TEST_F(EngineTest, ObserverSeesStatusChangesInBtcppOrder) {
   EXPECT_TRUE(rec.changes.empty());
 }
 
+// An engine kept for the next run (a campaign's scenarios, prove's counterexample replays)
+// must not call an observer of a run that ended, however it ended.
+TEST_F(EngineTest, AnObserverOfOneScopeIsGoneWhenTheScopeThrows) {
+  world.script("B", {R, S});
+  Engine e = build("<Sequence name=\"seq\"><A/><B/></Sequence>");
+  RecordingObserver rec(e);
+  try {
+    const Observing observing(e, rec);
+    e.tick();
+    throw std::runtime_error("the run stops");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(rec.changes,
+            (std::vector<std::string>{"seq:IDLE>RUNNING", "A:IDLE>SUCCESS", "B:IDLE>RUNNING"}));
+  rec.changes.clear();
+  e.tick();
+  EXPECT_TRUE(rec.changes.empty());
+}
+
 TEST_F(EngineTest, PathsAndNodeInfo) {
   Engine e = build(
       "<Sequence><Fallback><IsInLocation/><SubTree ID=\"navigation\"/></Fallback>"

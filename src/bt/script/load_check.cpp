@@ -36,33 +36,59 @@ std::string excerpt_around(const std::string& code, std::size_t column) {
 
 }  // namespace
 
+namespace {
+
+// `code` parsed as BT.CPP's builder parses the script of `what`, or why it refuses it.
+NodeScript parse_node_script(std::string attribute, const std::string& what,
+                             const std::string& code, bool empty_refused) {
+  NodeScript out;
+  out.attribute = std::move(attribute);
+  try {
+    out.script = Script::parse(code);
+    if (out.script->empty() && empty_refused) {
+      out.script.reset();
+      out.refusal = what + " with an empty script has no result";
+    }
+  } catch (const ScriptError& e) {
+    out.refusal = what + ": the script `" + excerpt_around(code, e.column()) +
+                  "` does not parse: " + e.what() + " (column " + std::to_string(e.column()) + ")";
+  }
+  return out;
+}
+
+}  // namespace
+
 std::optional<std::string> script_refusal(const std::string& what, const std::string& code,
                                           bool empty_refused) {
-  try {
-    if (Script::parse(code).empty() && empty_refused)
-      return what + " with an empty script has no result";
-  } catch (const ScriptError& e) {
-    return what + ": the script `" + excerpt_around(code, e.column()) +
-           "` does not parse: " + e.what() + " (column " + std::to_string(e.column()) + ")";
+  NodeScript parsed = parse_node_script("", what, code, empty_refused);
+  if (parsed.refusal.empty()) return std::nullopt;
+  return std::move(parsed.refusal);
+}
+
+std::vector<NodeScript> parse_node_scripts(const Node& node) {
+  std::vector<NodeScript> out;
+  const std::string kind = node.kind();
+  for (const auto& [attr, value] : node.attributes)
+    if (is_condition_attribute(attr))
+      out.push_back(parse_node_script(attr, kind + " " + attr, value, false));
+  const NodeKind k = node_kind(kind);
+  if (k == NodeKind::script || k == NodeKind::script_condition) {
+    const std::string* code = node.attribute("code");
+    if (code == nullptr) {
+      NodeScript missing;
+      missing.refusal = kind + " needs its port 'code'";
+      out.push_back(std::move(missing));
+    } else {
+      out.push_back(parse_node_script("code", kind, *code, k == NodeKind::script_condition));
+    }
   }
-  return std::nullopt;
+  return out;
 }
 
 std::vector<std::pair<std::string, std::string>> node_script_refusals(const Node& node) {
   std::vector<std::pair<std::string, std::string>> out;
-  const std::string kind = node.kind();
-  for (const auto& [attr, value] : node.attributes)
-    if (is_condition_attribute(attr))
-      if (auto why = script_refusal(kind + " " + attr, value, false))
-        out.emplace_back(attr, std::move(*why));
-  const NodeKind k = node_kind(kind);
-  if (k == NodeKind::script || k == NodeKind::script_condition) {
-    const std::string* code = node.attribute("code");
-    if (code == nullptr)
-      out.emplace_back("", kind + " needs its port 'code'");
-    else if (auto why = script_refusal(kind, *code, k == NodeKind::script_condition))
-      out.emplace_back("code", std::move(*why));
-  }
+  for (NodeScript& s : parse_node_scripts(node))
+    if (!s.refusal.empty()) out.emplace_back(std::move(s.attribute), std::move(s.refusal));
   return out;
 }
 

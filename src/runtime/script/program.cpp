@@ -4,8 +4,12 @@
 namespace uabt::runtime::script {
 
 Program Program::parse(std::string_view code) {
+  return of(Script::parse(code));
+}
+
+Program Program::of(Script script) {
   Program program;
-  program.script_ = Script::parse(code);
+  program.script_ = std::move(script);
   const std::vector<Expr>& nodes = program.script_.nodes();
   program.registers_.resize(nodes.size());
   // The literals true and false evaluate to the doubles 1.0 and 0.0 (BT.CPP's parsePrefix);

@@ -26,6 +26,8 @@ class Program {
  public:
   // Throws ScriptError with the column of the problem.
   static Program parse(std::string_view code);
+  // The engine's program of a script already parsed.
+  static Program of(Script script);
 
   const std::string& code() const { return script_.code(); }
   bool empty() const { return script_.empty(); }
