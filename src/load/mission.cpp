@@ -1,4 +1,5 @@
 #include "load/mission.hpp"
+#include "base/suggest.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -432,8 +433,8 @@ void report_package_strays(Mission& m, const fs::path& package) {
                              {shown, 0, 0});
     if (const auto reason = why.find(name); reason != why.end())
       f.notes.push_back(reason->second);
-    else if (const auto close = closest_names(name, read); !close.empty())
-      f.notes.push_back("did you mean " + close.front() + "?");
+    else if (std::string hint = did_you_mean(name, read); !hint.empty())
+      f.notes.push_back(std::move(hint));
     m.findings.push_back(std::move(f));
   }
   report_stray_alternatives(m, package / "alternatives");

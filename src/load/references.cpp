@@ -245,6 +245,7 @@ void unknown_conditions(Mission& m) {
   if (!m.nodes) return;
   std::set<std::string> conditions;
   for (const auto& model : *m.nodes) conditions.insert(model.id);
+  const NameIndex suggestions({conditions.begin(), conditions.end()});
   for (const auto& s : m.selections) {
     if (!s.guard) continue;
     for (const Expr* atom : boolean_atoms(*s.guard)) {
@@ -255,8 +256,7 @@ void unknown_conditions(Mission& m) {
                                "condition '" + atom->text + "' in requirement " + s.id +
                                    " is not a node of nodes.xml; the robot cannot check it",
                                location_of(*atom, s.location));
-      std::vector<std::string> names(conditions.begin(), conditions.end());
-      if (const std::string hint = did_you_mean(atom->text, names); !hint.empty())
+      if (const std::string hint = suggestions.did_you_mean(atom->text); !hint.empty())
         f.notes.push_back(hint);
       f.adaptable = s.adaptable;
       f.requirements = {s.id};

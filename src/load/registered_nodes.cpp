@@ -21,11 +21,13 @@ std::string port_list(const bt::NodeModel& model) {
 class Registry {
  public:
   explicit Registry(Mission& m) : m_(m) {
+    std::vector<std::string> names;
     for (const auto& model : *m.nodes) {
       if (bt::family_named(model.family) == bt::Family::subtree) continue;
       models_.emplace(model.id, &model);
-      names_.push_back(model.id);
+      names.push_back(model.id);
     }
+    names_ = NameIndex(names);
   }
 
   void check_tree(const bt::TreeDef& tree) {
@@ -54,7 +56,7 @@ class Registry {
                                    "' is not registered in nodes.xml: BehaviorTree.CPP refuses "
                                    "to load a tree with a node the robot does not have",
                                at);
-      if (const std::string hint = did_you_mean(kind, names_); !hint.empty())
+      if (const std::string hint = names_.did_you_mean(kind); !hint.empty())
         f.notes.push_back(hint);
       m_.findings.push_back(std::move(f));
       return;
@@ -92,7 +94,7 @@ class Registry {
 
   Mission& m_;
   std::map<std::string, const bt::NodeModel*> models_;
-  std::vector<std::string> names_;
+  NameIndex names_;  // the registered IDs, for "did you mean"
   std::set<std::tuple<std::string, int, int>> checked_;
 };
 

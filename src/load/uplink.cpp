@@ -150,12 +150,7 @@ std::vector<fretish::Requirement>::iterator find_id(std::vector<fretish::Require
 void unknown_id(Mission& m, const std::string& message, const std::string& id,
                 const std::vector<std::string>& known, const SourceLocation& location) {
   Finding f = make_finding("uplink-invalid", message, location);
-  const auto close = closest_names(id, known);
-  if (!close.empty()) {
-    std::string names;
-    for (const auto& n : close) names += (names.empty() ? "'" : ", '") + n + "'";
-    f.notes.push_back("did you mean " + names + "?");
-  }
+  if (std::string hint = did_you_mean(id, known); !hint.empty()) f.notes.push_back(std::move(hint));
   m.findings.push_back(std::move(f));
 }
 
@@ -218,22 +213,6 @@ std::vector<const Placement*> without_cycles(const std::vector<const Placement*>
 }
 
 }  // namespace
-
-std::vector<std::string> closest_names(const std::string& name,
-                                       const std::vector<std::string>& candidates) {
-  const std::size_t limit = std::max<std::size_t>(2, name.size() / 3);
-  std::vector<std::pair<std::size_t, std::string>> scored;
-  for (const auto& c : candidates) {
-    if (c == name) continue;
-    const std::size_t d = static_cast<std::size_t>(uabt::edit_distance(name, c));
-    if (d <= limit) scored.emplace_back(d, c);
-  }
-  std::sort(scored.begin(), scored.end());
-  scored.erase(std::unique(scored.begin(), scored.end()), scored.end());
-  std::vector<std::string> out;
-  for (std::size_t i = 0; i < scored.size() && i < 3; ++i) out.push_back(scored[i].second);
-  return out;
-}
 
 UplinkPlan read_uplink_plan(const std::filesystem::path& path, const std::string& shown,
                             std::vector<Finding>& findings) {

@@ -44,8 +44,4 @@ void merge_requirements(Mission& m, std::vector<fretish::Requirement> incoming,
 // a placement across adaptable nodes, and reports each record as an `uplink-merge` note.
 void describe_merges(Mission& m);
 
-// Up to three names within a small edit distance of `name`, closest first.
-std::vector<std::string> closest_names(const std::string& name,
-                                       const std::vector<std::string>& candidates);
-
 }  // namespace uabt::load

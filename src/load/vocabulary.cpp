@@ -122,6 +122,7 @@ void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
   const std::string unknown = unknown_declaration(m);
   const std::vector<std::string> declared = declared_names(m);
   const std::set<std::string> known(declared.begin(), declared.end());
+  const NameIndex suggestions(declared);
   const std::string files = vocabulary_files(m);
   std::set<std::string> broken_assumptions;
   for (const auto& use : uses) {
@@ -147,7 +148,7 @@ void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
                        at(*id, use.owner));
       f.adaptable = use.adaptable;
       if (!use.requirement.empty()) f.requirements = {use.requirement};
-      if (const std::string hint = did_you_mean(id->text, declared); !hint.empty())
+      if (const std::string hint = suggestions.did_you_mean(id->text); !hint.empty())
         f.notes.push_back(hint);
       f.notes.push_back("declare it in " + files +
                         ": with a declared vocabulary a new name is a typo until it is declared");
@@ -221,25 +222,13 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
   for (const auto& v : m.domain.variables)
     if (v.declared) candidates.push_back(v.name);
   // Names of one numbered series (Zone1, Zone2: equal once digits are dropped) are never each
-  // other's typos, so only names of different series are compared. The comparisons are bounded
-  // so that a generated mission with thousands of unrelated names stays fast.
-  std::map<std::string, std::vector<std::string>> series;
-  for (const auto& c : candidates) series[without_digits(c)].push_back(c);
-  constexpr std::size_t kMaxComparisons = 4'000'000;
-  std::size_t comparisons = 0;
+  // other's typos.
+  const NameIndex index(candidates);
   std::set<std::pair<std::string, std::string>> reported;
   for (const auto& name : names) {
     const std::string own = without_digits(name);
-    std::vector<std::string> others;
-    for (const auto& [skeleton, members] : series) {
-      if (skeleton == own) continue;
-      const auto size_gap = [&](const std::string& c) {
-        return c.size() > name.size() ? c.size() - name.size() : name.size() - c.size();
-      };
-      for (const auto& c : members)
-        if (size_gap(c) <= 2 && comparisons++ < kMaxComparisons) others.push_back(c);
-    }
-    for (const auto& other : closest_names(name, others)) {
+    for (const auto& other : index.closest(name)) {
+      if (without_digits(other) == own) continue;
       const auto pair = std::minmax(name, other);
       if (!reported.insert(pair).second) continue;
       // Reported at the likelier typo: the rarer name, else the one used later.

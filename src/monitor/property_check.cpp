@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "base/suggest.hpp"
 #include "monitor/expression.hpp"
 #include "monitor/monitor.hpp"
 
@@ -12,21 +13,6 @@ namespace {
 using fretish::Expr;
 using fretish::ExprKind;
 using Type = Observables::Type;
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1u : 0u)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 const char* type_name(Type t) {
   switch (t) {
@@ -39,8 +25,9 @@ const char* type_name(Type t) {
 
 class PartChecker {
  public:
-  PartChecker(const fretish::Requirement& r, const Observables& o, std::vector<Finding>& findings)
-      : r_(r), o_(o), findings_(findings) {}
+  PartChecker(const fretish::Requirement& r, const Observables& o, std::optional<NameIndex>& names,
+              std::vector<Finding>& findings)
+      : r_(r), o_(o), names_(names), findings_(findings) {}
 
   void part(const Expr& e, const char* what) {
     ok_ = true;
@@ -80,19 +67,14 @@ class PartChecker {
                  "'" + e.text + "' is not an observable of the run: " + gone->second, e);
           return std::nullopt;
         }
-        std::vector<std::pair<std::size_t, std::string>> close;
-        for (const auto& [name, type] : o_.variables) {
-          const std::size_t d = edit_distance(name, e.text);
-          if (d <= 2) close.emplace_back(d, name);
-        }
-        std::sort(close.begin(), close.end());
         std::vector<std::string> notes;
-        if (!close.empty()) {
-          std::string names;
-          for (std::size_t i = 0; i < close.size() && i < 3; ++i)
-            names += (i ? ", " : "") + std::string("'") + close[i].second + "'";
-          notes.push_back("did you mean " + names + "?");
+        if (!names_) {
+          std::vector<std::string> observables;
+          for (const auto& [name, type] : o_.variables) observables.push_back(name);
+          names_.emplace(observables);
         }
+        if (std::string hint = names_->did_you_mean(e.text); !hint.empty())
+          notes.push_back(std::move(hint));
         report("property-reference",
                "'" + e.text +
                    "' is not an observable of the run: not a domain variable, condition, "
@@ -171,6 +153,7 @@ class PartChecker {
 
   const fretish::Requirement& r_;
   const Observables& o_;
+  std::optional<NameIndex>& names_;  // o_'s variables, indexed at the first unknown name
   std::vector<Finding>& findings_;
   bool ok_ = true;
 };
@@ -180,6 +163,7 @@ class PartChecker {
 std::vector<Finding> check_properties(const std::vector<fretish::Requirement>& properties,
                                       const Observables& observables) {
   std::vector<Finding> findings;
+  std::optional<NameIndex> names;  // built when a name is not an observable
   for (const fretish::Requirement& r : properties) {
     const Classified c = classify(r);
     // A duration that could not be converted is the lowering's error, reported there.
@@ -188,7 +172,7 @@ std::vector<Finding> check_properties(const std::vector<fretish::Requirement>& p
       f.requirements = {r.id};
       findings.push_back(std::move(f));
     }
-    PartChecker check(r, observables, findings);
+    PartChecker check(r, observables, names, findings);
     if (r.scope) {
       if (r.scope->condition) {
         check.part(*r.scope->condition, "scope");

@@ -19,22 +19,8 @@ std::string base_name(const std::string& key) {
 }  // namespace
 
 std::string did_you_mean_hint(const std::string& name, const std::set<std::string>& known) {
-  const std::size_t limit = std::min<std::size_t>(2, std::max<std::size_t>(1, name.size() / 3));
-  std::size_t best = limit + 1;
-  std::vector<std::string> closest;
-  for (const std::string& k : known) {
-    const std::size_t d = static_cast<std::size_t>(uabt::edit_distance(name, k));
-    if (d < best) {
-      best = d;
-      closest = {k};
-    } else if (d == best) {
-      closest.push_back(k);
-    }
-  }
-  if (closest.empty()) return "";
-  std::string out = " (did you mean '" + closest[0] + "'";
-  for (std::size_t i = 1; i < closest.size() && i < 3; ++i) out += " or '" + closest[i] + "'";
-  return out + "?)";
+  const std::string hint = uabt::did_you_mean(name, {known.begin(), known.end()});
+  return hint.empty() ? "" : " (" + hint + ")";
 }
 
 namespace {

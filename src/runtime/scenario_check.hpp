@@ -50,8 +50,8 @@ void type_number(ScriptValue& value, std::optional<fretish::VarType> declared);
 // nothing declares keeps the type JSON gives it. check_scenario judges the typed scenario.
 void type_numbers(Scenario& scenario, const ScenarioVocabulary& vocabulary);
 
-// " (did you mean 'x'?)" for the closest of `known` within two edits (a third of the name at
-// most), "" when none is close.
+// " (did you mean 'x'?)" for the closest of `known` (uabt::NameIndex's rule), "" when none is
+// close.
 std::string did_you_mean_hint(const std::string& name, const std::set<std::string>& known);
 
 // What is wrong with `value` for `var` ("is out of its range [0, 15]"), "" when it fits.
