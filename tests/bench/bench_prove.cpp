@@ -42,6 +42,8 @@ const Gated& gated(const std::string& name, int size, int variant) {
              : name == "preflight" ? generate_preflight(dir, size)
              : name == "recheck"   ? generate_recheck(dir, size, variant != 0)
              : name == "lunar"     ? generate_lunar(dir)
+             : name == "disjuncts" ? generate_disjunct_site(dir, size)
+             : name == "enum"      ? generate_enum_site(dir, size)
                                    : generate_checklist(dir, size);
   std::string error;
   auto mission = load::load_mission(dir, {}, error);
@@ -142,8 +144,49 @@ void BM_ProveLunar(benchmark::State& state) {
   run_prove(state, gated("lunar", 1, 0), kEngines[state.range(0)]);
 }
 
+const char* const kWideSelections[] = {"disjuncts", "enum"};
+
+// range(0): 0 a guard of N disjuncts, 1 an enum of N values; range(1): N.
+void BM_ProveWideSelection(benchmark::State& state) {
+  run_prove(state, gated(kWideSelections[state.range(0)], static_cast<int>(state.range(1)), 0),
+            kEngines[0]);
+}
+
+// The whole `uabt gate` in process, as the command runs it but for writing the reports: load,
+// the checks, the proofs and the test campaign. The gate passes.
+void BM_GateWideSelection(benchmark::State& state) {
+  const Gated& g = gated(kWideSelections[state.range(0)], static_cast<int>(state.range(1)), 0);
+  if (!g.error.empty()) {
+    state.SkipWithError(g.error.c_str());
+    return;
+  }
+  std::string wrong;
+  for (auto _ : state) {
+    std::string error;
+    auto mission = load::load_mission(g.family.dir, {}, error);
+    if (!mission) {
+      wrong = "load: " + error;
+      break;
+    }
+    gate::Options options;
+    gate::Outcome outcome = gate::run_gate(std::move(*mission), options, "bench");
+    gate::add_test_campaign(outcome, options, "tests");
+    if (!outcome.passed() || !outcome.campaign) wrong = "the gate fails, or builds no campaign";
+    benchmark::DoNotOptimize(outcome);
+  }
+  if (!wrong.empty()) state.SkipWithError(wrong.c_str());
+}
+
+// The scale checklist's rows: 6,000 and 60,000 disjuncts, 400 and 4,096 enum values.
+void wide_selection_sizes(benchmark::internal::Benchmark* b) {
+  b->Args({0, 6000})->Args({0, 60000})->Args({1, 400})->Args({1, 4096});
+  b->Iterations(1)->Unit(benchmark::kMillisecond);
+}
+
 }  // namespace
 
+BENCHMARK(BM_ProveWideSelection)->Apply(wide_selection_sizes);
+BENCHMARK(BM_GateWideSelection)->Apply(wide_selection_sizes);
 BENCHMARK(BM_ProveBinaryTree)
     ->ArgsProduct({{23, 71, 263, 1031, 2055}, {2, 3}, {0, 1}})
     ->Unit(benchmark::kMillisecond);

@@ -370,4 +370,47 @@ FamilyMission generate_lunar_reserve(const std::filesystem::path& dir) {
   return lunar(dir, true);
 }
 
+namespace {
+
+// `where` says what `guard` says, shortly.
+FamilyMission site(const std::filesystem::path& dir, const std::string& domain,
+                   const std::string& guard, const std::string& where) {
+  write_file(dir / "mission.xml",
+             mission_xml("      <Adaptable ID=\"site\" selection=\"reactive\"/>\n"));
+  write_file(dir / "alternatives/site/dig.xml", alternative("dig", "    <Dig/>\n"));
+  write_file(dir / "alternatives/site/hold.xml", alternative("hold", "    <Hold/>\n"));
+  write_file(dir / "nodes.xml", nodes_xml("    <Action ID=\"Dig\"/>\n    <Action ID=\"Hold\"/>\n"));
+  write_file(dir / "domain.fret", domain);
+  write_file(dir / "world.json",
+             "{\n  \"actions\": {\n"
+             "    \"Dig\": {\"ticks\": [1, 2], \"results\": [\"success\"]},\n"
+             "    \"Hold\": {\"ticks\": 1, \"results\": [\"success\"]}\n  }\n}\n");
+  write_file(dir / "requirements.fret",
+             "Dig: In site if " + guard +
+                 " Mission shall satisfy selected_alt = dig\n"
+                 "Hold: In site Mission shall satisfy selected_alt = hold\n"
+                 "DigOnlyWhereSelected: the rover shall always satisfy Dig.running -> " +
+                 where + "\n");
+  FamilyMission m;
+  m.dir = dir;
+  m.verdicts = {{"DigOnlyWhereSelected", "proved"}};
+  return m;
+}
+
+}  // namespace
+
+FamilyMission generate_disjunct_site(const std::filesystem::path& dir, int disjuncts) {
+  if (disjuncts < 1) throw std::invalid_argument("a guard has at least one disjunct");
+  std::string guard = "depth = 0";
+  for (int k = 1; k < disjuncts; ++k) guard += " | depth = " + std::to_string(k);
+  return site(dir, "integer depth in [0, 100000]\n", guard, "depth < " + std::to_string(disjuncts));
+}
+
+FamilyMission generate_enum_site(const std::filesystem::path& dir, int values) {
+  if (values < 3) throw std::invalid_argument("the terrain has sand, rocks and unknown at least");
+  std::string domain = "enum terrain in {sand, rocks, unknown";
+  for (int k = 0; k + 3 < values; ++k) domain += ", v" + std::to_string(k);
+  return site(dir, domain + "}\n", "terrain = sand", "terrain = sand");
+}
+
 }  // namespace uabt::bench

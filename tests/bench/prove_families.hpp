@@ -123,4 +123,20 @@ FamilyMission generate_lunar(const std::filesystem::path& dir);
 // at tick 2 for the same reason.
 FamilyMission generate_lunar_reserve(const std::filesystem::path& dir);
 
+// A selection over a wide vocabulary, for the whole gate: `KeepRunningUntilFailure >
+// Adaptable site (selection="reactive")`, where `dig` (a Dig action, 1 or 2 ticks, success) is
+// selected by one guard and `hold` (Hold, 1 tick, success) is the default. Guarantees:
+// - `DigOnlyWhereSelected`: always Dig.running -> <what the guard says, shortly>. Proved: the
+//   reactive selection
+//   checks the guard in every tick Dig runs in, and the environment's values stay for the
+//   tick.
+// The gate passes.
+//
+// The guard `depth = 0 | depth = 1 | … | depth = N-1` over `integer depth in [0, 100000]`
+// (the scale checklist's 60,000-disjunct row); the guarantee reads `depth < N`.
+FamilyMission generate_disjunct_site(const std::filesystem::path& dir, int disjuncts);
+// The guard `terrain = sand` over `enum terrain in {sand, rocks, unknown, v0, …}` of N values
+// (the scale checklist's 4,096-value row: values no atom names are one cell).
+FamilyMission generate_enum_site(const std::filesystem::path& dir, int values);
+
 }  // namespace uabt::bench

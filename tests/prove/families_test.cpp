@@ -274,6 +274,31 @@ TEST(ProveFamilies, LunarSortieWithAReserve) {
             "explicit");
 }
 
+// The scale checklist's wide selections: a guard of N disjuncts, and an enum of N values of
+// which the guard names one. Verdicts as promised, and the same states and transitions whatever
+// N is: the explicit engine explores the cells the guard draws, not the values.
+TEST(ProveFamilies, AWideSelectionIsProvedOverTheCellsItsGuardDraws) {
+  TempMission scratch({});
+  const auto answers = [&](const bench::FamilyMission& family) {
+    const gate::Outcome outcome = gated(family.dir);
+    EXPECT_TRUE(outcome.passed()) << format_text(outcome.report.findings);
+    std::vector<Finding> findings;
+    auto doc = bt::parse_document(outcome.compiled_xml, "compiled.xml", findings);
+    if (!doc) {
+      ADD_FAILURE() << format_text(findings);
+      return std::pair<std::uint64_t, std::uint64_t>{};
+    }
+    const prove::Result r =
+        prove::prove(*outcome.mission, *doc, prove::mission_world(*outcome.mission), {});
+    check_answers(r, family);
+    return std::pair{r.states, r.transitions};
+  };
+  const auto small = answers(bench::generate_disjunct_site(scratch.dir() / "d20", 20));
+  EXPECT_EQ(answers(bench::generate_disjunct_site(scratch.dir() / "d100", 100)), small);
+  const auto few = answers(bench::generate_enum_site(scratch.dir() / "e4", 4));
+  EXPECT_EQ(answers(bench::generate_enum_site(scratch.dir() / "e100", 100)), few);
+}
+
 TEST(ProveFamilies, BadSizesAreRefused) {
   TempMission scratch({});
   EXPECT_THROW(bench::generate_binary_tree(scratch.dir() / "b", 24), std::invalid_argument);
