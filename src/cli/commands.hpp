@@ -19,5 +19,6 @@ void register_monitor(CLI::App& app, int& exit_code);
 void register_schema(CLI::App& app, int& exit_code);
 void register_tests(CLI::App& app, int& exit_code);
 void register_coverage(CLI::App& app, int& exit_code);
+void register_realizable(CLI::App& app, int& exit_code);
 
 }  // namespace uabt::cli

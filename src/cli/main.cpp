@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   uabt::cli::register_diff(app, exit_code);
   uabt::cli::register_run(app, exit_code);
   uabt::cli::register_prove(app, exit_code);
+  uabt::cli::register_realizable(app, exit_code);
   uabt::cli::register_monitor(app, exit_code);
   uabt::cli::register_schema(app, exit_code);
   uabt::cli::register_tests(app, exit_code);

@@ -281,56 +281,11 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
       for (const auto& id : fretish::identifiers_of(*e)) read.insert(id);
   };
   for (const fretish::Requirement& property : mission.properties) {
-    const fretish::Requirement* r = &property;
-    Property p;
-    p.requirement = r;
-    p.assumption = monitor::is_assumption(property);
-    const monitor::Classified c = monitor::classify(*r);
-    fretish::ExprPtr mode;
-    if (r->scope)
-      mode = r->scope->condition ? r->scope->condition : fretish::make_identifier(r->scope->mode);
-    const fretish::ExprPtr parts[] = {mode, r->folded_condition(), r->response,
-                                      r->timing.stop_condition, r->judged};
-    if (!c.shape) p.unsupported = c.reason;
-    p.exprs.assign(std::begin(parts), std::end(parts));
-    // Each part compiles as the monitor compiles it (its errors are the monitor's).
-    for (std::size_t k = 0; k < std::size(parts) && p.unsupported.empty(); ++k) {
-      if (!parts[k]) continue;
-      std::string error;
-      if (!monitor::CompiledExpression::compile(
-              *parts[k], resolve, error, k == 0 ? monitor::Field::mode : monitor::Field::other))
-        p.unsupported = error;
-    }
-    if (p.unsupported.empty()) {
-      PropertyFormula pf = build_property_formula(
-          *c.shape, {parts[0], parts[1], parts[2], parts[3], parts[4]}, resolve);
-      p.unsupported = pf.unsupported;
-      if (p.unsupported.empty() && pf.atoms.size() > Property::kMaxAtoms)
-        p.unsupported = "its parts read " + std::to_string(pf.atoms.size()) +
-                        " separate conditions of a tick; prove's monitors read at most " +
-                        std::to_string(Property::kMaxAtoms);
-      for (const auto& atom : pf.atoms) {
-        if (!p.unsupported.empty()) break;
-        std::string error;
-        auto compiled = monitor::CompiledExpression::compile(*atom, resolve, error);
-        if (!compiled) {
-          p.unsupported = error;
-          break;
-        }
-        p.atoms.push_back(std::make_shared<monitor::CompiledExpression>(std::move(*compiled)));
-      }
-      if (p.unsupported.empty()) {
-        p.shape = *c.shape;
-        p.atom_exprs = std::move(pf.atoms);
-        p.mode_node = pf.mode;
-        p.condition_node = pf.condition;
-        p.layout = std::make_unique<PastTimeLayout>(pf.formula, pf.root);
-        p.offset = monitor_words;
-        monitor_words += p.layout->words();
-        for (const auto& part : parts) reads(part);
-      } else {
-        p.atoms.clear();
-      }
+    Property p = make_property(property, resolve);
+    if (p.layout) {
+      p.offset = monitor_words;
+      monitor_words += p.layout->words();
+      for (const auto& part : p.exprs) reads(part);
     }
     properties.push_back(std::move(p));
   }
@@ -400,6 +355,58 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
 }
 
 Model::~Model() = default;
+
+Property make_property(const fretish::Requirement& property, const monitor::Resolver& resolve) {
+  const fretish::Requirement* r = &property;
+  Property p;
+  p.requirement = r;
+  p.assumption = monitor::is_assumption(property);
+  const monitor::Classified c = monitor::classify(*r);
+  fretish::ExprPtr mode;
+  if (r->scope)
+    mode = r->scope->condition ? r->scope->condition : fretish::make_identifier(r->scope->mode);
+  const fretish::ExprPtr parts[] = {mode, r->folded_condition(), r->response,
+                                    r->timing.stop_condition, r->judged};
+  if (!c.shape) p.unsupported = c.reason;
+  p.exprs.assign(std::begin(parts), std::end(parts));
+  // Each part compiles as the monitor compiles it (its errors are the monitor's).
+  for (std::size_t k = 0; k < std::size(parts) && p.unsupported.empty(); ++k) {
+    if (!parts[k]) continue;
+    std::string error;
+    if (!monitor::CompiledExpression::compile(
+            *parts[k], resolve, error, k == 0 ? monitor::Field::mode : monitor::Field::other))
+      p.unsupported = error;
+  }
+  if (p.unsupported.empty()) {
+    PropertyFormula pf = build_property_formula(
+        *c.shape, {parts[0], parts[1], parts[2], parts[3], parts[4]}, resolve);
+    p.unsupported = pf.unsupported;
+    if (p.unsupported.empty() && pf.atoms.size() > Property::kMaxAtoms)
+      p.unsupported = "its parts read " + std::to_string(pf.atoms.size()) +
+                      " separate conditions of a tick; prove's monitors read at most " +
+                      std::to_string(Property::kMaxAtoms);
+    for (const auto& atom : pf.atoms) {
+      if (!p.unsupported.empty()) break;
+      std::string error;
+      auto compiled = monitor::CompiledExpression::compile(*atom, resolve, error);
+      if (!compiled) {
+        p.unsupported = error;
+        break;
+      }
+      p.atoms.push_back(std::make_shared<monitor::CompiledExpression>(std::move(*compiled)));
+    }
+    if (p.unsupported.empty()) {
+      p.shape = *c.shape;
+      p.atom_exprs = std::move(pf.atoms);
+      p.mode_node = pf.mode;
+      p.condition_node = pf.condition;
+      p.layout = std::make_unique<PastTimeLayout>(pf.formula, pf.root);
+    } else {
+      p.atoms.clear();
+    }
+  }
+  return p;
+}
 
 void Property::read_atoms(const std::vector<monitor::Val>& frame, bool* bits, std::uint64_t tick,
                           monitor::Reader* reader) const {

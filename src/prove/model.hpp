@@ -85,6 +85,10 @@ struct Property {
   bool has_trigger() const { return exprs[0] || exprs[1]; }
 };
 
+// `property` as a monitor over atoms of one tick, its names read through `resolve`; without a
+// layout when prove cannot read it (`unsupported` says why). Its offset is the caller's.
+Property make_property(const fretish::Requirement& property, const monitor::Resolver& resolve);
+
 // The product the explorer walks: the runtime's engine over the compiled tree, the choice
 // world, the observables and every property's monitor.
 class Environment;

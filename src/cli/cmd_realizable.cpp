@@ -1,0 +1,206 @@
+#include <charconv>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "base/diagnostics.hpp"
+#include "cli/commands.hpp"
+#include "cli/common.hpp"
+#include "realize/realize.hpp"
+
+namespace uabt::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Where a requirement or a domain assumption is written.
+SourceLocation location_of(const load::Mission& m, const std::string& id) {
+  for (const auto& r : m.properties)
+    if (r.id == id) return r.location;
+  for (const auto& a : m.domain.assumptions)
+    if (a.name == id) return a.location;
+  return {m.requirements_file, 0, 0};
+}
+
+std::string listed(const std::vector<std::string>& ids) {
+  std::string out;
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == ids.size() ? " and " : ", ") + ids[k];
+  return out;
+}
+
+std::string inputs_text(const std::vector<realize::Choice>& choices) {
+  std::string out;
+  for (const auto& c : choices) {
+    out += (out.empty() ? "" : "; ") + std::string("tick ") + std::to_string(c.tick) + ":";
+    for (std::size_t k = 0; k < c.inputs.size(); ++k)
+      out += (k == 0 ? " " : ", ") + c.inputs[k].first + " = " + c.inputs[k].second;
+  }
+  return out;
+}
+
+// The findings of the check: one error per minimal conflict (at its first requirement), or
+// per component not decided.
+std::vector<Finding> findings_of(const load::Mission& m, const realize::Result& r) {
+  std::vector<Finding> out;
+  for (const auto& c : r.components) {
+    if (!c.realizable) {
+      out.push_back(make_finding(
+          "realizability-undecided",
+          "whether a tree can meet " + listed(c.requirements) + " is not decided: " + c.reason,
+          location_of(m, c.requirements.front())));
+      continue;
+    }
+    if (*c.realizable) continue;
+    for (const auto& conflict : c.conflicts) {
+      Finding f = make_finding(
+          "requirements-unrealizable",
+          (conflict.size() == 1 ? "no behavior tree meets " + conflict.front()
+                                : "no behavior tree meets " + listed(conflict) + " together") +
+              ": the environment can always bring about a state in which one of them fails",
+          location_of(m, conflict.front()));
+      f.requirements = conflict;
+      if (!c.defeating_inputs.empty())
+        f.notes.push_back("inputs that defeat every tree of this component: " +
+                          inputs_text(c.defeating_inputs));
+      if (!c.conflicts_complete)
+        f.notes.push_back(
+            "other minimal conflicts may exist: the component has too many guarantees to try "
+            "every set");
+      out.push_back(std::move(f));
+    }
+  }
+  return out;
+}
+
+// A FRETISH value as JSON: booleans and numbers as such, names as strings.
+Json value_json(const std::string& text) {
+  if (text == "true" || text == "false") return text == "true";
+  double number = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (ec == std::errc() && end == text.data() + text.size()) {
+    if (text.find_first_of(".eE") == std::string::npos) return std::stoll(text);
+    return number;
+  }
+  return text;
+}
+
+Json defeat_json(const std::vector<realize::Choice>& choices) {
+  Json ticks = Json::array();
+  for (const auto& c : choices) {
+    Json inputs = Json::object();
+    for (const auto& [name, value] : c.inputs) inputs[name] = value_json(value);
+    ticks.push_back({{"tick", c.tick}, {"inputs", inputs}});
+  }
+  return ticks;
+}
+
+Json decided_json(const std::optional<bool>& b) {
+  return b ? Json(*b) : Json(nullptr);
+}
+
+std::vector<std::string> sorted(std::vector<std::string> ids) {
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+std::string json_of(const realize::Result& r) {
+  Json j;
+  j["realizable"] = decided_json(r.realizable);
+  Json components = Json::array(), conflicts = Json::array();
+  std::vector<std::vector<std::string>> all;
+  Json counterexample = nullptr;
+  for (const auto& c : r.components) {
+    Json jc;
+    jc["requirements"] = c.requirements;
+    jc["realizable"] = decided_json(c.realizable);
+    if (!c.realizable) jc["reason"] = c.reason;
+    jc["states"] = c.states;
+    if (c.realizable == false) {
+      Json mine = Json::array();
+      for (const auto& conflict : c.conflicts) {
+        mine.push_back(sorted(conflict));
+        all.push_back(sorted(conflict));
+      }
+      jc["conflicts"] = mine;
+      jc["conflicts_complete"] = c.conflicts_complete;
+      if (!c.defeating_inputs.empty()) {
+        jc["defeating_inputs"] = defeat_json(c.defeating_inputs);
+        if (counterexample.is_null())
+          counterexample = {{"requirements", sorted(c.requirements)},
+                            {"ticks", defeat_json(c.defeating_inputs)}};
+      }
+    }
+    components.push_back(jc);
+  }
+  std::sort(all.begin(), all.end());
+  for (const auto& conflict : all) conflicts.push_back(conflict);
+  j["components"] = components;
+  j["conflicts"] = conflicts;
+  j["counterexample"] = counterexample;
+  Json inputs = Json::array(), outputs = Json::array();
+  for (const auto& s : r.signals)
+    (s.role == realize::Role::input ? inputs : outputs)
+        .push_back({{"name", s.name}, {"values", s.values}, {"why", s.why}});
+  j["inputs"] = inputs;
+  j["outputs"] = outputs;
+  j["notes"] = r.notes;
+  return j.dump(2) + "\n";
+}
+
+std::string text_of(const load::Mission& m, const realize::Result& r) {
+  TextOptions options;
+  options.path_prefix = path_prefix_for(m.dir);
+  std::string out = format_text(findings_of(m, r), options);
+  std::size_t unrealizable = 0, undecided = 0, conflicts = 0;
+  for (const auto& c : r.components) {
+    unrealizable += c.realizable == false ? 1 : 0;
+    undecided += c.realizable ? 0 : 1;
+    conflicts += c.conflicts.size();
+  }
+  for (const auto& note : r.notes) out += "note: " + note + "\n";
+  out += "realizable: " +
+         std::string(r.realizable == true    ? "yes"
+                     : r.realizable == false ? "no"
+                                             : "not decided") +
+         " (" + std::to_string(r.components.size()) + " component" +
+         (r.components.size() == 1 ? "" : "s");
+  if (unrealizable)
+    out += ", " + std::to_string(unrealizable) + " unrealizable with " + std::to_string(conflicts) +
+           " minimal conflict" + (conflicts == 1 ? "" : "s");
+  if (undecided) out += ", " + std::to_string(undecided) + " not decided";
+  return out + ")\n";
+}
+
+}  // namespace
+
+// Realizability (ARCHITECTURE §15): whether any tree can meet the mission's guarantees in every
+// world its assumptions allow. Exit 0 when realizable; 1 when not, or not decided (fail
+// closed); 2 when the mission cannot be read.
+void register_realizable(CLI::App& app, int& exit_code) {
+  struct Args {
+    std::string mission, format = "text", output;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "realizable",
+      "Whether any behavior tree can meet the mission's guarantees in every world its "
+      "assumptions allow; the minimal conflicts and the inputs that defeat every tree when not");
+  cmd->add_option("MISSION", args->mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--format", args->format, "text | json")->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("-o,--output", args->output, "write the output to FILE");
+  cmd->callback([args, &exit_code] {
+    auto mission = load_without_errors(args->mission, {}, exit_code);
+    if (!mission) {
+      if (exit_code != kExitUsage) exit_code = kExitUsage;
+      return;
+    }
+    const realize::Result result = realize::check_realizability(*mission);
+    emit(args->output, args->format == "json" ? json_of(result) : text_of(*mission, result));
+    exit_code = result.realizable == true ? kExitPass : kExitFail;
+  });
+}
+
+}  // namespace uabt::cli

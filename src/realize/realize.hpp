@@ -1,0 +1,71 @@
+#pragma once
+// Realizability (ARCHITECTURE §15): can any behavior tree meet the mission's guarantees, in every
+// world its assumptions allow? Each tick the environment chooses its inputs first, then the tree
+// its outputs; the guarantees and assumptions are FRET's past-time monitors (the ones `uabt
+// prove` steps). The mission's guarantees are realizable when the tree has a way to answer
+// every input so that no guarantee is ever violated while the assumptions hold: a safety game
+// over the monitors' states, solved exactly by a greatest fixpoint over the states reachable,
+// per component of requirements that share outputs (FRET's compositional check).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/location.hpp"
+#include "load/mission.hpp"
+
+namespace uabt::realize {
+
+// Who decides a name the requirements read (README "Realizability").
+enum class Role { input, output };
+
+struct Signal {
+  std::string name;
+  Role role = Role::input;
+  std::vector<std::string> values;  // one per cell, as FRETISH writes them ("true", "20", "rocks")
+  std::string why;                  // why it has that role: "a domain variable no tree writes"
+};
+
+// One input chosen by the environment at one tick of a defeating run.
+struct Choice {
+  std::uint64_t tick = 0;
+  std::vector<std::pair<std::string, std::string>> inputs;  // name, value
+};
+
+struct Component {
+  std::vector<std::string> requirements;  // ids: its guarantees then its assumptions, file order
+  // true, false, or nullopt when it was not decided (`reason` says why).
+  std::optional<bool> realizable;
+  std::string reason;
+  std::uint64_t states = 0;  // monitor states explored
+  // Minimal sets of its guarantees that no tree meets together (with its assumptions), each in
+  // file order, all of them unless `conflicts_complete` is false.
+  std::vector<std::vector<std::string>> conflicts;
+  bool conflicts_complete = true;
+  // Inputs that defeat every tree whatever it answers, tick by tick, when a fixed sequence
+  // does (the environment may also need to watch the tree's outputs: then none).
+  std::vector<Choice> defeating_inputs;
+};
+
+struct Result {
+  // true: realizable; false: unrealizable; nullopt: not decided (fail closed).
+  std::optional<bool> realizable;
+  std::vector<Signal> signals;  // inputs then outputs, each by name
+  std::vector<Component> components;
+  std::vector<std::string> notes;  // what was left out and why
+};
+
+struct Options {
+  // Limits of one game, past which its component is not decided.
+  std::uint64_t max_states = 200'000;
+  std::uint64_t max_moves = 1u << 16;  // input valuations times output valuations per state
+  // How many guarantees a component may have for every minimal conflict to be listed (subsets
+  // are tried by size); beyond, one minimal conflict is given.
+  std::size_t max_conflict_search = 12;
+  std::uint64_t max_defeat_depth = 12;  // ticks of a fixed defeating input sequence searched
+};
+
+// Throws std::runtime_error naming the requirement when one cannot be read as a monitor.
+Result check_realizability(const load::Mission& mission, const Options& options = {});
+
+}  // namespace uabt::realize
