@@ -76,12 +76,15 @@ std::vector<Finding> findings_of(const load::Mission& m, const realize::Result& 
 // A FRETISH value as JSON: booleans and numbers as such, names as strings.
 Json value_json(const std::string& text) {
   if (text == "true" || text == "false") return text == "true";
+  const char* const last = text.data() + text.size();
+  std::int64_t whole = 0;
+  if (const auto [end, ec] = std::from_chars(text.data(), last, whole);
+      ec == std::errc() && end == last)
+    return whole;
   double number = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
-  if (ec == std::errc() && end == text.data() + text.size()) {
-    if (text.find_first_of(".eE") == std::string::npos) return std::stoll(text);
+  if (const auto [end, ec] = std::from_chars(text.data(), last, number);
+      ec == std::errc() && end == last)
     return number;
-  }
   return text;
 }
 

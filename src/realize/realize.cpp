@@ -8,7 +8,6 @@
 #include "base/number_text.hpp"
 #include "bt/node_kinds.hpp"
 #include "bt/script/load_check.hpp"
-#include "monitor/property_set.hpp"
 #include "monitor/templates.hpp"
 #include "prove/cells.hpp"
 #include "prove/model.hpp"
@@ -40,10 +39,11 @@ void visit(const bt::Node& n, const load::Mission& m, Vocabulary& v) {
       labels.push_back(*name);
     const bool robot_leaf =
         n.children.empty() && !bt::is_subtree(n.tag) && bt::find_builtin(kind) == nullptr;
-    bool condition = n.tag == "Condition";
+    const bt::NodeModel* model = nullptr;  // the robot's registration of the node
     if (m.nodes)
-      for (const auto& model : *m.nodes)
-        if (model.id == kind) condition = condition || model.family == "Condition";
+      for (const auto& candidate : *m.nodes)
+        if (candidate.id == kind) model = &candidate;
+    const bool condition = n.tag == "Condition" || (model && model->family == "Condition");
     for (const auto& l : labels) {
       v.labels.insert(l);
       (robot_leaf ? v.robot_leaves : v.other_nodes).insert(l);
@@ -54,10 +54,6 @@ void visit(const bt::Node& n, const load::Mission& m, Vocabulary& v) {
         if (const std::string* code = n.attribute(s.attribute.empty() ? "code" : s.attribute))
           for (const auto& key : prove::assigned_names(*code))
             v.written.insert(key.starts_with('@') ? key.substr(1) : key);
-    const bt::NodeModel* model = nullptr;
-    if (m.nodes)
-      for (const auto& candidate : *m.nodes)
-        if (candidate.id == kind) model = &candidate;
     if (model != nullptr)
       for (const auto& port : model->ports)
         if (port.direction != "input_port")
