@@ -106,22 +106,35 @@ NameIndex::NameIndex(const std::vector<std::string>& names) {
                 sorted_.end());
 }
 
-std::vector<std::string> NameIndex::closest(const std::string& name) const {
-  // A name this long is no typo of a name a person types (and its table would be large).
-  constexpr std::size_t kLongestQuery = 1000;
+namespace {
+
+// A name this long is no typo of a name a person types (and its table would be large).
+constexpr std::size_t kLongestQuery = 1000;
+
+}  // namespace
+
+std::vector<std::pair<int, std::string>> NameIndex::within_two_edits(
+    const std::string& name) const {
   std::vector<std::pair<int, std::size_t>> found;
   if (!sorted_.empty() && name.size() <= kLongestQuery)
     TrieWalk(name).walk(sorted_, 0, sorted_.size(), 0, found);
-  std::erase_if(found, [&](const auto& f) {
-    const std::string& c = sorted_[f.second].name;
-    return c == name || !close_enough(f.first, name.size(), c.size());
-  });
+  std::erase_if(found, [&](const auto& f) { return sorted_[f.second].name == name; });
   std::sort(found.begin(), found.end(), [&](const auto& x, const auto& y) {
-    if (x.first != y.first) return x.first < y.first;
     return sorted_[x.second].order < sorted_[y.second].order;
   });
+  std::vector<std::pair<int, std::string>> out;
+  for (const auto& [d, k] : found) out.emplace_back(d, sorted_[k].name);
+  return out;
+}
+
+std::vector<std::string> NameIndex::closest(const std::string& name) const {
+  std::vector<std::pair<int, std::string>> found = within_two_edits(name);
+  std::erase_if(
+      found, [&](const auto& f) { return !close_enough(f.first, name.size(), f.second.size()); });
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<std::string> out;
-  for (const auto& [d, k] : found) out.push_back(sorted_[k].name);
+  for (auto& [d, n] : found) out.push_back(std::move(n));
   return out;
 }
 

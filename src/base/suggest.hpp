@@ -24,6 +24,9 @@ class NameIndex {
   // itself and the empty name are never suggested; a name given twice is suggested once; a
   // name over 1,000 characters gets none.
   std::vector<std::string> closest(const std::string& name) const;
+  // Every name within two edits of `name` (whatever their lengths), but `name` itself, each with
+  // its distance, in the order given.
+  std::vector<std::pair<int, std::string>> within_two_edits(const std::string& name) const;
   // "did you mean 'OnRocks'?" / "did you mean 'a' or 'b'?" for up to three of closest(name);
   // "" when there is none.
   std::string did_you_mean(const std::string& name) const;

@@ -1,3 +1,4 @@
+#include <cctype>
 #include <charconv>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -76,6 +77,9 @@ std::vector<Finding> findings_of(const load::Mission& m, const realize::Result& 
 // A FRETISH value as JSON: booleans and numbers as such, names as strings.
 Json value_json(const std::string& text) {
   if (text == "true" || text == "false") return text == "true";
+  // Only what starts like a number is one (an enum value may be called `inf` or `nan`).
+  if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-'))
+    return text;
   const char* const last = text.data() + text.size();
   std::int64_t whole = 0;
   if (const auto [end, ec] = std::from_chars(text.data(), last, whole);

@@ -222,13 +222,24 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
   for (const auto& v : m.domain.variables)
     if (v.declared) candidates.push_back(v.name);
   // Names of one numbered series (Zone1, Zone2: equal once digits are dropped) are never each
-  // other's typos.
-  const NameIndex index(candidates);
+  // other's typos. Two names within two edits have series within two edits (dropping the
+  // digits of both drops edits, never adds one), so only the members of the series near a
+  // name's own are compared, from an index of the series; the comparisons are bounded so that
+  // a generated mission with thousands of unrelated names stays fast.
+  std::map<std::string, std::vector<std::string>> series;
+  for (const auto& c : candidates) series[without_digits(c)].push_back(c);
+  std::vector<std::string> skeletons;
+  for (const auto& [skeleton, members] : series) skeletons.push_back(skeleton);
+  const NameIndex series_index(skeletons);
+  constexpr std::size_t kMaxComparisons = 4'000'000;
+  std::size_t comparisons = 0;
   std::set<std::pair<std::string, std::string>> reported;
   for (const auto& name : names) {
-    const std::string own = without_digits(name);
-    for (const auto& other : index.closest(name)) {
-      if (without_digits(other) == own) continue;
+    std::vector<std::string> others;
+    for (const auto& [d, skeleton] : series_index.within_two_edits(without_digits(name)))
+      for (const auto& c : series.at(skeleton))
+        if (comparisons++ < kMaxComparisons) others.push_back(c);
+    for (const auto& other : closest_names(name, others)) {
       const auto pair = std::minmax(name, other);
       if (!reported.insert(pair).second) continue;
       // Reported at the likelier typo: the rarer name, else the one used later.

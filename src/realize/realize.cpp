@@ -31,7 +31,9 @@ struct Vocabulary {
   std::set<std::string> literals;  // enum literals, alternatives, none
 };
 
-void visit(const bt::Node& n, const load::Mission& m, Vocabulary& v) {
+using Models = std::map<std::string, const bt::NodeModel*, std::less<>>;
+
+void visit(const bt::Node& n, const Models& models, Vocabulary& v) {
   if (n.tag != "Adaptable") {
     const std::string kind = n.kind();
     std::vector<std::string> labels{kind};
@@ -39,10 +41,8 @@ void visit(const bt::Node& n, const load::Mission& m, Vocabulary& v) {
       labels.push_back(*name);
     const bool robot_leaf =
         n.children.empty() && !bt::is_subtree(n.tag) && bt::find_builtin(kind) == nullptr;
-    const bt::NodeModel* model = nullptr;  // the robot's registration of the node
-    if (m.nodes)
-      for (const auto& candidate : *m.nodes)
-        if (candidate.id == kind) model = &candidate;
+    const auto registered = models.find(kind);  // the robot's registration of the node
+    const bt::NodeModel* model = registered == models.end() ? nullptr : registered->second;
     const bool condition = n.tag == "Condition" || (model && model->family == "Condition");
     for (const auto& l : labels) {
       v.labels.insert(l);
@@ -60,14 +60,17 @@ void visit(const bt::Node& n, const load::Mission& m, Vocabulary& v) {
           if (const std::string* value = n.attribute(port.name))
             if (auto key = bt::blackboard_key(port.name, *value)) v.written.insert(*key);
   }
-  for (const auto& c : n.children) visit(c, m, v);
+  for (const auto& c : n.children) visit(c, models, v);
 }
 
 Vocabulary vocabulary_of(const load::Mission& m) {
   Vocabulary v;
-  for (const auto& t : m.tree.trees) visit(t.root, m, v);
+  Models models;
+  if (m.nodes)
+    for (const auto& model : *m.nodes) models.emplace(model.id, &model);  // the first of an ID
+  for (const auto& t : m.tree.trees) visit(t.root, models, v);
   for (const auto& alt : m.alternatives) {
-    for (const auto& t : alt.document.trees) visit(t.root, m, v);
+    for (const auto& t : alt.document.trees) visit(t.root, models, v);
     v.alternatives[alt.adaptable].push_back(alt.name);
     v.literals.insert(alt.name);
   }
@@ -86,12 +89,12 @@ struct GameSignal {
   int slot = -1;                  // its frame slot
   std::string label;              // a node status's node label, else ""
   std::string status;             // "running", "success", "failure", "selected", "mode", ""
-  // A status of the robot's own node, which no side chooses alone: the tree runs the node or
-  // lets it end (`<label>.state`: idle, running, ended), the world says how it ends
-  // (`<label>.result`: success or failure) once the tree has answered.
+  // A status of the robot's own node, which no side chooses alone: the world says how the
+  // node ends when it ends this tick (`<label>.result`: success or failure, an input, so that
+  // the tree's later nodes react to it as a Fallback does), the tree runs the node or lets it
+  // end (`<label>.state`: idle, running, ended).
   bool derived = false;
   bool choice_of_node = false;  // one of those two choices
-  bool late = false;            // an input chosen after the tree's outputs: a result
 };
 
 std::string state_name(const std::string& label) {
@@ -243,7 +246,8 @@ struct Table {
     read.insert(name);
     if (it->second.derived) {
       read.insert(state_name(it->second.label));
-      read.insert(result_name(it->second.label));
+      // How the node ends matters only to its success and failure.
+      if (it->second.status != "running") read.insert(result_name(it->second.label));
     }
   }
 
@@ -251,7 +255,7 @@ struct Table {
   void add_choices(const std::string& label) {
     if (signals.count(state_name(label)) != 0) return;
     const auto add = [&](const std::string& name, Role role, const std::string& why,
-                         std::vector<std::string> values, bool late) {
+                         std::vector<std::string> values) {
       GameSignal choice;
       choice.shown = {name, role, {}, why};
       choice.declaration.name = name;
@@ -259,18 +263,16 @@ struct Table {
       choice.declaration.enum_values = std::move(values);
       choice.label = label;
       choice.choice_of_node = true;
-      choice.late = late;
       choice.slot = variables.id(name);
       signals.emplace(name, std::move(choice));
     };
     const bool condition = vocabulary.conditions.count(label) != 0;
     add(state_name(label), Role::output, "the tree decides whether it runs the node or lets it end",
         condition ? std::vector<std::string>{"idle", "ended"}
-                  : std::vector<std::string>{"idle", "running", "ended"},
-        false);
+                  : std::vector<std::string>{"idle", "running", "ended"});
     add(result_name(label), Role::input,
-        "the world decides how the node ends, after the tree's answer", {"success", "failure"},
-        true);
+        "the world decides how the node ends when the tree lets it end this tick",
+        {"success", "failure"});
   }
 
   // A game's items: the properties [0, properties.size()), then the constraints.
@@ -387,12 +389,19 @@ class Game {
       return false;
     }
     for (GameSignal* s : all)
-      (s->derived                     ? derived_
-       : s->late                      ? results_
-       : s->shown.role == Role::input ? inputs_
-                                      : outputs_)
-          .push_back(s);
-    const double moves = count(inputs_) * count(outputs_) * count(results_);
+      (s->derived ? derived_ : s->shown.role == Role::input ? inputs_ : outputs_).push_back(s);
+    // An assumption the tree's own outputs could break would let it "win" by breaking it.
+    for (std::size_t p : properties_) {
+      if (t_.is_guarantee(p)) continue;
+      for (const auto& name : t_.reads[p])
+        if (t_.signals.at(name).shown.role == Role::output) {
+          reason = t_.id(p) + " reads '" + name +
+                   "', which the tree decides: realizability is decided for assumptions over "
+                   "the environment's inputs only";
+          return false;
+        }
+    }
+    const double moves = count(inputs_) * count(outputs_);
     if (moves > static_cast<double>(options_.max_moves)) {
       reason = "its inputs and outputs have " + number_text(moves) +
                " combinations a tick, more than the " + std::to_string(options_.max_moves) +
@@ -401,7 +410,6 @@ class Game {
     }
     input_valuations_ = valuations(inputs_);
     output_valuations_ = valuations(outputs_);
-    result_valuations_ = valuations(results_);
     frame_.assign(t_.variables.size(), Val{});
     std::vector<std::uint64_t> initial;
     for (std::size_t p : properties_) {
@@ -411,8 +419,9 @@ class Game {
     }
     index_of(initial);
     for (std::size_t s = 0; s < states_.size(); ++s) {
-      if (states_.size() > options_.max_states) {
-        reason = "more than " + std::to_string(options_.max_states) + " monitor states";
+      if (states_.size() > options_.max_states || transitions_ > options_.max_transitions) {
+        reason = "more than " + std::to_string(options_.max_states) + " monitor states or " +
+                 std::to_string(options_.max_transitions) + " moves";
         return false;
       }
       expand(s);
@@ -577,40 +586,40 @@ class Game {
     for (const auto& input : input_valuations_) {
       std::vector<Answer> answers;
       put(inputs_, input);
-      bool any_output = false;
+      if (!inputs_agree()) {  // no world gives it: as good as an assumption it breaks
+        per_input.push_back({Answer{}});
+        continue;
+      }
       for (const auto& output : output_valuations_) {
         put(outputs_, output);
-        // The world ends the nodes the tree lets end, each way: the answer is good when every
-        // way keeps the guarantees (or breaks an assumption).
-        Answer answer;
-        bool good = true, consistent_somehow = false;
-        for (const auto& result : result_valuations_) {
-          put(results_, result);
-          derive();
-          if (!consistent()) continue;
-          consistent_somehow = true;
-          const Tick verdict = step(states_[s], next);
-          if (verdict == Tick::guarantee_broken) {
-            good = false;
-            break;
-          }
-          if (verdict == Tick::kept) answer.push_back(index_of(next));
-        }
-        if (!consistent_somehow) continue;
-        any_output = true;
-        if (!good) continue;
-        std::sort(answer.begin(), answer.end());
-        answer.erase(std::unique(answer.begin(), answer.end()), answer.end());
-        answers.push_back(std::move(answer));
+        derive();
+        if (!consistent()) continue;
+        const Tick verdict = step(states_[s], next);
+        if (verdict == Tick::assumption_broken) answers.push_back({});
+        if (verdict == Tick::kept) answers.push_back({index_of(next)});
       }
-      // An input no output is consistent with is no input the world can give.
-      if (!any_output) answers.push_back({});
       std::sort(answers.begin(), answers.end());
       answers.erase(std::unique(answers.begin(), answers.end()), answers.end());
+      transitions_ += answers.size();
       per_input.push_back(std::move(answers));
     }
     if (moves_.size() <= s) moves_.resize(s + 1);
     moves_[s] = std::move(per_input);
+  }
+
+  // What the world gives agrees with itself: a condition the requirements read by its name
+  // (its value) ends as that value says.
+  bool inputs_agree() const {
+    for (const GameSignal* s : inputs_) {
+      if (!s->choice_of_node) continue;
+      const auto named = t_.signals.find(s->label);
+      if (named == t_.signals.end() || named->second.slot < 0) continue;
+      const Val& value = frame_[static_cast<std::size_t>(named->second.slot)];
+      const Val& result = frame_[static_cast<std::size_t>(s->slot)];
+      if (value.kind != Val::Kind::boolean) continue;
+      if ((t_.symbols.name(result.symbol) == "success") != value.truth()) return false;
+    }
+    return true;
   }
 
   // The states the tree may be in after some inputs, whatever it answered.
@@ -642,8 +651,9 @@ class Game {
   Table& t_;
   std::vector<std::size_t> properties_;
   const Options& options_;
-  std::vector<GameSignal*> inputs_, outputs_, results_, derived_;
-  std::vector<std::vector<std::uint32_t>> input_valuations_, output_valuations_, result_valuations_;
+  std::vector<GameSignal*> inputs_, outputs_, derived_;
+  std::vector<std::vector<std::uint32_t>> input_valuations_, output_valuations_;
+  std::uint64_t transitions_ = 0;
   std::vector<Val> frame_;
   std::vector<std::uint64_t> words_;
   std::vector<char> scratch_;
@@ -693,21 +703,27 @@ std::vector<std::vector<std::size_t>> components_of(const Table& t) {
     return i;
   };
   const auto join = [&](std::size_t a, std::size_t b) { parent[find(a)] = find(b); };
-  std::map<std::string, std::size_t> output_owner, assumed;  // a signal: an item that reads it
+  // The statuses of one node are tied (one status a tick; it selects only when ticked): a
+  // node's signals share one key.
+  const auto key = [&](const std::string& name) {
+    const GameSignal& s = t.signals.at(name);
+    return s.label.empty() ? name : "node " + s.label;
+  };
+  std::map<std::string, std::size_t> output_owner, assumed;  // a key: an item that reads it
   for (std::size_t i = 0; i < n; ++i)
     for (const auto& name : t.reads[i]) {
       if (!t.is_guarantee(i)) {
-        const auto [it, added] = assumed.emplace(name, i);
+        const auto [it, added] = assumed.emplace(key(name), i);
         if (!added) join(i, it->second);
       } else if (t.signals.at(name).shown.role == Role::output) {
-        const auto [it, added] = output_owner.emplace(name, i);
+        const auto [it, added] = output_owner.emplace(key(name), i);
         if (!added) join(i, it->second);
       }
     }
   for (std::size_t i = 0; i < n; ++i)
     if (t.is_guarantee(i))
       for (const auto& name : t.reads[i])
-        if (auto it = assumed.find(name); it != assumed.end()) join(i, it->second);
+        if (auto it = assumed.find(key(name)); it != assumed.end()) join(i, it->second);
   std::map<std::size_t, std::vector<std::size_t>> groups;
   for (std::size_t i = 0; i < n; ++i) groups[find(i)].push_back(i);
   std::vector<std::vector<std::size_t>> out;
@@ -739,7 +755,8 @@ void find_conflicts(Table& t, const std::vector<std::size_t>& guarantees,
     return out;
   };
   const std::size_t n = guarantees.size();
-  if (n > options.max_conflict_search) {
+  constexpr std::size_t kMostSubsetBits = 20;  // 2^20 sets at the most
+  if (n > std::min(options.max_conflict_search, kMostSubsetBits)) {
     std::vector<std::size_t> core = guarantees;
     for (std::size_t k = 0; k < core.size();) {
       std::vector<std::size_t> without = core;
@@ -780,6 +797,7 @@ Result check_realizability(const load::Mission& mission, const Options& options)
   std::stable_sort(result.signals.begin(), result.signals.end(),
                    [](const Signal& a, const Signal& b) { return a.role < b.role; });
   bool any_false = false, any_unknown = false;
+  std::map<std::string, std::vector<std::string>> shown_values;
   for (const auto& members : components_of(t)) {
     Component c;
     std::vector<std::size_t> guarantees, assumptions;
@@ -787,13 +805,15 @@ Result check_realizability(const load::Mission& mission, const Options& options)
     for (std::size_t p : guarantees) c.requirements.push_back(t.id(p));
     for (std::size_t p : assumptions) c.requirements.push_back(t.id(p));
     c.realizable = decide(t, members, options, c.reason, &c.states, &c.defeating_inputs);
+    // The values shown are the cells this component's own game cut.
+    for (std::size_t p : members)
+      for (const auto& name : t.reads[p]) shown_values[name] = t.signals.at(name).shown.values;
     if (c.realizable == false) find_conflicts(t, guarantees, assumptions, options, c);
     any_false = any_false || c.realizable == false;
     any_unknown = any_unknown || !c.realizable;
-    // Values shown for its signals are this component's cells.
     result.components.push_back(std::move(c));
   }
-  for (Signal& s : result.signals) s.values = t.signals.at(s.name).shown.values;
+  for (Signal& s : result.signals) s.values = shown_values[s.name];
   if (result.components.empty())
     result.notes.push_back("the mission states no guarantee: any tree meets it");
   result.realizable = any_false     ? std::optional<bool>(false)

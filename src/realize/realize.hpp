@@ -42,8 +42,9 @@ struct Component {
   // file order, all of them unless `conflicts_complete` is false.
   std::vector<std::vector<std::string>> conflicts;
   bool conflicts_complete = true;
-  // Inputs that defeat every tree whatever it answers, tick by tick, when a fixed sequence
-  // does (the environment may also need to watch the tree's outputs: then none).
+  // Inputs (how the robot's nodes end among them) that defeat every tree whatever it answers,
+  // tick by tick, when a fixed sequence does (the environment may also need to watch the
+  // tree's outputs: then none).
   std::vector<Choice> defeating_inputs;
 };
 
@@ -58,14 +59,15 @@ struct Result {
 struct Options {
   // Limits of one game, past which its component is not decided.
   std::uint64_t max_states = 200'000;
-  std::uint64_t max_moves = 1u << 16;  // input valuations times output valuations per state
+  std::uint64_t max_moves = 1u << 16;         // input valuations times output valuations per state
+  std::uint64_t max_transitions = 5'000'000;  // the moves kept, over all states
   // How many guarantees a component may have for every minimal conflict to be listed (subsets
-  // are tried by size); beyond, one minimal conflict is given.
+  // are tried by size; 20 at the most); beyond, one minimal conflict is given.
   std::size_t max_conflict_search = 12;
   std::uint64_t max_defeat_depth = 12;  // ticks of a fixed defeating input sequence searched
 };
 
-// Throws std::runtime_error naming the requirement when one cannot be read as a monitor.
+// A requirement that cannot be read as a monitor leaves its component not decided, with why.
 Result check_realizability(const load::Mission& mission, const Options& options = {});
 
 }  // namespace uabt::realize

@@ -100,6 +100,58 @@ TEST(Realizability, TheTreeRunsItsNodesAndTheWorldSaysHowTheyEnd) {
             true);
 }
 
+// A tree reacts within a tick to how its nodes ended (a Fallback ticks its second child when the
+// first fails), and a condition ends as its value says.
+TEST(Realizability, TheTreeReactsToHowItsNodesEnded) {
+  const auto answer = [](const std::string& requirements) {
+    const TempMission t(
+        {{"mission.xml", mission_with("    <Fallback>\n      <IsClear/>\n      <Wait/>\n"
+                                      "    </Fallback>")},
+         {"nodes.xml",
+          "<root BTCPP_format=\"4\"><TreeNodesModel><Condition ID=\"IsClear\"/>"
+          "<Action ID=\"Wait\"/></TreeNodesModel></root>"},
+         {"requirements.fret", requirements}});
+    return realizability(t).realizable;
+  };
+  EXPECT_EQ(answer("Checked: the rover shall always satisfy IsClear.success | IsClear.failure\n"
+                   "WaitWhenBlocked: whenever IsClear.failure the rover shall immediately "
+                   "satisfy Wait.running\n"
+                   "GoWhenClear: whenever IsClear.success the rover shall immediately satisfy "
+                   "!Wait.running\n"),
+            true);
+  EXPECT_EQ(answer("Checked: the rover shall always satisfy IsClear.success | IsClear.failure\n"
+                   "Agrees: the rover shall always satisfy IsClear.success -> IsClear\n"),
+            true);
+}
+
+// One node's statuses are tied, so requirements on them are decided together.
+TEST(Realizability, StatusesOfOneNodeAreOneComponent) {
+  const TempMission t({{"mission.xml", mission_with("    <Sequence name=\"Leg\">\n      <Stow/>\n"
+                                                    "    </Sequence>")},
+                       {"requirements.fret",
+                        "Runs: the rover shall always satisfy Leg.running\n"
+                        "Done: the rover shall always satisfy Leg.success\n"}});
+  const realize::Result r = realizability(t);
+  EXPECT_EQ(r.realizable, false);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components.front().conflicts, (Conflicts{{"Runs", "Done"}}));
+}
+
+// An assumption the tree's outputs could break would let the tree win by breaking it: not
+// decided.
+TEST(Realizability, AnAssumptionOverTheTreesOutputsIsNotDecided) {
+  const TempMission t({{"mission.xml", kRover},
+                       {"domain.fret", "boolean Go\n"},
+                       {"requirements.fret",
+                        "Drills: whenever Go the rover shall immediately satisfy Drill.running\n"
+                        "Cheat: the Environment shall always satisfy !Drill.running\n"}});
+  const realize::Result r = realizability(t);
+  EXPECT_EQ(r.realizable, std::nullopt);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_NE(r.components.front().reason.find("Cheat reads 'Drill.running'"), std::string::npos)
+      << r.components.front().reason;
+}
+
 // A real-valued input is played by the cells its atoms draw: slope in (30, 45] asks for both.
 TEST(Realizability, ARealInputIsPlayedByItsCells) {
   const std::string requirements =
