@@ -793,7 +793,10 @@ void find_conflicts(Table& t, const std::vector<std::size_t>& guarantees,
 Result check_realizability(const load::Mission& mission, const Options& options) {
   Table t(mission);
   Result result;
-  for (const auto& [name, s] : t.signals) result.signals.push_back(s.shown);
+  std::set<std::string> read;  // the signals some requirement or assumption reads
+  for (const auto& r : t.reads) read.insert(r.begin(), r.end());
+  for (const auto& [name, s] : t.signals)
+    if (read.count(name) != 0) result.signals.push_back(s.shown);
   std::stable_sort(result.signals.begin(), result.signals.end(),
                    [](const Signal& a, const Signal& b) { return a.role < b.role; });
   bool any_false = false, any_unknown = false;
