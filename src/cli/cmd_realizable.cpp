@@ -6,6 +6,7 @@
 #include "base/diagnostics.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
+#include "cli/findings_output.hpp"
 #include "realize/realize.hpp"
 
 namespace uabt::cli {
@@ -186,7 +187,7 @@ std::string text_of(const load::Mission& m, const realize::Result& r) {
 // closed); 2 when the mission cannot be read.
 void register_realizable(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, format = "text", output;
+    std::string mission, format = "text", output, source_root;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -196,7 +197,11 @@ void register_realizable(CLI::App& app, int& exit_code) {
   cmd->add_option("MISSION", args->mission, "mission directory")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("--format", args->format, "text | json")->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--format", args->format,
+                  "text | json (the verdict, conflicts and defeating inputs as data) | sarif | "
+                  "junit (the findings, for code scanning and CI)")
+      ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
+  add_source_root_option(*cmd, args->source_root);
   cmd->add_option("-o,--output", args->output, "write the output to FILE");
   cmd->callback([args, &exit_code] {
     auto mission = load_without_errors(args->mission, {}, exit_code);
@@ -205,7 +210,16 @@ void register_realizable(CLI::App& app, int& exit_code) {
       return;
     }
     const realize::Result result = realize::check_realizability(*mission);
-    emit(args->output, args->format == "json" ? json_of(result) : text_of(*mission, result));
+    if (args->format == "sarif" || args->format == "junit") {
+      report::ReportInput input = report_input(*mission, {"load", "realize"});
+      const std::vector<Finding> found = findings_of(*mission, result);
+      input.findings.insert(input.findings.end(), found.begin(), found.end());
+      sort_findings(input.findings);
+      input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
+      write_findings(input, args->format, args->output);
+    } else {
+      emit(args->output, args->format == "json" ? json_of(result) : text_of(*mission, result));
+    }
     exit_code = result.realizable == true ? kExitPass : kExitFail;
   });
 }

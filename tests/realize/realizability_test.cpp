@@ -225,6 +225,14 @@ TEST(Realizability, TheCommandAnswersInTextAndJsonWithItsExitCode) {
   EXPECT_NE(json.out.find("\"conflicts\": [\n    [\n      \"G1\",\n      \"G2\",\n      \"G3\""),
             std::string::npos)
       << json.out;
+  // For code scanning and CI: the same finding as SARIF and JUnit.
+  const CliRun sarif = run_uabt_in(dir, "realizable m --format sarif");
+  EXPECT_EQ(sarif.exit_code, 1);
+  EXPECT_NE(sarif.out.find("\"ruleId\": \"requirements-unrealizable\""), std::string::npos)
+      << sarif.out;
+  const CliRun junit = run_uabt_in(dir, "realizable m --format junit");
+  EXPECT_EQ(junit.exit_code, 1);
+  EXPECT_NE(junit.out.find("type=\"requirements-unrealizable\""), std::string::npos) << junit.out;
   bad.write("requirements.fret", std::string(kDustAndSample) +
                                      "A1: upon DustAlarm the Environment shall at the next "
                                      "timepoint satisfy !SampleReq\n");
