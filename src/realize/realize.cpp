@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "base/number_text.hpp"
+#include "base/suggest.hpp"
 #include "bt/node_kinds.hpp"
 #include "bt/script/load_check.hpp"
 #include "monitor/templates.hpp"
@@ -202,6 +203,7 @@ struct Table {
   std::vector<Constraint> constraints;
   // Per property, then per constraint (a game's items): the signals it reads.
   std::vector<std::set<std::string>> reads;
+  std::set<std::string> unknown;  // names a requirement reads that the mission does not have
 
   explicit Table(const load::Mission& m) : mission(m), vocabulary(vocabulary_of(m)) {
     const monitor::Resolver resolve = [this](const std::string& name) -> monitor::Resolved {
@@ -216,6 +218,7 @@ struct Table {
       }
       if (vocabulary.literals.count(name) != 0)
         return {monitor::Resolved::Kind::literal, symbols.id(name)};
+      if (name != "FTP") unknown.insert(name);
       return {};
     };
     for (const fretish::Requirement& r : mission.properties) {
@@ -237,6 +240,37 @@ struct Table {
       constraints.push_back(std::move(c));
       reads.push_back(std::move(read));
     }
+  }
+
+  // Why a requirement cannot be read: the first name it reads that the mission does not have.
+  std::string unreadable(std::size_t item, const std::string& fallback) {
+    const fretish::Requirement* r = properties[item].requirement;
+    for (const auto& part : properties[item].exprs)
+      if (part)
+        for (const auto& id : fretish::identifiers_of(*part)) {
+          if (unknown.count(id) == 0) continue;
+          std::string why = r->id + ": '" + id +
+                            "' is no domain variable, condition, node status "
+                            "(<node>.running/.success/.failure), adaptable node or "
+                            "<adaptable>.selected of the mission";
+          const std::string hint = did_you_mean(id, known_names());
+          return hint.empty() ? why : why + " (" + hint + ")";
+        }
+    return r->id + ": " + fallback;
+  }
+
+  // Every name a requirement may read.
+  std::vector<std::string> known_names() const {
+    std::vector<std::string> out;
+    for (const auto& d : mission.domain.variables) out.push_back(d.name);
+    for (const auto& label : vocabulary.labels)
+      for (const char* status : {".running", ".success", ".failure"}) out.push_back(label + status);
+    for (const auto& label : vocabulary.robot_leaves) out.push_back(label);
+    for (const auto& [adaptable, alternatives] : vocabulary.alternatives) {
+      out.push_back(adaptable);
+      out.push_back(adaptable + ".selected");
+    }
+    return out;
   }
 
   // `name` read: itself, and for a derived status the choices it is made of.
@@ -373,7 +407,7 @@ class Game {
       }
       const prove::Property& prop = t_.properties[p];
       if (!prop.layout) {
-        reason = prop.requirement->id + ": " + prop.unsupported;
+        reason = t_.unreadable(p, prop.unsupported);
         return false;
       }
       if (!monitor::verdict_is_final_once_violated(prop.shape)) {

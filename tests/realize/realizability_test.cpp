@@ -204,6 +204,20 @@ TEST(Realizability, WhatIsNotASafetyRequirementIsNotDecided) {
       << r.components.front().reason;
 }
 
+// A name the mission does not have is said as such, with the closest name it has.
+TEST(Realizability, ANameTheMissionDoesNotHaveIsNamedWithTheClosestOne) {
+  const TempMission t(
+      {{"mission.xml", kRover},
+       {"requirements.fret", "Apart: the rover shall never satisfy Dril.running\n"}});
+  const realize::Result r = realizability(t);
+  EXPECT_EQ(r.realizable, std::nullopt);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components.front().reason,
+            "Apart: 'Dril.running' is no domain variable, condition, node status "
+            "(<node>.running/.success/.failure), adaptable node or <adaptable>.selected of the "
+            "mission (did you mean 'Drill.running'?)");
+}
+
 TEST(Realizability, TheCommandAnswersInTextAndJsonWithItsExitCode) {
   const TempMission bad({{"mission.xml", kRover},
                          {"domain.fret", "boolean DustAlarm, SampleReq\n"},
