@@ -1,9 +1,8 @@
-#include <cctype>
-#include <charconv>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "base/diagnostics.hpp"
+#include "base/number_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
@@ -36,7 +35,7 @@ std::string inputs_text(const std::vector<realize::Choice>& choices) {
   for (const auto& c : choices) {
     out += (out.empty() ? "" : "; ") + std::string("tick ") + std::to_string(c.tick) + ":";
     for (std::size_t k = 0; k < c.inputs.size(); ++k)
-      out += (k == 0 ? " " : ", ") + c.inputs[k].first + " = " + c.inputs[k].second;
+      out += (k == 0 ? " " : ", ") + c.inputs[k].first + " = " + c.inputs[k].second.to_string();
   }
   return out;
 }
@@ -75,22 +74,10 @@ std::vector<Finding> findings_of(const load::Mission& m, const realize::Result& 
   return out;
 }
 
-// A FRETISH value as JSON: booleans and numbers as such, names as strings.
-Json value_json(const std::string& text) {
-  if (text == "true" || text == "false") return text == "true";
-  // Only what starts like a number is one (an enum value may be called `inf` or `nan`).
-  if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-'))
-    return text;
-  const char* const last = text.data() + text.size();
-  std::int64_t whole = 0;
-  if (const auto [end, ec] = std::from_chars(text.data(), last, whole);
-      ec == std::errc() && end == last)
-    return whole;
-  double number = 0;
-  if (const auto [end, ec] = std::from_chars(text.data(), last, number);
-      ec == std::errc() && end == last)
-    return number;
-  return text;
+Json values_json(const std::vector<Value>& values) {
+  Json out = Json::array();
+  for (const Value& v : values) out.push_back(value_json(v));
+  return out;
 }
 
 Json defeat_json(const std::vector<realize::Choice>& choices) {
@@ -149,7 +136,7 @@ std::string json_of(const realize::Result& r) {
   Json inputs = Json::array(), outputs = Json::array();
   for (const auto& s : r.signals)
     (s.role == realize::Role::input ? inputs : outputs)
-        .push_back({{"name", s.name}, {"values", s.values}, {"why", s.why}});
+        .push_back({{"name", s.name}, {"values", values_json(s.values)}, {"why", s.why}});
   j["inputs"] = inputs;
   j["outputs"] = outputs;
   j["notes"] = r.notes;

@@ -167,15 +167,6 @@ std::optional<GameSignal> signal_of(const std::string& name, const load::Mission
   return std::nullopt;
 }
 
-std::string value_text(const runtime::ScriptValue& v) {
-  switch (v.kind) {
-    case runtime::ScriptValue::Kind::boolean: return v.boolean ? "true" : "false";
-    case runtime::ScriptValue::Kind::integer: return std::to_string(v.integer);
-    case runtime::ScriptValue::Kind::real: return number_text(v.real);
-    default: return v.text;
-  }
-}
-
 Val value_of(const runtime::ScriptValue& v, monitor::Symbols& symbols) {
   switch (v.kind) {
     case runtime::ScriptValue::Kind::boolean: return Val::of_bool(v.boolean);
@@ -378,7 +369,7 @@ std::string cut_cells(Table& t, const std::vector<std::size_t>& properties,
     s.shown.values.clear();
     for (const auto& v : values) {
       s.values.push_back(value_of(v, t.symbols));
-      s.shown.values.push_back(value_text(v));
+      s.shown.values.push_back(runtime::to_value(v));
     }
     if (s.values.empty()) return "'" + n + "' has no value in its declared range";
     out.push_back(&s);
@@ -442,6 +433,7 @@ class Game {
                " explored";
       return false;
     }
+    find_ties();
     input_valuations_ = valuations(inputs_);
     output_valuations_ = valuations(outputs_);
     frame_.assign(t_.variables.size(), Val{});
@@ -559,25 +551,39 @@ class Game {
 
   // A node has one status a tick, and a node selects only in a tick it is ticked.
   bool consistent() const {
-    std::map<std::string, int> statuses;
-    std::map<std::string, const GameSignal*> mode, selected;
+    for (const auto& statuses : one_status_)
+      if (std::count_if(statuses.begin(), statuses.end(),
+                        [&](const GameSignal* s) { return is_true(s); }) > 1)
+        return false;
+    for (const auto& [selected, mode] : selects_) {
+      const Val& v = frame_[static_cast<std::size_t>(selected->slot)];
+      const bool none = v.kind == Val::Kind::symbol && t_.symbols.name(v.symbol) == "none";
+      if (!none && !is_true(mode)) return false;
+    }
+    return true;
+  }
+
+  // The ties consistent() and inputs_agree() check, among this game's signals.
+  void find_ties() {
+    std::map<std::string, std::vector<const GameSignal*>> statuses;
+    std::map<std::string, const GameSignal*> mode, selected, input;
     for (const auto* list : {&inputs_, &outputs_})
       for (const GameSignal* s : *list) {
         if (s->status == "mode")
           mode[s->label] = s;
         else if (s->status == "selected")
           selected[s->label] = s;
-        else if (!s->status.empty() && is_true(s))
-          ++statuses[s->label];
+        else if (!s->status.empty())
+          statuses[s->label].push_back(s);
+        if (list == &inputs_) input[s->shown.name] = s;
       }
-    for (const auto& [label, n] : statuses)
-      if (n > 1) return false;
-    for (const auto& [label, s] : selected) {
-      const Val& v = frame_[static_cast<std::size_t>(s->slot)];
-      const bool none = v.kind == Val::Kind::symbol && t_.symbols.name(v.symbol) == "none";
-      if (!none && mode.count(label) != 0 && !is_true(mode.at(label))) return false;
-    }
-    return true;
+    for (auto& [label, list] : statuses)
+      if (list.size() > 1) one_status_.push_back(std::move(list));
+    for (const auto& [label, s] : selected)
+      if (mode.count(label) != 0) selects_.emplace_back(s, mode.at(label));
+    for (const GameSignal* s : inputs_)
+      if (s->choice_of_node && input.count(s->label) != 0)
+        agrees_.emplace_back(s, input.at(s->label));
   }
 
   std::int32_t index_of(const std::vector<std::uint64_t>& state) {
@@ -644,14 +650,11 @@ class Game {
   // What the world gives agrees with itself: a condition the requirements read by its name
   // (its value) ends as that value says.
   bool inputs_agree() const {
-    for (const GameSignal* s : inputs_) {
-      if (!s->choice_of_node) continue;
-      const auto named = t_.signals.find(s->label);
-      if (named == t_.signals.end() || named->second.slot < 0) continue;
-      const Val& value = frame_[static_cast<std::size_t>(named->second.slot)];
-      const Val& result = frame_[static_cast<std::size_t>(s->slot)];
-      if (value.kind != Val::Kind::boolean) continue;
-      if ((t_.symbols.name(result.symbol) == "success") != value.truth()) return false;
+    for (const auto& [result, value] : agrees_) {
+      const Val& v = frame_[static_cast<std::size_t>(value->slot)];
+      const Val& r = frame_[static_cast<std::size_t>(result->slot)];
+      if (v.kind == Val::Kind::boolean && (t_.symbols.name(r.symbol) == "success") != v.truth())
+        return false;
     }
     return true;
   }
@@ -688,6 +691,9 @@ class Game {
   std::vector<GameSignal*> inputs_, outputs_, derived_;
   std::vector<std::vector<std::uint32_t>> input_valuations_, output_valuations_;
   std::uint64_t transitions_ = 0;
+  std::vector<std::vector<const GameSignal*>> one_status_;                // a node's statuses
+  std::vector<std::pair<const GameSignal*, const GameSignal*>> selects_;  // .selected, mode
+  std::vector<std::pair<const GameSignal*, const GameSignal*>> agrees_;   // result, value
   std::vector<Val> frame_;
   std::vector<std::uint64_t> words_;
   std::vector<char> scratch_;
@@ -834,7 +840,7 @@ Result check_realizability(const load::Mission& mission, const Options& options)
   std::stable_sort(result.signals.begin(), result.signals.end(),
                    [](const Signal& a, const Signal& b) { return a.role < b.role; });
   bool any_false = false, any_unknown = false;
-  std::map<std::string, std::vector<std::string>> shown_values;
+  std::map<std::string, std::vector<Value>> shown_values;
   for (const auto& members : components_of(t)) {
     Component c;
     std::vector<std::size_t> guarantees, assumptions;

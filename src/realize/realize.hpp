@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/location.hpp"
+#include "base/value.hpp"
 #include "load/mission.hpp"
 
 namespace uabt::realize {
@@ -22,14 +23,14 @@ enum class Role { input, output };
 struct Signal {
   std::string name;
   Role role = Role::input;
-  std::vector<std::string> values;  // one per cell, as FRETISH writes them ("true", "20", "rocks")
-  std::string why;                  // why it has that role: "a domain variable no tree writes"
+  std::vector<Value> values;  // one per cell
+  std::string why;            // why it has that role: "a domain variable no tree writes"
 };
 
 // One input chosen by the environment at one tick of a defeating run.
 struct Choice {
   std::uint64_t tick = 0;
-  std::vector<std::pair<std::string, std::string>> inputs;  // name, value
+  State inputs;  // name, value
 };
 
 struct Component {

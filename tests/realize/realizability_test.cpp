@@ -46,10 +46,10 @@ TEST(Realizability, AConsistentSetTheEnvironmentDefeatsIsUnrealizable) {
   EXPECT_TRUE(c.conflicts_complete);
   // Tick 1: the alarm (Stow is due at tick 2); tick 2: a sample request (Drill is due now).
   ASSERT_EQ(c.defeating_inputs.size(), 2u);
-  EXPECT_EQ(c.defeating_inputs[0].inputs, (std::vector<std::pair<std::string, std::string>>{
-                                              {"DustAlarm", "true"}, {"SampleReq", "false"}}));
-  EXPECT_EQ(c.defeating_inputs[1].inputs, (std::vector<std::pair<std::string, std::string>>{
-                                              {"DustAlarm", "false"}, {"SampleReq", "true"}}));
+  EXPECT_EQ(c.defeating_inputs[0].inputs,
+            (State{{"DustAlarm", Value::of_bool(true)}, {"SampleReq", Value::of_bool(false)}}));
+  EXPECT_EQ(c.defeating_inputs[1].inputs,
+            (State{{"DustAlarm", Value::of_bool(false)}, {"SampleReq", Value::of_bool(true)}}));
   // Who decides what.
   std::map<std::string, realize::Role> roles;
   for (const auto& s : r.signals) roles[s.name] = s.role;
@@ -163,8 +163,9 @@ TEST(Realizability, ARealInputIsPlayedByItsCells) {
   ASSERT_EQ(r.realizable, false);
   EXPECT_EQ(r.components.front().conflicts, (Conflicts{{"Brake", "Climb", "OneAtATime"}}));
   ASSERT_EQ(r.components.front().defeating_inputs.size(), 1u);
-  const std::string slope = r.components.front().defeating_inputs[0].inputs.at(0).second;
-  EXPECT_GT(std::stod(slope), 30.0) << slope;
+  const Value slope = r.components.front().defeating_inputs[0].inputs.at(0).second;
+  EXPECT_GT(slope.kind == Value::Kind::real ? slope.real : static_cast<double>(slope.integer), 30.0)
+      << slope.to_string();
   const TempMission gentle({{"mission.xml", kRover},
                             {"domain.fret", "real slope in [0, 45]\nassume gentle: slope <= 30\n"},
                             {"requirements.fret", requirements}});
