@@ -14,66 +14,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Where a requirement or a domain assumption is written.
-SourceLocation location_of(const load::Mission& m, const std::string& id) {
-  for (const auto& r : m.properties)
-    if (r.id == id) return r.location;
-  for (const auto& a : m.domain.assumptions)
-    if (a.name == id) return a.location;
-  return {m.requirements_file, 0, 0};
-}
-
-std::string listed(const std::vector<std::string>& ids) {
-  std::string out;
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    out += (k == 0 ? "" : k + 1 == ids.size() ? " and " : ", ") + ids[k];
-  return out;
-}
-
-std::string inputs_text(const std::vector<realize::Choice>& choices) {
-  std::string out;
-  for (const auto& c : choices) {
-    out += (out.empty() ? "" : "; ") + std::string("tick ") + std::to_string(c.tick) + ":";
-    for (std::size_t k = 0; k < c.inputs.size(); ++k)
-      out += (k == 0 ? " " : ", ") + c.inputs[k].first + " = " + c.inputs[k].second.to_string();
-  }
-  return out;
-}
-
-// The findings of the check: one error per minimal conflict (at its first requirement), or
-// per component not decided.
-std::vector<Finding> findings_of(const load::Mission& m, const realize::Result& r) {
-  std::vector<Finding> out;
-  for (const auto& c : r.components) {
-    if (!c.realizable) {
-      out.push_back(make_finding(
-          "realizability-undecided",
-          "whether a tree can meet " + listed(c.requirements) + " is not decided: " + c.reason,
-          location_of(m, c.requirements.front())));
-      continue;
-    }
-    if (*c.realizable) continue;
-    for (const auto& conflict : c.conflicts) {
-      Finding f = make_finding(
-          "requirements-unrealizable",
-          (conflict.size() == 1 ? "no behavior tree meets " + conflict.front()
-                                : "no behavior tree meets " + listed(conflict) + " together") +
-              ": the environment can always bring about a state in which one of them fails",
-          location_of(m, conflict.front()));
-      f.requirements = conflict;
-      if (!c.defeating_inputs.empty())
-        f.notes.push_back("inputs that defeat every tree of this component: " +
-                          inputs_text(c.defeating_inputs));
-      if (!c.conflicts_complete)
-        f.notes.push_back(
-            "other minimal conflicts may exist: the component has too many guarantees to try "
-            "every set");
-      out.push_back(std::move(f));
-    }
-  }
-  return out;
-}
-
 Json values_json(const std::vector<Value>& values) {
   Json out = Json::array();
   for (const Value& v : values) out.push_back(value_json(v));
@@ -146,7 +86,7 @@ std::string json_of(const realize::Result& r) {
 std::string text_of(const load::Mission& m, const realize::Result& r) {
   TextOptions options;
   options.path_prefix = path_prefix_for(m.dir);
-  std::string out = format_text(findings_of(m, r), options);
+  std::string out = format_text(realize::findings_of(m, r), options);
   std::size_t unrealizable = 0, undecided = 0, conflicts = 0;
   for (const auto& c : r.components) {
     unrealizable += c.realizable == false ? 1 : 0;
@@ -196,10 +136,18 @@ void register_realizable(CLI::App& app, int& exit_code) {
       if (exit_code != kExitUsage) exit_code = kExitUsage;
       return;
     }
-    const realize::Result result = realize::check_realizability(*mission);
+    std::optional<prove::WorldModel> world;
+    try {
+      world = prove::mission_world(*mission);
+    } catch (const prove::WorldError& e) {
+      std::cerr << e.what() << '\n';
+      exit_code = kExitUsage;
+      return;
+    }
+    const realize::Result result = realize::check_realizability(*mission, *world);
     if (args->format == "sarif" || args->format == "junit") {
       report::ReportInput input = report_input(*mission, {"load", "realize"});
-      const std::vector<Finding> found = findings_of(*mission, result);
+      const std::vector<Finding> found = realize::findings_of(*mission, result);
       input.findings.insert(input.findings.end(), found.begin(), found.end());
       sort_findings(input.findings);
       input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);

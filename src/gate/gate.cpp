@@ -2,6 +2,7 @@
 
 #include "gate/proofs.hpp"
 #include "gate/properties.hpp"
+#include "gate/realizability.hpp"
 #include "report/reports.hpp"
 
 namespace uabt::gate {
@@ -75,9 +76,10 @@ void keep_rejected_candidate(Outcome& outcome) {
 
 Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version) {
   Outcome out = check_mission(std::move(mission), options, tool_version);
-  if (out.passed())
+  if (out.passed()) {
     add_proofs(out, options.prove, options.proof_reporting);
-  else
+    add_realizability(out);
+  } else
     add_proofs_not_run(out, "the gate failed before its proof step");
   return out;
 }

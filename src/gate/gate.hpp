@@ -51,8 +51,9 @@ struct Outcome {
 
 // The gate's one admission decision (ARCHITECTURE §12), the same for `gate`, `gate --uplink`,
 // `run --uplink` and a scenario's uplink event: every check of check_mission, then, when they
-// pass, every guarantee proved on the compiled tree in the mission's world.json (a failed
-// check leaves the proofs "not checked" in the report).
+// pass, every guarantee proved on the compiled tree in the mission's world.json and the
+// guarantees' realizability decided (a failed check leaves the proofs "not checked" in the
+// report).
 Outcome run_gate(load::Mission mission, const Options& options, const std::string& tool_version);
 
 // The checks alone, without the proof step: load findings, mission properties, verify,

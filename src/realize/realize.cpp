@@ -25,8 +25,9 @@ using monitor::Val;
 struct Vocabulary {
   std::set<std::string> labels;        // every node's name and ID
   std::set<std::string> robot_leaves;  // labels of the robot's leaves: the world ends them
-  std::set<std::string> other_nodes;   // labels of built-in nodes and SubTrees
-  std::set<std::string> conditions;    // the robot's leaves nodes.xml (or the tag) calls Condition
+  std::map<std::string, std::set<std::string>> leaf_kinds;  // a robot leaf's label → its IDs
+  std::set<std::string> other_nodes;                        // labels of built-in nodes and SubTrees
+  std::set<std::string> conditions;  // the robot's leaves nodes.xml (or the tag) calls Condition
   std::map<std::string, std::vector<std::string>> alternatives;  // adaptable → alternatives
   std::set<std::string> written;   // entries a script assigns or an output port writes
   std::set<std::string> literals;  // enum literals, alternatives, none
@@ -48,6 +49,7 @@ void visit(const bt::Node& n, const Models& models, Vocabulary& v) {
     for (const auto& l : labels) {
       v.labels.insert(l);
       (robot_leaf ? v.robot_leaves : v.other_nodes).insert(l);
+      if (robot_leaf) v.leaf_kinds[l].insert(kind);
       if (robot_leaf && condition) v.conditions.insert(l);
     }
     for (const auto& s : bt::script::parse_node_scripts(n))
@@ -180,6 +182,7 @@ Val value_of(const runtime::ScriptValue& v, monitor::Symbols& symbols) {
 // `variables` or to a literal of `symbols`.
 struct Table {
   const load::Mission& mission;
+  const prove::WorldModel& world;
   Vocabulary vocabulary;
   monitor::Variables variables;
   monitor::Symbols symbols;
@@ -196,7 +199,8 @@ struct Table {
   std::vector<std::set<std::string>> reads;
   std::set<std::string> unknown;  // names a requirement reads that the mission does not have
 
-  explicit Table(const load::Mission& m) : mission(m), vocabulary(vocabulary_of(m)) {
+  Table(const load::Mission& m, const prove::WorldModel& w)
+      : mission(m), world(w), vocabulary(vocabulary_of(m)) {
     const monitor::Resolver resolve = [this](const std::string& name) -> monitor::Resolved {
       if (auto it = signals.find(name); it != signals.end())
         return {monitor::Resolved::Kind::variable, it->second.slot};
@@ -296,8 +300,29 @@ struct Table {
         condition ? std::vector<std::string>{"idle", "ended"}
                   : std::vector<std::string>{"idle", "running", "ended"});
     add(result_name(label), Role::input,
-        "the world decides how the node ends when the tree lets it end this tick",
-        {"success", "failure"});
+        "the world decides how the node ends when the tree lets it end this tick", endings(label));
+  }
+
+  // How world.json lets the robot's node `label` end: the results its contracts list, over
+  // every node of that label (an entry for one set of port values counts as a way the node may
+  // end); success and failure when one of them has no entry.
+  std::vector<std::string> endings(const std::string& label) const {
+    std::set<runtime::NodeStatus> results;
+    for (const std::string& kind : vocabulary.leaf_kinds.at(label)) {
+      bool listed = false;
+      for (const auto& [key, contract] : world.actions)
+        if (key == kind ||
+            (key.starts_with(kind) && key.size() > kind.size() && key[kind.size()] == '(')) {
+          listed = true;
+          results.insert(contract.results.begin(), contract.results.end());
+        }
+      if (!listed) return {"success", "failure"};
+    }
+    std::vector<std::string> out;
+    if (results.count(runtime::NodeStatus::success)) out.push_back("success");
+    if (results.count(runtime::NodeStatus::failure)) out.push_back("failure");
+    if (out.empty()) return {"success", "failure"};
+    return out;
   }
 
   // A game's items: the properties [0, properties.size()), then the constraints.
@@ -830,8 +855,9 @@ void find_conflicts(Table& t, const std::vector<std::size_t>& guarantees,
 
 }  // namespace
 
-Result check_realizability(const load::Mission& mission, const Options& options) {
-  Table t(mission);
+Result check_realizability(const load::Mission& mission, const prove::WorldModel& world,
+                           const Options& options) {
+  Table t(mission, world);
   Result result;
   std::set<std::string> read;  // the signals some requirement or assumption reads
   for (const auto& r : t.reads) read.insert(r.begin(), r.end());
@@ -859,6 +885,10 @@ Result check_realizability(const load::Mission& mission, const Options& options)
   for (Signal& s : result.signals) s.values = shown_values[s.name];
   if (result.components.empty())
     result.notes.push_back("the mission states no guarantee: any tree meets it");
+  else if (!world.actions.empty())
+    result.notes.push_back(world.file +
+                           ": how an action may end (its results) bounds the world's choices; "
+                           "how long it runs does not: the tree may let it end in any tick");
   result.realizable = any_false     ? std::optional<bool>(false)
                       : any_unknown ? std::nullopt
                                     : std::optional<bool>(true);

@@ -8,12 +8,15 @@
 // per component of requirements that share outputs (FRET's compositional check).
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "base/diagnostics.hpp"
 #include "base/location.hpp"
 #include "base/value.hpp"
 #include "load/mission.hpp"
+#include "prove/world_model.hpp"
 
 namespace uabt::realize {
 
@@ -69,6 +72,14 @@ struct Options {
 };
 
 // A requirement that cannot be read as a monitor leaves its component not decided, with why.
-Result check_realizability(const load::Mission& mission, const Options& options = {});
+// `world` (the mission's world.json) bounds how each action may end.
+Result check_realizability(const load::Mission& mission, const prove::WorldModel& world,
+                           const Options& options = {});
+
+// The findings of a result: one `requirements-unrealizable` error per minimal conflict (at its
+// first requirement, those in `first` listed first: an uplink's), one `realizability-undecided`
+// error per component not decided.
+std::vector<Finding> findings_of(const load::Mission& mission, const Result& result,
+                                 const std::set<std::string>& first = {});
 
 }  // namespace uabt::realize

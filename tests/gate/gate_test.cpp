@@ -46,7 +46,7 @@ TEST(Gate, CuriosityPasses) {
   EXPECT_TRUE(o.passed()) << format_text(o.report.findings);
   EXPECT_FALSE(o.compiled_xml.empty());
   EXPECT_EQ(o.report.stages,
-            (std::vector<std::string>{"load", "verify", "compile", "conform", "prove"}));
+            (std::vector<std::string>{"load", "verify", "compile", "conform", "prove", "realize"}));
   ASSERT_EQ(o.report.coverage.size(), 1u);
   const auto& c = o.report.coverage[0];
   EXPECT_TRUE(c.counted);

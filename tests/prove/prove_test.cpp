@@ -250,7 +250,8 @@ TEST(Prove, GateFindingsAtTheRequirement) {
   EXPECT_EQ(f.location.file, "requirements.fret");
   EXPECT_EQ(f.location.line, 5);
   EXPECT_EQ(f.requirements, std::vector<std::string>{"CoolBit"});
-  EXPECT_EQ(outcome.report.stages.back(), "prove");
+  EXPECT_EQ(outcome.report.stages,
+            (std::vector<std::string>{"load", "verify", "compile", "conform", "prove", "realize"}));
 }
 
 TEST(Prove, MissionWithoutGuaranteesIsLeftAlone) {

@@ -24,7 +24,7 @@ realize::Result realizability(const TempMission& t) {
   EXPECT_TRUE(mission) << error;
   if (!mission) return {};
   EXPECT_FALSE(has_errors(mission->findings)) << format_text(mission->findings);
-  return realize::check_realizability(*mission);
+  return realize::check_realizability(*mission, prove::mission_world(*mission));
 }
 
 // The example: consistent (a run without a sample request after an alarm satisfies all
@@ -96,6 +96,38 @@ TEST(Realizability, TheTreeRunsItsNodesAndTheWorldSaysHowTheyEnd) {
   EXPECT_EQ(answer("Ended: upon Go the rover shall within 2 ticks satisfy TakePicture.success | "
                    "TakePicture.failure\n"),
             true);
+}
+
+// world.json says how an action may end: a drill that never fails makes "it never fails"
+// something every tree meets; without the entry the world may fail it whenever it ends.
+TEST(Realizability, WorldJsonBoundsHowAnActionMayEnd) {
+  const auto answer = [](const std::string& results) {
+    std::map<std::string, std::string> files{
+        {"mission.xml", mission_with("    <Sequence>\n      <Stow/>\n      <Drill/>\n"
+                                     "    </Sequence>")},
+        {"domain.fret", "boolean Go\n"},
+        {"requirements.fret",
+         "Drilled: upon Go the rover shall within 3 ticks satisfy Drill.success\n"
+         "NeverFails: the rover shall never satisfy Drill.failure\n"}};
+    if (!results.empty())
+      files["world.json"] = "{\"actions\": {\"Drill\": {\"ticks\": [1, 2], \"results\": " +
+                            results + "}, \"Stow\": {\"ticks\": 1}}}";
+    const TempMission t(files);
+    return realizability(t);
+  };
+  const realize::Result free = answer("");
+  EXPECT_EQ(free.realizable, false);
+  ASSERT_EQ(free.components.size(), 1u);
+  EXPECT_EQ(free.components[0].conflicts, (Conflicts{{"Drilled"}}));
+  EXPECT_EQ(answer("[\"success\", \"failure\"]").realizable, false);
+  const realize::Result sure = answer("[\"success\"]");
+  EXPECT_EQ(sure.realizable, true);
+  ASSERT_EQ(sure.notes.size(), 1u);
+  EXPECT_NE(sure.notes[0].find("how long it runs does not"), std::string::npos) << sure.notes[0];
+  // A drill that always fails: nothing meets "drilled within 3 ticks".
+  const realize::Result never = answer("[\"failure\"]");
+  EXPECT_EQ(never.realizable, false);
+  EXPECT_EQ(never.components.at(0).conflicts, (Conflicts{{"Drilled"}}));
 }
 
 // A tree reacts within a tick to how its nodes ended (a Fallback ticks its second child when the
