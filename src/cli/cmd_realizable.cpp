@@ -2,11 +2,13 @@
 #include <nlohmann/json.hpp>
 
 #include "base/diagnostics.hpp"
+#include "base/files.hpp"
 #include "base/number_text.hpp"
 #include "cli/commands.hpp"
 #include "cli/common.hpp"
 #include "cli/findings_output.hpp"
 #include "realize/realize.hpp"
+#include "report/proofs.hpp"
 
 namespace uabt::cli {
 
@@ -83,7 +85,8 @@ std::string json_of(const realize::Result& r) {
   return j.dump(2) + "\n";
 }
 
-std::string text_of(const load::Mission& m, const realize::Result& r) {
+std::string text_of(const load::Mission& m, const realize::Result& r,
+                    const std::vector<std::string>& written) {
   TextOptions options;
   options.path_prefix = path_prefix_for(m.dir);
   std::string out = format_text(realize::findings_of(m, r), options);
@@ -94,6 +97,7 @@ std::string text_of(const load::Mission& m, const realize::Result& r) {
     conflicts += c.conflicts.size();
   }
   for (const auto& note : r.notes) out += "note: " + note + "\n";
+  for (const auto& note : written) out += "note: " + note + "\n";
   out += "realizable: " +
          std::string(r.realizable == true    ? "yes"
                      : r.realizable == false ? "no"
@@ -114,7 +118,7 @@ std::string text_of(const load::Mission& m, const realize::Result& r) {
 // closed); 2 when the mission cannot be read.
 void register_realizable(CLI::App& app, int& exit_code) {
   struct Args {
-    std::string mission, format = "text", output, source_root;
+    std::string mission, format = "text", output, source_root, scenarios;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -130,7 +134,11 @@ void register_realizable(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
   add_source_root_option(*cmd, args->source_root);
   cmd->add_option("-o,--output", args->output, "write the output to FILE");
+  cmd->add_option("--scenarios", args->scenarios,
+                  "write each unrealizable component's defeating inputs as DIR/<requirement>.json "
+                  "(a runtime scenario, named by the first requirement of its first conflict)");
   cmd->callback([args, &exit_code] {
+    if (!args->scenarios.empty()) check_output_directory(args->scenarios, "--scenarios");
     auto mission = load_without_errors(args->mission, {}, exit_code);
     if (!mission) {
       if (exit_code != kExitUsage) exit_code = kExitUsage;
@@ -145,6 +153,21 @@ void register_realizable(CLI::App& app, int& exit_code) {
       return;
     }
     const realize::Result result = realize::check_realizability(*mission, *world);
+    std::vector<std::string> written;  // what --scenarios wrote, as notes of the text output
+    if (!args->scenarios.empty()) {
+      make_output_directory(args->scenarios, "--scenarios");
+      for (const auto& c : result.components) {
+        const std::optional<std::string> scenario = realize::defeat_scenario(c);
+        if (!scenario) continue;
+        const std::string id = c.conflicts.front().front();
+        const auto path =
+            std::filesystem::path(args->scenarios) / report::counterexample_file_name(id);
+        write_file_atomically(path, *scenario);
+        written.push_back("the inputs that defeat every tree meeting " + id + "'s conflict: " +
+                          path.generic_string() + " (replay them with `uabt run " + args->mission +
+                          " --scenario " + path.generic_string() + "`)");
+      }
+    }
     if (args->format == "sarif" || args->format == "junit") {
       report::ReportInput input = report_input(*mission, {"load", "realize"});
       const std::vector<Finding> found = realize::findings_of(*mission, result);
@@ -153,7 +176,8 @@ void register_realizable(CLI::App& app, int& exit_code) {
       input.uri_prefix = sarif_uri_prefix(args->mission, args->source_root);
       write_findings(input, args->format, args->output);
     } else {
-      emit(args->output, args->format == "json" ? json_of(result) : text_of(*mission, result));
+      emit(args->output,
+           args->format == "json" ? json_of(result) : text_of(*mission, result, written));
     }
     exit_code = result.realizable == true ? kExitPass : kExitFail;
   });

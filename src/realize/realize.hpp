@@ -76,6 +76,13 @@ struct Options {
 Result check_realizability(const load::Mission& mission, const prove::WorldModel& world,
                            const Options& options = {});
 
+// The defeating inputs of an unrealizable component as a `uabt run` scenario (ARCHITECTURE §8):
+// tick 1's inputs as its initial state, each later change as an event at its tick, and an
+// action the inputs always end the same way as a one-tick action with that result. Replayed on
+// the mission's tree, a run that keeps going through the last tick violates one of the
+// component's first conflict. Nothing when no fixed input sequence defeats every tree.
+std::optional<std::string> defeat_scenario(const Component& component);
+
 // The findings of a result: one `requirements-unrealizable` error per minimal conflict (at its
 // first requirement, those in `first` listed first: an uplink's), one `realizability-undecided`
 // error per component not decided.

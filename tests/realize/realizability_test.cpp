@@ -3,7 +3,10 @@
 // its own reading of the requirements, over a few hundred generated sets.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <iostream>
 #include <random>
+#include <set>
 
 #include "base/diagnostics.hpp"
 #include "cli/cli_support.hpp"
@@ -110,8 +113,9 @@ TEST(Realizability, WorldJsonBoundsHowAnActionMayEnd) {
          "Drilled: upon Go the rover shall within 3 ticks satisfy Drill.success\n"
          "NeverFails: the rover shall never satisfy Drill.failure\n"}};
     if (!results.empty())
-      files["world.json"] = "{\"actions\": {\"Drill\": {\"ticks\": [1, 2], \"results\": " +
-                            results + "}, \"Stow\": {\"ticks\": 1}}}";
+      files["world.json"] =
+          "{\"actions\": {\"Drill\": {\"ticks\": [1, 2], \"results\": " + results +
+          "}, \"Stow\": {\"ticks\": 1}}}";
     const TempMission t(files);
     return realizability(t);
   };
@@ -405,6 +409,48 @@ bool independent_realizable(const std::vector<Guarantee>& guarantees,
   return winning[0] != 0;
 }
 
+// The defeating inputs as a scenario: replayed with `uabt run` on a mission's tree that keeps
+// running, they make it violate the conflict's requirements at the tick the game says; an
+// action the inputs always end the same way is a scenario action with that result.
+TEST(Realizability, TheDefeatingInputsReplayAsAScenarioThatViolatesTheConflict) {
+  const TempMission t(
+      {{"mission.xml", mission_with("    <KeepRunningUntilFailure>\n      <Sequence>\n"
+                                    "        <Stow/>\n        <Drill/>\n      </Sequence>\n"
+                                    "    </KeepRunningUntilFailure>")},
+       {"domain.fret", "boolean DustAlarm, SampleReq\n"},
+       {"requirements.fret", kDustAndSample}});
+  const std::string dir = t.dir().parent_path().string();
+  const CliRun realizable = run_uabt_in(dir, "realizable m --scenarios defeats");
+  EXPECT_EQ(realizable.exit_code, 1);
+  EXPECT_NE(realizable.out.find("note: the inputs that defeat every tree meeting G1's conflict: "
+                                "defeats/G1.json (replay them with `uabt run m --scenario "
+                                "defeats/G1.json`)"),
+            std::string::npos)
+      << realizable.out;
+  const CliRun run = run_uabt_in(dir, "run m --scenario defeats/G1.json");
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("tick 2: guarantee G1 violated"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("tick 2: guarantee G2 violated"), std::string::npos) << run.out;
+
+  // A drill the world fails whenever it ends: the scenario's Drill fails.
+  const TempMission drill({{"mission.xml", kRover},
+                           {"domain.fret", "boolean Go\n"},
+                           {"requirements.fret",
+                            "Drilled: upon Go the rover shall within 2 ticks satisfy "
+                            "Drill.success\n"}});
+  const realize::Result r = realizability(drill);
+  ASSERT_EQ(r.components.size(), 1u);
+  const std::optional<std::string> scenario = realize::defeat_scenario(r.components[0]);
+  ASSERT_TRUE(scenario.has_value());
+  EXPECT_NE(scenario->find("\"Drill\": {\n      \"ticks\": 1,\n      \"result\": \"failure\""),
+            std::string::npos)
+      << *scenario;
+  // Nothing to write for a realizable set.
+  realize::Component met;
+  met.realizable = true;
+  EXPECT_FALSE(realize::defeat_scenario(met).has_value());
+}
+
 TEST(Realizability, AgreesWithAGameSolverWrittenFromTheRequirementsMeaning) {
   std::mt19937 random(40);
   int unrealizable = 0, realizable = 0;
@@ -441,6 +487,87 @@ TEST(Realizability, AgreesWithAGameSolverWrittenFromTheRequirementsMeaning) {
   // Both answers are common enough for the agreement to mean something.
   EXPECT_GT(realizable, 50);
   EXPECT_GT(unrealizable, 50);
+}
+
+// The minimal conflicts against a hitting-set search built on the second solver: the maximal
+// subsets of guarantees it finds realizable give the minimal correction sets (their
+// complements), and the minimal conflicts are exactly the minimal sets that hit every one of
+// them (MARCO's duality). Up to six guarantees a set, so that every subset is tried.
+TEST(Realizability, MinimalConflictsAreTheMinimalHittingSetsOfTheCorrectionSets) {
+  std::mt19937 random(41);
+  const TempMission t({{"mission.xml", kRover}, {"domain.fret", "boolean a, b\n"}});
+  std::size_t sets = 0, conflicts = 0, several = 0;
+  for (int round = 0; round < 120; ++round) {
+    const std::size_t n =
+        static_cast<std::size_t>(std::uniform_int_distribution<int>(2, 6)(random));
+    std::vector<Guarantee> guarantees(n);
+    std::string text;
+    for (std::size_t k = 0; k < n; ++k) {
+      Guarantee& g = guarantees[k];
+      g.form = std::uniform_int_distribution<int>(0, 2)(random);
+      g.condition = random_formula(random, 1, 2);
+      g.response = random_formula(random, 1, 4);
+      const std::string id = "G" + std::to_string(k + 1);
+      text += (g.form == 0 ? id + ": the rover shall always satisfy " + g.response.text()
+               : g.form == 1
+                   ? id + ": whenever " + g.condition.text() +
+                         " the rover shall immediately satisfy " + g.response.text()
+                   : id + ": upon " + g.condition.text() +
+                         " the rover shall at the next timepoint satisfy " + g.response.text()) +
+              "\n";
+    }
+    const unsigned all = (1u << n) - 1;
+    std::vector<char> meets(all + 1);
+    for (unsigned mask = 0; mask <= all; ++mask) {
+      std::vector<Guarantee> subset;
+      for (std::size_t k = 0; k < n; ++k)
+        if (mask >> k & 1) subset.push_back(guarantees[k]);
+      meets[mask] = independent_realizable(subset, std::nullopt);
+    }
+    if (meets[all]) continue;
+    // Correction sets: complements of the maximal realizable subsets.
+    std::vector<unsigned> corrections;
+    for (unsigned mask = 0; mask <= all; ++mask) {
+      if (!meets[mask]) continue;
+      bool maximal = true;
+      for (std::size_t k = 0; k < n && maximal; ++k)
+        if (!(mask >> k & 1) && meets[mask | 1u << k]) maximal = false;
+      if (maximal) corrections.push_back(all & ~mask);
+    }
+    const auto hits_all = [&](unsigned mask) {
+      return std::all_of(corrections.begin(), corrections.end(),
+                         [&](unsigned c) { return (mask & c) != 0; });
+    };
+    std::set<std::vector<std::string>> hitting;
+    for (unsigned mask = 1; mask <= all; ++mask) {
+      if (!hits_all(mask)) continue;
+      bool minimal = true;
+      for (std::size_t k = 0; k < n && minimal; ++k)
+        if ((mask >> k & 1) && hits_all(mask & ~(1u << k))) minimal = false;
+      if (!minimal) continue;
+      std::vector<std::string> ids;
+      for (std::size_t k = 0; k < n; ++k)
+        if (mask >> k & 1) ids.push_back("G" + std::to_string(k + 1));
+      hitting.insert(ids);
+    }
+    t.write("requirements.fret", text);
+    const realize::Result r = realizability(t);
+    ASSERT_EQ(r.realizable, false) << text;
+    std::set<std::vector<std::string>> found;
+    for (const auto& c : r.components) {
+      EXPECT_TRUE(c.conflicts_complete) << text;
+      found.insert(c.conflicts.begin(), c.conflicts.end());
+    }
+    ASSERT_EQ(found, hitting) << text;
+    ++sets;
+    conflicts += found.size();
+    several += found.size() > 1 ? 1 : 0;
+  }
+  std::cout << "unrealizable sets: " << sets << ", minimal conflicts: " << conflicts
+            << " (as many as the hitting-set search), sets with several: " << several << "\n";
+  // Enough sets, and enough with several conflicts, for the agreement to mean something.
+  EXPECT_GT(sets, 30u);
+  EXPECT_GT(several, 5u);
 }
 
 }  // namespace
