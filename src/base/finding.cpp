@@ -18,6 +18,13 @@ const char* severity_name(Severity s) {
   return "error";
 }
 
+std::string listed_with_and(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return out;
+}
+
 Finding make_finding(const std::string& check, std::string message, SourceLocation location) {
   const CheckInfo* info = find_check(check);
   // An undocumented check id is a programming error: every finding must be explainable.

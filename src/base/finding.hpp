@@ -36,6 +36,9 @@ struct Finding {
   std::size_t more_like_it = 0;
 };
 
+// Names as a message lists them: "a", "a and b", "a, b and c".
+std::string listed_with_and(const std::vector<std::string>& names);
+
 // Builds a finding with the check's default severity from the catalogue.
 Finding make_finding(const std::string& check, std::string message, SourceLocation location);
 

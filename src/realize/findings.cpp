@@ -16,13 +16,6 @@ SourceLocation location_of(const load::Mission& m, const std::string& id) {
   return {m.requirements_file, 0, 0};
 }
 
-std::string listed(const std::vector<std::string>& ids) {
-  std::string out;
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    out += (k == 0 ? "" : k + 1 == ids.size() ? " and " : ", ") + ids[k];
-  return out;
-}
-
 std::string inputs_text(const std::vector<Choice>& choices) {
   std::string out;
   for (const auto& c : choices) {
@@ -40,10 +33,10 @@ std::vector<Finding> findings_of(const load::Mission& m, const Result& r,
   std::vector<Finding> out;
   for (const auto& c : r.components) {
     if (!c.realizable) {
-      out.push_back(make_finding(
-          "realizability-undecided",
-          "whether a tree can meet " + listed(c.requirements) + " is not decided: " + c.reason,
-          location_of(m, c.requirements.front())));
+      out.push_back(make_finding("realizability-undecided",
+                                 "whether a tree can meet " + listed_with_and(c.requirements) +
+                                     " is not decided: " + c.reason,
+                                 location_of(m, c.requirements.front())));
       continue;
     }
     if (*c.realizable) continue;
@@ -52,8 +45,9 @@ std::vector<Finding> findings_of(const load::Mission& m, const Result& r,
                             [&](const std::string& id) { return first.count(id) != 0; });
       Finding f = make_finding(
           "requirements-unrealizable",
-          (conflict.size() == 1 ? "no behavior tree meets " + conflict.front()
-                                : "no behavior tree meets " + listed(conflict) + " together") +
+          (conflict.size() == 1
+               ? "no behavior tree meets " + conflict.front()
+               : "no behavior tree meets " + listed_with_and(conflict) + " together") +
               ": the environment can always bring about a state in which one of them fails",
           location_of(m, conflict.front()));
       f.requirements = conflict;

@@ -1,5 +1,6 @@
 #include <nlohmann/json.hpp>
 
+#include "base/finding.hpp"
 #include "base/number_text.hpp"
 #include "realize/realize.hpp"
 
@@ -8,13 +9,6 @@ namespace uabt::realize {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string listed(const std::vector<std::string>& ids) {
-  std::string out;
-  for (std::size_t k = 0; k < ids.size(); ++k)
-    out += (k == 0 ? "" : k + 1 == ids.size() ? " and " : ", ") + ids[k];
-  return out;
-}
 
 }  // namespace
 
@@ -48,10 +42,10 @@ std::optional<std::string> defeat_scenario(const Component& component) {
       unfixed += (unfixed.empty() ? "" : ", ") + action;
   }
   Json s = Json::object();
-  std::string description = "Inputs that defeat every behavior tree meeting " + listed(conflict) +
-                            " (uabt realizable): a tree that keeps running through tick " +
-                            std::to_string(component.defeating_inputs.back().tick) +
-                            " violates one of them";
+  std::string description =
+      "Inputs that defeat every behavior tree meeting " + listed_with_and(conflict) +
+      " (uabt realizable): a tree that keeps running through tick " +
+      std::to_string(component.defeating_inputs.back().tick) + " violates one of them";
   if (!unfixed.empty())
     description += "; how " + unfixed +
                    " end is left to the mission's world (the game ends "

@@ -22,13 +22,6 @@ std::string consequence(const ScriptSite& s, bool always) {
   return always ? "it always holds" : "it never holds";
 }
 
-std::string joined(const std::vector<std::string>& parts) {
-  std::string out;
-  for (std::size_t k = 0; k < parts.size(); ++k)
-    out += (k == 0 ? "" : k + 1 == parts.size() ? " and " : ", ") + parts[k];
-  return out;
-}
-
 }  // namespace
 
 std::vector<Finding> check_script_decided(const FlowGraph& g, const load::Mission& mission,
@@ -52,13 +45,13 @@ std::vector<Finding> check_script_decided(const FlowGraph& g, const load::Missio
       reasons = fails.reasons;
     }
     const std::string where = s.attribute == "code" ? s.node_kind : s.node_kind + " " + s.attribute;
-    Finding f = make_finding(
-        "script-decided",
-        "the condition `" + s.script->code() + "` of " + where + " is " +
-            (always ? "always true" : "never true") + " in the domain, so " +
-            consequence(s, always) + ": " +
-            (reasons.empty() ? std::string("whatever the state") : "because of " + joined(reasons)),
-        s.location);
+    Finding f = make_finding("script-decided",
+                             "the condition `" + s.script->code() + "` of " + where + " is " +
+                                 (always ? "always true" : "never true") + " in the domain, so " +
+                                 consequence(s, always) + ": " +
+                                 (reasons.empty() ? std::string("whatever the state")
+                                                  : "because of " + listed_with_and(reasons)),
+                             s.location);
     if (!always)
       f.notes.push_back("no state of the domain satisfies it");
     else if (!holds.witness.empty())
