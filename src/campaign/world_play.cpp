@@ -1,6 +1,7 @@
 #include "campaign/world_play.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "base/number_text.hpp"

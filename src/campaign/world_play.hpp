@@ -1,7 +1,7 @@
 #pragma once
 // A campaign scenario played in world.json's world (ARCHITECTURE §13): one deterministic resolution
 // of the world model, so that a replay does not show what the contracts rule out.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "base/value.hpp"
 #include "load/mission.hpp"

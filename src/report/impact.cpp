@@ -1,6 +1,7 @@
 #include "report/impact.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 
 #include "base/diagnostics.hpp"
 #include "base/number_text.hpp"

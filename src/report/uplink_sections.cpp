@@ -1,5 +1,7 @@
 #include "report/uplink_sections.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "base/diagnostics.hpp"
 #include "report/common.hpp"
 #include "report/impact.hpp"

@@ -3,7 +3,7 @@
 // each requirement and the behaviour change, per adaptable node. Internal to the writers.
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "report/model.hpp"
 

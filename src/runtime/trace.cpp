@@ -1,6 +1,7 @@
 #include "runtime/trace.hpp"
 
 #include <cctype>
+#include <nlohmann/json.hpp>
 
 #include "base/diagnostics.hpp"
 #include "base/number_text.hpp"

@@ -2,6 +2,7 @@
 // verdict (state counts checked against brute force), the per-node hit policy, and the merged
 // mission written out gating to the same bytes.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <map>
 #include <random>

@@ -1,5 +1,6 @@
 // The Proofs section of the reports: the verdict table and a counterexample's timeline.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "report/proof_timeline.hpp"
 #include "report/proofs.hpp"
