@@ -130,8 +130,9 @@ void register_realizable(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("--format", args->format,
                   "text | json (the verdict, conflicts and defeating inputs as data) | sarif | "
-                  "junit (the findings, for code scanning and CI)")
-      ->check(CLI::IsMember({"text", "json", "sarif", "junit"}));
+                  "junit (the findings, for code scanning and CI) | html (a page with the "
+                  "conflicts as a matrix of requirements)")
+      ->check(CLI::IsMember({"text", "json", "sarif", "junit", "html"}));
   add_source_root_option(*cmd, args->source_root);
   cmd->add_option("-o,--output", args->output, "write the output to FILE");
   cmd->add_option("--scenarios", args->scenarios,
@@ -168,7 +169,7 @@ void register_realizable(CLI::App& app, int& exit_code) {
                           " --scenario " + path.generic_string() + "`)");
       }
     }
-    if (args->format == "sarif" || args->format == "junit") {
+    if (args->format == "sarif" || args->format == "junit" || args->format == "html") {
       report::ReportInput input = report_input(*mission, {"load", "realize"});
       const std::vector<Finding> found = realize::findings_of(*mission, result);
       input.findings.insert(input.findings.end(), found.begin(), found.end());

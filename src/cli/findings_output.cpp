@@ -87,6 +87,8 @@ int write_findings(const report::ReportInput& input, const std::string& format,
     text = report::to_sarif(input);
   } else if (format == "junit") {
     text = report::to_junit(input);
+  } else if (format == "html") {
+    text = report::to_html(input);
   } else {
     TextOptions options;
     if (input.mission != nullptr) {

@@ -57,6 +57,7 @@ caption { text-align: left; font-size: 13px; color: #57606a; }
 .swatch { display: inline-block; width: 12px; height: 12px; border: 1px solid #333;
           vertical-align: -1px; margin-right: 6px; }
 .swatch.gap { background: repeating-linear-gradient(45deg, #d62728 0 3px, #fde0e0 3px 6px); }
+table.conflicts td { text-align: center; color: #d62728; }
 table.decision tr.gap td { background: #ffebe9; }
 table.decision tr.overlap td { background: #eaeef2; }
 table.decision tr.gap td:first-child { border-left: 4px solid #d62728; }
@@ -102,9 +103,25 @@ std::string timeline_link(const ReportInput& input, const Finding& finding) {
   return "";
 }
 
-void finding_html(const Finding& finding, const std::string& timeline, std::string& out) {
+// The anchor of the k-th (1-based) `requirements-unrealizable` finding, which the conflict
+// matrix links to.
+std::string conflict_anchor(std::size_t k) {
+  return "conflict-" + std::to_string(k);
+}
+
+// The findings the conflict matrix shows: every minimal conflict, in report order.
+std::vector<const Finding*> conflicts_of(const ReportInput& input) {
+  std::vector<const Finding*> out;
+  for (const auto& f : input.findings)
+    if (f.check == "requirements-unrealizable") out.push_back(&f);
+  return out;
+}
+
+void finding_html(const Finding& finding, const std::string& timeline, std::string& out,
+                  const std::string& id = "") {
   const char* severity = severity_name(finding.severity);
-  out += std::string("<article class=\"finding ") + severity + "\">\n";
+  out += std::string("<article class=\"finding ") + severity + "\"" +
+         (id.empty() ? "" : " id=\"" + id + "\"") + ">\n";
   out += std::string("<p><span class=\"sev\">") + severity + "</span> " + code(finding.check) +
          " at " + code(detail::location_text(finding.location)) + "</p>\n";
   out += "<p class=\"msg\">" + html_escape(finding.message) + "</p>\n";
@@ -152,6 +169,13 @@ void finding_html(const Finding& finding, const std::string& timeline, std::stri
 
 void findings_section(const ReportInput& input, const std::vector<std::string>& shown,
                       std::string& out) {
+  const std::vector<const Finding*> conflicts = conflicts_of(input);
+  const auto id_of = [&](const Finding* f) {
+    const auto it = std::find(conflicts.begin(), conflicts.end(), f);
+    return it == conflicts.end()
+               ? std::string()
+               : conflict_anchor(static_cast<std::size_t>(it - conflicts.begin()) + 1);
+  };
   out += "<section id=\"findings\">\n<h2>Findings</h2>\n";
   if (input.findings.empty()) {
     out += "<p>No findings: every check that ran passed.</p>\n</section>\n";
@@ -166,16 +190,46 @@ void findings_section(const ReportInput& input, const std::vector<std::string>& 
                          input.adaptables.end();
     out += "<h3>Adaptable node " + code(adaptable) +
            (in_tree ? "" : " <span class=\"meta\">(not in the mission tree)</span>") + "</h3>\n";
-    for (const Finding* f : group) finding_html(*f, timeline_link(input, *f), out);
+    for (const Finding* f : group) finding_html(*f, timeline_link(input, *f), out, id_of(f));
   }
   std::vector<const Finding*> mission_wide;
   for (const auto& f : input.findings)
     if (f.adaptable.empty()) mission_wide.push_back(&f);
   if (!mission_wide.empty()) {
     out += "<h3>Mission-wide</h3>\n";
-    for (const Finding* f : mission_wide) finding_html(*f, timeline_link(input, *f), out);
+    for (const Finding* f : mission_wide) finding_html(*f, timeline_link(input, *f), out, id_of(f));
   }
   out += "</section>\n";
+}
+
+// The minimal conflicts as a matrix: a row per conflict (linked to its finding, which lists the
+// inputs that defeat every tree), a column per requirement in any conflict, a mark where the
+// requirement belongs to the conflict. A requirement in many rows is the one to look at first.
+void conflicts_section(const ReportInput& input, std::string& out) {
+  const std::vector<const Finding*> conflicts = conflicts_of(input);
+  if (conflicts.empty()) return;
+  std::vector<std::string> columns;
+  for (const Finding* f : conflicts)
+    for (const auto& id : f->requirements)
+      if (std::find(columns.begin(), columns.end(), id) == columns.end()) columns.push_back(id);
+  out += "<section id=\"realizability\">\n<h2>Realizability</h2>\n<p>" +
+         std::to_string(conflicts.size()) + " minimal set" + (conflicts.size() == 1 ? "" : "s") +
+         " of guarantees that no behavior tree meets together, whatever it does: change a "
+         "requirement of each, or state what the environment never does.</p>\n"
+         "<table class=\"conflicts\">\n<thead><tr><th>Conflict</th>";
+  for (const auto& id : columns) out += "<th>" + code(id) + "</th>";
+  out += "</tr></thead><tbody>\n";
+  for (std::size_t k = 0; k < conflicts.size(); ++k) {
+    out += "<tr><th><a href=\"#" + conflict_anchor(k + 1) + "\">" + std::to_string(k + 1) +
+           "</a> <span class=\"meta\">" + severity_name(conflicts[k]->severity) + "</span></th>";
+    for (const auto& id : columns) {
+      const auto& members = conflicts[k]->requirements;
+      const bool in = std::find(members.begin(), members.end(), id) != members.end();
+      out += in ? "<td title=\"" + html_escape(id) + "\">&#9679;</td>" : "<td></td>";
+    }
+    out += "</tr>\n";
+  }
+  out += "</tbody></table>\n</section>\n";
 }
 
 void requirements_html(const ReportInput& input, const std::string& adaptable, std::string& out) {
@@ -300,6 +354,7 @@ std::string to_html(const ReportInput& input) {
   out += "<nav><a href=\"#findings\">Findings</a>";
   if (input.uplink) out += "<a href=\"#uplink\">Uplink</a>";
   if (input.proofs && !input.proofs->answers.empty()) out += "<a href=\"#proofs\">Proofs</a>";
+  if (!conflicts_of(input).empty()) out += "<a href=\"#realizability\">Realizability</a>";
   if (input.campaign) out += "<a href=\"#tests\">Test campaign</a>";
   for (std::size_t i = 0; i < shown.size(); ++i)
     out += "<a href=\"#" + anchor(i, shown[i]) + "\">" + html_escape(shown[i]) + "</a>";
@@ -308,6 +363,7 @@ std::string to_html(const ReportInput& input) {
   findings_section(input, shown, out);
   if (input.uplink) out += detail::uplink_html(*input.uplink);
   if (input.proofs) out += proofs_html(*input.proofs);
+  conflicts_section(input, out);
   if (input.campaign) {
     out += "<section id=\"tests\">\n<h2>Test campaign</h2>\n<p>" +
            html_escape(input.campaign->headline()) + "</p>\n";

@@ -284,6 +284,9 @@ TEST(Realizability, TheCommandAnswersInTextAndJsonWithItsExitCode) {
   const CliRun junit = run_uabt_in(dir, "realizable m --format junit");
   EXPECT_EQ(junit.exit_code, 1);
   EXPECT_NE(junit.out.find("type=\"requirements-unrealizable\""), std::string::npos) << junit.out;
+  const CliRun html = run_uabt_in(dir, "realizable m --format html");
+  EXPECT_EQ(html.exit_code, 1);
+  EXPECT_NE(html.out.find("<section id=\"realizability\">"), std::string::npos) << html.out;
   bad.write("requirements.fret", std::string(kDustAndSample) +
                                      "A1: upon DustAlarm the Environment shall at the next "
                                      "timepoint satisfy !SampleReq\n");

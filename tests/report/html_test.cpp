@@ -132,6 +132,34 @@ TEST(HtmlReport, VerdictAndSelfContainedPage) {
   EXPECT_TRUE(has(to_html(testing::passing_input()), "<div class=\"badge\">PASS</div>"));
 }
 
+// The minimal conflicts of `uabt realizable` (and the gate) as a matrix: a row per conflict,
+// linked to its finding, a column per requirement in any conflict.
+TEST(HtmlReport, ConflictsAsAMatrixOfRequirements) {
+  ReportInput input = testing::passing_input();
+  EXPECT_FALSE(has(to_html(input), "id=\"realizability\""));
+  const std::vector<std::vector<std::string>> conflicts{{"G1", "G2", "G3"}, {"G1", "G3", "G4"}};
+  for (const auto& ids : conflicts) {
+    Finding f = make_finding("requirements-unrealizable", "no behavior tree meets them together",
+                             {"requirements.fret", 1, 5});
+    f.requirements = ids;
+    input.findings.push_back(f);
+  }
+  const std::string html = to_html(input);
+  EXPECT_TRUE(has(html, "<a href=\"#realizability\">Realizability</a>"));
+  EXPECT_TRUE(has(html, "<p>2 minimal sets of guarantees that no behavior tree meets together"));
+  EXPECT_TRUE(has(html,
+                  "<thead><tr><th>Conflict</th><th><code>G1</code></th><th><code>G2</code>"
+                  "</th><th><code>G3</code></th><th><code>G4</code></th></tr></thead>"));
+  EXPECT_TRUE(has(html,
+                  "<tr><th><a href=\"#conflict-2\">2</a> <span class=\"meta\">error</span>"
+                  "</th><td title=\"G1\">&#9679;</td><td></td><td title=\"G3\">&#9679;</td>"
+                  "<td title=\"G4\">&#9679;</td></tr>"));
+  EXPECT_EQ(count(html, "&#9679;"), 6u);
+  // Each row's link lands on its finding.
+  EXPECT_TRUE(has(html, "<article class=\"finding error\" id=\"conflict-1\">"));
+  EXPECT_TRUE(has(html, "<article class=\"finding error\" id=\"conflict-2\">"));
+}
+
 TEST(HtmlReport, EveryFindingMessageEscaped) {
   const ReportInput input = testing::failing_input();
   const std::string html = to_html(input);
