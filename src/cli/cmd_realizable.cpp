@@ -158,7 +158,7 @@ void register_realizable(CLI::App& app, int& exit_code) {
     if (!args->scenarios.empty()) {
       make_output_directory(args->scenarios, "--scenarios");
       for (const auto& c : result.components) {
-        const std::optional<std::string> scenario = realize::defeat_scenario(c);
+        const std::optional<std::string> scenario = realize::defeat_scenario(result, c);
         if (!scenario) continue;
         const std::string id = c.conflicts.front().front();
         const auto path =

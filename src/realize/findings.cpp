@@ -48,7 +48,10 @@ std::vector<Finding> findings_of(const load::Mission& m, const Result& r,
           (conflict.size() == 1
                ? "no behavior tree meets " + conflict.front()
                : "no behavior tree meets " + listed_with_and(conflict) + " together") +
-              ": the environment can always bring about a state in which one of them fails",
+              (conflict.size() == 1
+                   ? ": the environment can always bring about a state in which it fails"
+                   : ": the environment can always bring about a state in which one of them "
+                     "fails"),
           location_of(m, conflict.front()));
       f.requirements = conflict;
       if (!c.defeating_inputs.empty())

@@ -301,6 +301,8 @@ struct Table {
                   : std::vector<std::string>{"idle", "running", "ended"});
     add(result_name(label), Role::input,
         "the world decides how the node ends when the tree lets it end this tick", endings(label));
+    if (const auto& kinds = vocabulary.leaf_kinds.at(label); kinds.size() == 1)
+      signals.at(result_name(label)).shown.action = *kinds.begin();
   }
 
   // How world.json lets the robot's node `label` end: the results its contracts list, over

@@ -28,6 +28,9 @@ struct Signal {
   Role role = Role::input;
   std::vector<Value> values;  // one per cell
   std::string why;            // why it has that role: "a domain variable no tree writes"
+  // For `<label>.result`: the action ID world.json and scenarios key the node by ("" when the
+  // label names leaves of several IDs).
+  std::string action;
 };
 
 // One input chosen by the environment at one tick of a defeating run.
@@ -81,7 +84,7 @@ Result check_realizability(const load::Mission& mission, const prove::WorldModel
 // action the inputs always end the same way as a one-tick action with that result. Replayed on
 // the mission's tree, a run that keeps going through the last tick violates one of the
 // component's first conflict. Nothing when no fixed input sequence defeats every tree.
-std::optional<std::string> defeat_scenario(const Component& component);
+std::optional<std::string> defeat_scenario(const Result& result, const Component& component);
 
 // The findings of a result: one `requirements-unrealizable` error per minimal conflict (at its
 // first requirement, those in `first` listed first: an uplink's), one `realizability-undecided`

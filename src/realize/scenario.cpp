@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "base/finding.hpp"
@@ -12,7 +13,7 @@ using Json = nlohmann::ordered_json;
 
 }  // namespace
 
-std::optional<std::string> defeat_scenario(const Component& component) {
+std::optional<std::string> defeat_scenario(const Result& result, const Component& component) {
   if (component.defeating_inputs.empty() || component.conflicts.empty()) return std::nullopt;
   const std::vector<std::string>& conflict = component.conflicts.front();
   Json initial = Json::object(), events = Json::array(), actions = Json::object();
@@ -22,7 +23,12 @@ std::optional<std::string> defeat_scenario(const Component& component) {
     Json set = Json::object();
     for (const auto& [name, value] : choice.inputs) {
       if (name.ends_with(".result")) {  // how the action ends, if it ends this tick
-        endings[name.substr(0, name.size() - 7)].insert(value.to_string());
+        const auto signal = std::find_if(result.signals.begin(), result.signals.end(),
+                                         [&](const Signal& s) { return s.name == name; });
+        const std::string action = signal == result.signals.end() ? "" : signal->action;
+        // A label of leaves of several IDs: no one action to give the result to.
+        endings[action.empty() ? name.substr(0, name.size() - 7) : action].insert(
+            action.empty() ? std::string() : value.to_string());
         continue;
       }
       const auto it = held.find(name);
@@ -34,9 +40,9 @@ std::optional<std::string> defeat_scenario(const Component& component) {
     }
     if (!set.empty()) events.push_back(Json{{"at", choice.tick}, {"set", set}});
   }
-  std::string unfixed;  // actions the inputs end in more than one way
+  std::string unfixed;  // actions the inputs end in more than one way, or nodes of several IDs
   for (const auto& [action, results] : endings) {
-    if (results.size() == 1)
+    if (results.size() == 1 && !results.begin()->empty())
       actions[action] = Json{{"ticks", 1}, {"result", *results.begin()}};
     else
       unfixed += (unfixed.empty() ? "" : ", ") + action;
@@ -48,8 +54,8 @@ std::optional<std::string> defeat_scenario(const Component& component) {
       std::to_string(component.defeating_inputs.back().tick) + " violates one of them";
   if (!unfixed.empty())
     description += "; how " + unfixed +
-                   " end is left to the mission's world (the game ends "
-                   "them differently from tick to tick)";
+                   " end is left to the mission's world (the game ends them differently from "
+                   "tick to tick, or the name stands for nodes of several IDs)";
   s["description"] = description;
   s["max_ticks"] = component.defeating_inputs.back().tick;
   s["initial"] = initial;

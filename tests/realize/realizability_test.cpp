@@ -443,15 +443,35 @@ TEST(Realizability, TheDefeatingInputsReplayAsAScenarioThatViolatesTheConflict) 
                             "Drill.success\n"}});
   const realize::Result r = realizability(drill);
   ASSERT_EQ(r.components.size(), 1u);
-  const std::optional<std::string> scenario = realize::defeat_scenario(r.components[0]);
+  const std::optional<std::string> scenario = realize::defeat_scenario(r, r.components[0]);
   ASSERT_TRUE(scenario.has_value());
   EXPECT_NE(scenario->find("\"Drill\": {\n      \"ticks\": 1,\n      \"result\": \"failure\""),
             std::string::npos)
       << *scenario;
+  // A node the requirement names by its name: the scenario gives the result to its action ID
+  // (the tree keeps running however the drill ends).
+  const TempMission bore(
+      {{"mission.xml", mission_with("    <KeepRunningUntilFailure>\n      <Inverter>\n"
+                                    "        <Drill name=\"bore\"/>\n      </Inverter>\n"
+                                    "    </KeepRunningUntilFailure>")},
+       {"domain.fret", "boolean Go\n"},
+       {"requirements.fret",
+        "Drilled: upon Go the rover shall within 2 ticks satisfy "
+        "bore.success\n"}});
+  const std::string bore_dir = bore.dir().parent_path().string();
+  const CliRun named = run_uabt_in(bore_dir, "realizable m --scenarios defeats");
+  EXPECT_NE(named.out.find("no behavior tree meets Drilled: the environment can always bring "
+                           "about a state in which it fails"),
+            std::string::npos)
+      << named.out;
+  const CliRun bored = run_uabt_in(bore_dir, "run m --scenario defeats/Drilled.json");
+  EXPECT_EQ(bored.exit_code, 1) << bored.out;
+  EXPECT_NE(bored.out.find("property Drilled: violated from tick 3"), std::string::npos)
+      << bored.out;
   // Nothing to write for a realizable set.
   realize::Component met;
   met.realizable = true;
-  EXPECT_FALSE(realize::defeat_scenario(met).has_value());
+  EXPECT_FALSE(realize::defeat_scenario(r, met).has_value());
 }
 
 TEST(Realizability, AgreesWithAGameSolverWrittenFromTheRequirementsMeaning) {
