@@ -4,7 +4,6 @@
 #include <string>
 #include <vector>
 
-
 #include "report/proofs.hpp"
 
 namespace uabt::report::detail {
