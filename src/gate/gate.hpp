@@ -45,6 +45,9 @@ struct Outcome {
   conform::Result conformance;
   report::ReportInput report;
   std::optional<campaign::Campaign> campaign;  // set by add_test_campaign when it built one
+  // world.json as the proof step read it, for the steps after it; none before it ran, or when
+  // world.json cannot be used (the proof step reports it).
+  std::optional<prove::WorldModel> world;
 
   bool passed() const { return report.passed(); }
 };

@@ -34,7 +34,9 @@ prove::Result prove_checked(const Outcome& checked, const load::Mission& mission
     return runtime::with_source_places(text, *checked.compiled_tree, *checked.mission,
                                        checked.compiled.trace);
   };
-  const prove::WorldModel world = prove::mission_world(mission);
+  std::optional<prove::WorldModel> loaded;  // when the proof step has not read it
+  const prove::WorldModel& world =
+      checked.world ? *checked.world : loaded.emplace(prove::mission_world(mission));
   if (warnings) *warnings = world.warnings;
   prove::Result result;
   try {
@@ -60,6 +62,7 @@ void add_proofs(Outcome& outcome, const prove::Options& options, const ProofRepo
   replay.run_options = reporting.run_options;
   std::vector<Finding> found, warnings;
   try {
+    outcome.world = prove::mission_world(*outcome.mission);
     const prove::Result result = prove_checked(outcome, *outcome.mission, options, &warnings);
     std::map<std::string, std::string> written;
     if (!reporting.counterexample_dir.empty())

@@ -22,12 +22,8 @@ bool tree_meets_guarantees(const report::ReportInput& report) {
 void add_realizability(Outcome& outcome) {
   if (!outcome.mission || !prove::has_guarantees(*outcome.mission)) return;
   const load::Mission& m = *outcome.mission;
-  prove::WorldModel world;
-  try {
-    world = prove::mission_world(m);
-  } catch (const prove::WorldError&) {
-    return;  // the proof step reported it
-  }
+  if (!outcome.world) return;  // world.json cannot be used: the proof step reported it
+  const prove::WorldModel& world = *outcome.world;
   const realize::Result result = realize::check_realizability(m, world);
   std::set<std::string> uplinked;
   for (const auto& merge : m.merges)

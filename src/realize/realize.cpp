@@ -286,7 +286,7 @@ struct Table {
     const auto add = [&](const std::string& name, Role role, const std::string& why,
                          std::vector<std::string> values) {
       GameSignal choice;
-      choice.shown = {name, role, {}, why};
+      choice.shown = {name, role, {}, why, ""};
       choice.declaration.name = name;
       choice.declaration.type = fretish::VarType::enumeration;
       choice.declaration.enum_values = std::move(values);
@@ -888,9 +888,9 @@ Result check_realizability(const load::Mission& mission, const prove::WorldModel
   if (result.components.empty())
     result.notes.push_back("the mission states no guarantee: any tree meets it");
   else if (!world.actions.empty())
-    result.notes.push_back(world.file +
-                           ": how an action may end (its results) bounds the world's choices; "
-                           "how long it runs does not: the tree may let it end in any tick");
+    result.notes.push_back(
+        "how world.json lets an action end (its results) bounds the world's choices; how long "
+        "it runs does not: the tree may let it end in any tick");
   result.realizable = any_false     ? std::optional<bool>(false)
                       : any_unknown ? std::nullopt
                                     : std::optional<bool>(true);
