@@ -1,6 +1,7 @@
 #include "prove/choice_world.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 #include "runtime/scenario_check.hpp"
@@ -12,41 +13,54 @@ using runtime::NodeStatus;
 void Chooser::start(const std::vector<std::uint32_t>& prefix) {
   taken_ = prefix;
   arity_.assign(prefix.size(), 0);
+  allowed_.assign(prefix.size(), ~std::uint64_t{0});
   pos_ = 0;
+  branchings_ = 0;
   forced_ = prefix.size();
 }
 
 void Chooser::resume(const std::vector<std::uint32_t>& prefix, std::size_t at) {
   taken_ = prefix;
   arity_.resize(prefix.size(), 0);
+  allowed_.resize(prefix.size(), ~std::uint64_t{0});
   pos_ = at;
   forced_ = prefix.size();
 }
 
-std::uint32_t Chooser::choose(std::uint32_t options, std::uint32_t site) {
+std::uint32_t Chooser::choose(std::uint32_t options, std::uint32_t site, std::uint64_t allowed) {
   if (pos_ >= forced_ && seen && seen(site)) {
     taken_.resize(pos_);
     arity_.resize(pos_);
+    allowed_.resize(pos_);
     throw ChoicePruned{};
   }
   if (reached) reached(site, pos_);
+  const std::uint64_t options_bits =
+      options >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << options) - 1;
+  branchings_ += options >= 64 || std::popcount(allowed & options_bits) > 1;
   if (pos_ < taken_.size()) {
     arity_[pos_] = options;
+    allowed_[pos_] = allowed;
     taken_[pos_] %= options;  // a prefix from elsewhere (a random walk) may exceed it
     return taken_[pos_++];
   }
-  taken_.push_back(0);
+  const std::uint32_t first =
+      allowed == 0 ? 0 : static_cast<std::uint32_t>(std::countr_zero(allowed));
+  taken_.push_back(std::min(first, options - 1));
   arity_.push_back(options);
+  allowed_.push_back(allowed);
   ++pos_;
-  return 0;
+  return taken_.back();
 }
 
 bool Chooser::advance(std::vector<std::uint32_t>& prefix) const {
   prefix.assign(taken_.begin(), taken_.begin() + static_cast<std::ptrdiff_t>(pos_));
   while (!prefix.empty()) {
     const std::size_t i = prefix.size() - 1;
-    if (prefix[i] + 1 < arity_[i]) {
-      ++prefix[i];
+    std::uint32_t next = prefix[i] + 1;
+    while (next < arity_[i] && next < 64 && ((allowed_[i] >> next) & 1) == 0) ++next;
+    if (next < arity_[i]) {
+      prefix[i] = next;
       return true;
     }
     prefix.pop_back();

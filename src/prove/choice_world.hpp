@@ -32,7 +32,10 @@ class Chooser {
   // `site` names the choice point (an action, an environment variable) for `seen`: 2 * leaf
   // for an action's outcome (asked before the action changes anything), odd for an
   // environment variable, from 2^31 on for an output port's value.
-  std::uint32_t choose(std::uint32_t options, std::uint32_t site = 0);
+  // `allowed`: the options the search may take (bit k for option k < 64; options from 64 on
+  // are always allowed); a replay takes what its prefix says.
+  std::uint32_t choose(std::uint32_t options, std::uint32_t site = 0,
+                       std::uint64_t allowed = ~std::uint64_t{0});
   static bool outcome_site(std::uint32_t site) { return site < (1u << 31) && site % 2 == 0; }
   // When set, told of every choice point (its site and its number in the tick) before it
   // chooses.
@@ -43,12 +46,18 @@ class Chooser {
   // advance() goes on with the next sequence that differs before it.
   std::function<bool(std::uint32_t site)> seen;
   const std::vector<std::uint32_t>& taken() const { return taken_; }
+  // Whether this sequence has made the choice its prefix changes (or a later one): every point
+  // it reaches from there on, no earlier sequence reached with the same choices.
+  bool past_prefix() const { return pos_ >= forced_; }
+  // How many choices this sequence made where more than one option was allowed.
+  std::size_t branchings() const { return branchings_; }
   // The next sequence after the one just taken, false when every one was.
   bool advance(std::vector<std::uint32_t>& prefix) const;
 
  private:
   std::vector<std::uint32_t> taken_, arity_;
-  std::size_t pos_ = 0, forced_ = 0;
+  std::vector<std::uint64_t> allowed_;
+  std::size_t pos_ = 0, forced_ = 0, branchings_ = 0;
 };
 
 // The state key a robot leaf answers from or is contracted by: `Name(port=value,…)` with its

@@ -73,9 +73,20 @@ Environment::Environment(Model& m) : m_(m) {
   constraints_of_.resize(m.vars.size());
   for (std::size_t c = 0; c < constraints_.size(); ++c)
     for (std::size_t v : constraints_[c].vars) constraints_of_[v].push_back(c);
-  for (const Property& p : m.properties)
-    for (const auto& atom : p.atoms)
-      for (std::size_t v : vars_of(*atom)) monitor_reads_.push_back(v);
+  read_until_.assign(m.vars.size(), 0);
+  reads_of_.resize(m.properties.size());
+  for (std::size_t j = 0; j < m.properties.size(); ++j) {
+    for (const auto& atom : m.properties[j].atoms)
+      for (std::size_t v : vars_of(*atom)) {
+        monitor_reads_.push_back(v);
+        reads_of_[j].push_back(v);
+        read_until_[v] = j + 1;
+      }
+    std::sort(reads_of_[j].begin(), reads_of_[j].end());
+    reads_of_[j].erase(std::unique(reads_of_[j].begin(), reads_of_[j].end()), reads_of_[j].end());
+  }
+  for (std::size_t v = 0; v < m.vars.size(); ++v)
+    if (!constraints_of_[v].empty()) read_until_[v] = SIZE_MAX;
   std::sort(monitor_reads_.begin(), monitor_reads_.end());
   monitor_reads_.erase(std::unique(monitor_reads_.begin(), monitor_reads_.end()),
                        monitor_reads_.end());
@@ -176,6 +187,7 @@ void Environment::watched(runtime::SlotId slot) {
 
 void Environment::start_tick(bool first) {
   first_ = first;
+  offer_var_ = SIZE_MAX;
   chosen_.clear();
   runtime::Blackboard& bb = m_.engine->blackboard();
   // The environment's own entries get their values as they are chosen.
@@ -307,10 +319,13 @@ void Environment::resolve(runtime::SlotId slot) {
   if (options.empty())
     throw ProveError("internal error: no value of '" + v.name +
                      "' keeps the assumptions satisfiable, although the tick started with one");
-  const std::uint32_t pick = options.size() == 1
-                                 ? options[0]
-                                 : options[m_.choice->chooser.choose(
-                                       static_cast<std::uint32_t>(options.size()), 2 * slot + 1)];
+  std::uint64_t allowed = ~std::uint64_t{0};
+  if (i == offer_var_ && options.size() == choices.size()) allowed = offer_allowed_;
+  offer_var_ = SIZE_MAX;
+  const std::uint32_t pick =
+      options.size() == 1 ? options[0]
+                          : options[m_.choice->chooser.choose(
+                                static_cast<std::uint32_t>(options.size()), 2 * slot + 1, allowed)];
   frame_[frame] = choices[pick];
   m_.engine->blackboard().value(slot) = cut ? cut->values[pick] : v.values[pick];
   chosen_.push_back(i);
@@ -319,6 +334,21 @@ void Environment::resolve(runtime::SlotId slot) {
     watches_.push_back({i, std::move(key), cut->values[pick]});
     m_.engine->blackboard().set_watched(slot);
   }
+}
+
+const std::vector<monitor::Val>* Environment::sole_reader_choices(std::size_t property,
+                                                                  std::size_t& var) {
+  var = SIZE_MAX;
+  const runtime::Blackboard& bb = m_.engine->blackboard();
+  for (std::size_t v : reads_of_[property]) {
+    if (!m_.vars[v].env || !bb.pending(m_.vars[v].slot)) continue;
+    if (var != SIZE_MAX) return nullptr;  // two still to choose
+    var = v;
+  }
+  if (var == SIZE_MAX || read_until_[var] != property + 1 || !constraints_of_[var].empty() ||
+      m_.state_cuts.contains(var) || choices_[var].size() < 2 || choices_[var].size() > 64)
+    return nullptr;
+  return &choices_[var];
 }
 
 void Environment::undo(std::size_t count) {

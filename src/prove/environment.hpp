@@ -72,6 +72,19 @@ class Environment : public runtime::PendingResolver, private monitor::Reader {
   // variable only one place of the tree reads (StateVar::read_once) and that neither a monitor
   // nor an assumption reads. Such a value is not part of a mid-tick state.
   bool live(std::size_t var) const { return live_[var]; }
+  // Whether the variable's value may still matter once the monitors read from property `from`
+  // on (an index into Model::properties): one of them reads it, or an assumption of the domain
+  // constrains it.
+  bool read_from(std::size_t var, std::size_t from) const { return read_until_[var] > from; }
+  // The one variable property `property` reads that is still pending, when nobody reads it
+  // after that property, no assumption of the domain constrains it and its values are not cut
+  // in the state at hand: its choices (as the monitors read them), else null.
+  const std::vector<monitor::Val>* sole_reader_choices(std::size_t property, std::size_t& var);
+  // The next choice of `var`'s value offers only the choices whose bit is set in `allowed`.
+  void offer_only(std::size_t var, std::uint64_t allowed) {
+    offer_var_ = var;
+    offer_allowed_ = allowed;
+  }
 
  private:
   struct Constraint {
@@ -132,6 +145,10 @@ class Environment : public runtime::PendingResolver, private monitor::Reader {
   std::vector<std::size_t> monitor_reads_;
   std::vector<char> assigned_;
   std::vector<char> live_;
+  std::vector<std::size_t> read_until_;  // per variable: 1 + the last property reading it
+  std::vector<std::vector<std::size_t>> reads_of_;  // per property: the variables it reads
+  std::size_t offer_var_ = SIZE_MAX;
+  std::uint64_t offer_allowed_ = ~std::uint64_t{0};
   std::vector<monitor::Val> frame_;
   std::vector<std::size_t> chosen_;
   bool first_ = false;

@@ -1,5 +1,6 @@
 #include "prove/explore.hpp"
 
+#include "prove/assumption_order.hpp"
 #include "prove/environment.hpp"
 
 #include <cstring>
@@ -7,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace uabt::prove {
@@ -147,15 +149,18 @@ std::uint64_t bytes_of(const EngineState& e) {
 // The monitors' reads after tick `tick`, in the one order the search and its replay share: the
 // state after the tick into `frame`, then property by property its atoms, each environment value
 // still pending chosen when an atom reaches it (so a conjunction of N flags nobody else read
-// branches N + 1 ways, not 2^N). `read(i, inputs)` gets property i's atoms; false stops.
-template <typename Read>
-void read_monitors(Model& m, std::vector<monitor::Val>& frame, std::uint64_t tick, Read&& read) {
+// branches N + 1 ways, not 2^N). `before(i)` is called before property i reads (the search
+// may narrow the choices it offers there); `read(i, inputs)` gets its atoms; false stops.
+template <typename Before, typename Read>
+void read_monitors(Model& m, std::vector<monitor::Val>& frame, std::uint64_t tick, Before&& before,
+                   Read&& read) {
   m.observables->fill(frame);
   m.fill_state(frame);
   monitor::Reader& reader = m.environment->monitor_reader(frame);
   for (std::size_t i = 0; i < m.properties.size(); ++i) {
     const Property& p = m.properties[i];
     if (!p.layout) continue;
+    before(i);
     bool inputs[Property::kMaxAtoms] = {};
     p.read_atoms(frame, inputs, tick, &reader);
     if (!read(i, inputs)) break;
@@ -169,7 +174,7 @@ bool completed(NodeStatus s) {
 
 class Search {
  public:
-  Search(Model& m, const Options& o) : m_(m), o_(o) {
+  Search(Model& m, const Options& o) : m_(m), o_(o), order_(m) {
     initial_ = initial_product(m);
     base_.engine = m.fresh;
     base_.elapsed.assign(m.choice->leaves().size(), 0);
@@ -298,6 +303,115 @@ class Search {
     memo_hits_ += seen;
     return seen;
   }
+  // Whether the monitors' reads, about to go on at property `pos`, were at this point before in
+  // this expansion (the state after the tick, the values the reads from `pos` on may still
+  // read, the monitors' words, what failed or triggered so far) with assumption monitors that
+  // allowed at least as much (AssumptionOrder). Then everything that can follow was followed.
+  bool met_before(std::size_t pos, const std::vector<std::uint64_t>& monitors, bool done) {
+    // As for the tick's own choices: where branches never meet, stop looking after a while.
+    if (++met_checks_ == kMemoTrial && met_hits_ * 16 < met_checks_) met_on_ = false;
+    std::string& key = met_key_;
+    key.clear();
+    runtime::Blackboard& bb = m_.engine->blackboard();
+    hidden_.clear();
+    for (std::size_t i : env_vars_) {
+      const StateVar& v = m_.vars[i];
+      const bool pending = bb.pending(v.slot);
+      const bool matters = m_.environment->read_from(i, pos);
+      key += static_cast<char>(pending | (matters << 1));
+      if (!pending && !matters) {
+        hidden_.emplace_back(v.slot, v.values.front());
+        std::swap(bb.value(v.slot), hidden_.back().second);
+      }
+    }
+    trail_->append_key(key);
+    for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
+    append_elapsed(key, m_.choice->elapsed());
+    m_.observables->append_tick_key(key);
+    key.append(reinterpret_cast<const char*>(&pos), sizeof pos);
+    key += static_cast<char>(done);
+    tight_.clear();
+    for (std::size_t j = 0; j < m_.properties.size(); ++j) {
+      const Property& p = m_.properties[j];
+      if (!p.layout) continue;
+      const std::uint64_t* words = monitors.data() + p.offset;
+      if (p.assumption && j < pos)
+        tight_.insert(tight_.end(), words, words + p.layout->words());
+      else
+        key.append(reinterpret_cast<const char*>(words), p.layout->words() * sizeof *words);
+    }
+    // What failed or triggered so far; an assumption's trigger is nobody's answer.
+    key.append(reinterpret_cast<const char*>(violated_.data()),
+               violated_.size() * sizeof(std::size_t));
+    key += '|';
+    for (std::size_t j : triggered_)
+      if (!m_.properties[j].assumption) key.append(reinterpret_cast<const char*>(&j), sizeof j);
+    key_bytes_ += key.size();
+    std::vector<std::vector<std::uint64_t>>& met = met_[hash128(key)];
+    for (const auto& loose : met)
+      if (covers(loose, tight_, pos)) {
+        ++met_hits_;
+        return true;
+      }
+    if (met.size() < kMetPerPoint) met.push_back(tight_);
+    return false;
+  }
+  // Before assumption `i` reads a value no other property reads in this tick (nor a domain
+  // assumption): only the values that leave its monitor loosest are offered. A value is left
+  // out when another lets the monitor hold whenever it does and then covers its state
+  // (AssumptionOrder); of two that cover each other, the first is kept. The run from the value
+  // left out is one the kept value's run allows too, so no verdict or shortest violation
+  // changes, and a flag seen once by `upon CheckK … always CheckK` is not a branch per tick.
+  void offer_loosest(std::size_t i, const std::vector<std::uint64_t>& monitors,
+                     std::uint64_t tick) {
+    std::size_t var = SIZE_MAX;
+    const std::vector<monitor::Val>* choices = m_.environment->sole_reader_choices(i, var);
+    if (choices == nullptr) return;
+    const Property& p = m_.properties[i];
+    const std::size_t slot = static_cast<std::size_t>(m_.vars[var].frame);
+    const monitor::Val placeholder = frame_[slot];
+    const std::size_t n = choices->size();
+    outcome_words_.assign(n, {});
+    outcome_holds_.assign(n, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+      frame_[slot] = (*choices)[k];
+      bool inputs[Property::kMaxAtoms] = {};
+      p.read_atoms(frame_, inputs, tick, nullptr);
+      outcome_words_[k].assign(monitors.begin() + p.offset,
+                               monitors.begin() + p.offset + p.layout->words());
+      outcome_holds_[k] = p.layout->step(inputs, outcome_words_[k], scratch_);
+    }
+    frame_[slot] = placeholder;
+    std::uint64_t allowed = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      bool left_out = false;
+      for (std::size_t j = 0; j < n && !left_out; ++j) {
+        if (j == k || (outcome_holds_[k] && !outcome_holds_[j])) continue;
+        if (!order_.covers(i, outcome_words_[j].data(), outcome_words_[k].data())) continue;
+        // Two that cover each other: the first stays.
+        left_out = j < k || !order_.covers(i, outcome_words_[k].data(), outcome_words_[j].data());
+      }
+      if (!left_out) allowed |= std::uint64_t{1} << k;
+    }
+    m_.environment->offer_only(var, allowed);
+  }
+  std::vector<std::vector<std::uint64_t>> outcome_words_;
+  std::vector<char> outcome_holds_;
+
+  // Each assumption before `pos` in `loose` covers its words in `tight`.
+  bool covers(const std::vector<std::uint64_t>& loose, const std::vector<std::uint64_t>& tight,
+              std::size_t pos) {
+    std::size_t at = 0;
+    for (std::size_t j = 0; j < pos && j < m_.properties.size(); ++j) {
+      const Property& p = m_.properties[j];
+      if (!p.layout || !p.assumption) continue;
+      if (!order_.covers(j, loose.data() + at, tight.data() + at)) return false;
+      at += p.layout->words();
+    }
+    return true;
+  }
+  // The assumption states kept per meeting point: beyond it, branches are compared with these.
+  static constexpr std::size_t kMetPerPoint = 16;
   static constexpr std::uint64_t kMemoTrial = 4096;
   bool memo_on_ = true;
   bool monitors_reading_ = false;  // the monitors' reads after the tick (read_monitors)
@@ -325,6 +439,7 @@ class Search {
     const Product& start = first ? initial_ : next_;
     Outcomes outcomes;
     mid_tick_.clear();
+    met_.clear();
     mid_monitors_ = &from.monitors;
     for (std::uint64_t e = 0; e < start.size; ++e) {
       if (!possible_start(from, start, e, first)) continue;
@@ -440,7 +555,12 @@ class Search {
     triggered.clear();
     const Property* excluded = nullptr;
     monitors_reading_ = true;
-    read_monitors(m_, frame_, next.tick, [&](std::size_t i, const bool* inputs) {
+    std::size_t branchings = m_.choice->chooser.branchings();
+    const auto offer = [&](std::size_t i) {
+      if (o_.merge_monitor_reads && m_.properties[i].assumption)
+        offer_loosest(i, next.monitors, next.tick);
+    };
+    read_monitors(m_, frame_, next.tick, offer, [&](std::size_t i, const bool* inputs) {
       const Property& p = m_.properties[i];
       std::vector<std::uint64_t>& words = words_;
       words.assign(next.monitors.begin() + p.offset,
@@ -449,12 +569,22 @@ class Search {
       std::copy(words.begin(), words.end(), next.monitors.begin() + p.offset);
       if (p.triggered(scratch_)) triggered.push_back(i);
       const bool fails = !now && (monitor::verdict_is_final_once_violated(p.shape) || done);
-      if (!fails) return true;
-      if (p.assumption) {  // a world the assumptions exclude: no more need be read
+      if (fails && p.assumption) {  // a world the assumptions exclude: no more need be read
         excluded = &p;
         return false;
       }
-      violated.push_back(i);
+      if (fails) violated.push_back(i);
+      // This read branched on values nobody had read: where it meets a branch of another
+      // choice, the rest of the reads are taken once. (Within the prefix of the choices, the
+      // point is where an earlier sequence of the same choices was.)
+      const bool branched = m_.choice->chooser.branchings() != branchings;
+      branchings = m_.choice->chooser.branchings();
+      if (branched && met_on_ && m_.choice->chooser.past_prefix()) {
+        if (met_before(i + 1, next.monitors, done)) {
+          m_.environment->monitors_read();
+          throw ChoicePruned{};
+        }
+      }
       return true;
     });
     monitors_reading_ = false;
@@ -504,6 +634,15 @@ class Search {
   std::deque<Node> nodes_;
   std::unordered_set<std::string> seen_;
   std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, PairHash> mid_tick_;
+  // The monitors' reads' meeting points (met_before): per key, the assumption states seen.
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>,
+                     std::vector<std::vector<std::uint64_t>>, PairHash>
+      met_;
+  std::string met_key_;
+  bool met_on_ = o_.merge_monitor_reads;
+  std::uint64_t met_checks_ = 0, met_hits_ = 0;
+  std::vector<std::uint64_t> tight_;
+  AssumptionOrder order_;
   const std::vector<std::uint64_t>* mid_monitors_ = nullptr;
   std::string mid_key_;
   std::vector<std::pair<runtime::SlotId, runtime::ScriptValue>> hidden_;
@@ -623,7 +762,9 @@ void replay_path(Model& m, const std::vector<Step>& path,
       root = m.engine->tick();
       // The choices the search made as the monitors read, in its order; the rest with their
       // first allowed value.
-      if (!symbolic) read_monitors(m, frame, t + 1, [](std::size_t, const bool*) { return true; });
+      if (!symbolic)
+        read_monitors(
+            m, frame, t + 1, [](std::size_t) {}, [](std::size_t, const bool*) { return true; });
       m.environment->resolve_monitor_reads();
     } catch (...) {
       m.choice->force(nullptr);

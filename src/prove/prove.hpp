@@ -87,6 +87,10 @@ struct Options {
   // default is about a minute); the shipped missions spend under a million.
   std::uint64_t explicit_steps = 10'000'000'000;
   std::uint64_t explicit_memory = std::uint64_t{1} << 30;
+  // The explicit engine follows once the branches of the monitors' reads that meet again, and
+  // skips one whose assumption monitors allow no more than those of a branch it met
+  // (AssumptionOrder). Off, every branch is followed: for cross-checking that it loses nothing.
+  bool merge_monitor_reads = true;
 };
 
 struct Result {

@@ -12,7 +12,9 @@
 //                                                     (min, median, max), CPU, peak memory
 //   uabt_bench selection                              --selection optimized against Fig. 4:
 //                                                     condition ticks per selection, compile time
-//   uabt_bench prove-family binary|checklist|preflight|lunar|lunar_reserve SIZE DIR [--counters V]
+//   uabt_bench prove-family binary|checklist|preflight|recheck|recheck_kept|lunar|lunar_reserve
+//   SIZE DIR
+//     [--counters V]
 //                                                     write a mission of a model-checking
 //                                                     family (prove_families.hpp) to DIR
 //                                                     (lunar, lunar_reserve: one size, 1)
@@ -51,16 +53,18 @@ double ms_since(Clock::time_point start) {
 }
 
 int usage() {
-  std::fprintf(stderr,
-               "usage: uabt_bench [--benchmark_* flags]\n"
-               "       uabt_bench generate N K DIR [--planted] [--tree-nodes M]\n"
-               "       uabt_bench measure N K [--threads T] [--naive default|core]\n"
-               "       uabt_bench scale [--quick]\n"
-               "       uabt_bench process RUNS COMMAND [ARGS...]\n"
-               "       uabt_bench selection\n"
-               "       uabt_bench prove-family binary|checklist|preflight|lunar|lunar_reserve SIZE "
-               "DIR "
-               "[--counters V]\n");
+  std::fprintf(
+      stderr,
+      "usage: uabt_bench [--benchmark_* flags]\n"
+      "       uabt_bench generate N K DIR [--planted] [--tree-nodes M]\n"
+      "       uabt_bench measure N K [--threads T] [--naive default|core]\n"
+      "       uabt_bench scale [--quick]\n"
+      "       uabt_bench process RUNS COMMAND [ARGS...]\n"
+      "       uabt_bench selection\n"
+      "       uabt_bench prove-family binary|checklist|preflight|recheck|recheck_kept|lunar|"
+      "lunar_reserve SIZE "
+      "DIR "
+      "[--counters V]\n");
   return 2;
 }
 
@@ -91,6 +95,8 @@ int prove_family(int argc, char** argv) {
     m = generate_checklist(argv[4], *size);
   else if (family == "preflight")
     m = generate_preflight(argv[4], *size);
+  else if (family == "recheck" || family == "recheck_kept")
+    m = generate_recheck(argv[4], *size, family == "recheck_kept");
   else if (family == "lunar")
     m = generate_lunar(argv[4]);
   else if (family == "lunar_reserve")

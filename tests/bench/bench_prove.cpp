@@ -201,10 +201,10 @@ BENCHMARK(BM_ProvePreflight)
     ->ArgsProduct({{10, 20, 50, 100}, {0}})
     ->Args({10, 1})
     ->Unit(benchmark::kMillisecond);
-// Without the assumptions the explicit engine answers N = 100 at once; with them their monitors
-// hold 2^N states (one per set of flags seen set), so only small N.
+// With the assumptions, the explicit engine offers a flag only their monitor reads at its loosest
+// value, and follows once the branches of their reads that meet again, so both are linear in
+// states (2 N + 3 with them; 2^N sets of flags seen set when every branch was followed).
 BENCHMARK(BM_ProveRecheck)
-    ->ArgsProduct({{10, 50, 100}, {0}, {0}})
-    ->ArgsProduct({{6, 10}, {1}, {0}})
+    ->ArgsProduct({{10, 50, 100}, {0, 1}, {0}})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ProveLunar)->Arg(0)->Unit(benchmark::kMillisecond);
