@@ -352,6 +352,7 @@ const std::vector<monitor::Val>* Environment::sole_reader_choices(std::size_t pr
 }
 
 void Environment::undo(std::size_t count) {
+  offer_var_ = SIZE_MAX;  // an offer the monitors' reads did not take is not the tick's
   chosen_.resize(count);
   for (std::size_t i : env_) assigned_[i] = 0;
   for (std::size_t i : chosen_) assigned_[i] = 1;
@@ -396,6 +397,7 @@ void Environment::resolve_monitor_reads() {
 }
 
 void Environment::end_tick() {
+  offer_var_ = SIZE_MAX;
   runtime::Blackboard& bb = m_.engine->blackboard();
   bb.clear_pending();
   // watches_ stay until the next tick starts: a tick resumed at a checkpoint (undo) watches

@@ -80,7 +80,8 @@ class Environment : public runtime::PendingResolver, private monitor::Reader {
   // after that property, no assumption of the domain constrains it and its values are not cut
   // in the state at hand: its choices (as the monitors read them), else null.
   const std::vector<monitor::Val>* sole_reader_choices(std::size_t property, std::size_t& var);
-  // The next choice of `var`'s value offers only the choices whose bit is set in `allowed`.
+  // The next choice of `var`'s value offers only the choices whose bit is set in `allowed`, if
+  // it is made before the tick ends or is resumed at a checkpoint (undo).
   void offer_only(std::size_t var, std::uint64_t allowed) {
     offer_var_ = var;
     offer_allowed_ = allowed;

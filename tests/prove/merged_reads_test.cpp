@@ -74,6 +74,32 @@ TEST(AssumptionOrder, AFlagNotYetSeenCoversItOnceSeenAndNotTheOtherWayRound) {
   EXPECT_FALSE(order.covers(soon, pending.data(), idle.data()));
 }
 
+// An offer of loosest values that the assumption's read did not take (`!Armed | V` stops at
+// `!Armed`) narrows nothing else: in the sequence where ActX fails, the Fallback ticks V with
+// both values, and V = true starts Done at tick 1.
+TEST(MergedReads, AnOfferTheAssumptionDidNotTakeDoesNotNarrowTheTreesRead) {
+  const TempMission m({{"mission.xml", R"(<root BTCPP_format="4" main_tree_to_execute="MainTree">
+  <BehaviorTree ID="MainTree">
+    <Sequence><Fallback><ActX/><V/></Fallback><Done/></Sequence>
+  </BehaviorTree>
+</root>
+)"},
+                       {"domain.fret", "boolean V, Armed\n"},
+                       {"requirements.fret",
+                        "G: Mission shall always satisfy !Done.running\n"
+                        "Keep: Environment shall always satisfy !Armed | V\n"},
+                       {"world.json", R"({"initial": "!Armed", "actions": {
+  "ActX": {"ticks": 1, "results": ["success", "failure"], "on_success": "Armed = Armed"},
+  "Done": {"ticks": 2, "results": ["success"]}}})"}});
+  const Gated g(m.dir());
+  ASSERT_TRUE(g.ok()) << format_text(g.outcome->report.findings);
+  const prove::Result r = g.prove("explicit");
+  const prove::Answer& a = answer(r, "G");
+  ASSERT_EQ(a.verdict, prove::Verdict::violated);
+  ASSERT_TRUE(a.counterexample);
+  EXPECT_EQ(a.counterexample->tick, 1u);
+}
+
 // BehaVerify's checklist with `KeepK: upon CheckK Environment shall always satisfy CheckK`: the
 // guarantee is proved, over a few states per flag. Following every branch, the monitors hold
 // one state per set of flags seen set (2,050 states at N = 10).
