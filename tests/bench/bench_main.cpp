@@ -12,12 +12,15 @@
 //                                                     (min, median, max), CPU, peak memory
 //   uabt_bench selection                              --selection optimized against Fig. 4:
 //                                                     condition ticks per selection, compile time
-//   uabt_bench prove-family binary|checklist|preflight|recheck|recheck_kept|lunar|lunar_reserve
-//   SIZE DIR
-//     [--counters V]
+//   uabt_bench prove-family FAMILY SIZE DIR [--counters V]
 //                                                     write a mission of a model-checking
-//                                                     family (prove_families.hpp) to DIR
-//                                                     (lunar, lunar_reserve: one size, 1)
+//                                                     family (prove_families.hpp) to DIR:
+//                                                     binary, checklist, preflight, recheck,
+//                                                     recheck_kept, wide_disjuncts, wide_enum,
+//                                                     lunar, lunar_reserve (the last two: size 1)
+//   uabt_bench verify-family FAMILY SIZE DIR         the same for a guard-check family
+//                                                     (verify_families.hpp): ported, disjuncts,
+//                                                     reals, undeclared, noise
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -40,6 +43,7 @@
 #include "prove_families.hpp"
 #include "smt/solver.hpp"
 #include "verify/verify.hpp"
+#include "verify_families.hpp"
 
 extern char** environ;
 
@@ -61,10 +65,9 @@ int usage() {
       "       uabt_bench scale [--quick]\n"
       "       uabt_bench process RUNS COMMAND [ARGS...]\n"
       "       uabt_bench selection\n"
-      "       uabt_bench prove-family binary|checklist|preflight|recheck|recheck_kept|lunar|"
-      "lunar_reserve SIZE "
-      "DIR "
-      "[--counters V]\n");
+      "       uabt_bench prove-family binary|checklist|preflight|recheck|recheck_kept|"
+      "wide_disjuncts|wide_enum|lunar|lunar_reserve SIZE DIR [--counters V]\n"
+      "       uabt_bench verify-family ported|disjuncts|reals|undeclared|noise SIZE DIR\n");
   return 2;
 }
 
@@ -97,6 +100,10 @@ int prove_family(int argc, char** argv) {
     m = generate_preflight(argv[4], *size);
   else if (family == "recheck" || family == "recheck_kept")
     m = generate_recheck(argv[4], *size, family == "recheck_kept");
+  else if (family == "wide_disjuncts")
+    m = generate_disjunct_site(argv[4], *size);
+  else if (family == "wide_enum")
+    m = generate_enum_site(argv[4], *size);
   else if (family == "lunar")
     m = generate_lunar(argv[4]);
   else if (family == "lunar_reserve")
@@ -109,6 +116,33 @@ int prove_family(int argc, char** argv) {
     if (const auto tick = m.violation_ticks.find(id); tick != m.violation_ticks.end())
       std::printf("@%llu", static_cast<unsigned long long>(tick->second));
   }
+  std::printf("\n");
+  return 0;
+}
+
+// Prints the findings verify must report, per check (`verification-skipped=1`).
+int verify_family(int argc, char** argv) {
+  if (argc != 5) return usage();
+  const std::string family = argv[2];
+  const char* text = argv[3];
+  char* end = nullptr;
+  const long size = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || size < 1 || size > 100'000'000) return usage();
+  const int n = static_cast<int>(size);
+  VerifyFamily f;
+  if (family == "ported")
+    f = generate_ported_sequence(argv[4], n);
+  else if (family == "disjuncts")
+    f = generate_disjunct_guard(argv[4], n);
+  else if (family == "reals")
+    f = generate_real_grid(argv[4], n);
+  else if (family == "undeclared")
+    f = generate_undeclared_guard(argv[4], n);
+  else if (family == "noise")
+    f = generate_noise_requirements(argv[4], n);
+  else
+    return usage();
+  for (const auto& [check, count] : f.findings) std::printf("%s=%zu ", check.c_str(), count);
   std::printf("\n");
   return 0;
 }
@@ -355,6 +389,7 @@ int main(int argc, char** argv) {
       if (mode == "process") return process(argc, argv);
       if (mode == "selection") return uabt::bench::selection_figures();
       if (mode == "prove-family") return prove_family(argc, argv);
+      if (mode == "verify-family") return verify_family(argc, argv);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "uabt_bench: %s\n", e.what());
       return 1;

@@ -86,4 +86,30 @@ VerifyFamily generate_real_grid(const std::filesystem::path& dir, int guards) {
   return {dir, {}};
 }
 
+VerifyFamily generate_undeclared_guard(const std::filesystem::path& dir, int names) {
+  if (names < 1) throw std::invalid_argument("a guard names at least one variable");
+  std::string guard = "A0";
+  for (int k = 1; k < names; ++k) guard += " & A" + std::to_string(k);
+  write_node(dir, "",
+             "Named: In navigation if " + guard + " Mission shall satisfy selected_alt = hop\n",
+             {{"hop", "    <Hop distance=\"1\"/>\n"}});
+  std::filesystem::remove(dir / "domain.fret");
+  return {dir, {}};
+}
+
+VerifyFamily generate_noise_requirements(const std::filesystem::path& dir, int bytes) {
+  if (bytes < 1) throw std::invalid_argument("noise has at least one byte");
+  write_node(dir, "boolean OnDust\n", "", {{"hop", "    <Hop distance=\"1\"/>\n"}});
+  std::string noise(static_cast<std::size_t>(bytes), '\0');
+  std::uint64_t x = 0x9e3779b97f4a7c15ull;  // xorshift64: the same bytes on every machine
+  for (char& c : noise) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    c = static_cast<char>(x >> 56);
+  }
+  write_file(dir / "requirements.fret", noise);
+  return {dir, {}};
+}
+
 }  // namespace uabt::bench

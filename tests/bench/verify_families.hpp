@@ -28,4 +28,13 @@ VerifyFamily generate_disjunct_guard(const std::filesystem::path& dir, int disju
 // many rows of `battery` as needed), then a default. No findings; every share is exact.
 VerifyFamily generate_real_grid(const std::filesystem::path& dir, int guards);
 
+// The same node, `hop` selected by one guard naming N undeclared names `A0 & … & A<N-1>`, with
+// no domain.fret (each name is inferred a boolean): one `ref-undeclared` warning a name, listed
+// 20 times per file, and the rest counted.
+VerifyFamily generate_undeclared_guard(const std::filesystem::path& dir, int names);
+
+// The same node with `bytes` bytes of noise (a fixed pseudo-random sequence, so the same size
+// writes the same file) as requirements.fret: syntax errors, listed 20 times per file.
+VerifyFamily generate_noise_requirements(const std::filesystem::path& dir, int bytes);
+
 }  // namespace uabt::bench

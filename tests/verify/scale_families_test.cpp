@@ -3,6 +3,8 @@
 // a right answer and the generator cannot rot.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -62,6 +64,48 @@ TEST(ScaleFamilies, ARealGridIsDisjointAndMeasuredExactly) {
   EXPECT_EQ(c.alternatives.at(130).share.text, "31/96");  // 62 of the last row's cells
   EXPECT_EQ(c.overlap_share.text, "0");
   EXPECT_EQ(c.gap_share.text, "0");
+}
+
+// Per check id, the findings loading the family's mission gives.
+std::map<std::string, std::size_t> loaded(const bench::VerifyFamily& family) {
+  std::string error;
+  auto mission = load::load_mission(family.dir, {}, error);
+  EXPECT_TRUE(mission) << error;
+  std::map<std::string, std::size_t> counts;
+  if (mission)
+    for (const Finding& f : mission->findings) ++counts[f.check];
+  return counts;
+}
+
+// With nodes.xml declaring the vocabulary, each name of the guard is a typo until declared: one
+// ref-undeclared a name (the formats list 20 a file and count the rest: RepeatedFindings).
+TEST(ScaleFamilies, AGuardOfUndeclaredNamesHasOneFindingAName) {
+  TempMission scratch({});
+  const auto family = bench::generate_undeclared_guard(scratch.dir() / "m", 30);
+  std::string error;
+  auto mission = load::load_mission(family.dir, {}, error);
+  ASSERT_TRUE(mission) << error;
+  EXPECT_EQ(mission->findings.size(), 20u);
+  EXPECT_EQ(findings_count(mission->findings), 30u);
+  for (const Finding& f : mission->findings) EXPECT_EQ(f.check, "ref-undeclared");
+}
+
+// Noise is no requirements file: each stretch of it that is no requirement is a syntax error.
+TEST(ScaleFamilies, NoiseAsRequirementsIsSyntaxErrors) {
+  TempMission scratch({});
+  const auto family = bench::generate_noise_requirements(scratch.dir() / "m", 3000);
+  const auto counts = loaded(family);
+  // OnDust, declared for the requirements the noise replaced, is now read by nothing.
+  EXPECT_EQ(counts, (std::map<std::string, std::size_t>{{"domain-unused-variable", 1},
+                                                        {"fretish-syntax", 7}}));
+  // The same size writes the same bytes.
+  const auto again = bench::generate_noise_requirements(scratch.dir() / "again", 3000);
+  std::ifstream a(family.dir / "requirements.fret", std::ios::binary),
+      b(again.dir / "requirements.fret", std::ios::binary);
+  const std::string x((std::istreambuf_iterator<char>(a)), {}),
+      y((std::istreambuf_iterator<char>(b)), {});
+  EXPECT_EQ(x.size(), 3000u);
+  EXPECT_EQ(x, y);
 }
 
 }  // namespace
