@@ -74,6 +74,36 @@ TEST(AssumptionOrder, AFlagNotYetSeenCoversItOnceSeenAndNotTheOtherWayRound) {
   EXPECT_FALSE(order.covers(soon, pending.data(), idle.data()));
 }
 
+// Dust is read only by the assumption in tick 1 (the guarantee's `!A | Dust` stops at `!A`), so
+// it is offered at its loosest: not yet seen, which leaves it free to be false in tick 2, when
+// Act0 has set A and the guarantee reads Dust. Offering the tightest value (Dust seen, so it
+// must stay set) would hide the violation.
+TEST(MergedReads, AFlagOnlyAnAssumptionReadsIsOfferedAtItsLoosest) {
+  const TempMission m({{"mission.xml", R"(<root BTCPP_format="4" main_tree_to_execute="MainTree">
+  <BehaviorTree ID="MainTree"><Sequence><Act0/><Act1/></Sequence></BehaviorTree>
+</root>
+)"},
+                       {"domain.fret", "boolean Dust, A\n"},
+                       {"requirements.fret",
+                        "GD: Mission shall always satisfy !A | Dust\n"
+                        "K6: upon Dust Environment shall always satisfy Dust\n"},
+                       {"world.json", R"({"initial": "!A", "actions": {
+  "Act0": {"ticks": 2, "results": ["success"], "on_success": "A = true"},
+  "Act1": {"ticks": 2, "results": ["success"]}}})"}});
+  const Gated g(m.dir());
+  ASSERT_TRUE(g.ok()) << format_text(g.outcome->report.findings);
+  for (const bool merge : {true, false}) {
+    prove::Options o;
+    o.engine = "explicit";
+    o.merge_monitor_reads = merge;
+    const prove::Result r = prove::prove(*g.outcome->mission, *g.doc, g.world, o);
+    const prove::Answer& a = answer(r, "GD");
+    ASSERT_EQ(a.verdict, prove::Verdict::violated) << merge;
+    ASSERT_TRUE(a.counterexample);
+    EXPECT_EQ(a.counterexample->tick, 2u) << merge;
+  }
+}
+
 // An offer of loosest values that the assumption's read did not take (`!Armed | V` stops at
 // `!Armed`) narrows nothing else: in the sequence where ActX fails, the Fallback ticks V with
 // both values, and V = true starts Done at tick 1.
