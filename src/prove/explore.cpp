@@ -275,25 +275,7 @@ class Search {
     }
     std::string& key = mid_key_;
     key.clear();
-    runtime::Blackboard& bb = m_.engine->blackboard();
-    // A value chosen and read where nothing can read it again no longer matters: it is left
-    // out (put back to its placeholder while the key is taken).
-    hidden_.clear();
-    key.resize(env_vars_.size());
-    for (std::size_t k = 0; k < env_vars_.size(); ++k) {
-      const std::size_t i = env_vars_[k];
-      const StateVar& v = m_.vars[i];
-      const bool pending = bb.pending(v.slot);
-      key[k] = static_cast<char>(pending);
-      if (!pending && !m_.environment->live(i)) {
-        hidden_.emplace_back(v.slot, v.values.front());
-        std::swap(bb.value(v.slot), hidden_.back().second);
-      }
-    }
-    trail_->append_key(key);
-    for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
-    append_elapsed(key, m_.choice->elapsed());
-    m_.observables->append_tick_key(key);
+    append_tick_state(key, [&](std::size_t i) { return m_.environment->live(i); });
     key.append(reinterpret_cast<const char*>(mid_monitors_->data()),
                mid_monitors_->size() * sizeof(std::uint64_t));
     key.append(reinterpret_cast<const char*>(&site), sizeof site);
@@ -303,6 +285,29 @@ class Search {
     memo_hits_ += seen;
     return seen;
   }
+  // The state in the middle of a tick as bytes: which environment values are still pending, the
+  // engine's (blackboard included), the actions' progress, what the tick has recorded. A value
+  // chosen that nothing can read again (`matters(var)` false) is left out: put back to its
+  // placeholder while the engine's bytes are taken.
+  template <typename Matters>
+  void append_tick_state(std::string& key, Matters&& matters) {
+    runtime::Blackboard& bb = m_.engine->blackboard();
+    hidden_.clear();
+    for (std::size_t i : env_vars_) {
+      const StateVar& v = m_.vars[i];
+      const bool pending = bb.pending(v.slot);
+      key += static_cast<char>(pending);
+      if (!pending && !matters(i)) {
+        hidden_.emplace_back(v.slot, v.values.front());
+        std::swap(bb.value(v.slot), hidden_.back().second);
+      }
+    }
+    trail_->append_key(key);
+    for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
+    append_elapsed(key, m_.choice->elapsed());
+    m_.observables->append_tick_key(key);
+  }
+
   // Whether the monitors' reads, about to go on at property `pos`, were at this point before in
   // this expansion (the state after the tick, the values the reads from `pos` on may still
   // read, the monitors' words, what failed or triggered so far) with assumption monitors that
@@ -312,22 +317,7 @@ class Search {
     if (++met_checks_ == kMemoTrial && met_hits_ * 16 < met_checks_) met_on_ = false;
     std::string& key = met_key_;
     key.clear();
-    runtime::Blackboard& bb = m_.engine->blackboard();
-    hidden_.clear();
-    for (std::size_t i : env_vars_) {
-      const StateVar& v = m_.vars[i];
-      const bool pending = bb.pending(v.slot);
-      const bool matters = m_.environment->read_from(i, pos);
-      key += static_cast<char>(pending | (matters << 1));
-      if (!pending && !matters) {
-        hidden_.emplace_back(v.slot, v.values.front());
-        std::swap(bb.value(v.slot), hidden_.back().second);
-      }
-    }
-    trail_->append_key(key);
-    for (auto& [slot, value] : hidden_) std::swap(bb.value(slot), value);
-    append_elapsed(key, m_.choice->elapsed());
-    m_.observables->append_tick_key(key);
+    append_tick_state(key, [&](std::size_t i) { return m_.environment->read_from(i, pos); });
     key.append(reinterpret_cast<const char*>(&pos), sizeof pos);
     key += static_cast<char>(done);
     tight_.clear();
