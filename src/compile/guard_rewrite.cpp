@@ -18,6 +18,25 @@ bool is_boolean_valued(const Expr& e, const fretish::Domain& domain) {
   return false;
 }
 
+bool is_real_valued(const Expr& e, const fretish::Domain& domain) {
+  switch (e.kind) {
+    case ExprKind::number: return e.text.find_first_of(".eE") != std::string::npos;
+    case ExprKind::identifier: {
+      const fretish::Variable* v = domain.find(e.text);
+      return v != nullptr && v->type == fretish::VarType::real;
+    }
+    case ExprKind::negate:
+    case ExprKind::add:
+    case ExprKind::sub:
+    case ExprKind::mul:
+    case ExprKind::div:
+      for (const auto& a : e.args)
+        if (is_real_valued(*a, domain)) return true;
+      return false;
+    default: return false;
+  }
+}
+
 namespace {
 
 ExprPtr negation(ExprPtr e) {
@@ -69,6 +88,14 @@ ExprPtr to_and_or_not(const Expr& e, const fretish::Domain& domain) {
     case ExprKind::ne: {
       const Expr& lhs = *e.args.at(0);
       const Expr& rhs = *e.args.at(1);
+      if (is_real_valued(lhs, domain) || is_real_valued(rhs, domain)) {
+        auto relation = [&](ExprKind kind) {
+          return make_expr(kind, {std::make_shared<Expr>(lhs), std::make_shared<Expr>(rhs)},
+                           e.range);
+        };
+        return e.kind == ExprKind::eq ? conj(relation(ExprKind::ge), relation(ExprKind::le))
+                                      : disj(relation(ExprKind::lt), relation(ExprKind::gt));
+      }
       if (!is_boolean_valued(lhs, domain) || !is_boolean_valued(rhs, domain)) break;
       ExprPtr a = to_and_or_not(lhs, domain);
       ExprPtr b = to_and_or_not(rhs, domain);

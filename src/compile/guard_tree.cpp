@@ -72,6 +72,12 @@ std::string script_of(const Expr& e, const fretish::Domain& domain, int parent_p
     throw UnsupportedGuard("'" + fretish::to_fretish(e) +
                            "' has no BehaviorTree.CPP script equivalent (scripts know + - * / "
                            "and comparisons)");
+  if (e.kind == ExprKind::div && !is_real_valued(e, domain))
+    throw UnsupportedGuard("'" + fretish::to_fretish(e) +
+                           "' divides integers, which FRETISH truncates (7 / 2 is 3) and a "
+                           "BehaviorTree.CPP script divides as doubles (7 / 2 is 3.5); write the "
+                           "guard without the division (x / 2 > 1 is x > 3 for x >= 0) or "
+                           "divide a real");
   const int prec = script_precedence(e.kind);
   std::string text = script_of(*e.args[0], domain, prec, false) + " " + op + " " +
                      script_of(*e.args[1], domain, prec, true);

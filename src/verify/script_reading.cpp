@@ -17,6 +17,9 @@ using fretish::ExprPtr;
 
 namespace {
 
+// std::numeric_limits<float>::epsilon() (2^-23), written out exactly.
+constexpr const char* kFloatEpsilon = "0.00000011920928955078125";
+
 struct ReadError : std::runtime_error {
   ReadError(const std::string& message, std::size_t column)
       : std::runtime_error(message + " (column " + std::to_string(column) + ")") {}
@@ -46,6 +49,60 @@ class Translator {
 
   ExprPtr binary(ExprKind kind, const Expr& e) {
     return fretish::make_expr(kind, {translate(e.a), translate(e.b)});
+  }
+
+  // Whether BT.CPP computes the operand as a real that is not always whole: a real literal or
+  // variable, a quotient, or arithmetic over one. (Every script number is a double; integer
+  // values compare and add exactly as FRETISH integers do, below 2^53, where the engine stops.)
+  bool real_valued(std::uint32_t index) const {
+    const Expr& e = script_.nodes()[index];
+    switch (e.op) {
+      case Op::literal: return e.literal.kind == bt::script::ScriptValue::Kind::real;
+      case Op::name: {
+        const fretish::Variable* v =
+            domain_.find(e.name.starts_with('@') ? e.name.substr(1) : e.name);
+        return v != nullptr && v->type == fretish::VarType::real;
+      }
+      case Op::negate: return real_valued(e.a);
+      case Op::add:
+      case Op::sub:
+      case Op::mul: return real_valued(e.a) || real_valued(e.b);
+      case Op::div: return true;
+      default: return false;
+    }
+  }
+
+  // A script `/` divides doubles: of two integers it is FRETISH's real division, not its
+  // truncating one. An integer numeral is written as a real (`x / 2` reads `x / 2.0`), else
+  // the dividend is made real (`x / y` reads `x * 1.0 / y`); the divisor keeps its text.
+  ExprPtr quotient(const Expr& e) {
+    ExprPtr dividend = translate(e.a), divisor = translate(e.b);
+    if (!real_valued(e.a) && !real_valued(e.b)) {
+      if (divisor->kind == ExprKind::number)
+        divisor = fretish::make_number(divisor->text + ".0");
+      else if (dividend->kind == ExprKind::number)
+        dividend = fretish::make_number(dividend->text + ".0");
+      else
+        dividend = fretish::make_expr(ExprKind::mul, {dividend, fretish::make_number("1.0")});
+    }
+    return fretish::make_expr(ExprKind::div, {dividend, divisor});
+  }
+
+  // BT.CPP's == and != on numbers hold within float epsilon of equal (IsSame in
+  // scripting/operators.hpp): `a == b` with a real operand is `a - b <= eps & b - a <= eps`.
+  static ExprPtr relation(CompareOp op, const ExprPtr& lhs, const ExprPtr& rhs, bool reals) {
+    if (!reals || (op != CompareOp::eq && op != CompareOp::ne))
+      return fretish::make_expr(relation_of(op), {lhs, rhs});
+    const ExprPtr epsilon = fretish::make_number(kFloatEpsilon);
+    const ExprPtr below = fretish::make_expr(ExprKind::sub, {lhs, rhs});
+    const ExprPtr above = fretish::make_expr(ExprKind::sub, {rhs, lhs});
+    if (op == CompareOp::eq)
+      return fretish::make_expr(ExprKind::logical_and,
+                                {fretish::make_expr(ExprKind::le, {below, epsilon}),
+                                 fretish::make_expr(ExprKind::le, {above, epsilon})});
+    return fretish::make_expr(ExprKind::logical_or,
+                              {fretish::make_expr(ExprKind::gt, {below, epsilon}),
+                               fretish::make_expr(ExprKind::gt, {above, epsilon})});
   }
 
   ExprPtr literal(const Expr& e) {
@@ -88,8 +145,10 @@ class Translator {
     std::vector<ExprPtr> links;
     ExprPtr lhs = translate(operands[e.list_begin]);
     for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
-      ExprPtr rhs = translate(operands[e.list_begin + i + 1]);
-      links.push_back(fretish::make_expr(relation_of(ops[e.ops_begin + i]), {lhs, rhs}));
+      const std::uint32_t left = operands[e.list_begin + i], right = operands[e.list_begin + i + 1];
+      ExprPtr rhs = translate(right);
+      links.push_back(
+          relation(ops[e.ops_begin + i], lhs, rhs, real_valued(left) || real_valued(right)));
       lhs = rhs;
     }
     if (links.size() == 1) return links.front();
@@ -112,7 +171,7 @@ class Translator {
       case Op::add: return binary(ExprKind::add, e);
       case Op::sub: return binary(ExprKind::sub, e);
       case Op::mul: return binary(ExprKind::mul, e);
-      case Op::div: return binary(ExprKind::div, e);
+      case Op::div: return quotient(e);
       case Op::logic_and: return binary(ExprKind::logical_and, e);
       case Op::logic_or: return binary(ExprKind::logical_or, e);
       case Op::compare: return chain(e);

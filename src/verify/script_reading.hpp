@@ -25,8 +25,11 @@ struct ScriptReading {
 // strings (enum literals: `'rocks'` is the literal rocks), parentheses, unary - and !,
 // * /, + -, comparison chains (`a < b < c` is `a < b && b < c`), and && || (one precedence
 // level, left-associative, as in BT.CPP's grammar). Assignments, `;`, `?:` and bitwise operators
-// are refused. `domain` tells enum literals from variables: a quoted string must be a literal
-// of one of its enums, an unquoted name must not be only a literal.
+// are refused. The reading keeps BT.CPP's meaning where FRETISH's differs: `/` divides as
+// doubles (`x / 2` of an integer x reads `x / 2.0`), and `==`/`!=` with a real operand
+// hold within float epsilon of equal (`a - b <= eps & b - a <= eps`). `domain` tells enum literals
+// from variables: a quoted string must be a literal of one of its enums, an unquoted name must not
+// be only a literal.
 ScriptReading parse_script_condition(const std::string& code, const fretish::Domain& domain);
 
 // One expression of a parsed script (a statement, or an assignment's value) read the same way:

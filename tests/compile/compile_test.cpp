@@ -4,10 +4,12 @@
 #include <sstream>
 
 #include "base/diagnostics.hpp"
+#include "base/number_text.hpp"
 #include "bt/xml_io.hpp"
 #include "compile/compile.hpp"
 #include "fretish/parse.hpp"
 #include "load/mission.hpp"
+#include "runtime/selection_probe.hpp"
 #include "temp_mission.hpp"
 #include "test_support.hpp"
 
@@ -163,7 +165,14 @@ INSTANTIATE_TEST_SUITE_P(
         GuardCase{"!(slope >= -15.5)", "Inverter(ScriptCondition{slope >= -15.5})"},
         GuardCase{"battery - (10 - 2) > 0", "ScriptCondition{battery - (10 - 2) > 0}"},
         GuardCase{"A & battery * 2 >= 40 + 1",
-                  "Sequence(A,ScriptCondition{battery * 2 >= 40 + 1})"}));
+                  "Sequence(A,ScriptCondition{battery * 2 >= 40 + 1})"},
+        // BT.CPP's == holds within float epsilon: an equality of reals is two exact orderings.
+        GuardCase{"slope = 0.5",
+                  "Sequence(ScriptCondition{slope >= 0.5},ScriptCondition{slope <= 0.5})"},
+        GuardCase{"slope != battery",
+                  "Fallback(ScriptCondition{slope < battery},ScriptCondition{slope > battery})"},
+        GuardCase{"battery = 3", "ScriptCondition{battery == 3}"},
+        GuardCase{"slope / 2 > 1", "ScriptCondition{slope / 2 > 1}"}));
 
 TEST(Compile, GuardsWithoutScriptEquivalentAreRefused) {
   TempMission t({{"mission.xml", uabt::testing::mission_with("<Adaptable ID=\"nav\"/>")},
@@ -177,6 +186,49 @@ TEST(Compile, GuardsWithoutScriptEquivalentAreRefused) {
   ASSERT_EQ(r.findings.size(), 1u);
   EXPECT_EQ(r.findings[0].check, "compile-unsupported");
   EXPECT_EQ(r.findings[0].location.line, 1);
+}
+
+// FRETISH divides integers truncating, a BT.CPP script divides them as doubles: no script
+// means `battery / 2 > 1`, so the compiler refuses it rather than emit `battery / 2 > 1`,
+// which holds at battery = 3 where the guard does not.
+TEST(Compile, IntegerDivisionInAGuardIsRefused) {
+  TempMission t({{"mission.xml", uabt::testing::mission_with("<Adaptable ID=\"nav\"/>")},
+                 {"domain.fret", "integer battery in [0, 100]\n"},
+                 {"requirements.fret",
+                  "R: In nav if battery / 2 > 1 Mission shall satisfy selected_alt = a\n"
+                  "D: In nav Mission shall satisfy selected_alt = a\n"},
+                 {"alternatives/nav/a.xml", uabt::testing::alternative_tree("a")}});
+  Result r = compile_mission(load(t.dir()), {});
+  EXPECT_FALSE(r.ok);
+  ASSERT_EQ(r.findings.size(), 1u);
+  EXPECT_EQ(r.findings[0].check, "compile-unsupported");
+  EXPECT_EQ(r.findings[0].message,
+            "requirement R: 'battery / 2' divides integers, which FRETISH truncates (7 / 2 is 3) "
+            "and a BehaviorTree.CPP script divides as doubles (7 / 2 is 3.5); write the guard "
+            "without the division (x / 2 > 1 is x > 3 for x >= 0) or divide a real");
+  EXPECT_EQ(r.findings[0].location.column, 11);  // the guard's `if`
+}
+
+// The compiled tree selects as the requirements say within float epsilon of a real constant,
+// where BT.CPP's `slope == 0.5` would hold and the guard `slope = 0.5` does not.
+TEST(Compile, AnEqualityOfRealsSelectsExactlyInTheEngine) {
+  TempMission t({{"mission.xml", uabt::testing::mission_with("<Adaptable ID=\"nav\"/>")},
+                 {"domain.fret", "real slope in [-45, 45]\n"},
+                 {"requirements.fret",
+                  "Flat: In nav if slope = 0.5 Mission shall satisfy selected_alt = a\n"
+                  "Other: In nav Mission shall satisfy selected_alt = b\n"},
+                 {"alternatives/nav/a.xml", uabt::testing::alternative_tree("a")},
+                 {"alternatives/nav/b.xml", uabt::testing::alternative_tree("b")}});
+  Result r = compile_mission(load(t.dir()), {});
+  ASSERT_TRUE(r.ok) << format_text(r.findings);
+  auto started = [&](double slope) {
+    const State state{{"slope", Value::of_real(slope, number_text(slope))}};
+    return runtime::probe_selection(r.document, "nav", state).first_call;
+  };
+  EXPECT_EQ(started(0.5), "a");
+  EXPECT_EQ(started(0.5 + 1e-7), "b");
+  EXPECT_EQ(started(0.5 - 1e-7), "b");
+  EXPECT_EQ(started(3), "b");
 }
 
 TEST(Compile, V3RefusesScriptConditionGuards) {
