@@ -442,7 +442,7 @@ struct SymbolicTick::Impl {
                             const auto it = d.script_vars.find(n);
                             return it == d.script_vars.end() ? -1 : it->second;
                           },
-                          &types, &domains, &codes};
+                          &m.mission.domain, &types, &domains, &codes};
         // A read of an entry nothing has written yet stops the tick (BT.CPP throws).
         for (const auto& [name, var] : d.script_vars)
           if (var >= 0) require_written(x, static_cast<std::size_t>(var), g);
@@ -656,7 +656,7 @@ struct SymbolicTick::Impl {
                           const auto it = slot ? var_of_slot.find(*slot) : var_of_slot.end();
                           return it == var_of_slot.end() ? -1 : it->second;
                         },
-                        &types, &domains, &codes};
+                        &m.mission.domain, &types, &domains, &codes};
       run_script(ctx, *effect, scope, x.cur.values, ends,
                  m.world.file + ": action '" + leaf.label + "'");
     }

@@ -2,16 +2,16 @@
 
 #include <charconv>
 #include <cmath>
-#include <limits>
 
 #include "base/number_text.hpp"
 #include "smt/assign.hpp"
 #include "smt/division.hpp"
+#include "smt/rational.hpp"
+#include "verify/script_reading.hpp"
 
 namespace uabt::prove {
 
 using runtime::ScriptValue;
-using runtime::script::CompareOp;
 using runtime::script::Op;
 
 int SymbolCodes::code(const std::string& name) {
@@ -62,11 +62,6 @@ z3::expr truth(const SymValue& v) {
   if (v.type == SymType::boolean) return v.e;
   if (v.type == SymType::integer) return v.e != 0;
   return v.e != v.e.ctx().real_val(0);
-}
-
-// BT.CPP's float epsilon, which the runtime's == and != on reals use.
-z3::expr float_epsilon(z3::context& ctx) {
-  return real_literal(ctx, static_cast<double>(std::numeric_limits<float>::epsilon()));
 }
 
 class ScriptEncoder {
@@ -159,107 +154,20 @@ class ScriptEncoder {
     return out;
   }
 
+  // An expression of the script, read as FRETISH (with BT.CPP's `/` and `==`) and encoded.
   SymValue eval(std::uint32_t index) {
-    const runtime::script::Expr& e = p_.nodes()[index];
-    switch (e.op) {
-      case Op::literal:
-        switch (e.literal.kind) {
-          case ScriptValue::Kind::boolean:
-            return {SymType::boolean, ctx_.bool_val(e.literal.boolean), {}};
-          case ScriptValue::Kind::integer:
-            return {SymType::integer, ctx_.int_val(static_cast<int64_t>(e.literal.integer)), {}};
-          case ScriptValue::Kind::real:
-            return {SymType::real, real_literal(ctx_, e.literal.real), {}};
-          case ScriptValue::Kind::string: {
-            if (e.literal.text.empty()) refuse("the empty string is not modelled");
-            const int c = scope_.codes->code(e.literal.text);
-            return {SymType::symbol, ctx_.int_val(c), {c}};
-          }
-          case ScriptValue::Kind::empty: refuse("an empty literal");
-        }
-        break;
-      case Op::name: return read(var(e));
-      case Op::negate: {
-        const SymValue v = eval(e.a);
-        if (!numeric(v.type)) refuse("'-' on a name");
-        if (v.type == SymType::real) return {SymType::real, -v.e, {}};
-        return {SymType::integer, -as_int(v), {}};
+    const verify::ScriptReading reading =
+        verify::read_script_expression(p_.script(), index, *scope_.domain, true);
+    if (!reading.expr) refuse(reading.error);
+    const auto resolve = [this](const std::string& name) {
+      if (const int v = scope_.var_of(name); v >= 0) return read(v);
+      if (scope_.domain->find(name) == nullptr && scope_.domain->enum_owning(name) != nullptr) {
+        const int c = scope_.codes->code(name);
+        return SymValue{SymType::symbol, ctx_.int_val(c), {c}};
       }
-      case Op::logical_not: {
-        const SymValue v = eval(e.a);
-        if (!numeric(v.type)) refuse("'!' on a name");
-        return {SymType::boolean, !truth(v), {}};
-      }
-      case Op::add:
-      case Op::sub:
-      case Op::mul: {
-        const SymValue l = eval(e.a), r = eval(e.b);
-        if (!numeric(l.type) || !numeric(r.type)) refuse("arithmetic on names");
-        if (integral(l.type) && integral(r.type)) {
-          const z3::expr a = as_int(l), b = as_int(r);
-          return {SymType::integer, e.op == Op::add ? a + b : e.op == Op::sub ? a - b : a * b, {}};
-        }
-        const z3::expr a = as_real(l), b = as_real(r);
-        return {SymType::real, e.op == Op::add ? a + b : e.op == Op::sub ? a - b : a * b, {}};
-      }
-      case Op::logic_and:
-      case Op::logic_or: {
-        const SymValue l = eval(e.a), r = eval(e.b);
-        if (!numeric(l.type) || !numeric(r.type)) refuse("'&&'/'||' on names");
-        // The engine (as BT.CPP) throws on an integer other than 0 or 1 there.
-        if (l.type == SymType::integer || r.type == SymType::integer)
-          refuse("'&&'/'||' on an integer, which stops the tick unless it is 0 or 1");
-        return {SymType::boolean,
-                e.op == Op::logic_and ? truth(l) && truth(r) : truth(l) || truth(r),
-                {}};
-      }
-      case Op::compare: return compare(e);
-      case Op::conditional: {
-        const SymValue c = eval(e.a);
-        const SymValue a = eval(e.b), b = eval(e.c);
-        if (a.type != b.type) refuse("the branches of '?:' have different types");
-        const z3::expr cond = c.type == SymType::symbol ? ctx_.bool_val(true) : truth(c);
-        SymValue out{a.type, z3::ite(cond, a.e, b.e), a.codes};
-        out.codes.insert(b.codes.begin(), b.codes.end());
-        return out;
-      }
-      default: break;
-    }
-    refuse(
-        "its operators are not all modelled (assignments inside expressions, '/', '..', bit "
-        "operations, string '+')");
-  }
-
-  SymValue compare(const runtime::script::Expr& e) {
-    std::vector<SymValue> operands;
-    z3::expr all = ctx_.bool_val(true);
-    for (std::uint32_t i = 0; i < e.list_size; ++i)
-      operands.push_back(eval(p_.compare_operands()[e.list_begin + i]));
-    for (std::uint32_t i = 0; i + 1 < e.list_size; ++i) {
-      const SymValue &l = operands[i], &r = operands[i + 1];
-      const CompareOp op = p_.compare_ops()[e.ops_begin + i];
-      z3::expr holds = ctx_.bool_val(false);
-      if (l.type == SymType::symbol && r.type == SymType::symbol) {
-        if (op != CompareOp::eq && op != CompareOp::ne) refuse("orders names");
-        smt::assign(holds, op == CompareOp::eq ? l.e == r.e : l.e != r.e);
-      } else if (numeric(l.type) && numeric(r.type)) {
-        const bool exact = integral(l.type) && integral(r.type);
-        const z3::expr a = exact ? as_int(l) : as_real(l), b = exact ? as_int(r) : as_real(r);
-        const z3::expr equal = exact ? a == b : z3::abs(a - b) <= float_epsilon(ctx_);
-        switch (op) {
-          case CompareOp::eq: holds = equal; break;
-          case CompareOp::ne: smt::assign(holds, !equal); break;
-          case CompareOp::lt: smt::assign(holds, a < b); break;
-          case CompareOp::gt: smt::assign(holds, a > b); break;
-          case CompareOp::le: smt::assign(holds, a <= b); break;
-          case CompareOp::ge: smt::assign(holds, a >= b); break;
-        }
-      } else {
-        refuse("compares a name with a number");
-      }
-      smt::assign(all, all && holds);
-    }
-    return {SymType::boolean, all, {}};
+      refuse("'" + name + "' is neither a domain variable nor a condition");
+    };
+    return fretish_value(ctx_, *reading.expr, resolve, where_ + ": `" + p_.code() + "`");
   }
 
   z3::context& ctx_;
@@ -299,11 +207,11 @@ class FretishEncoder {
     switch (e.kind) {
       case K::bool_literal: return {SymType::boolean, ctx_.bool_val(e.bool_value), {}};
       case K::number: {
-        if (e.text.find_first_not_of("0123456789") == std::string::npos)
-          return {SymType::integer, ctx_.int_val(e.text.c_str()), {}};
-        if (e.text.find_first_not_of("0123456789.") == std::string::npos)
-          return {SymType::real, ctx_.real_val(e.text.c_str()), {}};
-        refuse("the number " + e.text);
+        const auto r = smt::parse_rational(e.text);
+        if (!r) refuse("the number " + e.text);
+        if (smt::is_integer_literal(e.text))
+          return {SymType::integer, ctx_.int_val(r->text().c_str()), {}};
+        return {SymType::real, ctx_.real_val(r->text().c_str()), {}};
       }
       case K::identifier: return resolve_(e.text);
       case K::logical_not: return {SymType::boolean, !boolean(*e.args[0]), {}};
@@ -424,8 +332,12 @@ class FretishEncoder {
     if (f == "ite" && e.args.size() == 3) {
       const z3::expr c = boolean(*e.args[0]);
       const SymValue a = value(*e.args[1]), b = value(*e.args[2]);
+      if (number_kind(a) && number_kind(b) && a.type != b.type)  // an ite with a real branch
+        return {SymType::real, z3::ite(c, as_real(a), as_real(b)), {}};
       if (a.type != b.type) refuse("the branches of ite have different kinds");
-      return {a.type, z3::ite(c, a.e, b.e), {}};
+      SymValue out{a.type, z3::ite(c, a.e, b.e), a.codes};
+      out.codes.insert(b.codes.begin(), b.codes.end());
+      return out;
     }
     refuse("function '" + f + "' is not modelled");
   }
@@ -441,6 +353,12 @@ z3::expr fretish_bool(z3::context& ctx, const fretish::Expr& e,
                       const std::function<SymValue(const std::string&)>& resolve,
                       const std::string& where) {
   return FretishEncoder(ctx, resolve, where).boolean(e);
+}
+
+SymValue fretish_value(z3::context& ctx, const fretish::Expr& e,
+                       const std::function<SymValue(const std::string&)>& resolve,
+                       const std::string& where) {
+  return FretishEncoder(ctx, resolve, where).value(e);
 }
 
 }  // namespace uabt::prove

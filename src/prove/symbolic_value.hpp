@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fretish/domain.hpp"
 #include "fretish/expr.hpp"
 #include "runtime/script/program.hpp"
 
@@ -44,17 +45,21 @@ class SymbolCodes {
 
 // The blackboard entries a script may touch, as the encoder sees them.
 struct ScriptScope {
-  // The state variable a script name stands for (index into the value vector), -1 if none.
+  // The state variable a script name (as written, `@x` too) stands for (index into the value
+  // vector), -1 if none.
   std::function<int(const std::string&)> var_of;
+  const fretish::Domain* domain = nullptr;  // tells enum values from entries
   const std::vector<SymType>* types = nullptr;
   const std::vector<std::set<int>>* domains = nullptr;  // symbol variables: their codes
   SymbolCodes* codes = nullptr;
 };
 
 // Runs a BT.CPP script over `values` under `guard` (each assignment becomes
-// values[v] = ite(guard, new, old)), with runtime/script/eval.cpp's meaning on the typed
-// subset it accepts; anything else throws SymbolicUnsupported naming `where`. Returns the last
-// statement's value, or nothing for an empty script.
+// values[v] = ite(guard, new, old)). Each expression is read as FRETISH by the one reading of
+// the script language (verify/script_reading.hpp) and encoded by fretish_bool's encoder;
+// assignments store with runtime/script/eval.cpp's rules on the typed subset they accept.
+// Anything else throws SymbolicUnsupported naming `where`. Returns the last statement's value,
+// or nothing for an empty script.
 std::optional<SymValue> run_script(z3::context& ctx, const runtime::script::Program& program,
                                    const ScriptScope& scope, std::vector<z3::expr>& values,
                                    const z3::expr& guard, const std::string& where);
@@ -67,6 +72,10 @@ z3::expr script_truth(const SymValue& v, const std::string& where);
 z3::expr fretish_bool(z3::context& ctx, const fretish::Expr& e,
                       const std::function<SymValue(const std::string&)>& resolve,
                       const std::string& where);
+// The same for an expression of any type.
+SymValue fretish_value(z3::context& ctx, const fretish::Expr& e,
+                       const std::function<SymValue(const std::string&)>& resolve,
+                       const std::string& where);
 
 // A runtime value as a term of `type` (symbols by their code).
 z3::expr constant_of(z3::context& ctx, const runtime::ScriptValue& v, SymType type,

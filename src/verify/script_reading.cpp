@@ -27,8 +27,9 @@ struct ReadError : std::runtime_error {
 
 class Translator {
  public:
-  Translator(const bt::script::Script& script, const fretish::Domain& domain, ScriptReading& out)
-      : script_(script), domain_(domain), out_(out) {}
+  Translator(const bt::script::Script& script, const fretish::Domain& domain, ScriptReading& out,
+             bool names_as_written = false)
+      : script_(script), domain_(domain), out_(out), names_as_written_(names_as_written) {}
 
   ExprPtr statement() {
     const auto& statements = script_.statements();
@@ -68,6 +69,7 @@ class Translator {
       case Op::sub:
       case Op::mul: return real_valued(e.a) || real_valued(e.b);
       case Op::div: return true;
+      case Op::conditional: return real_valued(e.b) || real_valued(e.c);
       default: return false;
     }
   }
@@ -135,7 +137,7 @@ class Translator {
                           "' in quotes",
                       e.column);
     if (!root) out_.local_reads.push_back(key);
-    return fretish::make_identifier(key);
+    return fretish::make_identifier(names_as_written_ ? e.name : key);
   }
 
   // A chain a < b <= c holds when every adjacent pair does.
@@ -175,8 +177,13 @@ class Translator {
       case Op::logic_and: return binary(ExprKind::logical_and, e);
       case Op::logic_or: return binary(ExprKind::logical_or, e);
       case Op::compare: return chain(e);
-      case Op::conditional:
-        throw ReadError("the conditional operator '?:' is not supported", e.column);
+      case Op::conditional: {
+        auto ite = std::make_shared<fretish::Expr>();
+        ite->kind = ExprKind::call;
+        ite->text = "ite";
+        ite->args = {translate(e.a), translate(e.b), translate(e.c)};
+        return ite;
+      }
       case Op::concat:
         throw ReadError("the string operator '..' is not a condition operator", e.column);
       case Op::complement:
@@ -198,6 +205,7 @@ class Translator {
   const bt::script::Script& script_;
   const fretish::Domain& domain_;
   ScriptReading& out_;
+  bool names_as_written_;
 };
 
 }  // namespace
@@ -229,10 +237,10 @@ ScriptReading parse_script_condition(const std::string& code, const fretish::Dom
 }
 
 ScriptReading read_script_expression(const bt::script::Script& script, std::uint32_t index,
-                                     const fretish::Domain& domain) {
+                                     const fretish::Domain& domain, bool names_as_written) {
   ScriptReading reading;
   try {
-    reading.expr = Translator(script, domain, reading).translate(index);
+    reading.expr = Translator(script, domain, reading, names_as_written).translate(index);
   } catch (const ReadError& e) {
     reading.error = e.what();
   }

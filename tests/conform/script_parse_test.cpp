@@ -42,6 +42,11 @@ TEST(ScriptParse, ComparisonChainsMeanEveryLink) {
   EXPECT_EQ(read("-15 <= slope <= 15"), "-15 <= slope & slope <= 15");
 }
 
+TEST(ScriptParse, AConditionalReadsAsIte) {
+  EXPECT_EQ(read("(battery < 2 ? slope : 2 * slope) > 1"),
+            "ite(battery < 2, slope, 2 * slope) > 1");
+}
+
 TEST(ScriptParse, RootBlackboardPrefixIsTheSameVariable) {
   const ScriptReading r =
       parse_script_condition("@battery < 20 && slope > 1", exploration_domain());
@@ -51,7 +56,7 @@ TEST(ScriptParse, RootBlackboardPrefixIsTheSameVariable) {
 }
 
 TEST(ScriptParse, SideEffectsAndUnsupportedOperatorsAreRefused) {
-  for (const char* code : {"battery := 3", "battery = 3", "battery += 1", "a; b", "a ? b : c",
+  for (const char* code : {"battery := 3", "battery = 3", "battery += 1", "a; b", "a .. b",
                            "battery & 1", "battery | 1", "~battery", "battery <", "(battery < 2",
                            "battery < 2)", "'unterminated", "battery # 2", "12abc > 1", ""}) {
     const ScriptReading r = parse_script_condition(code, exploration_domain());

@@ -44,6 +44,7 @@ class Program {
   const ScriptValue& run(Blackboard& blackboard);
 
   // The parsed form, read-only: for a model checker that interprets scripts symbolically.
+  const Script& script() const { return script_; }
   const std::vector<Expr>& nodes() const { return script_.nodes(); }
   const std::vector<std::uint32_t>& statements() const { return script_.statements(); }
   const std::vector<std::uint32_t>& compare_operands() const { return script_.compare_operands(); }
