@@ -1,10 +1,8 @@
 #include "prove/cells.hpp"
 
-#include <functional>
 #include <optional>
 
 #include "fretish/integer_ranges.hpp"
-#include "fretish/relation.hpp"
 #include "verify/real_cells.hpp"
 #include "verify/script_reading.hpp"
 
@@ -30,6 +28,11 @@ struct Affine {
 namespace {
 
 using detail::Affine;
+
+// A script name's blackboard key: `@x` is the root blackboard's x, the variable x.
+std::string bare(const std::string& name) {
+  return !name.empty() && name.front() == '@' ? name.substr(1) : name;
+}
 
 Affine variable(const std::string& name) {
   Affine out;
@@ -172,56 +175,6 @@ class FretishAffine {
   const std::set<std::string, std::less<>>& integers_;
 };
 
-class ScriptAffine {
- public:
-  ScriptAffine(const script::Program& p, const std::set<std::string, std::less<>>& numeric,
-               const std::set<std::string, std::less<>>& mission)
-      : p_(p), numeric_(numeric), mission_(mission) {}
-  std::optional<Affine> of(std::uint32_t index) const {
-    const script::Expr& e = p_.nodes()[index];
-    try {
-      switch (e.op) {
-        case script::Op::literal: {
-          if (e.literal.kind != ScriptValue::Kind::integer &&
-              e.literal.kind != ScriptValue::Kind::real)
-            return std::nullopt;
-          const auto f = Fraction::parse(e.literal.to_string());
-          if (!f) return std::nullopt;
-          return constant(*f);
-        }
-        case script::Op::name: {
-          const std::string name = bare(e.name);
-          if (!numeric_.contains(name) && !mission_.contains(name)) return std::nullopt;
-          return variable(name);
-        }
-        case script::Op::negate: {
-          const auto x = of(e.a);
-          return x ? scale(*x, Fraction(-1)) : std::nullopt;
-        }
-        case script::Op::add:
-        case script::Op::sub: {
-          const auto l = of(e.a), r = of(e.b);
-          if (!l || !r) return std::nullopt;
-          return combine(*l, *r, e.op == script::Op::add ? 1 : -1);
-        }
-        case script::Op::mul: return product(of(e.a), of(e.b));
-        case script::Op::div: return quotient(of(e.a), of(e.b));
-        default: return std::nullopt;
-      }
-    } catch (const verify::detail::FractionOverflow&) {
-      return std::nullopt;
-    }
-  }
-  static std::string bare(const std::string& name) {
-    return !name.empty() && name.front() == '@' ? name.substr(1) : name;
-  }
-
- private:
-  const script::Program& p_;
-  const std::set<std::string, std::less<>>& numeric_;
-  const std::set<std::string, std::less<>>& mission_;
-};
-
 }  // namespace
 
 void Cuts::add(const Expr& e, const std::string& where, bool at_tick_start) {
@@ -311,96 +264,53 @@ void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool 
     if (a) walk(*a, where, atom, at_tick_start);
 }
 
-void Cuts::add(const script::Program& program, const std::string& where) {
+void Cuts::add(const script::Program& program, const fretish::Domain& domain,
+               const std::string& where) {
+  const std::string what = "script `" + program.code() + "` in " + where;
   const auto& nodes = program.nodes();
-  const ScriptAffine affine(program, numeric_, mission_);
-  // Operands inside a cut comparison are accounted for; any other read of a numeric name is not.
-  std::vector<char> covered(nodes.size(), 0);
-  std::function<void(std::uint32_t)> cover = [&](std::uint32_t i) {
-    covered[i] = 1;
-    const script::Expr& e = nodes[i];
-    if (e.op == script::Op::literal || e.op == script::Op::name) return;
-    if (e.op == script::Op::negate) return cover(e.a);
-    cover(e.a);
-    cover(e.b);
-  };
-  for (std::uint32_t i = 0; i < nodes.size(); ++i) {
-    const script::Expr& e = nodes[i];
-    if (e.op != script::Op::compare || e.list_size != 2) continue;
-    const std::uint32_t l = program.compare_operands()[e.list_begin];
-    const std::uint32_t r = program.compare_operands()[e.list_begin + 1];
-    const script::CompareOp op = program.compare_ops()[e.ops_begin];
-    if (op == script::CompareOp::eq || op == script::CompareOp::ne) {
-      auto value_named = [&](std::uint32_t name, std::uint32_t value) {
-        return nodes[name].op == script::Op::name && nodes[value].op == script::Op::literal &&
-               nodes[value].literal.kind == ScriptValue::Kind::string &&
-               name_value(ScriptAffine::bare(nodes[name].name), nodes[value].literal.to_string());
-      };
-      if (value_named(l, r) || value_named(r, l)) {
-        cover(l);
-        cover(r);
-        continue;
-      }
+  for (const std::uint32_t statement : program.statements()) {
+    const script::Expr& e = nodes[statement];
+    const bool assigns = bt::script::is_assignment(e.op);
+    if (assigns) {
+      const std::string target = bare(nodes[e.a].name);
+      if (numeric_.contains(target) || enums_.contains(target))
+        add_uncut(target, "the " + what + " assigns it");
     }
-    std::optional<Atom> a;
-    try {
-      a = atom_of(affine.of(l), affine.of(r), numeric_);
-    } catch (const verify::detail::FractionOverflow&) {
+    // The one reading of the script language: its atoms are cut as a requirement's are.
+    const verify::ScriptReading reading =
+        verify::read_script_expression(program.script(), assigns ? e.b : statement, domain);
+    if (reading.expr) {
+      walk(*reading.expr, what, nullptr, false);
+      continue;
     }
-    if (cut(a, "the script `" + program.code() + "` (" + where + ")", false)) {
-      cover(l);
-      cover(r);
-    }
+    for (const std::string& name : program.names())
+      if (numeric_.contains(bare(name)) || enums_.contains(bare(name)))
+        add_uncut(bare(name), "the " + what + " reads it in a way that has no FRETISH reading (" +
+                                  reading.error + ")");
   }
-  for (std::uint32_t i = 0; i < nodes.size(); ++i) {
-    const script::Expr& e = nodes[i];
-    if (e.op != script::Op::name || covered[i]) continue;
-    const std::string name = ScriptAffine::bare(e.name);
-    if (numeric_.contains(name))
-      add_uncut(name, "the script `" + program.code() + "` (" + where +
-                          ") reads it outside a comparison with a constant or with the "
-                          "mission's own state");
-    if (enums_.contains(name))
-      add_uncut(name, "the script `" + program.code() + "` (" + where +
-                          ") reads it outside a comparison with one of its values");
-  }
-}
-
-std::optional<std::pair<std::string, std::vector<fretish::IntegerRange>>> Cuts::integer_run_leaf(
-    const script::Program& program) const {
-  if (program.statements().size() != 1) return std::nullopt;
-  const auto& nodes = program.nodes();
-  const script::Expr& e = nodes[program.statements().front()];
-  if (e.op != script::Op::compare || e.list_size != 2) return std::nullopt;
-  std::uint32_t name = program.compare_operands()[e.list_begin];
-  std::uint32_t value = program.compare_operands()[e.list_begin + 1];
-  fretish::ExprKind op = verify::relation_of(program.compare_ops()[e.ops_begin]);
-  if (nodes[name].op != script::Op::name) {
-    std::swap(name, value);
-    op = fretish::mirrored_relation(op);
-  }
-  if (nodes[name].op != script::Op::name || nodes[value].op != script::Op::literal ||
-      nodes[value].literal.kind != ScriptValue::Kind::integer)
-    return std::nullopt;
-  std::string variable = ScriptAffine::bare(nodes[name].name);
-  if (!numeric_.contains(variable) || !integers_.contains(variable)) return std::nullopt;
-  return std::pair{std::move(variable), fretish::ranges_of(op, nodes[value].literal.integer)};
 }
 
 void Cuts::add_any_of(const std::vector<const script::Program*>& programs,
-                      const std::string& where) {
-  std::map<std::string, std::vector<fretish::IntegerRange>> ranges;
+                      const fretish::Domain& domain, const std::string& where) {
+  // Read as one disjunction, so that a long run of an integer's comparisons is cut as a
+  // requirement's run is (walk).
+  std::vector<fretish::ExprPtr> readings;
   for (const script::Program* program : programs) {
-    auto leaf =
-        programs.size() >= fretish::kMinRangeRun ? integer_run_leaf(*program) : std::nullopt;
-    if (!leaf) {
-      add(*program, where);
-      continue;
+    if (program->statements().size() == 1 &&
+        !bt::script::is_assignment(program->nodes()[program->statements().front()].op)) {
+      verify::ScriptReading reading =
+          verify::read_script_expression(program->script(), program->statements().front(), domain);
+      if (reading.expr) {
+        readings.push_back(std::move(reading.expr));
+        continue;
+      }
     }
-    auto& mine = ranges[leaf->first];
-    mine.insert(mine.end(), leaf->second.begin(), leaf->second.end());
+    add(*program, domain, where);
   }
-  cut_at_range_ends(ranges);
+  if (readings.empty()) return;
+  const auto any =
+      readings.size() == 1 ? readings.front() : fretish::make_expr(ExprKind::logical_or, readings);
+  walk(*any, "the conditions of " + where, nullptr, false);
 }
 
 void Cuts::add_truth_read(const std::string& variable, const std::string& where) {

@@ -55,14 +55,17 @@ class Cuts {
   // `where` names the expression for a reason ("requirements.fret:4:1", "a script `x > 2`").
   // `at_tick_start`: an assumption or the initial condition (read with the tick's first state).
   void add(const fretish::Expr& e, const std::string& where, bool at_tick_start = false);
-  // `name_of(slot)`: the root blackboard key a script name resolves to ("" when unknown).
-  void add(const runtime::script::Program& program, const std::string& where);
+  // A script, by its FRETISH reading (verify/script_reading.hpp) with `domain`'s names: its
+  // atoms cut as a requirement's; an entry it assigns, or reads in a way with no reading, is
+  // not cut.
+  void add(const runtime::script::Program& program, const fretish::Domain& domain,
+           const std::string& where);
   // Conditions of which only the disjunction is seen: the ScriptConditions of a Fallback in a
   // selection tree the compiler generates (no property observes those nodes, and a Fallback of
   // conditions ends in the tick it starts). A long run of an integer's comparisons with
   // numerals among them is cut only at the ends of the union of their ranges.
   void add_any_of(const std::vector<const runtime::script::Program*>& programs,
-                  const std::string& where);
+                  const fretish::Domain& domain, const std::string& where);
   // A condition leaf or a port that reads the variable as it is.
   void add_truth_read(const std::string& variable, const std::string& where);
   void add_uncut(const std::string& variable, const std::string& why);
@@ -85,9 +88,6 @@ class Cuts {
   // Records the value an (in)equality of an enumerated variable with one of its values names;
   // false when the operands are not such a pair.
   bool name_value(const std::string& variable, const std::string& value);
-  // `x op n` for a cut integer x and an integer numeral n, as x and the ranges it allows.
-  std::optional<std::pair<std::string, std::vector<fretish::IntegerRange>>> integer_run_leaf(
-      const runtime::script::Program& program) const;
   // Breakpoints at the ends of the union of each variable's ranges.
   void cut_at_range_ends(std::map<std::string, std::vector<fretish::IntegerRange>>& ranges);
   std::set<std::string, std::less<>> numeric_, mission_, integers_;

@@ -464,14 +464,16 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
         programs.push_back(&tree_scripts[i].first);
         in_disjunction[i] = 1;
       }
-      cuts.add_any_of(programs, tree_scripts[first].second);
+      cuts.add_any_of(programs, mission.domain, tree_scripts[first].second);
     }
     for (std::size_t i = 0; i < tree_scripts.size(); ++i)
-      if (!in_disjunction[i]) cuts.add(tree_scripts[i].first, tree_scripts[i].second);
+      if (!in_disjunction[i])
+        cuts.add(tree_scripts[i].first, mission.domain, tree_scripts[i].second);
     for (const auto& leaf : choice->leaves()) {
       if (leaf.condition) cuts.add_truth_read(leaf.label, "condition " + leaf.name);
       for (const auto* effect : {&leaf.on_success, &leaf.on_failure})
-        if (*effect) cuts.add(**effect, world.file + ": the effect of " + leaf.label);
+        if (*effect)
+          cuts.add(**effect, mission.domain, world.file + ": the effect of " + leaf.label);
     }
     for (const std::string& key : port_reads)
       cuts.add_uncut(key, "a port of the tree reads {" + key + "}");

@@ -167,7 +167,7 @@ void check_effect(const runtime::script::Program& program, const std::string& ac
   const auto& nodes = program.nodes();
   for (const std::uint32_t s : program.statements()) {
     const auto& e = nodes[s];
-    if (e.op < Op::assign_create) continue;
+    if (!bt::script::is_assignment(e.op)) continue;
     const auto& target = nodes[e.a];
     if (target.op != Op::name) continue;
     const std::string name = target.name.starts_with('@') ? target.name.substr(1) : target.name;

@@ -105,6 +105,36 @@ TEST(Division, AnIntegerRemainderKeepsTheDividendsSignInBothEngines) {
   expect_agreement(x, s);
 }
 
+// A script in the tree means what BT.CPP computes, in both engines: `/` divides integers as
+// doubles (tilt / 2 > 1 holds from tilt = 3), and `==` on a real holds within float epsilon of
+// equal, so a level that is not exactly 0.5 can pass `level == 0.5`.
+TEST(Division, AScriptDividesAndComparesAsTheEngineRunsIt) {
+  TempMission m(
+      {{"mission.xml", mission_with("    <Sequence><ScriptCondition name=\"Half\" code=\"tilt / 2 "
+                                    "&gt; 1\"/><ScriptCondition name=\"Level\" code=\"level == "
+                                    "0.5\"/><Hold/></Sequence>")},
+       {"domain.fret", "integer tilt in [-30, 20]\nreal level in [0, 1]\n"},
+       {"requirements.fret",
+        "Steep: Mission shall always satisfy Half.success -> tilt >= 3\n"
+        "Exact: Mission shall always satisfy Level.success -> level = 0.5\n"},
+       {"world.json", R"({"actions": {"Hold": {"ticks": 2, "results": ["success"]}}})"}});
+  Gated g(m.dir());
+  ASSERT_TRUE(g.ok()) << format_text(g.outcome->report.findings);
+  const prove::Result x = g.prove("explicit"), s = g.prove("symbolic");
+  for (const prove::Result* r : {&x, &s}) {
+    SCOPED_TRACE(r->engine);
+    EXPECT_EQ(answer(*r, "Steep").verdict, Verdict::proved);
+    const prove::Answer& exact = answer(*r, "Exact");
+    ASSERT_EQ(exact.verdict, Verdict::violated);
+    EXPECT_EQ(exact.depth, 1u);
+    const auto scenario = nlohmann::json::parse(exact.counterexample->scenario);
+    const double level = scenario["initial"]["level"].get<double>();
+    EXPECT_NE(level, 0.5) << exact.counterexample->scenario;
+    EXPECT_LE(std::abs(level - 0.5), 1.2e-7) << exact.counterexample->scenario;
+  }
+  expect_agreement(x, s);
+}
+
 // A divisor that is not a number written out is declined with the reason it always had.
 TEST(Division, ADivisorThatIsNotANumeralIsStillDeclined) {
   auto files = dive_mission();

@@ -69,6 +69,22 @@ fretish::ExprPtr expression(const std::string& text) {
   return e;
 }
 
+// The names the scripts below read: a script is cut by its reading, which the domain types.
+const fretish::Domain& script_domain() {
+  static const fretish::Domain domain = [] {
+    fretish::Domain d;
+    std::vector<Finding> findings;
+    fretish::parse_domain_file(
+        "integer battery, depth, reserve, level\nreal slope, wind\n"
+        "enum terrain in {sand, rocks, mud, ice, flat}\n",
+        "domain.fret", findings)
+        .variables.swap(d.variables);
+    EXPECT_TRUE(findings.empty());
+    return d;
+  }();
+  return domain;
+}
+
 TEST(Cuts, LinearAtomsOverOneVariableGiveBreakpoints) {
   prove::Cuts cuts({"slope", "battery"});
   cuts.add(*expression("slope < 10 & 2 * slope + 1 >= 31 & !(battery - 40 > 0)"), "here");
@@ -85,16 +101,31 @@ TEST(Cuts, AnAtomOverTwoVariablesOrACopyCannotBeCut) {
       << cuts.uncut("slope");
   EXPECT_NE(cuts.uncut("battery"), "");
   const auto copy = runtime::script::Program::parse("reserve = wind * 2");
-  cuts.add(copy, "an effect");
+  cuts.add(copy, script_domain(), "an effect");
   EXPECT_NE(cuts.uncut("wind").find("reserve = wind * 2"), std::string::npos) << cuts.uncut("wind");
 }
 
 TEST(Cuts, ScriptComparisonsWithConstantsGiveBreakpoints) {
   prove::Cuts cuts({"wind", "battery"});
   cuts.add(runtime::script::Program::parse("@wind < 15 && battery > 10 && 'flat' == terrain"),
-           "a guard");
+           script_domain(), "a guard");
   EXPECT_EQ(cuts.breaks("wind"), (std::set<Fraction>{Fraction(15)}));
   EXPECT_EQ(cuts.breaks("battery"), (std::set<Fraction>{Fraction(10)}));
+  EXPECT_EQ(cuts.uncut("wind"), "");
+}
+
+// A script is cut where the engine changes its truth, by the one reading of scripts: BT.CPP's
+// `==` on a real holds within float epsilon (2^-23) of equal, so its cells end there, and a
+// comparison chain is every link's atom.
+TEST(Cuts, AScriptIsCutWhereTheEngineChangesItsTruth) {
+  prove::Cuts cuts({"slope", "wind"});
+  cuts.add(runtime::script::Program::parse("slope == 0.5"), script_domain(), "a guard");
+  cuts.add(runtime::script::Program::parse("-15 <= wind <= 15"), script_domain(), "a guard");
+  EXPECT_EQ(cuts.breaks("slope"),
+            (std::set<Fraction>{*Fraction::parse("0.49999988079071044921875"),
+                                *Fraction::parse("0.50000011920928955078125")}));
+  EXPECT_EQ(cuts.breaks("wind"), (std::set<Fraction>{Fraction(-15), Fraction(15)}));
+  EXPECT_EQ(cuts.uncut("slope"), "");
   EXPECT_EQ(cuts.uncut("wind"), "");
 }
 
@@ -128,13 +159,13 @@ TEST(Cuts, ALongRunOfAnIntegersComparisonsIsCutAtTheEndsOfItsRanges) {
   std::vector<const runtime::script::Program*> programs;
   for (const auto& c : conditions) programs.push_back(&c);
   prove::Cuts from_fallback({"depth"}, {}, {"depth"});
-  from_fallback.add_any_of(programs, "a selection Fallback");
+  from_fallback.add_any_of(programs, script_domain(), "a selection Fallback");
   EXPECT_EQ(
       from_fallback.breaks("depth"),
       (std::set<Fraction>{Fraction(0), Fraction(19), Fraction(40), Fraction(41), Fraction(61)}));
   EXPECT_EQ(from_fallback.uncut("depth"), "");
   prove::Cuts few({"depth"}, {}, {"depth"});
-  few.add_any_of({programs.begin(), programs.begin() + 3}, "a selection Fallback");
+  few.add_any_of({programs.begin(), programs.begin() + 3}, script_domain(), "a selection Fallback");
   EXPECT_EQ(few.breaks("depth"), (std::set<Fraction>{Fraction(0), Fraction(1), Fraction(2)}));
 
   prove::Cuts short_run({"depth"}, {}, {"depth"});
@@ -152,7 +183,7 @@ TEST(Cuts, AnAtomWithTheMissionsStateIsCutInTheStateAtHand) {
   prove::Cuts cuts({"battery", "slope"}, {"reserve", "level"});
   cuts.add(*expression("battery >= reserve + 20 & 2 * battery < 3 * level - 1 & slope < 10"),
            "requirements.fret:4:1");
-  cuts.add(runtime::script::Program::parse("battery > @reserve"), "a guard");
+  cuts.add(runtime::script::Program::parse("battery > @reserve"), script_domain(), "a guard");
   EXPECT_EQ(cuts.uncut("battery"), "");
   EXPECT_EQ(cuts.breaks("slope"), (std::set<Fraction>{Fraction(10)}));
   const auto& mixed = cuts.mixed("battery");
@@ -184,7 +215,7 @@ TEST(Cuts, WhatTheStateAtHandCannotCutStaysUncut) {
   EXPECT_NE(uncut("battery > slope + reserve"), "");
   // An effect that copies the variable into the mission's state.
   prove::Cuts cuts({"battery"}, {"reserve"});
-  cuts.add(runtime::script::Program::parse("reserve = battery - 5"), "an effect");
+  cuts.add(runtime::script::Program::parse("reserve = battery - 5"), script_domain(), "an effect");
   EXPECT_NE(cuts.uncut("battery").find("reserve = battery - 5"), std::string::npos)
       << cuts.uncut("battery");
 }
@@ -313,7 +344,8 @@ TEST(OnDemand, AnAtomWithAnotherEnvironmentVariableStillGoesToTheSymbolicEngine)
 TEST(Cuts, AnEnumComparedWithItsValuesNamesThem) {
   prove::Cuts cuts({}, {}, {}, {{"terrain", {"sand", "rocks", "mud", "ice"}}});
   cuts.add(*expression("terrain = rocks | !(sand != terrain)"), "requirements.fret:2:1");
-  cuts.add(runtime::script::Program::parse("terrain == 'mud' && 'rocks' != @terrain"), "a guard");
+  cuts.add(runtime::script::Program::parse("terrain == 'mud' && 'rocks' != @terrain"),
+           script_domain(), "a guard");
   EXPECT_EQ(cuts.named("terrain"), (std::set<std::string, std::less<>>{"mud", "rocks", "sand"}));
   EXPECT_EQ(cuts.uncut("terrain"), "");
 }
@@ -330,11 +362,13 @@ TEST(Cuts, AnEnumReadAnyOtherWayIsNotCut) {
                       "(r:1:1)"),
             std::string::npos);
   EXPECT_NE(uncut([](prove::Cuts& c) {
-              c.add(runtime::script::Program::parse("last := terrain"), "an effect");
+              c.add(runtime::script::Program::parse("last := terrain"), script_domain(),
+                    "an effect");
             }).find("last := terrain"),
             std::string::npos);
   EXPECT_NE(uncut([](prove::Cuts& c) {
-              c.add(runtime::script::Program::parse("terrain < 'sand'"), "a guard");
+              c.add(runtime::script::Program::parse("terrain < 'sand'"), script_domain(),
+                    "a guard");
             }),
             "");
   EXPECT_NE(uncut([](prove::Cuts& c) { c.add_truth_read("terrain", "condition terrain"); }), "");

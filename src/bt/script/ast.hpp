@@ -39,6 +39,11 @@ enum class Op : std::uint8_t {
   div_assign,
 };
 
+// := = += -= *= /= (the last operators of Op).
+inline bool is_assignment(Op op) {
+  return op >= Op::assign_create;
+}
+
 enum class CompareOp : std::uint8_t { eq, ne, lt, gt, le, ge };
 
 inline constexpr std::uint32_t kUnbound = UINT32_MAX;

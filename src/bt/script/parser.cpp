@@ -306,7 +306,7 @@ std::vector<std::string> Script::names() const {
 
 bool Script::writes() const {
   return std::any_of(nodes_.begin(), nodes_.end(),
-                     [](const Expr& e) { return e.op >= Op::assign_create; });
+                     [](const Expr& e) { return is_assignment(e.op); });
 }
 
 }  // namespace uabt::bt::script
