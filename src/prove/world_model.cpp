@@ -14,6 +14,7 @@
 #include "runtime/scenario_check.hpp"
 #include "runtime/script/program.hpp"
 #include "verify/division.hpp"
+#include "verify/script_reading.hpp"
 
 namespace uabt::prove {
 
@@ -102,40 +103,6 @@ struct Vocabulary {
   std::set<std::string> writable;  // domain variables and the mission's conditions
 };
 
-// A script's arithmetic as FRETISH (names, numbers, + - * / and negation), nullptr for
-// anything else.
-fretish::ExprPtr as_fretish(const runtime::script::Program& program, std::uint32_t index) {
-  using runtime::script::Op;
-  const auto& e = program.nodes()[index];
-  switch (e.op) {
-    case Op::literal:
-      if (e.literal.kind == runtime::ScriptValue::Kind::integer ||
-          e.literal.kind == runtime::ScriptValue::Kind::real)
-        return fretish::make_number(e.literal.to_string());
-      return nullptr;
-    case Op::name:
-      return fretish::make_identifier(e.name.starts_with('@') ? e.name.substr(1) : e.name);
-    case Op::negate: {
-      auto a = as_fretish(program, e.a);
-      return a ? fretish::make_expr(fretish::ExprKind::negate, {a}) : nullptr;
-    }
-    case Op::add:
-    case Op::sub:
-    case Op::mul:
-    case Op::div: {
-      auto a = as_fretish(program, e.a);
-      auto b = as_fretish(program, e.b);
-      if (!a || !b) return nullptr;
-      const auto kind = e.op == Op::add   ? fretish::ExprKind::add
-                        : e.op == Op::sub ? fretish::ExprKind::sub
-                        : e.op == Op::mul ? fretish::ExprKind::mul
-                                          : fretish::ExprKind::div;
-      return fretish::make_expr(kind, {a, b});
-    }
-    default: return nullptr;
-  }
-}
-
 // Every division of an effect whose divisor can be zero in the domain: an error with the state.
 void check_divisions(const runtime::script::Program& program, const std::string& action,
                      const std::string& key, std::size_t key_offset, const Vocabulary& v,
@@ -143,7 +110,8 @@ void check_divisions(const runtime::script::Program& program, const std::string&
   using runtime::script::Op;
   for (const auto& e : program.nodes()) {
     if (e.op != Op::div && e.op != Op::div_assign) continue;
-    const auto divisor = as_fretish(program, e.b);
+    const fretish::ExprPtr divisor =
+        verify::read_script_expression(program.script(), e.b, *v.domain).expr;
     if (!divisor) continue;
     const auto state = verify::zero_divisor_state(*v.domain, divisor, {});
     if (!state) continue;
