@@ -181,7 +181,14 @@ NodeStatus ChoiceWorld::tick_leaf(const runtime::LeafContext& context) {
     --pick;
   }
   const NodeStatus result = results[pick];
-  elapsed = 0;
+  // While its outputs and its effect run, the action's progress says which result it ends
+  // with: a choice made there (a value an output gets, a value the effect reads) is another
+  // point of the tick for each result, and the explicit engine's mid-tick memo keys on it.
+  elapsed = -1 - static_cast<std::int64_t>(pick);
+  struct Ended {
+    std::int64_t& elapsed;
+    ~Ended() { elapsed = 0; }
+  } ended{elapsed};
   // Its output ports first (the node's setOutput before it returns), then the world's effect.
   for (std::size_t k = 0; k < leaf.outputs.size(); ++k) {
     const Leaf::Output& out = leaf.outputs[k];

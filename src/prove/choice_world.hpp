@@ -128,7 +128,8 @@ class ChoiceWorld : public runtime::World {
   std::map<runtime::SlotId, std::vector<runtime::ScriptValue>> output_values;
   const std::vector<Leaf>& leaves() const { return leaves_; }
   // Progress of every action (ticks it has run in its current start; for an action without
-  // contract only whether it runs, as nothing else about it matters): the world's state.
+  // contract only whether it runs, as nothing else about it matters; -1 - k while it ends with
+  // its k-th result, its outputs and effect running): the world's state.
   const std::vector<std::int64_t>& elapsed() const { return elapsed_; }
   void set_elapsed(const std::vector<std::int64_t>& e) { elapsed_ = e; }
   // The longest run the explicit engine can explore (a breadth-first search holds at least one

@@ -398,6 +398,20 @@ TEST(ProveSweep, AnActionTickedTwiceInOneTickReplaysItsRun) {
   EXPECT_EQ(runs[1]["ticks"], 3) << cex.scenario;
 }
 
+// Found by the sweep with the symbolic engine on every mission (seed 64): Act1's world.json
+// effect is `B = r < 4.5` whether it succeeds or fails. The value of r the effect reads was
+// chosen in the middle of the tick, where the mid-tick memo saw the same state after a success
+// as after a failure (the result was not yet the node's), so it skipped every failure and
+// proved P3: the adaptable node ad1, reached only after Act1 fails with B, never ran.
+TEST(ProveSweep, AnEffectReadAfterEitherResultKeepsBothResults) {
+  const prove::Counterexample cex = sweep_counterexample(64, "P3", 2);
+  ASSERT_EQ(cex.rows.size(), 2u);
+  EXPECT_EQ(actions_at(cex, 2), (std::vector<std::string>{"Act1 failure", "Act0 started"}));
+  const auto run = nlohmann::json::parse(cex.scenario)["actions"]["Act1"]["runs"][0];
+  EXPECT_EQ(run["result"], "failure") << cex.scenario;
+  EXPECT_EQ(run["effects"]["B"], true) << cex.scenario;
+}
+
 // Found by the sweep (seed 964): WhileDoElse(Act0, Act0). The condition Act0 starts over at
 // tick 3 and runs, so the WhileDoElse does not tick the do-branch's Act0 (started at tick 2)
 // until tick 4: two ticks of its own over three engine ticks. The counterexample said 3 ticks,
