@@ -29,11 +29,6 @@ namespace {
 
 using detail::Affine;
 
-// A script name's blackboard key: `@x` is the root blackboard's x, the variable x.
-std::string bare(const std::string& name) {
-  return !name.empty() && name.front() == '@' ? name.substr(1) : name;
-}
-
 Affine variable(const std::string& name) {
   Affine out;
   out.terms[name] = Fraction(1);
@@ -272,7 +267,7 @@ void Cuts::add(const script::Program& program, const fretish::Domain& domain,
     const script::Expr& e = nodes[statement];
     const bool assigns = bt::script::is_assignment(e.op);
     if (assigns) {
-      const std::string target = bare(nodes[e.a].name);
+      const std::string target = bt::script::entry_key(nodes[e.a].name);
       if (numeric_.contains(target) || enums_.contains(target))
         add_uncut(target, "the " + what + " assigns it");
     }
@@ -284,9 +279,11 @@ void Cuts::add(const script::Program& program, const fretish::Domain& domain,
       continue;
     }
     for (const std::string& name : program.names())
-      if (numeric_.contains(bare(name)) || enums_.contains(bare(name)))
-        add_uncut(bare(name), "the " + what + " reads it in a way that has no FRETISH reading (" +
-                                  reading.error + ")");
+      if (numeric_.contains(bt::script::entry_key(name)) ||
+          enums_.contains(bt::script::entry_key(name)))
+        add_uncut(bt::script::entry_key(name),
+                  "the " + what + " reads it in a way that has no FRETISH reading (" +
+                      reading.error + ")");
   }
 }
 

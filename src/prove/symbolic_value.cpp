@@ -160,11 +160,12 @@ class ScriptEncoder {
         verify::read_script_expression(p_.script(), index, *scope_.domain, true);
     if (!reading.expr) refuse(reading.error);
     const auto resolve = [this](const std::string& name) {
-      if (const int v = scope_.var_of(name); v >= 0) return read(v);
+      // The reading gives a quoted value as its name, and refuses an unquoted one.
       if (scope_.domain->find(name) == nullptr && scope_.domain->enum_owning(name) != nullptr) {
         const int c = scope_.codes->code(name);
         return SymValue{SymType::symbol, ctx_.int_val(c), {c}};
       }
+      if (const int v = scope_.var_of(name); v >= 0) return read(v);
       refuse("'" + name + "' is neither a domain variable nor a condition");
     };
     return fretish_value(ctx_, *reading.expr, resolve, where_ + ": `" + p_.code() + "`");

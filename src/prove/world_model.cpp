@@ -138,7 +138,7 @@ void check_effect(const runtime::script::Program& program, const std::string& ac
     if (!bt::script::is_assignment(e.op)) continue;
     const auto& target = nodes[e.a];
     if (target.op != Op::name) continue;
-    const std::string name = target.name.starts_with('@') ? target.name.substr(1) : target.name;
+    const std::string name = bt::script::entry_key(target.name);
     if (!v.writable.contains(name))
       loc.fail(loc.in_value(key_offset, target.column),
                key + " of '" + action + "' writes '" + name +

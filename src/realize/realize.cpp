@@ -56,7 +56,7 @@ void visit(const bt::Node& n, const Models& models, Vocabulary& v) {
       if (s.script)
         if (const std::string* code = n.attribute(s.attribute.empty() ? "code" : s.attribute))
           for (const auto& key : prove::assigned_names(*code))
-            v.written.insert(key.starts_with('@') ? key.substr(1) : key);
+            v.written.insert(bt::script::entry_key(key));
     if (model != nullptr)
       for (const auto& port : model->ports)
         if (port.direction != "input_port")

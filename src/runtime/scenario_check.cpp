@@ -28,7 +28,7 @@ namespace {
 void add_script(const std::string& code, std::set<std::string>& state) {
   try {
     for (const std::string& name : bt::script::Script::parse(code).names())
-      state.insert(name.starts_with('@') ? name.substr(1) : name);
+      state.insert(bt::script::entry_key(name));
   } catch (const bt::script::ScriptError&) {
     // The gate reports scripts that do not parse.
   }

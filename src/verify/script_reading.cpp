@@ -60,8 +60,7 @@ class Translator {
     switch (e.op) {
       case Op::literal: return e.literal.kind == bt::script::ScriptValue::Kind::real;
       case Op::name: {
-        const fretish::Variable* v =
-            domain_.find(e.name.starts_with('@') ? e.name.substr(1) : e.name);
+        const fretish::Variable* v = domain_.find(bt::script::entry_key(e.name));
         return v != nullptr && v->type == fretish::VarType::real;
       }
       case Op::negate: return real_valued(e.a);
@@ -130,7 +129,7 @@ class Translator {
 
   ExprPtr name(const Expr& e) {
     const bool root = e.name.starts_with('@');
-    const std::string key = root ? e.name.substr(1) : e.name;
+    const std::string key = bt::script::entry_key(e.name);
     if (domain_.find(key) == nullptr && is_enum_literal(key))
       throw ReadError("'" + key +
                           "' is read as a blackboard entry, not as the enum value; write '" + key +

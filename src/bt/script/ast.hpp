@@ -39,6 +39,11 @@ enum class Op : std::uint8_t {
   div_assign,
 };
 
+// The blackboard key a script name reads: `@x` is the root blackboard's x.
+inline std::string entry_key(std::string_view name) {
+  return std::string(name.starts_with('@') ? name.substr(1) : name);
+}
+
 // := = += -= *= /= (the last operators of Op).
 inline bool is_assignment(Op op) {
   return op >= Op::assign_create;
