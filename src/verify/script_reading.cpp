@@ -20,6 +20,19 @@ namespace {
 // std::numeric_limits<float>::epsilon() (2^-23), written out exactly.
 constexpr const char* kFloatEpsilon = "0.00000011920928955078125";
 
+// The FRETISH relation a script comparison operator means (`==` is `=`).
+ExprKind relation_of(CompareOp op) {
+  switch (op) {
+    case CompareOp::eq: return ExprKind::eq;
+    case CompareOp::ne: return ExprKind::ne;
+    case CompareOp::lt: return ExprKind::lt;
+    case CompareOp::le: return ExprKind::le;
+    case CompareOp::gt: return ExprKind::gt;
+    case CompareOp::ge: return ExprKind::ge;
+  }
+  return ExprKind::eq;
+}
+
 struct ReadError : std::runtime_error {
   ReadError(const std::string& message, std::size_t column)
       : std::runtime_error(message + " (column " + std::to_string(column) + ")") {}
@@ -208,18 +221,6 @@ class Translator {
 };
 
 }  // namespace
-
-ExprKind relation_of(CompareOp op) {
-  switch (op) {
-    case CompareOp::eq: return ExprKind::eq;
-    case CompareOp::ne: return ExprKind::ne;
-    case CompareOp::lt: return ExprKind::lt;
-    case CompareOp::le: return ExprKind::le;
-    case CompareOp::gt: return ExprKind::gt;
-    case CompareOp::ge: return ExprKind::ge;
-  }
-  return ExprKind::eq;
-}
 
 ScriptReading parse_script_condition(const std::string& code, const fretish::Domain& domain) {
   ScriptReading reading;

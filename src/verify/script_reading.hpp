@@ -8,9 +8,6 @@
 
 namespace uabt::verify {
 
-// The FRETISH relation a script comparison operator means (`==` is `=`).
-fretish::ExprKind relation_of(bt::script::CompareOp op);
-
 // A script read as a FRETISH expression: the one reading of the script language for every
 // stage that reasons about a tree (conform, verify's whole-tree checks, the symbolic prover).
 // The engine (runtime/script/eval.cpp) runs the script; ScriptMeaning.* checks that the two

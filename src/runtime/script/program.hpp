@@ -47,8 +47,6 @@ class Program {
   const Script& script() const { return script_; }
   const std::vector<Expr>& nodes() const { return script_.nodes(); }
   const std::vector<std::uint32_t>& statements() const { return script_.statements(); }
-  const std::vector<std::uint32_t>& compare_operands() const { return script_.compare_operands(); }
-  const std::vector<CompareOp>& compare_ops() const { return script_.compare_ops(); }
 
  private:
   const ScriptValue& eval(std::uint32_t index, Blackboard& blackboard);
