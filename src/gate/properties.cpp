@@ -4,6 +4,7 @@
 #include <set>
 
 #include "bt/node_kinds.hpp"
+#include "load/run_trees.hpp"
 
 namespace uabt::gate {
 
@@ -27,15 +28,6 @@ void visit(const bt::Node& root, std::set<std::string>& labels, std::set<std::st
   }
 }
 
-// Whether the compiler copies `alt` into the tree (unknown while a requirement of its node
-// does not parse: counted as selected, so that mistake is not reported twice).
-bool selected(const load::Mission& m, const load::Alternative& alt) {
-  if (m.requirements_incomplete.count(alt.adaptable) != 0) return true;
-  for (const auto* r : m.selections_for(alt.adaptable))
-    if (r->alternative == alt.name) return true;
-  return false;
-}
-
 // Why a node label of an alternative no requirement selects observes nothing: that
 // alternative is not compiled into the tree, so no node of the run has the label.
 std::string why_gone(const load::Mission& m, const std::string& label,
@@ -55,6 +47,14 @@ std::string why_gone(const load::Mission& m, const std::string& label,
          (removed.empty() ? "" : " (the uplink removed " + removed + ")");
 }
 
+// Why a node label of a tree no tree of the run calls observes nothing.
+std::string why_never_called(const std::string& label, const bt::TreeDef& tree,
+                             const load::Alternative* alt) {
+  return "its only nodes '" + label + "' are in the tree '" + tree.id + "'" +
+         (alt != nullptr ? " of alternative '" + alt->name + "'" : "") +
+         ", which no tree of the run calls, so the run has no such node";
+}
+
 }  // namespace
 
 monitor::Observables mission_observables(const load::Mission& m) {
@@ -66,36 +66,44 @@ monitor::Observables mission_observables(const load::Mission& m) {
                                                                     : Type::number;
     for (const std::string& literal : v.enum_values) o.literals.insert(literal);
   }
-  // Nodes of the run: the mission's trees and the alternatives a requirement selects (the
-  // compiler copies only those). A label several nodes share means any of them (ARCHITECTURE §12).
+  // Nodes of the run: the trees it instantiates (ARCHITECTURE §12). A label several nodes share
+  // means any of them.
   std::set<std::string> labels, leaves;
-  for (const bt::TreeDef& t : m.tree.trees) visit(t.root, labels, leaves);
-  std::map<std::string, const load::Alternative*> only_unselected, unselected_leaves;
-  for (const load::Alternative& alt : m.alternatives) {
-    o.literals.insert(alt.name);
-    if (selected(m, alt)) {
-      for (const bt::TreeDef& t : alt.document.trees) visit(t.root, labels, leaves);
-      continue;
-    }
-    std::set<std::string> unused_labels, unused_leaves;
-    for (const bt::TreeDef& t : alt.document.trees) visit(t.root, unused_labels, unused_leaves);
-    for (const std::string& label : unused_labels) only_unselected.emplace(label, &alt);
-    for (const std::string& leaf : unused_leaves) unselected_leaves.emplace(leaf, &alt);
+  std::set<const bt::TreeDef*> run;
+  for (const load::RunTree& t : load::run_trees(m)) {
+    visit(t.tree->root, labels, leaves);
+    run.insert(t.tree);
   }
+  for (const load::Alternative& alt : m.alternatives) o.literals.insert(alt.name);
+  // A label only trees outside the run have observes nothing: say why, once per label.
+  std::map<std::string, std::string> gone_labels, gone_leaves;
+  auto outside_the_run = [&](const bt::TreeDef& t, const load::Alternative* alt) {
+    if (run.count(&t) != 0) return;
+    std::set<std::string> tree_labels, tree_leaves;
+    visit(t.root, tree_labels, tree_leaves);
+    auto why = [&](const std::string& label) {
+      return alt != nullptr && !load::selected(m, *alt) ? why_gone(m, label, *alt)
+                                                        : why_never_called(label, t, alt);
+    };
+    for (const std::string& label : tree_labels)
+      if (labels.count(label) == 0) gone_labels.emplace(label, why(label));
+    for (const std::string& leaf : tree_leaves)
+      if (leaves.count(leaf) == 0) gone_leaves.emplace(leaf, why(leaf));
+  };
+  for (const bt::TreeDef& t : m.tree.trees) outside_the_run(t, nullptr);
+  for (const load::Alternative& alt : m.alternatives)
+    for (const bt::TreeDef& t : alt.document.trees) outside_the_run(t, &alt);
   // A leaf's name is a condition (or an action's effect) on the world's blackboard.
   for (const std::string& kind : leaves)
     if (o.variables.count(kind) == 0) o.variables[kind] = Type::boolean;
   for (const std::string& label : labels)
     for (const char* suffix : {".success", ".failure", ".running"})
       o.variables[label + suffix] = Type::boolean;
-  for (const auto& [leaf, alt] : unselected_leaves)
-    if (leaves.count(leaf) == 0 && o.variables.count(leaf) == 0)
-      o.not_observable[leaf] = why_gone(m, leaf, *alt);
-  for (const auto& [label, alt] : only_unselected) {
-    if (labels.count(label) != 0) continue;
+  for (const auto& [leaf, why] : gone_leaves)
+    if (o.variables.count(leaf) == 0) o.not_observable[leaf] = why;
+  for (const auto& [label, why] : gone_labels)
     for (const char* suffix : {".success", ".failure", ".running"})
-      o.not_observable[label + suffix] = why_gone(m, label, *alt);
-  }
+      o.not_observable[label + suffix] = why;
   for (const load::AdaptableSite& site : m.adaptables) {
     o.variables[site.id] = Type::boolean;
     o.variables[site.id + ".selected"] = Type::name;

@@ -9,6 +9,7 @@
 #include "base/suggest.hpp"
 #include "bt/node_kinds.hpp"
 #include "bt/script/load_check.hpp"
+#include "load/run_trees.hpp"
 #include "monitor/templates.hpp"
 #include "prove/cells.hpp"
 #include "prove/model.hpp"
@@ -20,8 +21,8 @@ namespace {
 
 using monitor::Val;
 
-// What the requirements may read of the mission: its node labels, its adaptable nodes and
-// their alternatives, and the blackboard entries its trees write.
+// What the requirements may read of the mission: the node labels of the trees a run has, its
+// adaptable nodes and their alternatives, and the blackboard entries its trees write.
 struct Vocabulary {
   std::set<std::string> labels;        // every node's name and ID
   std::set<std::string> robot_leaves;  // labels of the robot's leaves: the world ends them
@@ -71,9 +72,8 @@ Vocabulary vocabulary_of(const load::Mission& m) {
   Models models;
   if (m.nodes)
     for (const auto& model : *m.nodes) models.emplace(model.id, &model);  // the first of an ID
-  for (const auto& t : m.tree.trees) visit(t.root, models, v);
+  for (const load::RunTree& t : load::run_trees(m)) visit(t.tree->root, models, v);
   for (const auto& alt : m.alternatives) {
-    for (const auto& t : alt.document.trees) visit(t.root, models, v);
     v.alternatives[alt.adaptable].push_back(alt.name);
     v.literals.insert(alt.name);
   }

@@ -45,8 +45,15 @@ class SweepMission : public MissionWriter {
     std::string main = node(0, 3);
     for (int i = static_cast<int>(adaptable_ids_.size()); i < adaptables_; ++i)
       main = "<Sequence>" + adaptable() + main + "</Sequence>";
+    // Sub's nodes exist in a run only when the main tree calls it: the guarantees read them only
+    // then (without a call, the gate rightly says such a node is in no tree of the run).
+    sub_first_ = names_;
+    in_sub_ = true;
+    const std::string sub = node(1, 3);
+    in_sub_ = false;
+    sub_end_ = names_;
     files["mission.xml"] =
-        document("MainTree", main, "<BehaviorTree ID=\"Sub\">" + node(1, 3) + "</BehaviorTree>\n");
+        document("MainTree", main, "<BehaviorTree ID=\"Sub\">" + sub + "</BehaviorTree>\n");
     for (const std::string& id : adaptable_ids_)
       for (int k = 0; k < 3; ++k) {
         const std::string alt = id + "_alt" + std::to_string(k);
@@ -103,6 +110,7 @@ class SweepMission : public MissionWriter {
       default: {
         const std::string a = "Act" + std::to_string(pick(3));
         actions_.insert(a);
+        if (!in_sub_) run_actions_.insert(a);
         return use("Action", "<" + a + "/>");
       }
     }
@@ -150,6 +158,7 @@ class SweepMission : public MissionWriter {
         }
         [[fallthrough]];
       case 10:
+        if (depth == 0 && !in_sub_) sub_called_ = true;
         if (depth == 0) return use("SubTree", "<SubTree ID=\"Sub\" _autoremap=\"true\"/>");
         [[fallthrough]];
       default: return wrap("Sequence", named, children(2));
@@ -246,9 +255,13 @@ class SweepMission : public MissionWriter {
     }
     std::vector<std::string> obs = {"A", "B", "x >= 2", "x = 0"};
     for (const auto& a : env_atoms()) obs.push_back(a);
+    // A node of a Sub nothing calls reads as B instead, in its place, so that the draws (and
+    // the missions whose guarantees read only nodes of the run) stay as they were.
     for (const auto& a : actions_)
-      for (const char* f : {".running", ".success", ".failure"}) obs.push_back(a + f);
-    for (int i = 0; i < names_; ++i) obs.push_back("N" + std::to_string(i) + ".running");
+      for (const char* f : {".running", ".success", ".failure"})
+        obs.push_back(runs(a) ? a + f : "B");
+    for (int i = 0; i < names_; ++i)
+      obs.push_back(runs(i) ? "N" + std::to_string(i) + ".running" : "B");
     for (const std::string& id : adaptable_ids_)
       for (int k = 0; k < 3; ++k)
         obs.push_back(id + ".selected = " + id + "_alt" + std::to_string(k));
@@ -365,6 +378,14 @@ class SweepMission : public MissionWriter {
   }
 
   std::set<std::string> actions_;
+  std::set<std::string> run_actions_;  // the actions outside Sub
+  bool in_sub_ = false, sub_called_ = false;
+  int sub_first_ = 0, sub_end_ = 0;  // the names N<i> of Sub's nodes
+
+  bool runs(const std::string& action) const {
+    return sub_called_ || run_actions_.count(action) != 0;
+  }
+  bool runs(int name) const { return sub_called_ || name < sub_first_ || name >= sub_end_; }
   std::vector<std::string> adaptable_ids_;
   int names_ = 0, adaptables_ = 1;
   bool temporal_ = false, mixed_ = false;
