@@ -78,69 +78,95 @@ int Formula::first_tick() {
   return negation(yesterday(constant(true)));
 }
 
-FormulaMonitor::FormulaMonitor(const Formula& formula, int root)
-    : nodes_(formula.nodes()), state_(nodes_.size()), value_(nodes_.size(), 0), root_(root) {
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const Node& n = nodes_[i];
-    State& s = state_[i];
-    if (n.op == Op::historically || n.op == Op::weak_yesterday) s.bit = true;
-    if (n.op == Op::once_within) s.count = n.k + 1;  // "never": beyond the bound
-    if (n.op == Op::exactly_ago) s.ring.assign(n.k + 1, false);
+PastTimeLayout::PastTimeLayout(const Formula& formula, int root)
+    : nodes_(formula.nodes()), inputs_(static_cast<std::size_t>(formula.inputs())), root_(root) {
+  for (const Node& n : nodes_) {
+    offset_.push_back(words_);
+    switch (n.op) {
+      case Op::yesterday:
+      case Op::weak_yesterday:
+      case Op::historically:
+      case Op::once:
+      case Op::since:
+      case Op::once_within: words_ += 1; break;
+      case Op::since_at_least: words_ += 2; break;
+      case Op::exactly_ago: words_ += 2 + n.k + 1; break;
+      default: break;
+    }
   }
 }
 
-bool FormulaMonitor::step(const bool* inputs) {
-  const std::size_t count = nodes_.size();
-  for (std::size_t i = 0; i < count; ++i) {
+std::vector<std::uint64_t> PastTimeLayout::initial() const {
+  std::vector<std::uint64_t> s(words_, 0);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
     const Node& n = nodes_[i];
-    State& s = state_[i];
+    if (n.op == Op::historically || n.op == Op::weak_yesterday) s[offset_[i]] = 1;
+    if (n.op == Op::once_within) s[offset_[i]] = n.k + 1;  // never seen: beyond the bound
+  }
+  return s;
+}
+
+bool PastTimeLayout::step(const bool* inputs, std::vector<std::uint64_t>& state,
+                          std::vector<char>& value) const {
+  value.resize(nodes_.size());
+  // Locals, not members: a store through `char*` may alias anything, and would make the
+  // compiler reload every member after each node.
+  const Node* const nodes = nodes_.data();
+  const std::size_t* const offset = offset_.data();
+  const std::size_t count = nodes_.size();
+  std::uint64_t* const words = state.data();
+  char* const val = value.data();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Node& n = nodes[i];
+    std::uint64_t* w = words + offset[i];
     bool v = false;
     switch (n.op) {
       case Op::input: v = inputs[n.k]; break;
       case Op::constant: v = n.k != 0; break;
-      case Op::negation: v = !value_[n.a]; break;
-      case Op::conjunction: v = value_[n.a] && value_[n.b]; break;
-      case Op::disjunction: v = value_[n.a] || value_[n.b]; break;
+      case Op::negation: v = !val[n.a]; break;
+      case Op::conjunction: v = val[n.a] && val[n.b]; break;
+      case Op::disjunction: v = val[n.a] || val[n.b]; break;
       case Op::yesterday:
       case Op::weak_yesterday:
-        v = s.bit;
-        s.bit = value_[n.a];
+        v = w[0] != 0;
+        w[0] = val[n.a];
         break;
-      case Op::historically: v = s.bit = s.bit && value_[n.a]; break;
-      case Op::once: v = s.bit = s.bit || value_[n.a]; break;
-      case Op::since: v = s.bit = value_[n.b] || (value_[n.a] && s.bit); break;
+      case Op::historically: v = (w[0] = w[0] && val[n.a]) != 0; break;
+      case Op::once: v = (w[0] = w[0] || val[n.a]) != 0; break;
+      case Op::since: v = (w[0] = val[n.b] || (val[n.a] && w[0])) != 0; break;
       case Op::once_within:
-        if (value_[n.a])
-          s.count = 0;
-        else if (s.count <= n.k)
-          ++s.count;
-        v = s.count <= n.k;
+        if (val[n.a])
+          w[0] = 0;
+        else if (w[0] <= n.k)
+          ++w[0];
+        v = w[0] <= n.k;
         break;
       case Op::since_at_least:
-        if (s.bit) {
-          if (value_[n.a])
-            s.count = std::min(s.count + 1, n.k);
+        if (w[0] != 0) {
+          if (val[n.a])
+            w[1] = std::min(w[1] + 1, n.k);
           else
-            s.bit = false;
+            w[0] = 0;
         }
-        if (!s.bit && value_[n.b]) {
-          s.bit = true;
-          s.count = 0;
+        if (w[0] == 0 && val[n.b]) {
+          w[0] = 1;
+          w[1] = 0;
         }
-        v = s.bit && s.count >= n.k;
+        v = w[0] != 0 && w[1] >= n.k;
         break;
       case Op::exactly_ago: {
+        // w[0]: write index, w[1]: ticks seen before this one (saturates at k), ring after.
         const std::uint64_t size = n.k + 1;
-        s.ring[s.count] = value_[n.a];
-        s.count = s.count + 1 == size ? 0 : s.count + 1;
-        v = tick_ >= n.k && s.ring[s.count];
+        w[2 + w[0]] = val[n.a];
+        w[0] = w[0] + 1 == size ? 0 : w[0] + 1;
+        v = w[1] >= n.k && w[2 + w[0]] != 0;
+        w[1] = std::min(w[1] + 1, n.k);
         break;
       }
     }
-    value_[i] = v;
+    val[i] = v;
   }
-  ++tick_;
-  return value_[root_];
+  return val[root_] != 0;
 }
 
 }  // namespace uabt::monitor

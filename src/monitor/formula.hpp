@@ -62,25 +62,44 @@ class Formula {
   int inputs_ = 0;
 };
 
+// The state of a Formula as plain words, and the one past-time step over it: the monitor keeps
+// one state, the model checker hashes, copies and encodes many. One word per Y/Z/H/O/S bit or
+// O[<=k] age, two for S[>=k] (live, age) and 2 + k + 1 for O[=k] (write index, ticks seen up
+// to k, the ring).
+class PastTimeLayout {
+ public:
+  explicit PastTimeLayout(const Formula& formula, int root);
+  std::vector<std::uint64_t> initial() const;
+  // One tick: updates `state`, returns the formula's value. `values` receives each node's.
+  bool step(const bool* inputs, std::vector<std::uint64_t>& state, std::vector<char>& values) const;
+  std::size_t words() const { return words_; }
+  std::size_t inputs() const { return inputs_; }  // the boolean inputs step reads
+
+ private:
+  std::vector<Node> nodes_;
+  std::vector<std::size_t> offset_;
+  std::size_t words_ = 0;
+  std::size_t inputs_ = 0;
+  int root_ = 0;
+};
+
 // The running state of one formula: call step() once per tick with that tick's inputs.
 class FormulaMonitor {
  public:
-  explicit FormulaMonitor(const Formula& formula, int root);
-  bool step(const bool* inputs);
+  explicit FormulaMonitor(const Formula& formula, int root)
+      : layout_(formula, root), state_(layout_.initial()), value_(formula.nodes().size(), 0) {}
+  bool step(const bool* inputs) {
+    ++tick_;
+    return layout_.step(inputs, state_, value_);
+  }
   std::uint64_t ticks() const { return tick_; }
   // The value node `node` of the formula took at the last step.
   bool value(int node) const { return value_[static_cast<std::size_t>(node)] != 0; }
 
  private:
-  struct State {
-    bool bit = false;         // Y/Z previous value, H/O/S accumulator, since_at_least live
-    std::uint64_t count = 0;  // once_within age, since_at_least age, exactly_ago write index
-    std::vector<bool> ring;   // exactly_ago
-  };
-  std::vector<Node> nodes_;
-  std::vector<State> state_;
+  PastTimeLayout layout_;
+  std::vector<std::uint64_t> state_;
   std::vector<char> value_;
-  int root_ = 0;
   std::uint64_t tick_ = 0;
 };
 

@@ -400,7 +400,7 @@ Property make_property(const fretish::Requirement& property, const monitor::Reso
       p.atom_exprs = std::move(pf.atoms);
       p.mode_node = pf.mode;
       p.condition_node = pf.condition;
-      p.layout = std::make_unique<PastTimeLayout>(pf.formula, pf.root);
+      p.layout = std::make_unique<monitor::PastTimeLayout>(pf.formula, pf.root);
     } else {
       p.atoms.clear();
     }

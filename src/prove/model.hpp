@@ -9,10 +9,10 @@
 #include "fretish/domain.hpp"
 #include "load/mission.hpp"
 #include "monitor/expression.hpp"
+#include "monitor/formula.hpp"
 #include "monitor/templates.hpp"
 #include "prove/cells.hpp"
 #include "prove/choice_world.hpp"
-#include "prove/past_time.hpp"
 #include "prove/world_model.hpp"
 #include "runtime/engine.hpp"
 #include "runtime/engine_state.hpp"
@@ -67,7 +67,7 @@ struct Property {
   std::vector<fretish::ExprPtr> atom_exprs;
   std::vector<std::shared_ptr<monitor::CompiledExpression>> atoms;
   int mode_node = -1, condition_node = -1;  // layout nodes of the parts that trigger
-  std::unique_ptr<PastTimeLayout> layout;
+  std::unique_ptr<monitor::PastTimeLayout> layout;
   std::size_t offset = 0;  // its words in the monitor state
   std::string unsupported;
 

@@ -2,7 +2,7 @@
 
 namespace uabt::prove {
 
-MonitorTable::MonitorTable(const PastTimeLayout& layout, std::size_t max_states,
+MonitorTable::MonitorTable(const monitor::PastTimeLayout& layout, std::size_t max_states,
                            const std::function<bool(const std::vector<char>&)>& triggered)
     : inputs_(layout.inputs()) {
   if (inputs_ > kMaxInputs) {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "prove/past_time.hpp"
+#include "monitor/formula.hpp"
 
 namespace uabt::prove {
 
@@ -20,7 +20,7 @@ class MonitorTable {
   // Empty (failed()) when there are more than `max_states` states or kMaxInputs inputs.
   // `triggered` reads a step's node values (Property::triggered): whether the property's
   // mode and condition hold at that step.
-  MonitorTable(const PastTimeLayout& layout, std::size_t max_states,
+  MonitorTable(const monitor::PastTimeLayout& layout, std::size_t max_states,
                const std::function<bool(const std::vector<char>&)>& triggered = nullptr);
   bool failed() const { return failed_; }
   std::size_t size() const { return states_.size(); }

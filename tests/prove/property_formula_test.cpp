@@ -8,9 +8,9 @@
 
 #include "fretish/durations.hpp"
 #include "fretish/parse.hpp"
+#include "monitor/formula.hpp"
 #include "monitor/monitor.hpp"
 #include "prove/monitor_table.hpp"
-#include "prove/past_time.hpp"
 #include "prove/property_formula.hpp"
 
 namespace uabt::testing {
@@ -76,7 +76,7 @@ TEST(PropertyFormula, TemporalFunctionsMeanWhatTheMonitorMeansInEveryShape) {
             ASSERT_TRUE(e) << sentence << ": " << error;
             atoms.push_back(std::move(*e));
           }
-          const prove::PastTimeLayout layout(pf.formula, pf.root);
+          const monitor::PastTimeLayout layout(pf.formula, pf.root);
           const prove::MonitorTable table(layout, 4096);
           ASSERT_FALSE(table.failed()) << sentence;
           for (int run = 0; run < 6; ++run) {
@@ -136,7 +136,7 @@ TEST(PropertyFormula, TemporalFunctionsInTheScopeExpression) {
       std::string error;
       atoms.push_back(*monitor::CompiledExpression::compile(*a, resolve, error));
     }
-    const prove::PastTimeLayout layout(pf.formula, pf.root);
+    const monitor::PastTimeLayout layout(pf.formula, pf.root);
     std::mt19937 rng(7);
     for (int run = 0; run < 50; ++run) {
       std::string reason;
