@@ -14,6 +14,7 @@ namespace uabt::campaign {
 namespace {
 
 using report::detail::anchor;
+using report::detail::html_code;
 using report::detail::html_escape;
 using report::detail::inline_svg;
 
@@ -24,10 +25,6 @@ tr.covered td:first-child { border-left: 4px solid #1a7f37; }
 tr.unreachable td, tr.judged td { color: #57606a; }
 td.cover code { word-break: break-all; }
 )css";
-
-std::string code(std::string_view text) {
-  return "<code>" + html_escape(text) + "</code>";
-}
 
 std::string criterion_words(Criterion c) {
   return c == Criterion::mcdc ? "MC/DC" : criterion_name(c);
@@ -60,7 +57,7 @@ std::string targets_table(const CoverageReport& report, const std::vector<std::s
     } else {
       kind = "missed";
       verdict = "<strong>missed</strong>";
-      why = code(covering_text(t));
+      why = html_code(covering_text(t));
     }
     out += "<tr class=\"" + kind + "\"><td>" + html_escape(t.text) + "</td><td>" +
            criterion_words(t.criterion) + "</td><td>" + verdict + "</td>";
@@ -84,14 +81,14 @@ std::string targets_table(const CoverageReport& report, const std::vector<std::s
 void node_section(const CoverageReport& report, const load::Mission& mission,
                   const std::vector<verify::Coverage>& maps, const std::string& node,
                   std::size_t index, std::string& out) {
-  out +=
-      "<section id=\"" + anchor(index, node) + "\">\n<h2>Adaptable node " + code(node) + "</h2>\n";
+  out += "<section id=\"" + anchor(index, node) + "\">\n<h2>Adaptable node " + html_code(node) +
+         "</h2>\n";
   const NodeVisit* visit = nullptr;
   for (const auto& v : report.visits)
     if (v.adaptable == node) visit = &v;
   for (const auto& [skipped, reason] : report.skipped)
     if (skipped == node)
-      out += "<p class=\"callout info\">No targets and no map for " + code(node) + ": " +
+      out += "<p class=\"callout info\">No targets and no map for " + html_code(node) + ": " +
              html_escape(reason) + ".</p>\n";
   if (visit == nullptr) {
     out += "</section>\n";
@@ -118,7 +115,7 @@ void node_section(const CoverageReport& report, const load::Mission& mission,
     if (why.empty() && coverage != nullptr)
       why = coverage->not_counted_reason.empty() ? coverage->not_measured_reason
                                                  : coverage->not_counted_reason;
-    out += "<p class=\"callout info\">No coverage map of " + code(node) +
+    out += "<p class=\"callout info\">No coverage map of " + html_code(node) +
            (why.empty() ? std::string(".") : ": " + html_escape(why) + ".") + "</p>\n";
   }
   std::vector<std::size_t> targets;
@@ -180,7 +177,7 @@ std::string coverage_html(const CoverageReport& report, const load::Mission& mis
         "<table>\n<thead><tr><th>Run</th><th>Observations</th><th>Ticks</th><th>Stopped "
         "by</th></tr></thead><tbody>\n";
     for (const auto& r : report.runs)
-      out += "<tr><td>" + code(r.source) + "</td><td class=\"num\">" +
+      out += "<tr><td>" + html_code(r.source) + "</td><td class=\"num\">" +
              std::to_string(r.observations.size()) + "</td><td class=\"num\">" +
              std::to_string(r.ticks) + "</td><td>" + html_escape(r.error) + "</td></tr>\n";
     out += "</tbody></table>\n";

@@ -19,9 +19,6 @@ class TextMap {
   SourceLocation location(std::size_t offset) const;
   // [begin, end) as an inclusive file range.
   SourceRange range(std::size_t begin, std::size_t end) const;
-  SourceLocation start_of(const SourceRange& r) const {
-    return {file_, r.begin_line, r.begin_column};
-  }
   const std::string& file() const { return file_; }
 
  private:

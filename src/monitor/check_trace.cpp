@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/diagnostics.hpp"
 #include "base/number_text.hpp"
 #include "monitor/selection_check.hpp"
 
@@ -203,10 +204,7 @@ std::string trace_report_text(const TraceReport& report) {
       case Verdict::violated: {
         ++violated;
         out += where + p.id + role + ": violated from tick " + std::to_string(*p.first_violation);
-        std::string values;
-        for (const auto& [name, value] : p.values)
-          values += (values.empty() ? "" : ", ") + name + "=" + value.to_string();
-        out += values.empty() ? "\n" : " (" + values + ")\n";
+        out += p.values.empty() ? "\n" : " (" + format_state(p.values) + ")\n";
         break;
       }
       case Verdict::not_monitored:

@@ -85,7 +85,6 @@ struct SymbolicTick::Impl {
   std::vector<std::unique_ptr<MonitorTable>> tables;  // per property
   std::vector<std::map<NodeId, int>> alternatives;    // per adaptable: call -> alternative code
   std::vector<std::string> adaptable_names;
-  std::vector<int> leaf_of_node_effect;
   std::vector<std::pair<std::optional<runtime::script::Program>,
                         std::optional<runtime::script::Program>>>
       effects;  // per leaf: on_success, on_failure (parsed without binding)

@@ -1,5 +1,6 @@
 // world.json → WorldModel, with errors that point into the file.
 #include "prove/world_model.hpp"
+#include "base/diagnostics.hpp"
 
 #include <cctype>
 #include <cstdint>
@@ -116,14 +117,14 @@ void check_divisions(const runtime::script::Program& program, const std::string&
     const auto state = verify::zero_divisor_state(*v.domain, divisor, {});
     if (!state) continue;
     const std::string shown = fretish::to_fretish(*divisor);
-    loc.fail(loc.in_value(key_offset, e.column),
-             key + " of '" + action + "' divides by " + shown +
-                 (divisor->kind == fretish::ExprKind::number
-                      ? ""
-                      : ", which is zero in a state the domain allows (" +
-                            verify::state_text(*state) + ")") +
-                 ": BT.CPP's script then fails or gives infinity",
-             "guard-division-by-zero");
+    loc.fail(
+        loc.in_value(key_offset, e.column),
+        key + " of '" + action + "' divides by " + shown +
+            (divisor->kind == fretish::ExprKind::number
+                 ? ""
+                 : ", which is zero in a state the domain allows (" + format_state(*state) + ")") +
+            ": BT.CPP's script then fails or gives infinity",
+        "guard-division-by-zero");
   }
 }
 

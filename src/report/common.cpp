@@ -230,4 +230,16 @@ std::vector<std::string> adaptables_shown(const ReportInput& input) {
   return shown;
 }
 
+std::string html_code(std::string_view text) {
+  return "<code>" + html_escape(text) + "</code>";
+}
+
+std::string alternative_text(const std::string& alternative) {
+  return alternative.empty() ? "(nothing: the node fails)" : alternative;
+}
+
+std::string states_text(std::uint64_t n) {
+  return std::to_string(n) + (n == 1 ? " state" : " states");
+}
+
 }  // namespace uabt::report::detail

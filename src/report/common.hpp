@@ -38,6 +38,13 @@ std::string clean_text(std::string_view text);
 // Escapes & < > " ' for HTML/XML text and attribute values (after clean_text).
 std::string html_escape(std::string_view text);
 
+// `text` escaped in an HTML <code> element.
+std::string html_code(std::string_view text);
+// An alternative as a report names it: "" (no alternative selected) is the node failing.
+std::string alternative_text(const std::string& alternative);
+// "1 state", "5 states".
+std::string states_text(std::uint64_t n);
+
 // An SVG picture as inline HTML: without its namespace declaration, which HTML needs not, so
 // that a page holds no URL.
 std::string inline_svg(std::string svg);

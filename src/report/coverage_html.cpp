@@ -8,10 +8,6 @@ namespace uabt::report::detail {
 
 namespace {
 
-std::string code(std::string_view text) {
-  return "<code>" + html_escape(text) + "</code>";
-}
-
 // One row of the decision table.
 struct Row {
   std::string kind;   // "rule", "gap", "overlap"
@@ -125,14 +121,14 @@ std::string shares_in_words(const verify::Coverage& c) {
     out +=
         "The real variables are measured exactly (length, area or volume of their ranges, "
         "summed over the values of the discrete ones): the domain measures " +
-        code(c.measure.text) + ". ";
+        html_code(c.measure.text) + ". ";
   }
   std::string parts;
   for (std::size_t i = 0; i < c.alternatives.size(); ++i) {
     const auto& a = c.alternatives[i];
     const auto s = alternative_share(c, i);
     if (!s) continue;
-    parts += (parts.empty() ? "" : "; ") + code(a.name) + " (" + code(a.requirement) +
+    parts += (parts.empty() ? "" : "; ") + html_code(a.name) + " (" + html_code(a.requirement) +
              ") is selected in " + share_text(*s);
   }
   if (!parts.empty()) out += parts + ". ";
@@ -184,8 +180,8 @@ std::string coverage_html(const verify::Coverage& coverage) {
   for (std::size_t i = 0; i < coverage.alternatives.size(); ++i) {
     const auto& a = coverage.alternatives[i];
     out += std::string("<tr><td><span class=\"swatch\" style=\"background:") +
-           alternative_colour(i) + "\"></span>" + code(a.name) + "</td><td>" + code(a.requirement) +
-           "</td>";
+           alternative_colour(i) + "\"></span>" + html_code(a.name) + "</td><td>" +
+           html_code(a.requirement) + "</td>";
     if (coverage.counted) out += "<td class=\"num\">" + std::to_string(a.states) + "</td>";
     if (const auto s = alternative_share(coverage, i))
       out += "<td class=\"num\">" + share_text(*s) + "</td>";
@@ -220,28 +216,28 @@ std::string coverage_html(const verify::Coverage& coverage) {
       "<table class=\"decision\">\n<caption>Decision table: the requirements in priority "
       "order (the first whose row matches is selected; - is any value), then the gap and "
       "overlap regions, each a box of the state space</caption>\n<thead><tr><th>#</th>";
-  for (const auto& c : t.columns) out += "<th>" + code(c) + "</th>";
+  for (const auto& c : t.columns) out += "<th>" + html_code(c) + "</th>";
   if (t.other) out += "<th>other condition</th>";
   out += "<th>selects</th><th>share</th></tr></thead><tbody>\n";
   for (const auto& row : t.rows) {
     out += "<tr class=\"" + row.kind + "\"><td>";
     if (row.kind == "rule") {
       const auto space = row.label.find(' ');
-      out += row.label.substr(0, space) + " " + code(row.label.substr(space + 1));
+      out += row.label.substr(0, space) + " " + html_code(row.label.substr(space + 1));
     } else {
       out += "<strong>" + row.kind + "</strong>";
-      for (const auto& r : row.requirements) out += " " + code(r);
+      for (const auto& r : row.requirements) out += " " + html_code(r);
     }
     out += "</td>";
-    for (const auto& c : row.cells) out += "<td>" + (c.empty() ? "" : code(c)) + "</td>";
-    if (t.other) out += "<td>" + (row.other.empty() ? "" : code(row.other)) + "</td>";
-    out += "<td>" + (row.kind == "rule" ? code(row.outcome) : html_escape(row.outcome)) +
+    for (const auto& c : row.cells) out += "<td>" + (c.empty() ? "" : html_code(c)) + "</td>";
+    if (t.other) out += "<td>" + (row.other.empty() ? "" : html_code(row.other)) + "</td>";
+    out += "<td>" + (row.kind == "rule" ? html_code(row.outcome) : html_escape(row.outcome)) +
            "</td><td class=\"num\">" + html_escape(row.share) + "</td></tr>\n";
   }
   out += "</tbody></table>\n";
   if (!coverage.gap_region.empty() && coverage.gap_regions.empty()) {
     out += "<p>The uncovered region, where the node fails:</p>\n<ul>\n";
-    for (const auto& cube : coverage.gap_region) out += "<li>" + code(cube) + "</li>\n";
+    for (const auto& cube : coverage.gap_region) out += "<li>" + html_code(cube) + "</li>\n";
     out += "</ul>\n";
   }
   return out;

@@ -13,6 +13,7 @@ namespace uabt::report {
 namespace {
 
 using detail::anchor;
+using detail::html_code;
 using detail::html_escape;
 using detail::inline_svg;
 
@@ -69,13 +70,9 @@ footer { padding: 16px 32px; color: #57606a; font-size: 13px; border-top: 1px so
 @media print { nav { display: none; } header { border-bottom-width: 2px; } }
 )css";
 
-std::string code(std::string_view text) {
-  return "<code>" + html_escape(text) + "</code>";
-}
-
 std::string code_list(const std::vector<std::string>& items) {
   std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + code(item);
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + html_code(item);
   return out;
 }
 
@@ -83,7 +80,7 @@ std::string state_words(const State& state) {
   std::string out;
   for (const auto& [name, value] : state) {
     if (!out.empty()) out += ", ";
-    out += code(name) + " = " + code(value.to_string());
+    out += html_code(name) + " = " + html_code(value.to_string());
   }
   return out;
 }
@@ -122,8 +119,8 @@ void finding_html(const Finding& finding, const std::string& timeline, std::stri
   const char* severity = severity_name(finding.severity);
   out += std::string("<article class=\"finding ") + severity + "\"" +
          (id.empty() ? "" : " id=\"" + id + "\"") + ">\n";
-  out += std::string("<p><span class=\"sev\">") + severity + "</span> " + code(finding.check) +
-         " at " + code(detail::location_text(finding.location)) + "</p>\n";
+  out += std::string("<p><span class=\"sev\">") + severity + "</span> " + html_code(finding.check) +
+         " at " + html_code(detail::location_text(finding.location)) + "</p>\n";
   out += "<p class=\"msg\">" + html_escape(finding.message) + "</p>\n";
   std::string meta;
   if (!finding.requirements.empty()) meta += "Requirements: " + code_list(finding.requirements);
@@ -131,7 +128,7 @@ void finding_html(const Finding& finding, const std::string& timeline, std::stri
     meta += (meta.empty() ? "" : " · ") + std::string("Alternatives: ") +
             code_list(finding.alternatives);
   if (!finding.node_path.empty())
-    meta += (meta.empty() ? "" : " · ") + std::string("Node: ") + code(finding.node_path);
+    meta += (meta.empty() ? "" : " · ") + std::string("Node: ") + html_code(finding.node_path);
   if (!meta.empty()) out += "<p class=\"meta\">" + meta + "</p>\n";
   if (!timeline.empty() && !finding.notes.empty()) {
     // The counterexample's table keeps its columns; another section draws its timeline.
@@ -149,7 +146,7 @@ void finding_html(const Finding& finding, const std::string& timeline, std::stri
     // a path of ticks from the root, the ancestors of a node, the other half of a conflict.
     out += "<ol class=\"meta related\">\n";
     for (const auto& r : finding.related)
-      out += "<li>" + code(detail::location_text(r.location)) + " " + html_escape(r.message) +
+      out += "<li>" + html_code(detail::location_text(r.location)) + " " + html_escape(r.message) +
              "</li>\n";
     out += "</ol>\n";
   }
@@ -159,10 +156,12 @@ void finding_html(const Finding& finding, const std::string& timeline, std::stri
         "finding is true</caption>\n<thead><tr><th>Variable</th><th>Value</th></tr></thead>"
         "<tbody>\n";
     for (const auto& [name, value] : finding.witness)
-      out += "<tr><td>" + code(name) + "</td><td>" + code(value.to_string()) + "</td></tr>\n";
+      out += "<tr><td>" + html_code(name) + "</td><td>" + html_code(value.to_string()) +
+             "</td></tr>\n";
     out += "</tbody></table>\n";
   }
-  std::string hint = "Why it matters and how to fix it: " + code("uabt explain " + finding.check);
+  std::string hint =
+      "Why it matters and how to fix it: " + html_code("uabt explain " + finding.check);
   if (const CheckInfo* info = find_check(finding.check)) hint += " — " + html_escape(info->summary);
   out += "<p class=\"hint\">" + hint + "</p>\n</article>\n";
 }
@@ -188,7 +187,7 @@ void findings_section(const ReportInput& input, const std::vector<std::string>& 
     if (group.empty()) continue;
     const bool in_tree = std::find(input.adaptables.begin(), input.adaptables.end(), adaptable) !=
                          input.adaptables.end();
-    out += "<h3>Adaptable node " + code(adaptable) +
+    out += "<h3>Adaptable node " + html_code(adaptable) +
            (in_tree ? "" : " <span class=\"meta\">(not in the mission tree)</span>") + "</h3>\n";
     for (const Finding* f : group) finding_html(*f, timeline_link(input, *f), out, id_of(f));
   }
@@ -217,7 +216,7 @@ void conflicts_section(const ReportInput& input, std::string& out) {
          " of guarantees that no behavior tree meets together, whatever it does: change a "
          "requirement of each, or state what the environment never does.</p>\n"
          "<table class=\"conflicts\">\n<thead><tr><th>Conflict</th>";
-  for (const auto& id : columns) out += "<th>" + code(id) + "</th>";
+  for (const auto& id : columns) out += "<th>" + html_code(id) + "</th>";
   out += "</tr></thead><tbody>\n";
   for (std::size_t k = 0; k < conflicts.size(); ++k) {
     out += "<tr><th><a href=\"#" + conflict_anchor(k + 1) + "\">" + std::to_string(k + 1) +
@@ -252,15 +251,15 @@ void requirements_html(const ReportInput& input, const std::string& adaptable, s
     const auto& selection = *selections[i];
     const fretish::Requirement* requirement =
         detail::find_requirement(*input.mission, selection.id);
-    std::string text = code(selection.id);
+    std::string text = html_code(selection.id);
     if (requirement != nullptr && !requirement->text.empty())
       text += ": " + html_escape(requirement->text);
     const std::string guard = selection.guard
-                                  ? code(fretish::to_fretish(*selection.guard))
+                                  ? html_code(fretish::to_fretish(*selection.guard))
                                   : std::string("<em>default</em>: always enabled, tried last");
     out += "<tr><td class=\"num\">" + std::to_string(i + 1) + "</td><td>" + text + "</td><td>" +
-           guard + "</td><td>" + code(selection.alternative) + "</td><td>" +
-           code(detail::location_text(selection.location)) + "</td></tr>\n";
+           guard + "</td><td>" + html_code(selection.alternative) + "</td><td>" +
+           html_code(detail::location_text(selection.location)) + "</td></tr>\n";
   }
   out += "</tbody></table>\n";
 }
@@ -374,8 +373,8 @@ std::string to_html(const ReportInput& input) {
     out += "</section>\n";
   }
   for (std::size_t i = 0; i < shown.size(); ++i) {
-    out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " + code(shown[i]) +
-           "</h2>\n";
+    out += "<section id=\"" + anchor(i, shown[i]) + "\">\n<h2>Adaptable node " +
+           html_code(shown[i]) + "</h2>\n";
     requirements_html(input, shown[i], out);
     coverage_html(input, shown[i], out);
     out += "</section>\n";

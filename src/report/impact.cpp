@@ -12,11 +12,10 @@ namespace uabt::report {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using detail::alternative_text;
+using detail::states_text;
 
-std::string shown(const std::string& alternative) {
-  return alternative.empty() ? "(nothing: the node fails)" : alternative;
-}
+using Json = nlohmann::ordered_json;
 
 Json name_or_null(const std::string& name) {
   return name.empty() ? Json(nullptr) : Json(name);
@@ -32,14 +31,10 @@ Json share_exact_json(const verify::NodeImpact& node, const verify::Exact& share
   return node.measured ? Json(share.text) : Json(nullptr);
 }
 
-std::string states_phrase(std::uint64_t n) {
-  return std::to_string(n) + (n == 1 ? " state" : " states");
-}
-
 // "hold_position (Safe) -> on_mud (Req3)"
 std::string move_text(const verify::SelectionChange& c) {
   auto side = [](const std::string& alt, const std::string& req) {
-    return shown(alt) + (req.empty() ? "" : " (" + req + ")");
+    return alternative_text(alt) + (req.empty() ? "" : " (" + req + ")");
   };
   return side(c.from, c.from_requirement) + " -> " + side(c.to, c.to_requirement);
 }
@@ -70,7 +65,7 @@ std::string impact_text(const verify::Impact& impact) {
     for (const auto& c : node.changes) {
       out += "  " + move_text(c);
       if (node.counted)
-        out += ": " + states_phrase(c.states) + " (" + c.share.text + ")";
+        out += ": " + states_text(c.states) + " (" + c.share.text + ")";
       else if (shares_only(node))
         out += ": " + space_share(c.share);
       out += "\n    e.g. " + format_state(c.example) + "\n";
@@ -143,7 +138,7 @@ std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
       message += "the uplink " + std::string(node.status == "added" ? "adds" : "removes") +
                  " this adaptable node's requirements";
     else if (node.counted)
-      message += std::to_string(node.changed_states) + " of " + states_phrase(node.states) + " (" +
+      message += std::to_string(node.changed_states) + " of " + states_text(node.states) + " (" +
                  node.changed_share.text + ") change their alternative";
     else if (shares_only(node))
       message += space_share(node.changed_share) + " changes its alternative";
@@ -155,7 +150,7 @@ std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
     for (const auto& c : node.changes) {
       std::string note = move_text(c);
       if (node.counted)
-        note += ": " + states_phrase(c.states) + " (" + c.share.text + ")";
+        note += ": " + states_text(c.states) + " (" + c.share.text + ")";
       else if (shares_only(node))
         note += ": " + space_share(c.share);
       note += ", e.g. " + format_state(c.example);

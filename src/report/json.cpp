@@ -12,12 +12,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json strings_json(const std::vector<std::string>& items) {
-  Json out = Json::array();
-  for (const auto& item : items) out.push_back(item);
-  return out;
-}
-
 Json finding_json(const Finding& finding) {
   Json out;
   out["check"] = finding.check;
@@ -28,11 +22,11 @@ Json finding_json(const Finding& finding) {
                          {"column", finding.location.column}};
   // Always present, empty when not applicable, so that scripts need no existence checks.
   out["adaptable"] = finding.adaptable;
-  out["requirements"] = strings_json(finding.requirements);
-  out["alternatives"] = strings_json(finding.alternatives);
+  out["requirements"] = Json(finding.requirements);
+  out["alternatives"] = Json(finding.alternatives);
   out["witness"] = detail::witness_json(finding.witness);
   if (!finding.node_path.empty()) out["node_path"] = finding.node_path;
-  if (!finding.notes.empty()) out["notes"] = strings_json(finding.notes);
+  if (!finding.notes.empty()) out["notes"] = Json(finding.notes);
   return out;
 }
 
@@ -55,7 +49,7 @@ Json region_json(const verify::Region& region) {
         break;
       case verify::RegionConstraint::Kind::values:
         j["variable"] = c.variable;
-        j["values"] = strings_json(c.values);
+        j["values"] = Json(c.values);
         break;
       case verify::RegionConstraint::Kind::linear: j["linear"] = c.text; break;
     }
@@ -65,7 +59,7 @@ Json region_json(const verify::Region& region) {
   Json out;
   out["text"] = region.text();
   out["constraints"] = std::move(constraints);
-  out["requirements"] = strings_json(region.requirements);
+  out["requirements"] = Json(region.requirements);
   if (region.measured) {
     out["measure"] = number_json(region.measure);
     out["share"] = number_json(region.share);
@@ -137,7 +131,7 @@ Json coverage_json(const verify::Coverage& coverage) {
   out["regions"] =
       Json{{"gap", regions_json(coverage.gap_regions, coverage.gap_regions_omitted)},
            {"overlap", regions_json(coverage.overlap_regions, coverage.overlap_regions_omitted)}};
-  if (!coverage.gap_region.empty()) out["gap_region"] = strings_json(coverage.gap_region);
+  if (!coverage.gap_region.empty()) out["gap_region"] = Json(coverage.gap_region);
   return out;
 }
 

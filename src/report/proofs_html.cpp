@@ -8,11 +8,8 @@ namespace uabt::report {
 
 namespace {
 
+using detail::html_code;
 using detail::html_escape;
-
-std::string code(std::string_view text) {
-  return "<code>" + html_escape(text) + "</code>";
-}
 
 // Cells of one timeline row. A boolean is a filled or an empty cell (its word stays in the
 // cell, transparent, so that a copy of the table keeps it); an action's cell is shaded while
@@ -38,8 +35,8 @@ namespace detail {
 void counterexample_html(const std::string& id, const std::string& heading, const ProofAnswer& a,
                          const ProofCounterexample& cex, const Proofs* replay, std::string& out) {
   out += "<article class=\"cex\" id=\"" + html_escape(id) + "\">\n<h3>" + heading + "</h3>\n";
-  out += "<p class=\"req\">" + code(detail::location_text(a.location)) + " " + html_escape(a.text) +
-         "</p>\n";
+  out += "<p class=\"req\">" + html_code(detail::location_text(a.location)) + " " +
+         html_escape(a.text) + "</p>\n";
   out += "<div class=\"scroll\"><table class=\"timeline\">\n<thead><tr><th>tick</th>";
   for (const ProofTick& tick : cex.ticks)
     out += std::string("<th") + (tick.tick == cex.tick ? " class=\"viol\"" : "") + ">" +
@@ -47,7 +44,8 @@ void counterexample_html(const std::string& id, const std::string& heading, cons
   out += "</tr></thead>\n<tbody>\n";
   for (const detail::TimelineRow& row : detail::timeline_of(cex)) {
     out += "<tr class=\"" + std::string(detail::row_kind_name(row.kind)) + "\"><th>" +
-           (row.kind == detail::RowKind::root ? html_escape(row.label) : code(row.label)) + "</th>";
+           (row.kind == detail::RowKind::root ? html_escape(row.label) : html_code(row.label)) +
+           "</th>";
     for (std::size_t i = 0; i < row.cells.size(); ++i)
       out += cell_html(row.cells[i], cex.ticks[i].tick == cex.tick);
     out += "</tr>\n";
@@ -60,11 +58,11 @@ void counterexample_html(const std::string& id, const std::string& heading, cons
     out += "<p class=\"cex-note\">" + html_escape(note) + "</p>\n";
   if (replay != nullptr)
     out +=
-        "<p>Replay: " + code(replay_command(*replay, cex.scenario_file)) +
+        "<p>Replay: " + html_code(replay_command(*replay, cex.scenario_file)) +
         (cex.scenario_file.empty() ? " (save the scenario below as <code>cex.json</code>)" : "") +
         " runs the same violation at tick " + std::to_string(cex.tick) + ".</p>\n";
   out += "<details><summary>The scenario" +
-         (cex.scenario_file.empty() ? std::string() : " " + code(cex.scenario_file)) +
+         (cex.scenario_file.empty() ? std::string() : " " + html_code(cex.scenario_file)) +
          "</summary>\n<pre>" + html_escape(cex.scenario) + "</pre>\n</details>\n</article>\n";
 }
 
@@ -114,19 +112,19 @@ std::string proofs_html(const Proofs& proofs) {
       verdict = "<a href=\"#cex-" + std::to_string(i) + "\">" + verdict + "</a>";
     if (!a.reason.empty())
       verdict += "<br><span class=\"meta\">" + html_escape(a.reason) + "</span>";
-    out += "<tr class=\"" + html_escape(a.verdict) + "\"><td>" + code(a.requirement) +
+    out += "<tr class=\"" + html_escape(a.verdict) + "\"><td>" + html_code(a.requirement) +
            "</td><td class=\"verdict\">" + verdict + "</td><td>" + html_escape(a.text) +
-           "</td><td>" + code(detail::location_text(a.location)) + "</td></tr>\n";
+           "</td><td>" + html_code(detail::location_text(a.location)) + "</td></tr>\n";
   }
   out += "</tbody></table>\n";
   for (const std::string& note : proofs.notes)
     out += "<p class=\"meta\">Note: " + html_escape(note) + "</p>\n";
   for (std::size_t i = 0; i < proofs.answers.size(); ++i)
     if (const auto& cex = proofs.answers[i].counterexample)
-      detail::counterexample_html(
-          "cex-" + std::to_string(i),
-          code(proofs.answers[i].requirement) + " is violated at tick " + std::to_string(cex->tick),
-          proofs.answers[i], *cex, &proofs, out);
+      detail::counterexample_html("cex-" + std::to_string(i),
+                                  html_code(proofs.answers[i].requirement) +
+                                      " is violated at tick " + std::to_string(cex->tick),
+                                  proofs.answers[i], *cex, &proofs, out);
   out += "</section>\n";
   return out;
 }

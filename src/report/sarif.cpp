@@ -53,12 +53,6 @@ std::string trimmed(std::string_view text) {
   return std::string(text.substr(first, last - first + 1));
 }
 
-Json strings_json(const std::vector<std::string>& items) {
-  Json out = Json::array();
-  for (const auto& item : items) out.push_back(item);
-  return out;
-}
-
 Json rule_json(const CheckInfo& check) {
   const std::string doc = trimmed(check.doc);
   Json rule;
@@ -172,11 +166,11 @@ std::string to_sarif(const ReportInput& input) {
 
     Json properties;
     properties["adaptable"] = finding.adaptable;
-    properties["requirements"] = strings_json(finding.requirements);
-    properties["alternatives"] = strings_json(finding.alternatives);
+    properties["requirements"] = Json(finding.requirements);
+    properties["alternatives"] = Json(finding.alternatives);
     properties["witness"] = detail::witness_json(finding.witness);
     if (!finding.node_path.empty()) properties["node_path"] = finding.node_path;
-    if (!finding.notes.empty()) properties["notes"] = strings_json(finding.notes);
+    if (!finding.notes.empty()) properties["notes"] = Json(finding.notes);
     result["properties"] = std::move(properties);
     results.push_back(std::move(result));
   }

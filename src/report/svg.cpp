@@ -19,6 +19,7 @@ namespace {
 
 using detail::kGapColour;
 using detail::kOverlapColour;
+using detail::states_text;
 
 constexpr double kWidth = 720;
 constexpr double kMargin = 10;
@@ -81,10 +82,6 @@ std::string svg_open(double width, double height, const std::string& title) {
 std::string text_at(double x, double y, const std::string& content, const char* extra = "") {
   return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + extra + ">" +
          detail::html_escape(content) + "</text>";
-}
-
-std::string states_text(std::uint64_t n) {
-  return std::to_string(n) + (n == 1 ? " state" : " states");
 }
 
 struct LegendRow {

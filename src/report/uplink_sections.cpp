@@ -27,10 +27,6 @@ std::string priority_text(const load::UplinkMerge& m) {
   return std::to_string(m.priority) + " of " + std::to_string(m.of);
 }
 
-std::string alternative_text(const std::string& alternative) {
-  return alternative.empty() ? "(nothing: the node fails)" : alternative;
-}
-
 std::string count_text(const verify::NodeImpact& node, const verify::SelectionChange& change) {
   if (node.counted)
     return std::to_string(change.states) + " (" + change.share.text + ", " +
@@ -56,10 +52,6 @@ std::string span(const std::string& text) {
   const std::string clean = clean_text(text);
   if (clean.find_first_of("`|\n") != std::string::npos) return html_escape(clean);
   return "`" + clean + "`";
-}
-
-std::string html_code(const std::string& text) {
-  return "<code>" + html_escape(text) + "</code>";
 }
 
 // "weakened (uplink.json: weaken, "reason")".

@@ -74,7 +74,6 @@ class Blackboard {
   const std::string& key(SlotId slot) const { return keys_[slot]; }
   ScopeId owner(SlotId slot) const { return owners_[slot]; }
   std::size_t slot_count() const { return values_.size(); }
-  std::size_t scope_count() const { return scopes_.size(); }
 
   // Root-scope access by name (the world state, tests).
   void set(std::string_view key, ScriptValue value);

@@ -280,7 +280,6 @@ NodeStatus Engine::tick_root() {
   if (s == NodeStatus::running && c.wake_up) s = wake_up_loop();
   c.last_result = s;
   if (is_completed(s)) c.set_status(c.root, NodeStatus::idle);  // BT.CPP's resetStatus()
-  for (Observer* observer : c.observers) observer->on_tick_done(c.tick, s);
   apply_pending_swaps();
   return s;
 }

@@ -84,8 +84,6 @@ class Observer {
   // After every tick of a node, with what it returned to its parent (SKIPPED included), also
   // when its status did not change. Wake-up re-ticks are ticks like any other.
   virtual void on_node_ticked(NodeId /*node*/, NodeStatus /*result*/) {}
-  // At the end of each Engine::tick() that returned (after its wake-up re-ticks).
-  virtual void on_tick_done(std::uint64_t /*tick*/, NodeStatus /*root_result*/) {}
 };
 
 // What replace_tree does with an instance of the tree that is RUNNING.

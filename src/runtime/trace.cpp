@@ -153,10 +153,7 @@ std::string trace_summary(const std::vector<TraceEvent>& trace, const std::strin
       }
     } else if (e.event == "violation") {
       out += e.role + " " + e.requirement + " violated";
-      std::string values;
-      for (const auto& [name, value] : e.values)
-        values += (values.empty() ? "" : ", ") + name + "=" + value.to_string();
-      if (!values.empty()) out += " (" + values + ")";
+      if (!e.values.empty()) out += " (" + format_state(e.values) + ")";
     } else if (e.event == "status") {
       out += "mission " + e.status;
     } else if (e.event == "node") {

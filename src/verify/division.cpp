@@ -3,6 +3,7 @@
 #include <cctype>
 #include <optional>
 
+#include "base/diagnostics.hpp"
 #include "smt/encoder.hpp"
 #include "smt/types.hpp"
 #include "verify/domain_check.hpp"
@@ -108,13 +109,6 @@ ExprPtr is_zero(const ExprPtr& divisor) {
 
 }  // namespace
 
-std::string state_text(const State& state) {
-  std::string out;
-  for (const auto& [name, value] : state)
-    out += (out.empty() ? "" : ", ") + name + "=" + value.to_string();
-  return out;
-}
-
 std::optional<State> zero_divisor_state(const fretish::Domain& domain,
                                         const fretish::ExprPtr& divisor, const Options& options) {
   DomainSession d(domain, options);
@@ -190,7 +184,7 @@ std::vector<Finding> check_divisions(const fretish::Domain& domain_declared,
     Finding f = make_finding("guard-division-by-zero",
                              "'" + fretish::to_fretish(*d.division) + "' in " + source->what +
                                  " divides by zero when " + fretish::to_fretish(*divisor) +
-                                 " = 0, which the domain allows (" + state_text(witness) +
+                                 " = 0, which the domain allows (" + format_state(witness) +
                                  "): " + source->consequence,
                              at);
     f.witness = witness;

@@ -42,7 +42,4 @@ std::vector<Finding> check_divisions(const fretish::Domain& domain,
 std::optional<State> zero_divisor_state(const fretish::Domain& domain,
                                         const fretish::ExprPtr& divisor, const Options& options);
 
-// "wind=0, battery=0"
-std::string state_text(const State& state);
-
 }  // namespace uabt::verify

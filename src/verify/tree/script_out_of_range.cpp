@@ -1,5 +1,6 @@
 // script-out-of-range: an assignment to a domain variable whose value lies outside the
 // variable's declared range in every state of the domain writes a state the domain excludes.
+#include "base/diagnostics.hpp"
 #include "bt/script/ast.hpp"
 #include "verify/division.hpp"
 #include "verify/script_reading.hpp"
@@ -64,7 +65,7 @@ std::vector<Finding> check_script_range(const FlowGraph& g, const load::Mission&
                                    " the value " + value + ", which is outside " + range +
                                    " in every state of the domain" +
                                    (example.possible && !example.witness.empty()
-                                        ? " (e.g. " + state_text(example.witness) + ")"
+                                        ? " (e.g. " + format_state(example.witness) + ")"
                                         : std::string()),
                                s.location);
       if (example.possible) f.witness = example.witness;
