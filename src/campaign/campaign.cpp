@@ -7,6 +7,7 @@
 
 #include "base/number_text.hpp"
 #include "campaign/guarantee.hpp"
+#include "campaign/node.hpp"
 #include "campaign/world_play.hpp"
 #include "campaign/world_reach.hpp"
 #include "monitor/trace.hpp"
@@ -29,31 +30,6 @@ std::set<std::string> names_of(const State& state) {
 void set_missing(State& into, const State& from) {
   for (const auto& [name, v] : from)
     if (find_value(into, name) == nullptr) into.emplace_back(name, v);
-}
-
-std::string numbered(const std::string& base, std::size_t n, std::size_t total) {
-  std::string digits = std::to_string(n);
-  const std::size_t width = std::max<std::size_t>(2, std::to_string(total).size());
-  while (digits.size() < width) digits = "0" + digits;
-  return base + "-" + digits;
-}
-
-// The state in the domain's declaration order, as Model::Node::state_values orders it.
-State in_domain_order(const load::Mission& mission, State state) {
-  auto rank = [&](const std::string& name) {
-    for (std::size_t k = 0; k < mission.domain.variables.size(); ++k)
-      if (mission.domain.variables[k].name == name) return k;
-    return mission.domain.variables.size();
-  };
-  std::stable_sort(state.begin(), state.end(), [&](const auto& a, const auto& b) {
-    const auto ra = rank(a.first), rb = rank(b.first);
-    return ra != rb ? ra < rb : (ra == mission.domain.variables.size() && a.first < b.first);
-  });
-  return state;
-}
-
-std::string ticks_text(std::uint64_t ticks) {
-  return std::to_string(ticks) + (ticks == 1 ? " tick" : " ticks");
 }
 
 }  // namespace
@@ -139,7 +115,7 @@ void replay(const load::Mission& mission, const Replayer& replayer, const Option
   // In world.json's world: an initial state it allows, its actions' contracts.
   if (options.world != nullptr)
     initial = world_initial(mission, *options.world, std::move(initial));
-  j_scenario["initial"] = Json::parse(state_json(in_domain_order(mission, initial)));
+  j_scenario["initial"] = Json::parse(state_json(in_domain_order(mission.domain, initial)));
   if (options.world != nullptr) j_scenario["actions"] = world_actions(*options.world, initial);
   s.json = j_scenario.dump(2) + "\n";
   try {

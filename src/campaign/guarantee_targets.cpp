@@ -11,6 +11,7 @@
 
 #include "base/diagnostics.hpp"
 #include "campaign/guarantee.hpp"
+#include "campaign/node.hpp"
 #include "monitor/check_trace.hpp"
 #include "monitor/monitor.hpp"
 #include "monitor/property_set.hpp"
@@ -197,13 +198,6 @@ Play play(const load::Mission& traps, const Replayer& replayer, const std::strin
 std::string where(const load::Mission& mission, const SourceLocation& l) {
   return path_prefix_for(mission.dir) + l.file + ":" + std::to_string(l.line) + ":" +
          std::to_string(l.column);
-}
-
-std::string numbered(const std::string& base, std::size_t n, std::size_t total) {
-  std::string digits = std::to_string(n);
-  const std::size_t width = std::max<std::size_t>(2, std::to_string(total).size());
-  while (digits.size() < width) digits = "0" + digits;
-  return base + "-" + digits;
 }
 
 // Why the monitor cannot judge a trap on a trace: "the trace lacks OnMud", else its own words.

@@ -32,35 +32,9 @@ const char* criterion_name(Criterion c) {
 
 namespace {
 
-// A number inside (lo, hi) that reads well: an integer, else the fewest decimals.
-Fraction simple_inside(const Fraction& lo, const Fraction& hi, const Fraction& middle) {
-  Fraction scale(1);
-  for (int digits = 0; digits <= 6; ++digits) {
-    const Fraction scaled = lo * scale;
-    // floor(scaled) + 1 over scale: the first such number above lo.
-    __int128 q = scaled.numerator() / scaled.denominator();
-    if (scaled.numerator() < 0 && q * scaled.denominator() != scaled.numerator()) --q;
-    const Fraction candidate = Fraction::of(q + 1, 1) / scale;
-    if (candidate < hi) return candidate;
-    scale = scale * Fraction(10);
-  }
-  return middle;
-}
-
 Value real_value(const Fraction& x) {
   const std::string decimal = x.decimal();
   return Value::of_real(x.to_double(), decimal);
-}
-
-std::string fraction_text(const Fraction& x) {
-  return x.decimal();
-}
-
-// Position of a variable in the domain's declaration order (undeclared last, by name).
-std::size_t declaration_rank(const fretish::Domain& domain, const std::string& name) {
-  for (std::size_t k = 0; k < domain.variables.size(); ++k)
-    if (domain.variables[k].name == name) return k;
-  return domain.variables.size();
 }
 
 }  // namespace
@@ -97,16 +71,11 @@ State Model::Node::state_values(std::uint64_t state) const {
       const std::size_t c = cell.axis_cell[a];
       // One variable: any number of the open interval lies in the same cell.
       if (comp.axes.size() == 1 && !RealAxis::is_point(c))
-        x = simple_inside(axis.from(c), axis.to(c), x);
+        x = simple_inside(axis.from(c), axis.to(c)).value_or(x);
       out.emplace_back(axis.variable, real_value(x));
     }
   }
-  const fretish::Domain& domain = space->domain();
-  std::stable_sort(out.begin(), out.end(), [&](const auto& a, const auto& b) {
-    const auto ra = declaration_rank(domain, a.first), rb = declaration_rank(domain, b.first);
-    return ra != rb ? ra < rb : (ra == domain.variables.size() && a.first < b.first);
-  });
-  return out;
+  return in_domain_order(space->domain(), std::move(out));
 }
 
 std::optional<std::uint64_t> Model::Node::substitute(
@@ -435,12 +404,12 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
     for (std::size_t a = 0; a < comp.axes.size(); ++a) {
       const RealAxis& axis = comp.axes[a];
       for (std::size_t b = 1; b + 1 < axis.breaks.size(); ++b) {
-        const std::string at = fraction_text(axis.breaks[b]);
+        const std::string at = axis.breaks[b].decimal();
         const std::size_t point = 2 * b;
         const std::string base = axis.variable + "/" + at + "/";
         const std::string& x = axis.variable;
         target(base + "below",
-               x + " in (" + fraction_text(axis.breaks[b - 1]) + ", " + at +
+               x + " in (" + axis.breaks[b - 1].decimal() + ", " + at +
                    "), just below the boundary " + at,
                cells_where([&](const auto& c) { return c.axis_cell[a] == point - 1; }),
                x + " > " + number_condition(axis.breaks[b - 1]) + " & " + x + " < " +
@@ -449,7 +418,7 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
                cells_where([&](const auto& c) { return c.axis_cell[a] == point; }),
                x + " = " + number_condition(axis.breaks[b]));
         target(base + "above",
-               x + " in (" + at + ", " + fraction_text(axis.breaks[b + 1]) +
+               x + " in (" + at + ", " + axis.breaks[b + 1].decimal() +
                    "), just above the boundary " + at,
                cells_where([&](const auto& c) { return c.axis_cell[a] == point + 1; }),
                x + " > " + number_condition(axis.breaks[b]) + " & " + x + " < " +
@@ -464,10 +433,9 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
       if (!b.is_zero())
         text +=
             (b.sign() < 0 ? " - " : " + ") +
-            (b == Fraction(1) || b == Fraction(-1) ? ""
-                                                   : fraction_text(b.sign() < 0 ? -b : b) + "*") +
+            (b == Fraction(1) || b == Fraction(-1) ? "" : (b.sign() < 0 ? -b : b).decimal() + "*") +
             comp.axes[1].variable;
-      const std::string rhs = fraction_text(-line.c);
+      const std::string rhs = (-line.c).decimal();
       const std::string base = "line/" + text + " = " + rhs + "/";
       const char* names[] = {"below", "at", "above"};
       const char* words_of[] = {" < ", " = ", " > "};

@@ -2,6 +2,7 @@
 // One adaptable node of a campaign model: its enumerated space (the coverage stage's cells),
 // where each guard holds, what each state selects, and its targets as sets of states; or, when
 // the space cannot be enumerated, its targets solved with Z3 one by one (solved.cpp).
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -140,6 +141,47 @@ inline std::string join(const std::vector<std::string>& parts, const std::string
   std::string out;
   for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
   return out;
+}
+
+// "run-03": `base` numbered `n`, with as many digits as `total` has (two at least).
+inline std::string numbered(const std::string& base, std::size_t n, std::size_t total) {
+  std::string digits = std::to_string(n);
+  const std::size_t width = std::max<std::size_t>(2, std::to_string(total).size());
+  while (digits.size() < width) digits = "0" + digits;
+  return base + "-" + digits;
+}
+
+// "1 tick", "5 ticks".
+inline std::string ticks_text(std::uint64_t ticks) {
+  return std::to_string(ticks) + (ticks == 1 ? " tick" : " ticks");
+}
+
+// A number inside (lo, hi) that reads well: an integer, else the fewest decimals (up to six).
+inline std::optional<verify::detail::Fraction> simple_inside(const verify::detail::Fraction& lo,
+                                                             const verify::detail::Fraction& hi) {
+  using verify::detail::Fraction;
+  Fraction scale(1);
+  for (int digits = 0; digits <= 6; ++digits) {
+    const Fraction candidate = Fraction::of((lo * scale).floor() + 1, 1) / scale;
+    if (candidate < hi) return candidate;
+    scale = scale * Fraction(10);
+  }
+  return std::nullopt;
+}
+
+// `state` in the domain's declaration order, undeclared names last by name: how every
+// scenario and target lists a state.
+inline State in_domain_order(const fretish::Domain& domain, State state) {
+  auto rank = [&](const std::string& name) {
+    for (std::size_t k = 0; k < domain.variables.size(); ++k)
+      if (domain.variables[k].name == name) return k;
+    return domain.variables.size();
+  };
+  std::stable_sort(state.begin(), state.end(), [&](const auto& a, const auto& b) {
+    const auto ra = rank(a.first), rb = rank(b.first);
+    return ra != rb ? ra < rb : (ra == domain.variables.size() && a.first < b.first);
+  });
+  return state;
 }
 
 // A number as a FRETISH condition reads it: "2.5", "(-3)", "(1/3)".

@@ -29,17 +29,6 @@ constexpr unsigned kTimeoutMs = 10000;
 // node is not solved (no hang).
 constexpr std::size_t kMaxAtoms = 2048;
 
-// A number inside (lo, hi) that reads well: an integer, else the fewest decimals.
-std::optional<Fraction> simple_inside(const Fraction& lo, const Fraction& hi) {
-  Fraction scale(1);
-  for (int digits = 0; digits <= 6; ++digits) {
-    const Fraction candidate = Fraction::of((lo * scale).floor() + 1, 1) / scale;
-    if (candidate < hi) return candidate;
-    scale = scale * Fraction(10);
-  }
-  return std::nullopt;
-}
-
 // A real as the domain writes it: the short decimal when there is one, else the nearest double.
 Value real_value(const Fraction& x) {
   const std::string decimal = x.decimal();

@@ -17,10 +17,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string ticks_text(std::uint64_t ticks) {
-  return std::to_string(ticks) + (ticks == 1 ? " tick" : " ticks");
-}
-
 // A goal of one target, or of one state of each pair of an MC/DC target.
 struct Open {
   std::size_t target = 0;
