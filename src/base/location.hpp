@@ -21,4 +21,11 @@ struct SourceRange {
   int end_column = 0;
 };
 
+// Where `range` starts within an expression of `owner`: the owner's file at the range's line
+// and column, or the owner itself when the range is unknown (a generated expression).
+inline SourceLocation start_of(const SourceRange& range, const SourceLocation& owner) {
+  if (range.begin_line == 0) return owner;
+  return {owner.file, range.begin_line, range.begin_column};
+}
+
 }  // namespace uabt

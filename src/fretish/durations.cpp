@@ -58,13 +58,8 @@ void lower_durations(std::vector<Requirement>& requirements, std::optional<doubl
     if (t.duration.empty()) continue;
     t.ticks = to_ticks(t, tick_seconds, t.unconverted);
     if (t.ticks) continue;
-    SourceLocation where = r.location;
-    if (t.duration_range.begin_line > 0) {
-      where.line = t.duration_range.begin_line;
-      where.column = t.duration_range.begin_column;
-      where.end_line = 0;
-    }
-    Finding f = make_finding("property-timing", r.id + ": " + t.unconverted, where);
+    Finding f = make_finding("property-timing", r.id + ": " + t.unconverted,
+                             start_of(t.duration_range, r.location));
     f.requirements = {r.id};
     findings.push_back(std::move(f));
   }

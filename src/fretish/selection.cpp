@@ -11,11 +11,6 @@ namespace {
 
 constexpr const char* kSubset = " is not supported in a selection requirement: ";
 
-SourceLocation at(const Requirement& r, const SourceRange& range) {
-  if (range.begin_line == 0) return r.location;
-  return {r.location.file, range.begin_line, range.begin_column};
-}
-
 bool equals_ignoring_case(const std::string& a, const std::string& b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i)
@@ -57,7 +52,7 @@ class Classifier {
                       r_.probability->number +
                       "' has no meaning here: a selection is not probabilistic and a run has no "
                       "probability",
-                  at(r_, r_.probability->range));
+                  start_of(r_.probability->range, r_.location));
     }
     // Not meant as a selection requirement: a mission property (ARCHITECTURE §10).
     if (!mentions_selected_alt()) return false;
@@ -69,21 +64,21 @@ class Classifier {
     } else if (!is_selection_scope(*r_.scope)) {
       unsupported("scope '" + scope_text(*r_.scope) + "'" + kSubset +
                       "only 'in', 'during', 'when in' or 'if in' <adaptable>",
-                  at(r_, r_.scope->range));
+                  start_of(r_.scope->range, r_.location));
     }
     if (!equals_ignoring_case(r_.component, "Mission")) {
       unsupported("component '" + r_.component + "'" + kSubset + "only 'Mission'",
-                  at(r_, r_.component_range));
+                  start_of(r_.component_range, r_.location));
     }
     if (!r_.timing.keyword.empty() && r_.timing.keyword != "immediately") {
       unsupported(
           "timing '" + timing_text(r_.timing) + "'" + kSubset + "only none or 'immediately'",
-          at(r_, r_.timing.range));
+          start_of(r_.timing.range, r_.location));
     }
     if (alternative() == nullptr) {
       const std::string written = r_.response ? to_fretish(*r_.response) : std::string("?");
       unsupported("response '" + written + "'" + kSubset + "only 'selected_alt = <alternative>'",
-                  at(r_, r_.response_range));
+                  start_of(r_.response_range, r_.location));
     }
     return ok_;
   }
@@ -148,8 +143,9 @@ Classification classify_requirements(const std::vector<Requirement>& requirement
     s.alternative = alternative->text;
     s.guard = r.folded_condition();
     s.location = r.location;
-    s.guard_location = r.conditions.empty() ? r.location : at(r, r.conditions.front().range);
-    s.alternative_location = at(r, alternative->range);
+    s.guard_location =
+        r.conditions.empty() ? r.location : start_of(r.conditions.front().range, r.location);
+    s.alternative_location = start_of(alternative->range, r.location);
     s.source_index = static_cast<int>(i);
     selections.push_back(std::move(s));
   }

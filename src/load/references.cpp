@@ -29,11 +29,6 @@ std::vector<const Expr*> boolean_atoms(const Expr& root) {
 
 namespace {
 
-SourceLocation location_of(const Expr& e, const SourceLocation& owner) {
-  if (e.range.begin_line == 0) return owner;
-  return {owner.file, e.range.begin_line, e.range.begin_column};
-}
-
 void infer_from(const Expr& e, const SourceLocation& owner, fretish::Domain& domain,
                 const std::set<std::string>& undeclared) {
   for (const Expr* atom : boolean_atoms(e)) {
@@ -44,7 +39,7 @@ void infer_from(const Expr& e, const SourceLocation& owner, fretish::Domain& dom
     v.name = atom->text;
     v.type = fretish::VarType::boolean;
     v.declared = false;
-    v.location = location_of(*atom, owner);
+    v.location = start_of(atom->range, owner);
     domain.variables.push_back(std::move(v));
   }
 }
@@ -233,7 +228,7 @@ void unusable_condition_names(Mission& m) {
                                    " cannot become a BehaviorTree.CPP condition node: an ID "
                                    "starts with a letter and has no space or < > & \" ' / \\ : * "
                                    "? | . characters",
-                               location_of(*atom, s.location));
+                               start_of(atom->range, s.location));
       f.adaptable = s.adaptable;
       f.requirements = {s.id};
       m.findings.push_back(std::move(f));
@@ -255,7 +250,7 @@ void unknown_conditions(Mission& m) {
       Finding f = make_finding("ref-unknown-condition",
                                "condition '" + atom->text + "' in requirement " + s.id +
                                    " is not a node of nodes.xml; the robot cannot check it",
-                               location_of(*atom, s.location));
+                               start_of(atom->range, s.location));
       if (const std::string hint = suggestions.did_you_mean(atom->text); !hint.empty())
         f.notes.push_back(hint);
       f.adaptable = s.adaptable;

@@ -25,11 +25,6 @@ void identifier_nodes(const Expr& root, std::vector<const Expr*>& out) {
   }
 }
 
-SourceLocation at(const Expr& e, const SourceLocation& owner) {
-  if (e.range.begin_line == 0) return owner;
-  return {owner.file, e.range.begin_line, e.range.begin_column};
-}
-
 std::string fs_name(const std::string& file) {
   const auto slash = file.rfind('/');
   return slash == std::string::npos ? file : file.substr(slash + 1);
@@ -145,7 +140,7 @@ void report_undeclared(Mission& m, const std::vector<VocabularyUse>& uses) {
       Finding f =
           make_finding("ref-undeclared",
                        "'" + id->text + "' in " + source_of(use) + " is not declared in " + files,
-                       at(*id, use.owner));
+                       start_of(id->range, use.owner));
       f.adaptable = use.adaptable;
       if (!use.requirement.empty()) f.requirements = {use.requirement};
       if (const std::string hint = suggestions.did_you_mean(id->text); !hint.empty())
@@ -257,7 +252,7 @@ void report_similar(Mission& m, const std::vector<VocabularyUse>& uses) {
           "'" + typo + "' in " + source_of(*t.use) + " is " + std::to_string(edits) +
               (edits == 1 ? " edit" : " edits") + " away from '" + meant +
               "': without domain.fret or nodes.xml it becomes a new condition of its own",
-          at(*t.first, t.use->owner));
+          start_of(t.first->range, t.use->owner));
       f.adaptable = t.use->adaptable;
       if (!t.use->requirement.empty()) f.requirements = {t.use->requirement};
       f.notes.push_back("if it is a typo, write '" + meant + "'; if both are meant, declare them " +
@@ -290,7 +285,7 @@ std::set<std::string> report_first_time_point(Mission& m, const std::vector<Voca
             (use.requirement.empty() ? "an assumption holds in every state"
                                      : "a selection guard is a condition of the state the tree "
                                        "ticks in"),
-        at(**ftp, use.owner));
+        start_of((*ftp)->range, use.owner));
     f.adaptable = use.adaptable;
     if (!use.requirement.empty()) f.requirements = {use.requirement};
     f.notes.push_back(

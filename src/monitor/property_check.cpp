@@ -40,10 +40,7 @@ class PartChecker {
   }
 
  private:
-  SourceLocation at(const Expr& e) const {
-    if (e.range.begin_line == 0) return r_.location;
-    return {r_.location.file, e.range.begin_line, e.range.begin_column};
-  }
+  SourceLocation at(const Expr& e) const { return start_of(e.range, r_.location); }
   void report(const std::string& check, std::string message, const Expr& e,
               std::vector<std::string> notes = {}) {
     if (!ok_) return;  // one finding per part

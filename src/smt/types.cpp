@@ -133,14 +133,7 @@ class Checker {
   std::vector<Finding>& findings_;
   int errors_ = 0;
 
-  SourceLocation at(const Expr& e) const {
-    SourceLocation loc = where_;
-    if (e.range.begin_line > 0) {
-      loc.line = e.range.begin_line;
-      loc.column = e.range.begin_column;
-    }
-    return loc;
-  }
+  SourceLocation at(const Expr& e) const { return start_of(e.range, where_); }
 
   void report(const Expr& e, std::string message) {
     ++errors_;

@@ -176,11 +176,7 @@ std::vector<Finding> check_divisions(const fretish::Domain& domain_declared,
     const std::optional<State> found = domain.witness(typed ? *question : *zero, source->where);
     if (!found) continue;
     const State& witness = *found;
-    SourceLocation at = source->where;
-    if (d.division->range.begin_line > 0) {
-      at.line = d.division->range.begin_line;
-      at.column = d.division->range.begin_column;
-    }
+    const SourceLocation at = start_of(d.division->range, source->where);
     Finding f = make_finding("guard-division-by-zero",
                              "'" + fretish::to_fretish(*d.division) + "' in " + source->what +
                                  " divides by zero when " + fretish::to_fretish(*divisor) +

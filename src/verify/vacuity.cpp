@@ -65,15 +65,6 @@ std::string guard_note(const fretish::Expr& guard) {
          std::to_string(text.size()) + " characters)";
 }
 
-SourceLocation atom_location(const fretish::Expr& atom, const SourceLocation& guard_location) {
-  SourceLocation loc = guard_location;
-  if (atom.range.begin_line > 0) {
-    loc.line = atom.range.begin_line;
-    loc.column = atom.range.begin_column;
-  }
-  return loc;
-}
-
 // Which atom occurrences decide the guard at one state: flipping a sensitive occurrence alone
 // flips the guard. Values come from the model; the skeleton is walked once down from the root
 // (a child of an `and` is sensitive when the `and` is and every sibling is true, and so on).
@@ -463,7 +454,7 @@ void check_vacuous_atoms(Node& node, Session& session,
     for (const fretish::Expr* atom : atoms) {
       const Decision& d = decisions[atom];
       const std::string atom_text = fretish::to_fretish(*atom);
-      const SourceLocation where = atom_location(*atom, g.requirement->guard_location);
+      const SourceLocation where = start_of(atom->range, g.requirement->guard_location);
       if (!d.replaceable_by) {
         if (d.undecided)
           report_inconclusive(node, session,

@@ -49,14 +49,12 @@ void check_guard_kinds(const Registry& registry, std::vector<Finding>& out) {
       if (atom->kind != fretish::ExprKind::identifier) continue;
       const bt::Family family = registry.family(atom->text);
       if (family == bt::Family::unknown || family == bt::Family::condition) continue;
-      Finding f = make_finding(
-          "tree-kind-mismatch",
-          "the guard of " + s.id + " reads '" + atom->text + "' as a condition, but " +
-              registered_as(registry, atom->text, family) +
-              ": the selection subtree would tick it to decide, running the node",
-          atom->range.begin_line == 0
-              ? s.location
-              : SourceLocation{s.location.file, atom->range.begin_line, atom->range.begin_column});
+      Finding f =
+          make_finding("tree-kind-mismatch",
+                       "the guard of " + s.id + " reads '" + atom->text + "' as a condition, but " +
+                           registered_as(registry, atom->text, family) +
+                           ": the selection subtree would tick it to decide, running the node",
+                       start_of(atom->range, s.location));
       f.requirements.push_back(s.id);
       f.adaptable = s.adaptable;
       f.alternatives.push_back(s.alternative);
