@@ -101,7 +101,7 @@ std::string judged_ticks(const fretish::Requirement& r, const monitor::Shape& sh
 std::vector<Planned> plan(const load::Mission& mission) {
   std::vector<Planned> out;
   for (const fretish::Requirement& r : mission.properties) {
-    if (monitor::is_assumption(r) || r.freeform || !r.response) continue;
+    if (fretish::is_assumption(r) || r.freeform || !r.response) continue;
     const ExprPtr condition = r.folded_condition();
     if (!r.scope && !condition) continue;
     // A timing that judges the response after the trigger has its response atoms decide there

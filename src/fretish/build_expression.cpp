@@ -4,16 +4,11 @@
 #include <cctype>
 
 #include "base/number_fit.hpp"
+#include "base/text.hpp"
 
 namespace uabt::fretish::detail {
 
 namespace {
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 ExprKind relation_kind(std::string_view op) {
   if (op == "<") return ExprKind::lt;
@@ -148,9 +143,9 @@ ExpressionBuilder::Built ExpressionBuilder::visit(const SyntaxNode& n) {
   if (n.is<g::bool_true>() || n.is<g::bool_false>()) {
     const bool value = n.is<g::bool_true>();
     const std::string spelled(n.text(text_));
-    if (spelled != lower(spelled))
-      warn_not_fret(n.begin, "FRET reads only lower-case '" + lower(spelled) +
-                                 "' inside an expression: write '" + lower(spelled) + "'");
+    if (spelled != lower_case(spelled))
+      warn_not_fret(n.begin, "FRET reads only lower-case '" + lower_case(spelled) +
+                                 "' inside an expression: write '" + lower_case(spelled) + "'");
     return {make_bool(value, range)};
   }
   if (n.is<g::plain_identifier>() || n.is<g::quoted_identifier>())
@@ -177,7 +172,7 @@ void ExpressionBuilder::check_operator(const SyntaxNode& op) {
 }
 
 void ExpressionBuilder::warn_mixed(const SyntaxNode& op, const char* inner_spelled_as) {
-  const std::string outer = lower(op.text(text_));
+  const std::string outer = lower_case(op.text(text_));
   findings_.push_back(make_finding(
       "fretish-precedence",
       "'" + outer + "' and '" + inner_spelled_as + "' mixed without parentheses: uabt reads '" +
@@ -324,7 +319,7 @@ ExpressionBuilder::Built ExpressionBuilder::occurrence(const SyntaxNode& n) {
   std::string name = "nextOcc";
   for (const auto& child : n.children) {
     if (child->is<g::occurrence_direction>())
-      name = lower(child->text(text_)) == "previous" ? "prevOcc" : "nextOcc";
+      name = lower_case(child->text(text_)) == "previous" ? "prevOcc" : "nextOcc";
     else
       args.push_back(visit(*child));
   }

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "base/text.hpp"
+
 namespace uabt::fretish {
 
 std::optional<double> seconds_per_unit(std::string_view unit) {
-  std::string u(unit);
-  for (char& c : u) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string u = lower_case(unit);
   if (u.empty() || u.rfind("tick", 0) == 0) return std::nullopt;
   if (u == "ms" || u.rfind("milli", 0) == 0) return 1e-3;
   if (u == "us" || u.rfind("micro", 0) == 0) return 1e-6;

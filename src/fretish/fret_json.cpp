@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/json_input.hpp"
+#include "base/text.hpp"
 #include "fretish/json_positions.hpp"
 #include "fretish/parse.hpp"
 
@@ -14,11 +15,6 @@ namespace uabt::fretish {
 namespace {
 
 using nlohmann::json;
-
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 SourceLocation at(const std::string& file, const detail::JsonPosition& p) {
   return {file, p.line, p.column};
@@ -55,7 +51,7 @@ void add_variables(const json& variables, const std::vector<detail::JsonPosition
     Variable var;
     var.name = name;
     var.location = loc;
-    const std::string type = lower(type_text);
+    const std::string type = lower_case(type_text);
     if (type == "boolean") {
       var.type = VarType::boolean;
     } else if (type == "integer") {
@@ -124,7 +120,7 @@ void add_requirements(std::string_view json_text, const json& requirements,
     }
     if (!r) continue;
     r->id = id;
-    if (lower(reqid).find("assumption") != std::string::npos && is_assumption_form(*r)) {
+    if (lower_case(reqid).find("assumption") != std::string::npos && is_assumption_form(*r)) {
       domain.assumptions.push_back({id, r->response, r->location});
       continue;
     }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "base/number_fit.hpp"
+#include "base/text.hpp"
 #include "fretish/build_expression.hpp"
 #include "fretish/parse.hpp"
 #include "fretish/source_text.hpp"
@@ -23,9 +24,8 @@ std::string normalized_words(std::string_view text) {
   std::istringstream words{std::string(text)};
   std::string word, out;
   while (words >> word) {
-    for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (!out.empty()) out += ' ';
-    out += word;
+    out += lower_case(word);
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "fretish/requirement.hpp"
 
+#include "base/text.hpp"
+
 namespace uabt::fretish {
 
 namespace {
@@ -36,6 +38,10 @@ ExprPtr Requirement::folded_condition() const {
     guard_is_fold = true;
   }
   return guard;
+}
+
+bool is_assumption(const Requirement& r) {
+  return lower_case(r.component) == "environment";
 }
 
 }  // namespace uabt::fretish

@@ -81,4 +81,8 @@ struct Requirement {
   ExprPtr folded_condition() const;
 };
 
+// Component `Environment` (any case) marks an assumption about the world; any other component a
+// guarantee of the mission (ARCHITECTURE §10).
+bool is_assumption(const Requirement& r);
+
 }  // namespace uabt::fretish

@@ -18,7 +18,7 @@ using Requirements = std::vector<fretish::Requirement>;
 Requirements guarantees_of(const load::Mission& m) {
   Requirements out;
   for (const auto& r : m.properties)
-    if (!monitor::is_assumption(r)) out.push_back(r);
+    if (!fretish::is_assumption(r)) out.push_back(r);
   return out;
 }
 
@@ -39,7 +39,7 @@ std::map<std::string, prove::Answer> prove_on(const Outcome& checked,
   load::Mission probe = *checked.mission;
   probe.properties.erase(
       std::remove_if(probe.properties.begin(), probe.properties.end(),
-                     [](const fretish::Requirement& r) { return !monitor::is_assumption(r); }),
+                     [](const fretish::Requirement& r) { return !fretish::is_assumption(r); }),
       probe.properties.end());
   probe.properties.insert(probe.properties.end(), guarantees.begin(), guarantees.end());
   try {

@@ -15,7 +15,7 @@ void add_proofs_not_run(Outcome& outcome, const std::string& reason) {
   report::Proofs proofs;
   proofs.not_run = reason;
   for (const auto& r : outcome.mission->properties)
-    if (!monitor::is_assumption(r)) {
+    if (!fretish::is_assumption(r)) {
       report::ProofAnswer answer;
       answer.requirement = r.id;
       answer.text = r.text;

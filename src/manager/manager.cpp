@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/diagnostics.hpp"
+#include "base/text.hpp"
 #include "gate/uplink.hpp"
 #include "runtime/condition_count.hpp"
 #include "runtime/property_monitor.hpp"
@@ -45,11 +46,6 @@ gate::Outcome admitted(gate::Outcome outcome, bool unverified = false) {
   return outcome;
 }
 
-std::string lower_case(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 std::string alternative_name(const load::Mission& m, const std::string& adaptable,
                              const std::string& tree_id) {
   for (const auto& alt : m.alternatives)
@@ -61,7 +57,7 @@ std::string alternative_name(const load::Mission& m, const std::string& adaptabl
 void check_counterexample_of(const Scenario& scenario, const load::Mission& mission) {
   std::string guarantees;
   for (const fretish::Requirement& r : mission.properties) {
-    if (monitor::is_assumption(r)) continue;
+    if (fretish::is_assumption(r)) continue;
     if (r.id == scenario.counterexample_of) return;
     guarantees += (guarantees.empty() ? "" : ", ") + r.id;
   }

@@ -15,12 +15,6 @@ const char* verdict_name(Verdict v) {
   return "held";
 }
 
-bool is_assumption(const fretish::Requirement& r) {
-  std::string c = r.component;
-  for (char& ch : c) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return c == "environment";
-}
-
 std::string held_text(const PropertyResult& r) {
   if (!r.pending_since) return "held";
   return "held (pending at end: " + r.pending + ", triggered at tick " +
@@ -58,7 +52,7 @@ void PropertySet::add_all(const std::vector<fretish::Requirement>& requirements,
     }
     out.push_back(std::move(e));
   };
-  for (const fretish::Requirement& r : requirements) add(r, is_assumption(r), r.text);
+  for (const fretish::Requirement& r : requirements) add(r, fretish::is_assumption(r), r.text);
   for (const fretish::Assumption& a : assumptions) {
     fretish::Requirement r;
     r.id = a.name;

@@ -17,10 +17,6 @@ namespace uabt::monitor {
 enum class Verdict { held, violated, not_monitored };
 const char* verdict_name(Verdict v);  // "held", "violated", "not-monitored"
 
-// Component `Environment` (any case) marks an assumption about the world; any other component a
-// guarantee of the mission (ARCHITECTURE §10).
-bool is_assumption(const fretish::Requirement& r);
-
 struct PropertyResult {
   std::string id;
   bool assumption = false;

@@ -125,7 +125,7 @@ std::optional<ScriptValue> fixed_number(const fretish::Expr& e, const fretish::V
 
 bool has_guarantees(const load::Mission& mission) {
   for (const auto& r : mission.properties)
-    if (!monitor::is_assumption(r)) return true;
+    if (!fretish::is_assumption(r)) return true;
   return false;
 }
 
@@ -360,7 +360,7 @@ Property make_property(const fretish::Requirement& property, const monitor::Reso
   const fretish::Requirement* r = &property;
   Property p;
   p.requirement = r;
-  p.assumption = monitor::is_assumption(property);
+  p.assumption = fretish::is_assumption(property);
   const monitor::Classified c = monitor::classify(*r);
   fretish::ExprPtr mode;
   if (r->scope)

@@ -43,7 +43,7 @@ std::vector<Reach> reach(const load::Mission& mission, const bt::Document& compi
   load::Mission traps = mission;
   traps.properties.clear();
   for (const auto& p : mission.properties)
-    if (monitor::is_assumption(p)) traps.properties.push_back(p);
+    if (fretish::is_assumption(p)) traps.properties.push_back(p);
   for (const Goal& g : goals) traps.properties.push_back(trap_requirement(g));
   const Result result = prove(traps, compiled, world, options);
   for (std::size_t k = 0; k < goals.size() && k < result.answers.size(); ++k) {

@@ -5,6 +5,7 @@
 
 #include "base/diagnostics.hpp"
 #include "base/number_text.hpp"
+#include "base/text.hpp"
 #include "bt/node_kinds.hpp"
 
 namespace uabt::runtime {
@@ -12,11 +13,6 @@ namespace uabt::runtime {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string lower_case(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
 
 std::string reads_text(const std::vector<std::pair<std::string, ScriptValue>>& reads) {
   std::string out;

@@ -121,9 +121,7 @@ std::vector<Finding> check_divisions(const load::Mission& mission, const Options
   for (const auto& s : mission.selections)
     if (s.guard) sources.push_back({s.guard, s.guard_location, "the guard of " + s.id, &s});
   for (const auto& r : mission.properties) {
-    std::string component = r.component;
-    for (char& c : component) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const std::string what = (component == "environment" ? "assumption " : "guarantee ") + r.id;
+    const std::string what = (fretish::is_assumption(r) ? "assumption " : "guarantee ") + r.id;
     if (r.scope && r.scope->condition) sources.push_back({r.scope->condition, r.location, what});
     for (const auto& c : r.conditions)
       if (c.expr) sources.push_back({c.expr, r.location, what});
