@@ -88,11 +88,7 @@ class FormulaMonitor {
  public:
   explicit FormulaMonitor(const Formula& formula, int root)
       : layout_(formula, root), state_(layout_.initial()), value_(formula.nodes().size(), 0) {}
-  bool step(const bool* inputs) {
-    ++tick_;
-    return layout_.step(inputs, state_, value_);
-  }
-  std::uint64_t ticks() const { return tick_; }
+  bool step(const bool* inputs) { return layout_.step(inputs, state_, value_); }
   // The value node `node` of the formula took at the last step.
   bool value(int node) const { return value_[static_cast<std::size_t>(node)] != 0; }
 
@@ -100,7 +96,6 @@ class FormulaMonitor {
   PastTimeLayout layout_;
   std::vector<std::uint64_t> state_;
   std::vector<char> value_;
-  std::uint64_t tick_ = 0;
 };
 
 }  // namespace uabt::monitor
