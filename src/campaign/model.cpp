@@ -224,24 +224,13 @@ void Model::Node::add(std::vector<Target>& all, Target t, Bits states) {
 
 void Model::Node::decision_targets(std::vector<Target>& all) {
   for (std::size_t k = 0; k < reqs.size(); ++k) {
-    const auto* r = reqs[k];
-    Target t;
-    t.adaptable = adaptable;
-    t.criterion = Criterion::decision;
-    t.id = adaptable + "/decision/select/" + r->alternative;
-    t.text = adaptable + " selects " + r->alternative + " (" + r->id + ")";
+    Target t = select_target(adaptable, *reqs[k]);
     if (!selected[k].any()) {
       t.reachable = false;
-      if (!enabled[k].any()) {
-        t.reason = r->guard ? "the guard of " + r->id + " holds in no state of the domain"
-                            : "the domain has no state";
-      } else {
-        std::vector<std::string> earlier;
-        for (std::size_t j = 0; j < k; ++j)
-          if ((enabled[j] & enabled[k]).any()) earlier.push_back(reqs[j]->id);
-        t.reason = "wherever the guard of " + r->id + " holds, an earlier requirement (" +
-                   join(earlier, ", ") + ") holds too and is selected first";
-      }
+      std::vector<std::string> earlier;
+      for (std::size_t j = 0; j < k; ++j)
+        if ((enabled[j] & enabled[k]).any()) earlier.push_back(reqs[j]->id);
+      t.reason = unselectable(*reqs[k], enabled[k].any(), earlier);
     }
     add(all, std::move(t), selected[k]);
     locals.back().select = true;
@@ -253,16 +242,11 @@ void Model::Node::decision_targets(std::vector<Target>& all) {
     if (!r->guard) continue;
     const std::string guard = fretish::to_fretish(*r->guard);
     for (bool value : {true, false}) {
-      Target t;
-      t.adaptable = adaptable;
-      t.criterion = Criterion::decision;
-      t.id = adaptable + "/decision/guard/" + r->id + "/" + (value ? "true" : "false");
-      t.text = "the guard of " + r->id + " (" + guard + ") is " + (value ? "true" : "false");
+      Target t = guard_target(adaptable, *r, guard, value);
       Bits states = value ? enabled[k] : domain & ~enabled[k];
       if (!states.any()) {
         t.reachable = false;
-        t.reason = value ? "the guard holds in no state of the domain"
-                         : "the guard holds in every state of the domain";
+        t.reason = guard_never(value);
       }
       add(all, std::move(t), std::move(states));
       locals.back().condition = (value ? "(" : "!(") + guard + ")";
@@ -281,12 +265,7 @@ void Model::Node::mcdc_targets(std::vector<Target>& all) {
   for (std::size_t k = 0; k < reqs.size(); ++k) {
     const auto* r = reqs[k];
     for (std::size_t a : req_atoms[k]) {
-      Target t;
-      t.adaptable = adaptable;
-      t.criterion = Criterion::mcdc;
-      t.id = adaptable + "/mcdc/" + r->id + "/" + atom_text[a];
-      t.text = "MC/DC of " + atom_text[a] + " in " + r->id +
-               ": changing it alone changes the guard and the selected alternative";
+      Target t = mcdc_target(adaptable, *r, atom_text[a]);
       Local local;
       local.pair = true;
       local.req = k;
@@ -316,26 +295,14 @@ void Model::Node::mcdc_targets(std::vector<Target>& all) {
       }
       if (local.pairs.empty()) {
         t.reachable = false;
-        const std::string head = "not independently testable: ";
-        if (always || never)
-          t.reason = head + atom_text[a] + " is " + (always ? "true" : "false") +
-                     " in every state of the domain";
-        else if (!alone)
-          t.reason = head + atom_text[a] +
-                     " never changes alone: the domain or the other atoms tie it to them";
-        else if (!flips_guard && !(guard_true && guard_false))
-          t.reason = head + guard_constant(r->id, guard_true);
-        else if (!flips_guard)
-          t.reason = head + "changing " + atom_text[a] + " alone never changes the guard of " +
-                     r->id + " (the other atoms mask it)";
-        else if (!shadowing.empty())
-          t.reason = head + "wherever " + atom_text[a] + " alone changes the guard of " + r->id +
-                     ", an earlier requirement (" +
-                     join(std::vector<std::string>(shadowing.begin(), shadowing.end()), ", ") +
-                     ") holds either way and is selected";
-        else
-          t.reason = head + "wherever " + atom_text[a] + " alone changes the guard of " + r->id +
-                     ", the same alternative is selected either way";
+        const NoPair why = always || never                                ? NoPair::atom_fixed
+                           : !alone                                       ? NoPair::atom_tied
+                           : !flips_guard && !(guard_true && guard_false) ? NoPair::guard_fixed
+                           : !flips_guard                                 ? NoPair::guard_masked
+                                                                          : NoPair::same_selection;
+        t.reason =
+            no_pair(why, atom_text[a], r->id, why == NoPair::atom_fixed ? always : guard_true,
+                    {shadowing.begin(), shadowing.end()});
       } else {
         t.witness.push_back(state_values(local.pairs.front().first));
         t.witness.push_back(state_values(local.pairs.front().second));
@@ -350,16 +317,10 @@ void Model::Node::mcdc_targets(std::vector<Target>& all) {
 void Model::Node::boundary_targets(std::vector<Target>& all) {
   const std::uint64_t size = space->size();
   const auto& dims = space->dimensions();
-  auto target = [&](const std::string& id, const std::string& text, Bits states,
-                    const std::string& condition) {
-    Target t;
-    t.adaptable = adaptable;
-    t.criterion = Criterion::boundary;
-    t.id = adaptable + "/boundary/" + id;
-    t.text = text;
+  auto target = [&](Target t, Bits states, const std::string& condition) {
     if (!states.any()) {
       t.reachable = false;
-      t.reason = "no state of the domain lies there (the assumptions rule it out)";
+      t.reason = kNoStateThere;
     }
     add(all, std::move(t), std::move(states));
     locals.back().condition = condition;
@@ -384,11 +345,7 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
           Bits states(size, false);
           for (std::uint64_t s = 0; s < size; ++s)
             if (space->digit(s, d) == side && domain.test(s)) states.set(s);
-          const bool below = side == v;
-          target(dim.name + "/" + lo + "|" + hi + "/" + (below ? "below" : "above"),
-                 dim.name + " = " + (below ? lo : hi) + ", " + (below ? "below" : "above") +
-                     " the boundary between " + lo + " and " + hi,
-                 std::move(states),
+          target(integer_boundary(adaptable, dim.name, lo, hi, side == v), std::move(states),
                  dim.name + " = " + number_condition(Fraction(dim.number(side))));
         }
       }
@@ -404,23 +361,20 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
     for (std::size_t a = 0; a < comp.axes.size(); ++a) {
       const RealAxis& axis = comp.axes[a];
       for (std::size_t b = 1; b + 1 < axis.breaks.size(); ++b) {
-        const std::string at = axis.breaks[b].decimal();
+        const std::string before = axis.breaks[b - 1].decimal(), at = axis.breaks[b].decimal(),
+                          after = axis.breaks[b + 1].decimal();
         const std::size_t point = 2 * b;
-        const std::string base = axis.variable + "/" + at + "/";
         const std::string& x = axis.variable;
-        target(base + "below",
-               x + " in (" + axis.breaks[b - 1].decimal() + ", " + at +
-                   "), just below the boundary " + at,
+        auto boundary = [&](int side) {
+          return real_boundary(adaptable, x, side, before, at, after);
+        };
+        target(boundary(-1),
                cells_where([&](const auto& c) { return c.axis_cell[a] == point - 1; }),
                x + " > " + number_condition(axis.breaks[b - 1]) + " & " + x + " < " +
                    number_condition(axis.breaks[b]));
-        target(base + "at", x + " = " + at + ", on the boundary",
-               cells_where([&](const auto& c) { return c.axis_cell[a] == point; }),
+        target(boundary(0), cells_where([&](const auto& c) { return c.axis_cell[a] == point; }),
                x + " = " + number_condition(axis.breaks[b]));
-        target(base + "above",
-               x + " in (" + at + ", " + axis.breaks[b + 1].decimal() +
-                   "), just above the boundary " + at,
-               cells_where([&](const auto& c) { return c.axis_cell[a] == point + 1; }),
+        target(boundary(1), cells_where([&](const auto& c) { return c.axis_cell[a] == point + 1; }),
                x + " > " + number_condition(axis.breaks[b]) + " & " + x + " < " +
                    number_condition(axis.breaks[b + 1]));
       }
@@ -428,23 +382,14 @@ void Model::Node::boundary_targets(std::vector<Target>& all) {
     for (std::size_t l = 0; l < comp.lines.size(); ++l) {
       const auto& line = comp.lines[l];
       // a·x + b·y + c = 0 with a = 1: x + b·y = -c.
-      std::string text = comp.axes[0].variable;
       const Fraction b = line.b;
-      if (!b.is_zero())
-        text +=
-            (b.sign() < 0 ? " - " : " + ") +
-            (b == Fraction(1) || b == Fraction(-1) ? "" : (b.sign() < 0 ? -b : b).decimal() + "*") +
-            comp.axes[1].variable;
+      const std::string text = line_text(comp.axes[0].variable, b, comp.axes[1].variable);
       const std::string rhs = (-line.c).decimal();
-      const std::string base = "line/" + text + " = " + rhs + "/";
-      const char* names[] = {"below", "at", "above"};
       const char* words_of[] = {" < ", " = ", " > "};
       std::string lhs = comp.axes[0].variable;
       if (!b.is_zero()) lhs += " + " + number_condition(b) + " * " + comp.axes[1].variable;
       for (int sign = -1; sign <= 1; ++sign)
-        target(base + names[sign + 1],
-               text + words_of[sign + 1] + rhs +
-                   (sign == 0 ? ", on the boundary" : ", beside the boundary"),
+        target(line_boundary(adaptable, text, rhs, sign),
                cells_where([&](const auto& c) { return c.signs[l] == sign; }),
                lhs + words_of[sign + 1] + number_condition(-line.c));
     }

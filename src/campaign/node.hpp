@@ -190,11 +190,113 @@ inline std::string number_condition(const verify::detail::Fraction& x) {
   return text.find_first_of("-/") == std::string::npos ? text : "(" + text + ")";
 }
 
-// Why no atom of a guard has an MC/DC pair when the guard itself never changes over the
-// domain (an assumption rules out every state where it holds, or every state where it fails).
-inline std::string guard_constant(const std::string& requirement, bool holds) {
-  return "the guard of " + requirement + (holds ? " holds in every" : " holds in no") +
-         " state of the domain, so no atom can change it";
+// The targets' ids and texts, and why one is unreachable: one wording for the enumerated
+// nodes (model.cpp) and the solved ones (solved.cpp), which tests compare.
+inline Target new_target(const std::string& adaptable, Criterion criterion, const std::string& id,
+                         std::string text) {
+  Target t;
+  t.adaptable = adaptable;
+  t.criterion = criterion;
+  t.id = adaptable + "/" + criterion_name(criterion) + "/" + id;
+  t.text = std::move(text);
+  return t;
 }
+inline Target select_target(const std::string& adaptable, const fretish::SelectionRequirement& r) {
+  return new_target(adaptable, Criterion::decision, "select/" + r.alternative,
+                    adaptable + " selects " + r.alternative + " (" + r.id + ")");
+}
+// No state selects r's alternative: its guard holds nowhere, or only where `earlier` do too.
+inline std::string unselectable(const fretish::SelectionRequirement& r, bool guard_holds,
+                                const std::vector<std::string>& earlier) {
+  if (!guard_holds)
+    return r.guard ? "the guard of " + r.id + " holds in no state of the domain"
+                   : "the domain has no state";
+  return "wherever the guard of " + r.id + " holds, an earlier requirement (" +
+         join(earlier, ", ") + ") holds too and is selected first";
+}
+inline Target guard_target(const std::string& adaptable, const fretish::SelectionRequirement& r,
+                           const std::string& guard, bool value) {
+  const std::string word = value ? "true" : "false";
+  return new_target(adaptable, Criterion::decision, "guard/" + r.id + "/" + word,
+                    "the guard of " + r.id + " (" + guard + ") is " + word);
+}
+inline std::string guard_never(bool value) {
+  return value ? "the guard holds in no state of the domain"
+               : "the guard holds in every state of the domain";
+}
+inline Target mcdc_target(const std::string& adaptable, const fretish::SelectionRequirement& r,
+                          const std::string& atom) {
+  return new_target(adaptable, Criterion::mcdc, r.id + "/" + atom,
+                    "MC/DC of " + atom + " in " + r.id +
+                        ": changing it alone changes the guard and the selected alternative");
+}
+// Why an atom of requirement `req` has no MC/DC pair, the first of these that holds.
+enum class NoPair {
+  atom_fixed,      // the atom never changes over the domain (`holds`: it is always true)
+  atom_tied,       // it never changes alone
+  guard_fixed,     // the guard never changes (`holds`: it always holds)
+  guard_masked,    // changing the atom alone never changes the guard
+  same_selection,  // where it changes the guard, `earlier` requirements, or the same, are selected
+};
+inline std::string no_pair(NoPair why, const std::string& atom, const std::string& req,
+                           bool holds = false, const std::vector<std::string>& earlier = {}) {
+  std::string text = "not independently testable: ";
+  switch (why) {
+    case NoPair::atom_fixed:
+      return text + atom + " is " + (holds ? "true" : "false") + " in every state of the domain";
+    case NoPair::atom_tied:
+      return text + atom + " never changes alone: the domain or the other atoms tie it to them";
+    case NoPair::guard_fixed:
+      return text + "the guard of " + req + (holds ? " holds in every" : " holds in no") +
+             " state of the domain, so no atom can change it";
+    case NoPair::guard_masked:
+      return text + "changing " + atom + " alone never changes the guard of " + req +
+             " (the other atoms mask it)";
+    case NoPair::same_selection: break;
+  }
+  text += "wherever " + atom + " alone changes the guard of " + req + ", ";
+  return text + (earlier.empty() ? "the same alternative is selected either way"
+                                 : "an earlier requirement (" + join(earlier, ", ") +
+                                       ") holds either way and is selected");
+}
+// Boundary targets: an integer on either side of the boundary between `lo` and `lo + 1`; a
+// real below, at or above a breakpoint (`side` -1, 0, 1), between its neighbours `before` and
+// `after`; a line of two reals `x + b*y = rhs` and either side of it.
+inline Target integer_boundary(const std::string& adaptable, const std::string& name,
+                               const std::string& lo, const std::string& hi, bool below) {
+  const std::string side = below ? "below" : "above";
+  return new_target(adaptable, Criterion::boundary, name + "/" + lo + "|" + hi + "/" + side,
+                    name + " = " + (below ? lo : hi) + ", " + side + " the boundary between " + lo +
+                        " and " + hi);
+}
+inline Target real_boundary(const std::string& adaptable, const std::string& name, int side,
+                            const std::string& before, const std::string& at,
+                            const std::string& after) {
+  const std::string id = name + "/" + at + "/";
+  if (side == 0)
+    return new_target(adaptable, Criterion::boundary, id + "at",
+                      name + " = " + at + ", on the boundary");
+  return new_target(adaptable, Criterion::boundary, id + (side < 0 ? "below" : "above"),
+                    name + " in (" + (side < 0 ? before : at) + ", " + (side < 0 ? at : after) +
+                        "), just " + (side < 0 ? "below" : "above") + " the boundary " + at);
+}
+inline std::string line_text(const std::string& x, const verify::detail::Fraction& b,
+                             const std::string& y) {
+  if (b.is_zero()) return x;
+  const bool unit = b == verify::detail::Fraction(1) || b == verify::detail::Fraction(-1);
+  return x + (b.sign() < 0 ? " - " : " + ") +
+         (unit ? "" : (b.sign() < 0 ? -b : b).decimal() + "*") + y;
+}
+inline Target line_boundary(const std::string& adaptable, const std::string& line,
+                            const std::string& rhs, int side) {
+  const char* names[] = {"below", "at", "above"};
+  const char* relations[] = {" < ", " = ", " > "};
+  return new_target(adaptable, Criterion::boundary,
+                    "line/" + line + " = " + rhs + "/" + names[side + 1],
+                    line + relations[side + 1] + rhs +
+                        (side == 0 ? ", on the boundary" : ", beside the boundary"));
+}
+inline constexpr const char* kNoStateThere =
+    "no state of the domain lies there (the assumptions rule it out)";
 
 }  // namespace uabt::campaign

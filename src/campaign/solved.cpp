@@ -332,16 +332,6 @@ using Questions = SolvedQuestions;
 
 namespace {
 
-Target make_target(const Model::Node& n, Criterion criterion, const std::string& id,
-                   const std::string& text) {
-  Target t;
-  t.adaptable = n.adaptable;
-  t.criterion = criterion;
-  t.id = n.adaptable + "/" + criterion_name(criterion) + "/" + id;
-  t.text = text;
-  return t;
-}
-
 // The target is not decided: the solver gave no answer.
 void undecided(Target& t, const Questions& q) {
   t.reachable = false;
@@ -427,25 +417,18 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
     }
     if (criteria.count(Criterion::decision)) {
       for (std::size_t k = 0; k < reqs.size(); ++k) {
-        const auto* r = reqs[k];
-        Target t = make_target(*this, Criterion::decision, "select/" + r->alternative,
-                               adaptable + " selects " + r->alternative + " (" + r->id + ")");
+        Target t = select_target(adaptable, *reqs[k]);
         Goal g;
         g.kind = Goal::Kind::select;
         g.req = k;
         const std::vector<z3::expr> selects{q.sel() == q.ctx().int_val(static_cast<int>(k))};
         const Answer answer = q.ask(selects, &g.witness);
         if (answer == Answer::unsat) {
-          if (q.ask({q.guard(k)}) == Answer::unsat) {
-            t.reason = r->guard ? "the guard of " + r->id + " holds in no state of the domain"
-                                : "the domain has no state";
-          } else {
-            std::vector<std::string> earlier;
-            for (std::size_t j = 0; j < k; ++j)
-              if (q.ask({q.guard(j), q.guard(k)}) == Answer::sat) earlier.push_back(reqs[j]->id);
-            t.reason = "wherever the guard of " + r->id + " holds, an earlier requirement (" +
-                       join(earlier, ", ") + ") holds too and is selected first";
-          }
+          const bool guard_holds = q.ask({q.guard(k)}) != Answer::unsat;
+          std::vector<std::string> earlier;
+          for (std::size_t j = 0; j < k && guard_holds; ++j)
+            if (q.ask({q.guard(j), q.guard(k)}) == Answer::sat) earlier.push_back(reqs[j]->id);
+          t.reason = unselectable(*reqs[k], guard_holds, earlier);
         }
         add(std::move(t), std::move(g), answer, selects, false);
       }
@@ -454,18 +437,14 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
         if (!r->guard) continue;
         const std::string guard = fretish::to_fretish(*r->guard);
         for (bool value : {true, false}) {
-          Target t = make_target(
-              *this, Criterion::decision, "guard/" + r->id + "/" + (value ? "true" : "false"),
-              "the guard of " + r->id + " (" + guard + ") is " + (value ? "true" : "false"));
+          Target t = guard_target(adaptable, *r, guard, value);
           Goal g;
           g.kind = Goal::Kind::guard;
           g.req = k;
           g.value = value;
           const std::vector<z3::expr> decides{value ? q.guard(k) : !q.guard(k)};
           const Answer answer = q.ask(decides, &g.witness);
-          if (answer == Answer::unsat)
-            t.reason = value ? "the guard holds in no state of the domain"
-                             : "the guard holds in every state of the domain";
+          if (answer == Answer::unsat) t.reason = guard_never(value);
           add(std::move(t), std::move(g), answer, decides, false);
         }
       }
@@ -475,10 +454,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
         const auto* r = reqs[k];
         for (std::size_t a : req_atoms[k]) {
           const std::string& atom = atom_text[a];
-          Target t =
-              make_target(*this, Criterion::mcdc, r->id + "/" + atom,
-                          "MC/DC of " + atom + " in " + r->id +
-                              ": changing it alone changes the guard and the selected alternative");
+          Target t = mcdc_target(adaptable, *r, atom);
           Goal g;
           g.kind = Goal::Kind::pair;
           g.req = k;
@@ -497,22 +473,18 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
           differs.push_back(q.sel() != q.sel2());
           const Answer answer = q.ask(differs, &g.witness, true);
           if (answer == Answer::unsat) {
-            const std::string head = "not independently testable: ";
             const bool never = q.ask({holds}) == Answer::unsat;
             const bool always = !never && q.ask({!holds}) == Answer::unsat;
             if (always || never) {
-              t.reason = head + atom + " is " + (always ? "true" : "false") +
-                         " in every state of the domain";
+              t.reason = no_pair(NoPair::atom_fixed, atom, r->id, always);
             } else if (q.ask(alone, nullptr, true) == Answer::unsat) {
-              t.reason = head + atom +
-                         " never changes alone: the domain or the other atoms tie it to them";
+              t.reason = no_pair(NoPair::atom_tied, atom, r->id);
             } else if (q.ask(flips, nullptr, true) == Answer::unsat) {
               const bool guard_true = q.ask({q.guard(k)}) != Answer::unsat;
               const bool guard_false = q.ask({!q.guard(k)}) != Answer::unsat;
-              t.reason = head + (guard_true && guard_false
-                                     ? "changing " + atom + " alone never changes the guard of " +
-                                           r->id + " (the other atoms mask it)"
-                                     : guard_constant(r->id, guard_true));
+              t.reason =
+                  no_pair(guard_true && guard_false ? NoPair::guard_masked : NoPair::guard_fixed,
+                          atom, r->id, guard_true);
             } else {
               std::vector<std::string> shadowing;
               for (std::size_t j = 0; j < k; ++j) {
@@ -523,12 +495,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
                 if (q.ask(same, nullptr, true) == Answer::sat) shadowing.push_back(reqs[j]->id);
               }
               std::sort(shadowing.begin(), shadowing.end());
-              t.reason = shadowing.empty()
-                             ? head + "wherever " + atom + " alone changes the guard of " + r->id +
-                                   ", the same alternative is selected either way"
-                             : head + "wherever " + atom + " alone changes the guard of " + r->id +
-                                   ", an earlier requirement (" + join(shadowing, ", ") +
-                                   ") holds either way and is selected";
+              t.reason = no_pair(NoPair::same_selection, atom, r->id, false, shadowing);
             }
           }
           add(std::move(t), std::move(g), answer, differs, true);
@@ -566,9 +533,8 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
           continue;  // beyond 128 bits: not a boundary a test can sit at
         }
       }
-      auto boundary = [&](const std::string& id, const std::string& text, Goal g,
-                          const z3::expr& var, const std::optional<Fraction>& nice) {
-        Target t = make_target(*this, Criterion::boundary, id, text);
+      auto boundary = [&](Target t, Goal g, const z3::expr& var,
+                          const std::optional<Fraction>& nice) {
         g.kind = Goal::Kind::boundary;
         std::vector<z3::expr> where;
         const bool integer = var.is_int();
@@ -583,8 +549,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
           if (g.hi) where.push_back(var < number(*g.hi));
         }
         const Answer answer = q.ask_real(where, var, nice, g.witness);
-        if (answer == Answer::unsat)
-          t.reason = "no state of the domain lies there (the assumptions rule it out)";
+        if (answer == Answer::unsat) t.reason = kNoStateThere;
         add(std::move(t), std::move(g), answer, where, false);
       };
       std::vector<std::string> reals;
@@ -603,10 +568,8 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
             g.variable = name;
             g.point = true;
             g.lo = Fraction(under ? x : x + 1);
-            boundary(name + "/" + below + "|" + above + "/" + (under ? "below" : "above"),
-                     name + " = " + (under ? below : above) + ", " + (under ? "below" : "above") +
-                         " the boundary between " + below + " and " + above,
-                     g, slot->constant, std::nullopt);
+            boundary(integer_boundary(adaptable, name, below, above, under), g, slot->constant,
+                     std::nullopt);
           }
         }
       }
@@ -624,29 +587,25 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
         };
         for (std::size_t b = 1; b + 1 < points.size(); ++b) {
           const Fraction at = *points[b];
-          const std::string at_text = at.decimal();
-          const std::string base = name + "/" + at_text + "/";
+          auto target = [&](int side) {
+            return real_boundary(adaptable, name, side, text(points[b - 1], "-inf"), at.decimal(),
+                                 text(points[b + 1], "inf"));
+          };
           Goal g;
           g.variable = name;
           g.lo = points[b - 1];
           g.hi = at;
-          boundary(base + "below",
-                   name + " in (" + text(points[b - 1], "-inf") + ", " + at_text +
-                       "), just below the boundary " + at_text,
-                   g, var,
+          boundary(target(-1), g, var,
                    points[b - 1] ? simple_inside(*points[b - 1], at)
                                  : std::optional<Fraction>(Fraction::of(at.floor() - 1, 1)));
           g.point = true;
           g.lo = at;
           g.hi.reset();
-          boundary(base + "at", name + " = " + at_text + ", on the boundary", g, var, std::nullopt);
+          boundary(target(0), g, var, std::nullopt);
           g.point = false;
           g.lo = at;
           g.hi = points[b + 1];
-          boundary(base + "above",
-                   name + " in (" + at_text + ", " + text(points[b + 1], "inf") +
-                       "), just above the boundary " + at_text,
-                   g, var,
+          boundary(target(1), g, var,
                    points[b + 1] ? simple_inside(at, *points[b + 1])
                                  : std::optional<Fraction>(Fraction::of(at.floor() + 1, 1)));
         }
@@ -676,23 +635,12 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
         }
       }
       for (const auto& [x, y, b, c] : lines) {
-        std::string text = x;
-        if (!b.is_zero())
-          text +=
-              (b.sign() < 0 ? " - " : " + ") +
-              (b == Fraction(1) || b == Fraction(-1) ? ""
-                                                     : (b.sign() < 0 ? -b : b).decimal() + "*") +
-              y;
+        const std::string text = line_text(x, b, y);
         const std::string rhs = (-c).decimal();
         const z3::expr lhs =
             q.slot(x)->constant + q.fraction(b) * q.slot(y)->constant + q.fraction(c);
-        const char* names[] = {"below", "at", "above"};
-        const char* words[] = {" < ", " = ", " > "};
         for (int sign = -1; sign <= 1; ++sign) {
-          Target t = make_target(*this, Criterion::boundary,
-                                 "line/" + text + " = " + rhs + "/" + names[sign + 1],
-                                 text + words[sign + 1] + rhs +
-                                     (sign == 0 ? ", on the boundary" : ", beside the boundary"));
+          Target t = line_boundary(adaptable, text, rhs, sign);
           Goal g;
           g.kind = Goal::Kind::boundary;
           g.line = true;
@@ -703,8 +651,7 @@ bool Model::Node::solve(const load::Mission& mission, const std::set<Criterion>&
           g.sign = sign;
           const std::vector<z3::expr> where{sign < 0 ? lhs < 0 : sign == 0 ? lhs == 0 : lhs > 0};
           const Answer answer = q.ask(where, &g.witness);
-          if (answer == Answer::unsat)
-            t.reason = "no state of the domain lies there (the assumptions rule it out)";
+          if (answer == Answer::unsat) t.reason = kNoStateThere;
           add(std::move(t), std::move(g), answer, where, false);
         }
       }
