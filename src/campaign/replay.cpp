@@ -148,20 +148,11 @@ RunRecord Replayer::run(const std::string& json, const std::string& file,
   }
   record.ticks = runner.ticks();
   record.verdict = runner.verdict();
-  if (runner.error()) {
-    // Named at the line the user wrote (as opened from where uabt runs), not at the compiled
-    // tree held in memory.
-    record.error = runner.error()->message;
-    const runtime::NodeInfo& info = runner.engine().info(runner.error()->node);
-    const std::string compiled_at = info.location.file + ":" + std::to_string(info.location.line) +
-                                    ":" + std::to_string(info.location.column);
-    const auto source = runtime::source_of(runner.engine().tree_path(runner.error()->node),
-                                           impl_->mission, impl_->trace);
-    if (source && record.error.starts_with(compiled_at))
-      record.error = path_prefix_for(impl_->mission.dir) + source->file + ":" +
-                     std::to_string(source->line) + ":" + std::to_string(source->column) +
-                     record.error.substr(compiled_at.size());
-  }
+  if (runner.error())  // at the line the user wrote, as opened from where uabt runs
+    record.error =
+        with_user_path(runtime::with_source_places(runner.error()->message, impl_->document,
+                                                   impl_->mission, impl_->trace),
+                       path_prefix_for(impl_->mission.dir));
   return record;
 }
 

@@ -286,18 +286,9 @@ ManagerRun BehaviorTreeManager::run() {
   result.verdict = runner.verdict();
   result.finished = result.verdict != "timeout" && result.verdict != "error";
   result.error = runner.error();
-  if (result.error) {
-    // Point at the line the user wrote, not at the compiled tree held in memory.
-    const NodeInfo& info = runner.engine().info(result.error->node);
-    const std::string compiled_at = info.location.file + ":" + std::to_string(info.location.line) +
-                                    ":" + std::to_string(info.location.column);
-    const auto source = source_of(runner.engine().tree_path(result.error->node), *running.mission,
-                                  running.compiled.trace);
-    if (source && result.error->message.starts_with(compiled_at))
-      result.error->message = source->file + ":" + std::to_string(source->line) + ":" +
-                              std::to_string(source->column) +
-                              result.error->message.substr(compiled_at.size());
-  }
+  if (result.error)  // at the line the user wrote, not at the compiled tree held in memory
+    result.error->message = with_source_places(result.error->message, *running.compiled_tree,
+                                               *running.mission, running.compiled.trace);
   result.accepted_uplinks = accepted;
   if (result.error) {
     TraceEvent e;
