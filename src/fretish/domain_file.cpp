@@ -25,14 +25,6 @@ std::string bound_text(std::string_view written) {
   return std::string(written);
 }
 
-bool is_whole_number(const std::string& text) {
-  std::size_t i = (!text.empty() && text[0] == '-') ? 1 : 0;
-  if (i == text.size()) return false;
-  for (; i < text.size(); ++i)
-    if (!std::isdigit(static_cast<unsigned char>(text[i]))) return false;
-  return true;
-}
-
 long double numeric_value(const std::string& text) {
   return std::strtold(text.c_str(), nullptr);
 }
@@ -178,7 +170,7 @@ class DomainBuilder {
                     const SourceLocation& lower_at, const SourceLocation& upper_at) {
     if (lower.empty()) return true;
     for (const auto& [bound, where] : {std::pair{lower, lower_at}, std::pair{upper, upper_at}}) {
-      if (type == VarType::integer && !is_whole_number(bound)) {
+      if (type == VarType::integer && !is_integer_literal(bound)) {
         invalid("bound " + bound + " of integer '" + name + "' is not a whole number", where);
         return false;
       }

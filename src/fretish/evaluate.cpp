@@ -141,13 +141,6 @@ Val relation(Op op, const Val& a, const Val& b) {
   }
 }
 
-bool is_whole_literal(const Expr& e) {
-  if (e.kind != ExprKind::number || e.text.empty()) return false;
-  for (char ch : e.text)
-    if (ch < '0' || ch > '9') return false;
-  return true;
-}
-
 }  // namespace
 
 const char* fault_text(Val::Fault fault) {
@@ -180,7 +173,7 @@ Op operator_of(const Expr& e) {
     case ExprKind::div: return Op::div;
     case ExprKind::mod: return Op::mod;
     case ExprKind::pow:
-      return e.args.size() == 2 && is_whole_literal(*e.args[1]) ? Op::pow_whole : Op::pow;
+      return e.args.size() == 2 && is_natural_numeral(*e.args[1]) ? Op::pow_whole : Op::pow;
     case ExprKind::negate: return Op::negate;
     case ExprKind::call: {
       static const std::pair<const char*, Op> functions[] = {

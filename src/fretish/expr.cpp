@@ -67,6 +67,18 @@ bool is_relation(ExprKind kind) {
   }
 }
 
+bool is_integer_literal(const std::string& text) {
+  std::size_t i = text.empty() || text[0] != '-' ? 0 : 1;
+  if (i >= text.size()) return false;
+  for (; i < text.size(); ++i)
+    if (!std::isdigit(static_cast<unsigned char>(text[i]))) return false;
+  return true;
+}
+
+bool is_natural_numeral(const Expr& e) {
+  return e.kind == ExprKind::number && is_integer_literal(e.text) && e.text[0] != '-';
+}
+
 bool is_arithmetic(ExprKind kind) {
   switch (kind) {
     case ExprKind::add:

@@ -14,11 +14,27 @@ enum class ExprKind {
   identifier,    // OnDust, "quoted id"                   (text)
   call,          // absReal(x), ite(c, a, b)              (text = function, args)
   // boolean
-  logical_not, logical_and, logical_or, logical_xor, implies, iff,
+  logical_not,
+  logical_and,
+  logical_or,
+  logical_xor,
+  implies,
+  iff,
   // relations, args = {lhs, rhs}
-  eq, ne, lt, le, gt, ge,
+  eq,
+  ne,
+  lt,
+  le,
+  gt,
+  ge,
   // arithmetic
-  add, sub, mul, div, mod, pow, negate,
+  add,
+  sub,
+  mul,
+  div,
+  mod,
+  pow,
+  negate,
 };
 
 struct Expr;
@@ -48,6 +64,12 @@ std::string to_fretish(const Expr& e);
 
 // Structural equality (ignores source ranges and parenthesization).
 bool same_expr(const Expr& a, const Expr& b);
+
+// Written as an integer, digits with an optional '-': FRETISH types `12` as integer and `12.0`
+// or `1e3` as real.
+bool is_integer_literal(const std::string& text);
+// A numeral written as a whole number without a sign, such as the exponent of `x ^ 2`.
+bool is_natural_numeral(const Expr& e);
 
 // Every identifier used, in first-occurrence order (function names excluded).
 std::vector<std::string> identifiers_of(const Expr& e);

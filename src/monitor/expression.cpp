@@ -70,17 +70,6 @@ std::string unmonitored_temporal(const std::string& name, std::size_t args) {
   return {};
 }
 
-namespace {
-
-bool is_whole_number(const fretish::Expr& e) {
-  if (e.kind != ExprKind::number || e.text.empty() || e.text.size() > 12) return false;
-  for (char ch : e.text)
-    if (ch < '0' || ch > '9') return false;
-  return true;
-}
-
-}  // namespace
-
 std::optional<CompiledExpression> CompiledExpression::compile(const fretish::Expr& e,
                                                               const Resolver& resolve,
                                                               std::string& error, Field field) {
@@ -134,7 +123,7 @@ int CompiledExpression::build(const fretish::Expr& e, const Resolver& resolve, s
       const std::string& f = e.text;
       if (f == "persisted" || f == "occurred") {
         // FRET expands them only when n is an integer (xform.js, nIsNumber).
-        if (!is_whole_number(*e.args[0])) {
+        if (!fretish::is_natural_numeral(*e.args[0]) || e.args[0]->text.size() > 12) {
           error = "the first argument of '" + f + "' is '" + fretish::to_fretish(*e.args[0]) +
                   "': FRET expands " + f + "(n, p) only for a whole number of ticks n";
           return -1;

@@ -190,8 +190,7 @@ Encoder::Term Encoder::lower_term(const Expr& e, const Overrides& overrides) {
     }
     case ExprKind::pow: {
       const Expr& exponent = *e.args[1];
-      if (exponent.kind == ExprKind::number && is_integer_literal(exponent.text) &&
-          exponent.text[0] != '-' && exponent.text.size() <= 2 &&
+      if (fretish::is_natural_numeral(exponent) && exponent.text.size() <= 2 &&
           std::stoul(exponent.text) <= kMaxExpandedExponent) {
         const unsigned long n = std::stoul(exponent.text);
         const z3::expr base = operand(*e.args[0], sort);

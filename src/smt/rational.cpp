@@ -30,14 +30,6 @@ std::string Rational::text() const {
   return out;
 }
 
-bool is_integer_literal(const std::string& literal) {
-  std::size_t i = literal.empty() || literal[0] != '-' ? 0 : 1;
-  if (i >= literal.size()) return false;
-  for (; i < literal.size(); ++i)
-    if (!std::isdigit(static_cast<unsigned char>(literal[i]))) return false;
-  return true;
-}
-
 std::optional<Rational> parse_rational(const std::string& literal) {
   constexpr long kMaxExponent = 4096;  // beyond this the literal is a typo, not a quantity
   std::size_t i = 0;

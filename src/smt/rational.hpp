@@ -2,6 +2,8 @@
 #include <optional>
 #include <string>
 
+#include "fretish/expr.hpp"
+
 namespace uabt::smt {
 
 // An exact rational written as decimal digit strings: numerator / denominator (> 0).
@@ -20,8 +22,6 @@ struct Rational {
 // '-') exactly. nullopt when it is not a number or its exponent is absurdly large.
 std::optional<Rational> parse_rational(const std::string& literal);
 
-// True when the literal is written as an integer (digits only, optional sign): FRETISH types
-// `12` as integer and `12.0` or `1e3` as real.
-bool is_integer_literal(const std::string& literal);
+using fretish::is_integer_literal;
 
 }  // namespace uabt::smt

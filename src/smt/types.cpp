@@ -322,10 +322,6 @@ class Checker {
     return ok ? TypeInfo{Sort::boolean} : invalid();
   }
 
-  static bool is_natural_literal(const Expr& e) {
-    return e.kind == ExprKind::number && is_integer_literal(e.text) && e.text[0] != '-';
-  }
-
   TypeInfo arithmetic(const Expr& e) {
     const char* op = "+";
     switch (e.kind) {
@@ -352,7 +348,8 @@ class Checker {
           at(e)));
     }
     if (e.kind == ExprKind::pow)
-      return TypeInfo{all_integer && is_natural_literal(*e.args[1]) ? Sort::integer : Sort::real};
+      return TypeInfo{all_integer && fretish::is_natural_numeral(*e.args[1]) ? Sort::integer
+                                                                             : Sort::real};
     return TypeInfo{all_integer ? Sort::integer : Sort::real};
   }
 
