@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "fretish/integer_ranges.hpp"
+#include "verify/linear.hpp"
 #include "verify/real_cells.hpp"
 #include "verify/script_reading.hpp"
 
@@ -11,67 +12,9 @@ namespace uabt::prove {
 using fretish::Expr;
 using fretish::ExprKind;
 using runtime::ScriptValue;
+using verify::detail::Affine;
 using verify::detail::Fraction;
 namespace script = runtime::script;
-
-namespace detail {
-
-// Σ a_v·v + b over variables of the cut or of the mission's own state.
-struct Affine {
-  std::map<std::string, Fraction, std::less<>> terms;  // no zero coefficient
-  Fraction b;
-  bool constant() const { return terms.empty(); }
-};
-
-}  // namespace detail
-
-namespace {
-
-using detail::Affine;
-
-Affine variable(const std::string& name) {
-  Affine out;
-  out.terms[name] = Fraction(1);
-  return out;
-}
-
-Affine constant(const Fraction& f) {
-  Affine out;
-  out.b = f;
-  return out;
-}
-
-std::optional<Affine> combine(const Affine& l, const Affine& r, int sign) {
-  Affine out = l;
-  for (const auto& [name, a] : r.terms) {
-    Fraction& t = out.terms[name];
-    t += sign > 0 ? a : -a;
-    if (t.is_zero()) out.terms.erase(name);
-  }
-  out.b += sign > 0 ? r.b : -r.b;
-  return out;
-}
-
-std::optional<Affine> scale(const Affine& x, const Fraction& k) {
-  if (k.is_zero()) return constant(Fraction(0));
-  Affine out{{}, x.b * k};
-  for (const auto& [name, a] : x.terms) out.terms[name] = a * k;
-  return out;
-}
-
-std::optional<Affine> product(const std::optional<Affine>& l, const std::optional<Affine>& r) {
-  if (!l || !r) return std::nullopt;
-  if (l->constant()) return scale(*r, l->b);
-  if (r->constant()) return scale(*l, r->b);
-  return std::nullopt;
-}
-
-std::optional<Affine> quotient(const std::optional<Affine>& l, const std::optional<Affine>& r) {
-  if (!l || !r || !r->constant() || r->b.is_zero()) return std::nullopt;
-  return scale(*l, Fraction(1) / r->b);
-}
-
-}  // namespace
 
 // `lhs op rhs` as an atom over one variable x of the cut, the others (if any) of the mission's
 // state: x's coefficient and the rest (Σ a_m·m + b), so that the breakpoint is -rest / a.
@@ -88,11 +31,10 @@ using detail::Atom;
 std::optional<Atom> atom_of(const std::optional<Affine>& l, const std::optional<Affine>& r,
                             const std::set<std::string, std::less<>>& numeric) {
   if (!l || !r) return std::nullopt;
-  const auto d = combine(*l, *r, -1);
-  if (!d) return std::nullopt;
+  const Affine d = l->plus(*r, -1);
   Atom out;
-  out.rest.b = d->b;
-  for (const auto& [name, a] : d->terms) {
+  out.rest.constant = d.constant;
+  for (const auto& [name, a] : d.terms) {
     if (numeric.contains(name)) {
       if (!out.variable.empty()) return std::nullopt;  // two variables of the cut
       out.variable = name;
@@ -117,21 +59,18 @@ class FretishAffine {
         case ExprKind::number: {
           const auto f = Fraction::parse(e.text);
           if (!f) return std::nullopt;
-          return constant(*f);
+          return Affine::of_constant(*f);
         }
         case ExprKind::identifier:
           if (!numeric_.contains(e.text) && !mission_.contains(e.text)) return std::nullopt;
-          return variable(e.text);
-        case ExprKind::negate: {
-          const auto x = of(*e.args[0]);
-          return x ? scale(*x, Fraction(-1)) : std::nullopt;
-        }
+          return Affine::of_variable(e.text);
+        case ExprKind::negate: return product(of(*e.args[0]), Affine::of_constant(-1));
         case ExprKind::add:
         case ExprKind::sub: {
           std::optional<Affine> acc = of(*e.args[0]);
           for (std::size_t i = 1; i < e.args.size() && acc; ++i) {
             const auto r = of(*e.args[i]);
-            acc = r ? combine(*acc, *r, e.kind == ExprKind::add ? 1 : -1) : std::nullopt;
+            acc = r ? std::optional(acc->plus(*r, e.kind == ExprKind::add ? 1 : -1)) : std::nullopt;
           }
           return acc;
         }
@@ -180,12 +119,12 @@ bool Cuts::cut(const std::optional<Atom>& atom, const std::string& where, bool a
   if (!atom) return false;
   try {
     if (atom->rest.terms.empty()) {
-      breaks_[atom->variable].insert(-atom->rest.b / atom->a);
+      breaks_[atom->variable].insert(-atom->rest.constant / atom->a);
       return true;
     }
     MixedAtom mixed;
     for (const auto& [name, a] : atom->rest.terms) mixed.terms.emplace_back(name, a / atom->a);
-    mixed.b = atom->rest.b / atom->a;
+    mixed.b = atom->rest.constant / atom->a;
     mixed.at_tick_start = at_tick_start;
     mixed.where = where;
     mixed_[atom->variable].push_back(std::move(mixed));

@@ -5,91 +5,79 @@ namespace uabt::verify::detail {
 using fretish::Expr;
 using fretish::ExprKind;
 
+Affine Affine::of_variable(const std::string& name) {
+  Affine out;
+  out.terms[name] = Fraction(1);
+  return out;
+}
+
+Affine Affine::of_constant(const Fraction& value) {
+  Affine out;
+  out.constant = value;
+  return out;
+}
+
+Affine Affine::scaled(const Fraction& k) const {
+  Affine out = of_constant(constant * k);
+  if (!k.is_zero())
+    for (const auto& [name, a] : terms) out.terms[name] = a * k;
+  return out;
+}
+
+Affine Affine::plus(const Affine& other, int sign) const {
+  Affine out = *this;
+  for (const auto& [name, a] : other.terms) {
+    Fraction& t = out.terms[name];
+    t += sign > 0 ? a : -a;
+    if (t.is_zero()) out.terms.erase(name);
+  }
+  out.constant += sign > 0 ? other.constant : -other.constant;
+  return out;
+}
+
+std::optional<Affine> product(const std::optional<Affine>& l, const std::optional<Affine>& r) {
+  if (!l || !r) return std::nullopt;
+  if (l->is_constant()) return r->scaled(l->constant);
+  if (r->is_constant()) return l->scaled(r->constant);
+  return std::nullopt;  // a product of variables
+}
+
+std::optional<Affine> quotient(const std::optional<Affine>& l, const std::optional<Affine>& r) {
+  if (!l || !r || !r->is_constant() || r->constant.is_zero()) return std::nullopt;
+  return l->scaled(Fraction(1) / r->constant);
+}
+
 namespace {
 
-struct Form {
-  std::map<std::string, Fraction> coefficients;
-  Fraction constant;
-
-  bool is_constant() const { return coefficients.empty(); }
-  Form scaled(const Fraction& k) const {
-    Form out;
-    out.constant = constant * k;
-    if (k.is_zero()) return out;
-    for (const auto& [v, c] : coefficients) out.coefficients[v] = c * k;
-    return out;
-  }
-  Form plus(const Form& o) const {
-    Form out = *this;
-    out.constant += o.constant;
-    for (const auto& [v, c] : o.coefficients) {
-      const Fraction sum = out.coefficients[v] + c;
-      if (sum.is_zero())
-        out.coefficients.erase(v);
-      else
-        out.coefficients[v] = sum;
-    }
-    return out;
-  }
-};
-
-std::optional<Form> form_of(const Expr& e, const smt::Typing& typing) {
+std::optional<Affine> form_of(const Expr& e, const smt::Typing& typing) {
   const smt::TypeInfo* t = typing.find(e);
   if (t == nullptr || (t->sort != smt::Sort::integer && t->sort != smt::Sort::real))
     return std::nullopt;
   switch (e.kind) {
     case ExprKind::number: {
-      auto f = Fraction::parse(e.text);
-      if (!f) return std::nullopt;
-      Form out;
-      out.constant = *f;
-      return out;
+      const auto f = Fraction::parse(e.text);
+      return f ? std::optional(Affine::of_constant(*f)) : std::nullopt;
     }
-    case ExprKind::identifier: {
-      if (t->variable == nullptr) return std::nullopt;
-      Form out;
-      out.coefficients[e.text] = Fraction(1);
-      return out;
-    }
-    case ExprKind::negate: {
-      auto a = form_of(*e.args[0], typing);
-      if (!a) return std::nullopt;
-      return a->scaled(Fraction(-1));
-    }
+    case ExprKind::identifier:
+      return t->variable ? std::optional(Affine::of_variable(e.text)) : std::nullopt;
+    case ExprKind::negate: return product(form_of(*e.args[0], typing), Affine::of_constant(-1));
     case ExprKind::add:
-    case ExprKind::sub: {
-      std::optional<Form> acc;
-      for (std::size_t k = 0; k < e.args.size(); ++k) {
-        auto a = form_of(*e.args[k], typing);
-        if (!a) return std::nullopt;
-        if (k > 0 && e.kind == ExprKind::sub) a = a->scaled(Fraction(-1));
-        acc = acc ? acc->plus(*a) : *a;
-      }
-      return acc;
-    }
+    case ExprKind::sub:
     case ExprKind::mul: {
-      std::optional<Form> acc;
-      for (const auto& arg : e.args) {
-        auto a = form_of(*arg, typing);
-        if (!a) return std::nullopt;
-        if (!acc)
-          acc = a;
-        else if (a->is_constant())
-          acc = acc->scaled(a->constant);
-        else if (acc->is_constant())
-          acc = a->scaled(acc->constant);
+      std::optional<Affine> acc = form_of(*e.args[0], typing);
+      for (std::size_t k = 1; k < e.args.size() && acc; ++k) {
+        const auto a = form_of(*e.args[k], typing);
+        if (e.kind == ExprKind::mul)
+          acc = product(acc, a);
         else
-          return std::nullopt;  // a product of variables
+          acc = a ? std::optional(acc->plus(*a, e.kind == ExprKind::add ? 1 : -1)) : std::nullopt;
       }
       return acc;
     }
-    case ExprKind::div: {
+    case ExprKind::div:
       // Integer division truncates: not linear.
       if (t->sort != smt::Sort::real || e.args.size() != 2) return std::nullopt;
-      auto a = form_of(*e.args[0], typing), b = form_of(*e.args[1], typing);
-      if (!a || !b || !b->is_constant() || b->constant.is_zero()) return std::nullopt;
-      return a->scaled(Fraction(1) / b->constant);
-    }
+      return quotient(form_of(*e.args[0], typing), form_of(*e.args[1], typing));
     default: return std::nullopt;
   }
 }
@@ -118,9 +106,9 @@ std::optional<LinearAtom> linear_atom(const Expr& atom, const smt::Typing& typin
   try {
     auto lhs = form_of(*atom.args[0], typing), rhs = form_of(*atom.args[1], typing);
     if (!lhs || !rhs) return std::nullopt;
-    const Form d = lhs->plus(rhs->scaled(Fraction(-1)));
+    const Affine d = lhs->plus(*rhs, -1);
     LinearAtom out;
-    out.coefficients = d.coefficients;
+    out.coefficients = d.terms;
     out.constant = d.constant;
     out.op = atom.kind;
     return out;

@@ -9,9 +9,26 @@
 
 namespace uabt::verify::detail {
 
+// Σ coefficient·variable + constant, exact: the arithmetic of linear_atom and of the explicit
+// engine's cuts (prove/cells.cpp). Beyond 128 bits an operation throws FractionOverflow.
+struct Affine {
+  std::map<std::string, Fraction, std::less<>> terms;  // no zero coefficient
+  Fraction constant;
+
+  static Affine of_variable(const std::string& name);
+  static Affine of_constant(const Fraction& value);
+  bool is_constant() const { return terms.empty(); }
+  Affine scaled(const Fraction& k) const;
+  Affine plus(const Affine& other, int sign = 1) const;  // this + sign·other
+};
+// l·r when a factor is constant, l / r when r is a non-zero constant; nullopt otherwise (and
+// when either is nullopt).
+std::optional<Affine> product(const std::optional<Affine>& l, const std::optional<Affine>& r);
+std::optional<Affine> quotient(const std::optional<Affine>& l, const std::optional<Affine>& r);
+
 // An atom `Σ coefficient·variable + constant  op  0` over numeric variables, exact.
 struct LinearAtom {
-  std::map<std::string, Fraction> coefficients;  // non-zero only
+  std::map<std::string, Fraction, std::less<>> coefficients;  // non-zero only
   Fraction constant;
   fretish::ExprKind op = fretish::ExprKind::eq;  // eq ne lt le gt ge
 
