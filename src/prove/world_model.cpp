@@ -359,34 +359,11 @@ WorldModel mission_world(const load::Mission& mission) {
 }
 
 std::vector<std::string> assigned_names(std::string_view script) {
-  std::vector<std::string> out;
-  std::size_t i = 0;
-  auto is_name_char = [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '@';
-  };
-  while (i < script.size()) {
-    // At a statement start: skip blanks, read a name, look at the operator after it.
-    while (i < script.size() && std::isspace(static_cast<unsigned char>(script[i]))) ++i;
-    std::size_t j = i;
-    while (j < script.size() && is_name_char(script[j])) ++j;
-    std::string name(script.substr(i, j - i));
-    std::size_t k = j;
-    while (k < script.size() && std::isspace(static_cast<unsigned char>(script[k]))) ++k;
-    const std::string_view rest = script.substr(k);
-    const bool assigns =
-        !name.empty() &&
-        ((rest.size() >= 1 && rest[0] == '=' && (rest.size() < 2 || rest[1] != '=')) ||
-         rest.rfind(":=", 0) == 0 || rest.rfind("+=", 0) == 0 || rest.rfind("-=", 0) == 0 ||
-         rest.rfind("*=", 0) == 0 || rest.rfind("/=", 0) == 0);
-    if (assigns) {
-      if (name.front() == '@') name.erase(0, 1);
-      out.push_back(name);
-    }
-    const std::size_t semi = script.find(';', k);
-    if (semi == std::string_view::npos) break;
-    i = semi + 1;
+  try {
+    return bt::script::Script::parse(script).assigned();
+  } catch (const bt::script::ScriptError&) {
+    return {};
   }
-  return out;
 }
 
 }  // namespace uabt::prove

@@ -79,7 +79,8 @@ WorldModel load_world(const std::filesystem::path& path, const std::string& disp
 WorldModel mission_world(const load::Mission& mission);
 
 // The names a script assigns (`x = …`, `x := …`, `x += …`), in order: the state an effect
-// writes.
+// writes (bt::script::Script::assigned). None for a script that does not parse, which the
+// mission's checks and the world's loading refuse.
 std::vector<std::string> assigned_names(std::string_view script);
 
 }  // namespace uabt::prove

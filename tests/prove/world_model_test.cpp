@@ -66,6 +66,10 @@ TEST(WorldModel, AssignedNames) {
   EXPECT_EQ(prove::assigned_names("a := 1; b += a; c == 2; @d = b"),
             (std::vector<std::string>{"a", "b", "d"}));
   EXPECT_TRUE(prove::assigned_names("x == 1").empty());
+  // Read by the script parser, not by scanning text: an assignment on the right of another
+  // writes too, and a string holding `;` and `=` writes nothing.
+  EXPECT_EQ(prove::assigned_names("a := b := 3"), (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(prove::assigned_names("note = 'x = 1; y = 2'"), std::vector<std::string>{"note"});
 }
 
 }  // namespace

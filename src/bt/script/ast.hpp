@@ -89,6 +89,8 @@ class Script {
   std::vector<std::string> names() const;
   // True when a statement assigns (the script may change the blackboard).
   bool writes() const;
+  // The blackboard keys its assignments write, in the order written, once per assignment.
+  std::vector<std::string> assigned() const;
   // True when an assignment sits inside a larger expression, so that an entry may change
   // while the expression that read it is still being evaluated.
   bool nested_assignment() const { return nested_assignment_; }

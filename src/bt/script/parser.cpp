@@ -304,6 +304,17 @@ std::vector<std::string> Script::names() const {
   return out;
 }
 
+std::vector<std::string> Script::assigned() const {
+  std::vector<const Expr*> targets;  // the name on the left of each assignment
+  for (const Expr& e : nodes_)
+    if (is_assignment(e.op) && nodes_[e.a].op == Op::name) targets.push_back(&nodes_[e.a]);
+  std::sort(targets.begin(), targets.end(),
+            [](const Expr* x, const Expr* y) { return x->column < y->column; });
+  std::vector<std::string> out;
+  for (const Expr* target : targets) out.push_back(entry_key(target->name));
+  return out;
+}
+
 bool Script::writes() const {
   return std::any_of(nodes_.begin(), nodes_.end(),
                      [](const Expr& e) { return is_assignment(e.op); });
