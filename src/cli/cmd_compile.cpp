@@ -18,24 +18,18 @@ void register_compile(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
       app.add_subcommand("compile", "Compile an adaptable mission into one BT (Algorithm 1)");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingPath);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("-o,--output", args->output, "output XML file (default: stdout)");
   add_number_option(*cmd, "--bt-format", 3, 4, "BehaviorTree.CPP XML format",
                     [args](std::int64_t format) { args->bt_format = static_cast<int>(format); });
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
-  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
-      ->check(CLI::ExistingFile);
+  add_nodes_option(*cmd, args->nodes);
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
-    auto mission = load_or_complain(args->mission, load_options);
-    if (!mission) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto mission = load_or_complain(args->mission, load_options, exit_code);
+    if (!mission) return;
     compile::Options options;
     options.bt_format = args->bt_format;
     apply_selection(args->selection, options);

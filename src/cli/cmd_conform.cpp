@@ -17,15 +17,12 @@ void register_conform(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "conform", "Prove that a compiled BT implements the mission's requirements");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingPath);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("COMPILED", args->compiled,
                   "compiled BT XML (uabt's, the paper generator's, or hand-edited)")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
-      ->check(CLI::ExistingFile);
+  add_nodes_option(*cmd, args->nodes);
   add_number_option(*cmd, "--timeout-ms", 1, kMaxTimeoutMs,
                     "solver time limit per query (inconclusive fails)",
                     [args](std::int64_t ms) { args->timeout_ms = static_cast<unsigned>(ms); });
@@ -34,11 +31,8 @@ void register_conform(CLI::App& app, int& exit_code) {
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
-    auto mission = load_or_complain(args->mission, load_options);
-    if (!mission) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto mission = load_or_complain(args->mission, load_options, exit_code);
+    if (!mission) return;
     report::ReportInput input = report_input(*mission, {"load", "conform"});
     const std::filesystem::path compiled_path(args->compiled);
     bt::ReadOptions read_options;

@@ -72,9 +72,7 @@ void register_coverage(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "coverage", "What scenarios or monitor traces covered of the campaign's targets");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingDirectory);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("--uplink", args->uplinks,
                   "an uplink package: the targets of the mission with it merged, as uabt tests "
                   "--uplink plans them")

@@ -24,9 +24,9 @@ void register_diff(CLI::App& app, int& exit_code) {
       "diff", "Which states change their selected alternative between two versions");
   cmd->add_option("OLD", args->before, "mission directory as it runs now")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(CLI::ExistingDirectory);
   auto* after = cmd->add_option("NEW", args->after, "mission directory as uplinked")
-                    ->check(CLI::ExistingPath);
+                    ->check(CLI::ExistingDirectory);
   auto* uplink = cmd->add_option("--uplink", args->uplink,
                                  "an uplink package: NEW is OLD with the package merged")
                      ->check(CLI::ExistingDirectory);
@@ -46,12 +46,10 @@ void register_diff(CLI::App& app, int& exit_code) {
     }
     load::LoadOptions merged;
     if (!args->uplink.empty()) merged.uplinks.push_back(args->uplink);
-    auto before = load_or_complain(args->before, {});
-    auto after = load_or_complain(args->uplink.empty() ? args->after : args->before, merged);
-    if (!before || !after) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto before = load_or_complain(args->before, {}, exit_code);
+    auto after =
+        load_or_complain(args->uplink.empty() ? args->after : args->before, merged, exit_code);
+    if (!before || !after) return;
     if (has_errors(before->findings) || has_errors(after->findings)) {
       std::cerr << format_text(before->findings) << format_text(after->findings)
                 << "uabt: diff needs two missions that load without errors\n";

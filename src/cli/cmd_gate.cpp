@@ -22,12 +22,9 @@ void register_gate(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "gate",
       "The pre-uplink gate: verify, compile, conform, and write every report and OUT/tests/");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingPath);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
-  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
-      ->check(CLI::ExistingFile);
+  add_nodes_option(*cmd, args->nodes);
   cmd->add_option("--selection", args->selection, kSelectionHelp)
       ->check(CLI::IsMember({"sequence", "reactive", "optimized"}));
   cmd->add_flag("--allow-overlap", args->allow_overlap,
@@ -46,20 +43,14 @@ void register_gate(CLI::App& app, int& exit_code) {
     check_output_directory(args->out, "--out");  // before the work, not after it
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
-    auto mission = load_or_complain(args->mission, load_options);
-    if (!mission) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto mission = load_or_complain(args->mission, load_options, exit_code);
+    if (!mission) return;
     std::optional<load::Mission> running;
     if (!args->uplink.empty()) {
       running = std::move(mission);
       load_options.uplinks.push_back(args->uplink);
-      mission = load_or_complain(args->mission, load_options);
-      if (!mission) {
-        exit_code = kExitUsage;
-        return;
-      }
+      mission = load_or_complain(args->mission, load_options, exit_code);
+      if (!mission) return;
     }
     gate::Options options;
     options.verify.allow_overlap = args->allow_overlap;

@@ -53,9 +53,7 @@ void register_prove(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "prove", "Prove the mission's guarantees on every run its world model allows");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingDirectory);
+  add_mission_argument(*cmd, args->mission);
   add_number_option(
       *cmd, "--depth", 1, kMaxProveDepth,
       "explore runs of up to this many ticks (default: until every reachable state is seen; "

@@ -125,9 +125,7 @@ void register_realizable(CLI::App& app, int& exit_code) {
       "realizable",
       "Whether any behavior tree can meet the mission's guarantees in every world its "
       "assumptions allow; the minimal conflicts and the inputs that defeat every tree when not");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingDirectory);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("--format", args->format,
                   "text | json (the verdict, conflicts and defeating inputs as data) | sarif | "
                   "junit (the findings, for code scanning and CI) | html (a page with the "

@@ -18,18 +18,13 @@ void register_report(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
       app.add_subcommand("report", "Write the terrain coverage report (HTML, SVG, Markdown)");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingPath);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("--out", args->out, "report directory (default: uabt-report)");
   add_source_root_option(*cmd, args->source_root);
   cmd->callback([args, &exit_code] {
     check_output_directory(args->out, "--out");  // before the work, not after it
-    auto mission = load_or_complain(args->mission, {});
-    if (!mission) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto mission = load_or_complain(args->mission, {}, exit_code);
+    if (!mission) return;
     verify::Result result = verify::verify_mission(*mission, {});
     report::ReportInput input = report_input(*mission, {"load", "verify"});
     input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());

@@ -61,9 +61,7 @@ void register_run(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Run the mission in a simulated world; uplinks go through the gate");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingDirectory);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("--scenario", args->scenario,
                   "scenario JSON (missions/README.md, section \"scenarios/*.json\")")
       ->required()

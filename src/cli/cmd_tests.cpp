@@ -26,9 +26,7 @@ void register_tests(CLI::App& app, int& exit_code) {
       "tests",
       "Write a test campaign (uabt run scenarios) and replay it; OUT/junit.xml; with --uplink, "
       "one more scenario per behaviour change of the last package");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingDirectory);
+  add_mission_argument(*cmd, args->mission);
   cmd->add_option("--uplink", args->uplinks,
                   "an uplink package: the campaign of the mission with it merged")
       ->check(CLI::ExistingDirectory);

@@ -16,11 +16,8 @@ void register_verify(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "verify", "Prove the selection guards unambiguous, complete and reachable");
-  cmd->add_option("MISSION", args->mission, "mission directory")
-      ->required()
-      ->check(CLI::ExistingPath);
-  cmd->add_option("--nodes", args->nodes, "TreeNodesModel of the robot's nodes")
-      ->check(CLI::ExistingFile);
+  add_mission_argument(*cmd, args->mission);
+  add_nodes_option(*cmd, args->nodes);
   add_findings_output_options(*cmd, args->format, args->output);
   add_source_root_option(*cmd, args->source_root);
   cmd->add_flag("--allow-overlap", args->allow_overlap,
@@ -31,11 +28,8 @@ void register_verify(CLI::App& app, int& exit_code) {
   cmd->callback([args, &exit_code] {
     load::LoadOptions load_options;
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
-    auto mission = load_or_complain(args->mission, load_options);
-    if (!mission) {
-      exit_code = kExitUsage;
-      return;
-    }
+    auto mission = load_or_complain(args->mission, load_options, exit_code);
+    if (!mission) return;
     verify::Options options;
     options.allow_overlap = args->allow_overlap;
     options.timeout_ms = args->timeout_ms;

@@ -50,11 +50,24 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, std::int6
       ->type_name("N");
 }
 
+void add_mission_argument(CLI::App& cmd, std::string& mission) {
+  cmd.add_option("MISSION", mission, "mission directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+}
+
+void add_nodes_option(CLI::App& cmd, std::string& nodes) {
+  cmd.add_option("--nodes", nodes, "TreeNodesModel of the robot's nodes")->check(CLI::ExistingFile);
+}
+
 std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
-                                              const load::LoadOptions& options) {
+                                              const load::LoadOptions& options, int& exit_code) {
   std::string error;
   auto mission = load::load_mission(dir, options, error);
-  if (!mission) std::cerr << "uabt: " << dir.generic_string() << ": " << error << "\n";
+  if (!mission) {
+    std::cerr << "uabt: " << dir.generic_string() << ": " << error << "\n";
+    exit_code = kExitUsage;
+  }
   return mission;
 }
 
@@ -99,11 +112,8 @@ std::optional<load::Mission> load_without_errors(const std::string& dir,
                                                  int& exit_code) {
   load::LoadOptions options;
   for (const auto& u : uplinks) options.uplinks.push_back(u);
-  auto mission = load_or_complain(dir, options);
-  if (!mission) {
-    exit_code = kExitUsage;
-    return std::nullopt;
-  }
+  auto mission = load_or_complain(dir, options, exit_code);
+  if (!mission) return std::nullopt;
   std::vector<Finding> errors;
   for (const auto& f : mission->findings)
     if (f.severity == Severity::error) errors.push_back(f);

@@ -48,10 +48,15 @@ CLI::Option* add_number_option(CLI::App& cmd, const std::string& name, std::int6
                                std::int64_t max, const std::string& help,
                                std::function<void(std::int64_t)> set);
 
-// Loads a mission, or prints why it cannot and returns nullopt (exit code 2: not a mission
-// directory at all).
+// MISSION, the argument every command that reads a mission takes: an existing directory.
+void add_mission_argument(CLI::App& cmd, std::string& mission);
+// --nodes FILE: the TreeNodesModel of the robot's nodes, read into LoadOptions::nodes_file.
+void add_nodes_option(CLI::App& cmd, std::string& nodes);
+
+// Loads a mission, or prints why it cannot, sets `exit_code` to 2 (not a mission directory at
+// all) and returns nullopt.
 std::optional<load::Mission> load_or_complain(const std::filesystem::path& dir,
-                                              const load::LoadOptions& options);
+                                              const load::LoadOptions& options, int& exit_code);
 
 // Points the findings located in `from` (a displayed name) at `to` instead.
 void relocate_findings(std::vector<Finding>& findings, const std::string& from,
