@@ -30,12 +30,4 @@ std::string number_misfit(std::string_view literal, bool exact_integers) {
   return "";
 }
 
-std::optional<std::uint64_t> integer_range_size(std::int64_t lo, std::int64_t hi) {
-  if (hi < lo) return 0;
-  // Unsigned subtraction is exact for hi >= lo: the distance is at most 2^64 - 1.
-  const std::uint64_t distance = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
-  if (distance == UINT64_MAX) return std::nullopt;
-  return distance + 1;
-}
-
 }  // namespace uabt

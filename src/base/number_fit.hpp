@@ -13,8 +13,4 @@ namespace uabt {
 // 1e-400 rounds to zero and is accepted). Text that is not a number is left to the parser.
 std::string number_misfit(std::string_view literal, bool exact_integers = false);
 
-// How many integers [lo, hi] holds (0 when hi < lo), computed without overflow; nullopt for
-// the one size no 64-bit count holds, the whole of [-2^63, 2^63 - 1].
-std::optional<std::uint64_t> integer_range_size(std::int64_t lo, std::int64_t hi);
-
 }  // namespace uabt

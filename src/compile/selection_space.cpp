@@ -133,7 +133,6 @@ void ordered_pieces(Dimension& dim, const fretish::Variable& v,
       p.weight = p.open_below || p.open_above ? 1 : integers_between(p.below, p.above);
     if (!dim.integer)
       p.weight = p.point ? 0 : (p.open_below || p.open_above ? 1 : p.above - p.below);
-    if (p.open_below || p.open_above) dim.measured = false;
     if (dim.integer && p.weight == 0) return;  // no state lies there
     dim.pieces.push_back(std::move(p));
   };
@@ -202,7 +201,6 @@ class Builder {
     if (it == atom_index_.end()) {
       it = atom_index_.emplace(text, atoms_.size()).first;
       atoms_.push_back(classify(std::make_shared<Expr>(e), domain_));
-      texts_.push_back(text);
     }
     out.op = CellExpr::Op::atom;
     out.atom = it->second;
@@ -254,30 +252,31 @@ class Builder {
       }
       space.atoms.push_back(std::move(t));
     }
-    space.atom_text = texts_;
   }
 
  private:
   const fretish::Domain& domain_;
   std::vector<Atom> atoms_;
-  std::vector<std::string> texts_;
   std::map<std::string, std::size_t> atom_index_;
 };
 
 }  // namespace
 
-bool evaluate_on_cell(const SelectionSpace& space, const CellExpr& e, std::size_t cell) {
+bool evaluate_on_cell(const SelectionSpace& space, const CellExpr& e, std::size_t cell,
+                      int* ticked) {
   switch (e.op) {
     case CellExpr::Op::constant: return e.value;
-    case CellExpr::Op::atom: return space.atom_holds(e.atom, cell);
-    case CellExpr::Op::negation: return !evaluate_on_cell(space, e.args.at(0), cell);
+    case CellExpr::Op::atom:
+      if (ticked) ++*ticked;
+      return space.atom_holds(e.atom, cell);
+    case CellExpr::Op::negation: return !evaluate_on_cell(space, e.args.at(0), cell, ticked);
     case CellExpr::Op::conjunction:
       for (const auto& a : e.args)
-        if (!evaluate_on_cell(space, a, cell)) return false;
+        if (!evaluate_on_cell(space, a, cell, ticked)) return false;
       return true;
     case CellExpr::Op::disjunction:
       for (const auto& a : e.args)
-        if (evaluate_on_cell(space, a, cell)) return true;
+        if (evaluate_on_cell(space, a, cell, ticked)) return true;
       return false;
   }
   return false;

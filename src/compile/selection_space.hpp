@@ -36,7 +36,6 @@ struct Dimension {
   fretish::ExprPtr atom;      // opaque: the atom itself
   bool integer = false;       // ordered: integer variable
   std::vector<Piece> pieces;  // in order (ordered: ascending)
-  bool measured = true;       // weights are the domain's measure (false: unbounded fallback)
 };
 
 // What an atom decides on a dimension: the pieces where it holds.
@@ -58,8 +57,7 @@ struct CellExpr {
 struct SelectionSpace {
   std::vector<Dimension> dimensions;
   std::vector<AtomTruth> atoms;
-  std::vector<std::string> atom_text;  // FRETISH text of each atom
-  std::vector<CellExpr> guards;        // per requirement, priority order (default: true)
+  std::vector<CellExpr> guards;  // per requirement, priority order (default: true)
   // Cells that satisfy the assumptions: pieces[c * dimensions.size() + d].
   std::vector<std::uint32_t> pieces;
   std::vector<double> weight;  // per cell
@@ -74,7 +72,11 @@ struct SelectionSpace {
   }
 };
 
-bool evaluate_on_cell(const SelectionSpace& space, const CellExpr& e, std::size_t cell);
+// The condition's value on a cell, evaluated as the compiled tree ticks it: short-circuit, left
+// to right (Algorithm 1: Sequence, Fallback, Inverter). `ticked`, when given, counts the atoms
+// (condition nodes) evaluated.
+bool evaluate_on_cell(const SelectionSpace& space, const CellExpr& e, std::size_t cell,
+                      int* ticked = nullptr);
 
 // A state of the cell: one value per variable dimension (inside the piece; integers whole).
 // nullopt when a dimension is an opaque atom (no single variable to set).

@@ -57,9 +57,8 @@ void identify_call(Context& ctx, const std::string& adaptable, Branch& b) {
   const load::Mission& m = ctx.mission();
   for (const auto& alt : m.alternatives)
     if (alt.adaptable == adaptable && alt.tree_id == *id) b.alternatives.push_back(alt.name);
-  b.called_by_id = !b.alternatives.empty();
   const bt::TreeDef* tree = ctx.compiled().find_tree(*id);
-  if (b.called_by_id || tree == nullptr) return;  // a missing tree is a dangling SubTree
+  if (!b.alternatives.empty() || tree == nullptr) return;  // a missing tree is a dangling SubTree
   // The paper's generator or a hand edit may have renamed the tree: the same tree will do.
   for (const auto& alt : m.alternatives) {
     if (alt.adaptable != adaptable) continue;

@@ -22,7 +22,6 @@ struct Branch {
   // Names of the adaptable's alternatives the call runs (by tree ID, else by a tree equal to
   // the alternative's main tree); empty when it runs none of them.
   std::vector<std::string> alternatives;
-  bool called_by_id = false;  // matched by tree ID (the tree must then equal the source)
 };
 
 struct Selector {

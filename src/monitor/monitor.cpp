@@ -211,8 +211,4 @@ Value value_of(const Val& v, const Symbols& symbols) {
   return Value::of_enum("?");
 }
 
-std::string value_text(const Val& v, const Symbols& symbols) {
-  return value_of(v, symbols).to_string();
-}
-
 }  // namespace uabt::monitor

@@ -81,7 +81,4 @@ class RequirementMonitor {
 // A value for reports, typed: true/false, a number (number_text, number_json), a symbol's name;
 // a value the trace did not give is the name "?".
 Value value_of(const Val& v, const Symbols& symbols);
-// Its text: value_of(v, symbols).to_string().
-std::string value_text(const Val& v, const Symbols& symbols);
-
 }  // namespace uabt::monitor

@@ -112,16 +112,6 @@ TEST(JsonInput, EqualKeysInDifferentObjectsAndEqualValuesAreFine) {
       << error.message;
 }
 
-TEST(NumberFit, IntegerRangeSizesDoNotOverflow) {
-  constexpr auto lowest = std::numeric_limits<std::int64_t>::min();
-  constexpr auto highest = std::numeric_limits<std::int64_t>::max();
-  EXPECT_EQ(integer_range_size(lowest, highest), std::nullopt);
-  EXPECT_EQ(integer_range_size(0, highest), std::uint64_t{1} << 63);
-  EXPECT_EQ(integer_range_size(lowest, -1), std::uint64_t{1} << 63);
-  EXPECT_EQ(integer_range_size(-1, 1), 3u);
-  EXPECT_EQ(integer_range_size(1, -1), 0u);
-}
-
 // --- every JSON input --------------------------------------------------------------------------
 
 // What `parse` throws as `Error`, or "accepted".

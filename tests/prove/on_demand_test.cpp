@@ -469,7 +469,9 @@ TEST(OnDemand, ALongDisjunctionOfAGuardIsTheCellsOfItsRange) {
 TEST(Numbers, PrintAsPeopleWriteThem) {
   // What counterexample tables, the HTML timeline and run's violation lines show.
   monitor::Symbols symbols;
-  auto text = [&](double x) { return monitor::value_text(monitor::Val::of_number(x), symbols); };
+  auto text = [&](double x) {
+    return monitor::value_of(monitor::Val::of_number(x), symbols).to_string();
+  };
   EXPECT_EQ(text(50), "50");
   EXPECT_EQ(text(10), "10");
   EXPECT_EQ(text(9.5), "9.5");
