@@ -193,24 +193,6 @@ class Greedy {
   Decision decision_;
 };
 
-// Conditions a short-circuit evaluation ticks (Algorithm 1: Sequence, Fallback, Inverter).
-bool ticks(const SelectionSpace& space, const CellExpr& e, std::size_t cell, int& count) {
-  switch (e.op) {
-    case CellExpr::Op::constant: return e.value;
-    case CellExpr::Op::atom: ++count; return space.atom_holds(e.atom, cell);
-    case CellExpr::Op::negation: return !ticks(space, e.args.at(0), cell, count);
-    case CellExpr::Op::conjunction:
-      for (const auto& a : e.args)
-        if (!ticks(space, a, cell, count)) return false;
-      return true;
-    case CellExpr::Op::disjunction:
-      for (const auto& a : e.args)
-        if (ticks(space, a, cell, count)) return true;
-      return false;
-  }
-  return false;
-}
-
 template <typename PerCell>
 SelectionCost summarize(const SelectionSpace& space, PerCell cost_of) {
   SelectionCost cost;
@@ -252,7 +234,7 @@ SelectionCost algorithm1_cost(const SelectionSpace& space) {
   return summarize(space, [&](std::size_t c) {
     int n = 0;
     for (const auto& g : space.guards)
-      if (ticks(space, g, c, n)) break;
+      if (evaluate_on_cell(space, g, c, &n)) break;
     return n;
   });
 }

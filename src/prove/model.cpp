@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "bt/node_kinds.hpp"
+#include "bt/script/ast.hpp"
 #include "fretish/expr.hpp"
 #include "monitor/monitor.hpp"
 #include "monitor/property_set.hpp"
@@ -547,9 +548,6 @@ void Model::mark_read_once() {
   };
   for (const auto& t : doc.trees) scan(t.root);
   if (loops) return;
-  auto bare = [](const std::string& name) {
-    return !name.empty() && name.front() == '@' ? name.substr(1) : name;
-  };
   std::set<std::string, std::less<>> env;
   for (const StateVar& v : vars)
     if (v.env && v.relevant) env.insert(v.name);
@@ -558,15 +556,15 @@ void Model::mark_read_once() {
     if (leaf.condition) ++sites[leaf.label];
     for (const auto* effect : {&leaf.on_success, &leaf.on_failure})
       if (*effect)
-        for (const auto& n : (*effect)->names()) sites[bare(n)] += 2;
+        for (const auto& n : (*effect)->names()) sites[bt::script::entry_key(n)] += 2;
   }
   for (const auto& [program, what] : tree_scripts) {
     std::set<std::string> names;
     for (const auto& n : program.names())
-      if (env.contains(bare(n))) names.insert(bare(n));
+      if (env.contains(bt::script::entry_key(n))) names.insert(bt::script::entry_key(n));
     for (const auto& n : names) sites[n] += names.size() > 1 ? 2 : 1;
   }
-  for (const auto& key : port_reads) sites[bare(key)] += 2;
+  for (const auto& key : port_reads) sites[bt::script::entry_key(key)] += 2;
   for (StateVar& v : vars) v.read_once = v.env && v.relevant && sites[v.name] == 1;
 }
 

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "bt/node_kinds.hpp"
+#include "bt/script/load_check.hpp"
 #include "monitor/templates.hpp"
 #include "prove/prove.hpp"
 #include "runtime/tick_observation.hpp"
@@ -35,13 +36,6 @@ bool modelled(NK kind) {
                                      NK::always_success, NK::always_failure,
                                      NK::script,         NK::script_condition};
   return kinds.contains(kind);
-}
-
-bool pre_or_post_condition(const std::string& attribute) {
-  static const std::set<std::string, std::less<>> names = {"_failureIf", "_successIf", "_skipIf",
-                                                           "_while",     "_onHalted",  "_onFailure",
-                                                           "_onSuccess", "_post"};
-  return names.contains(attribute);
 }
 
 bool has_counter(NK k) {
@@ -182,7 +176,7 @@ struct SymbolicTick::Impl {
       for (NodeId c : d.children) stack.push_back(c);
       if (info.element)
         for (const auto& [attr, value] : info.element->attributes)
-          if (pre_or_post_condition(attr))
+          if (bt::script::is_condition_attribute(attr))
             throw SymbolicUnsupported(d.where + ": the symbolic engine does not model " + attr);
       d.kind = bt::node_kind(info.kind);
       if (modelled(d.kind)) {

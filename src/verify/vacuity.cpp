@@ -337,11 +337,6 @@ void decide_occurrences(const fretish::Expr& guard, Session& session,
   }
 }
 
-void collect_names(const fretish::Expr& e, std::vector<std::string>& out) {
-  if (e.kind == fretish::ExprKind::identifier) out.push_back(e.text);
-  for (const auto& a : e.args) collect_names(*a, out);
-}
-
 void flatten_and(const fretish::ExprPtr& e, std::vector<fretish::ExprPtr>& out) {
   if (e->kind == fretish::ExprKind::logical_and) {
     for (const auto& a : e->args) flatten_and(a, out);
@@ -378,15 +373,11 @@ std::vector<fretish::ExprPtr> independent_parts(const fretish::ExprPtr& guard,
   };
   std::vector<std::vector<std::string>> names(conjuncts.size());
   for (std::size_t i = 0; i < conjuncts.size(); ++i) {
-    collect_names(*conjuncts[i], names[i]);
+    names[i] = fretish::identifiers_of(*conjuncts[i]);
     join(names[i]);
   }
-  for (const auto& a : domain.assumptions) {
-    if (!a.expr) continue;  // did not parse: not part of D
-    std::vector<std::string> read;
-    collect_names(*a.expr, read);
-    join(read);
-  }
+  for (const auto& a : domain.assumptions)
+    if (a.expr) join(fretish::identifiers_of(*a.expr));  // one that did not parse is not in D
   // Parts in the order of their first conjunct; a conjunct that reads no name (a constant
   // comparison) stays with the first part.
   std::string first_root;

@@ -22,11 +22,6 @@ using detail::Answer;
 
 namespace {
 
-void names_in(const fretish::Expr& e, std::vector<std::string>& out) {
-  if (e.kind == fretish::ExprKind::identifier) out.push_back(e.text);
-  for (const auto& arg : e.args) names_in(*arg, out);
-}
-
 // Builds the node's guards; false when one of them does not type-check.
 bool build_guards(detail::Node& node, const std::vector<const fretish::SelectionRequirement*>& reqs,
                   detail::Session& session) {
@@ -143,7 +138,8 @@ NodeOutcome analyse_node(const load::Mission& mission, const NodeJob& job, const
     const smt::TypeInfo* t = encoder.typing().find(*a.expr);
     if (t == nullptr || t->sort != smt::Sort::boolean) continue;
     assumptions.push_back(a.expr.get());
-    names_in(*a.expr, assumed_names);
+    for (std::string& name : fretish::identifiers_of(*a.expr))
+      assumed_names.push_back(std::move(name));
   }
   const Answer domain = detail::check_domain(session, parts, out.domain_findings);
 

@@ -117,9 +117,7 @@ class Builder {
       auto [index, done] = work.back();
       work.pop_back();
       const bt::script::Expr& e = nodes[index];
-      const bool assigns = e.op == Op::assign_create || e.op == Op::assign ||
-                           e.op == Op::add_assign || e.op == Op::sub_assign ||
-                           e.op == Op::mul_assign || e.op == Op::div_assign;
+      const bool assigns = bt::script::is_assignment(e.op);
       if (done) {
         const std::string& key = nodes[e.a].name;
         written.insert(key);

@@ -19,14 +19,14 @@ std::vector<Finding> check_script_divisions(const FlowGraph& g, const load::Miss
     const std::string where = s.attribute == "code" ? s.node_kind : s.node_kind + " " + s.attribute;
     for (const std::uint32_t st : s.script->statements()) {
       const bt::script::Expr& e = nodes[st];
-      const bool assigns = e.op >= Op::assign_create;
+      const bool assigns = bt::script::is_assignment(e.op);
       const ScriptReading r = read_script_expression(*s.script, assigns ? e.b : st, mission.domain);
       if (!r.expr || !questions.over_domain(*r.expr)) continue;
       fretish::ExprPtr expr = r.expr;
       if (e.op == Op::div_assign) {  // `x /= d` divides x by d
-        std::string name = nodes[e.a].name;
-        if (name.starts_with('@')) name.erase(0, 1);
-        expr = fretish::make_expr(ExprKind::div, {fretish::make_identifier(name), expr});
+        expr = fretish::make_expr(
+            ExprKind::div,
+            {fretish::make_identifier(bt::script::entry_key(nodes[e.a].name)), expr});
         if (!questions.over_domain(*expr)) continue;
       }
       // A value is checked as the condition `value = value`: its divisions are the same.

@@ -9,17 +9,6 @@
 
 namespace uabt::verify::tree {
 
-namespace {
-
-bool reads_state(const fretish::Expr& e) {
-  if (e.kind == fretish::ExprKind::identifier) return true;
-  for (const auto& a : e.args)
-    if (a && reads_state(*a)) return true;
-  return false;
-}
-
-}  // namespace
-
 std::vector<Finding> check_script_range(const FlowGraph& g, const load::Mission& mission,
                                         DomainQuestions& questions) {
   using bt::script::Op;
@@ -30,8 +19,7 @@ std::vector<Finding> check_script_range(const FlowGraph& g, const load::Mission&
     for (const std::uint32_t st : s.script->statements()) {
       const bt::script::Expr& e = nodes[st];
       if (e.op != Op::assign_create && e.op != Op::assign) continue;
-      std::string name = nodes[e.a].name;
-      if (name.starts_with('@')) name.erase(0, 1);
+      const std::string name = bt::script::entry_key(nodes[e.a].name);
       const fretish::Variable* v = mission.domain.find(name);
       if (v == nullptr || !v->declared || !v->invalid.empty() ||
           (v->type != fretish::VarType::integer && v->type != fretish::VarType::real) ||
@@ -53,7 +41,7 @@ std::vector<Finding> check_script_range(const FlowGraph& g, const load::Mission&
       if (!fits.typed || !fits.decided || fits.possible) continue;
       // A value that reads the state: one state where it is outside, as the witness.
       DomainQuestions::Answer example;
-      if (reads_state(*r.expr))
+      if (!fretish::identifiers_of(*r.expr).empty())
         example = questions.ask(*fretish::make_expr(fretish::ExprKind::logical_not, {in_range}),
                                 s.location);
       const std::string range = fretish::declaration_text(*v);
