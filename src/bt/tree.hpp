@@ -29,6 +29,12 @@ struct Node {
   bool operator==(const Node& other) const;  // tag, attributes, children; not positions
 };
 
+// The path of child `index` of the node at `parent`, as compile's trace, conform and the
+// engine's tree_path write a node: `<tree>/<RootTag>/<Tag>[i]/…`.
+inline std::string child_path(const std::string& parent, const Node& child, std::size_t index) {
+  return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
+}
+
 // A port value that names a blackboard entry, as BT.CPP 4 reads it: `{key}` → key, and `{=}`
 // → the entry named like the port; nullopt for a literal.
 std::optional<std::string> blackboard_key(const std::string& port, const std::string& value);

@@ -15,9 +15,7 @@ namespace uabt::compile {
 
 namespace {
 
-std::string child_path(const std::string& parent, const bt::Node& child, std::size_t index) {
-  return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
-}
+using bt::child_path;
 
 // Replaces every <Adaptable ID="A"/> with <SubTree ID="A" _autoremap="true"/> (v4) or its
 // v3 spelling, keeping a `name` the engineer gave it.

@@ -15,10 +15,6 @@ namespace {
 
 using K = bt::NodeKind;
 
-std::string path_of(const std::string& parent, const bt::Node& child, std::size_t index) {
-  return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
-}
-
 class Emitter {
  public:
   Emitter(const load::Mission& m, const std::string& adaptable,
@@ -74,7 +70,7 @@ class Emitter {
     }
     out.push_back(e);
     for (std::size_t i = 0; i < n.children.size(); ++i)
-      trace(n.children[i], path_of(path, n.children[i], i), out, leaf);
+      trace(n.children[i], bt::child_path(path, n.children[i], i), out, leaf);
   }
 
  private:

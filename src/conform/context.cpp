@@ -6,10 +6,6 @@ std::string root_path(const bt::TreeDef& tree) {
   return tree.id + "/" + tree.root.tag;
 }
 
-std::string child_path(const std::string& parent, const bt::Node& child, std::size_t index) {
-  return parent + "/" + child.tag + "[" + std::to_string(index) + "]";
-}
-
 bool is_remap_attribute(const std::string& name, int bt_format) {
   return bt_format == 3 ? name == "__shared_blackboard" : name == "_autoremap";
 }

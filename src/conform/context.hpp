@@ -11,7 +11,7 @@ namespace uabt::conform {
 
 // Paths as compile's trace writes them: `<tree>/<RootTag>/<Tag>[i]/…`.
 std::string root_path(const bt::TreeDef& tree);
-std::string child_path(const std::string& parent, const bt::Node& child, std::size_t index);
+using bt::child_path;
 
 // The remapping attribute a SubTree call may carry: `_autoremap="true"` (v4) or
 // `__shared_blackboard="true"` (v3). Anything else on the call is a port remapping.

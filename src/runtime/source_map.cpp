@@ -38,8 +38,7 @@ std::string path_at(const bt::Node& node, const std::string& path, int line, int
   if (node.line == line && node.column == column) return path;
   for (std::size_t i = 0; i < node.children.size(); ++i) {
     const bt::Node& child = node.children[i];
-    std::string found =
-        path_at(child, path + "/" + child.tag + "[" + std::to_string(i) + "]", line, column);
+    std::string found = path_at(child, bt::child_path(path, child, i), line, column);
     if (!found.empty()) return found;
   }
   return "";
