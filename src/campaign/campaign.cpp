@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/number_text.hpp"
+#include "base/text.hpp"
 #include "campaign/guarantee.hpp"
 #include "campaign/node.hpp"
 #include "campaign/world_play.hpp"
@@ -136,8 +137,8 @@ std::string selection_problem(const RunRecord& run, const std::string& adaptable
       break;
     }
   if (seen == nullptr)
-    return adaptable + " is not ticked (" + ticks_text(run.ticks) + ", verdict " + run.verdict +
-           (run.error.empty() ? "" : ": " + run.error) + ")";
+    return adaptable + " is not ticked (" + count_text(run.ticks, "tick") + ", verdict " +
+           run.verdict + (run.error.empty() ? "" : ": " + run.error) + ")";
   if (seen->alternative != want)
     return adaptable + " selected " + (seen->alternative.empty() ? "nothing" : seen->alternative) +
            " at tick " + std::to_string(seen->tick) + ", expected " +
@@ -472,7 +473,7 @@ std::string campaign_junit(const Campaign& campaign) {
       t.failure_type = "purpose-not-reached";
       for (const auto& p : s.problems) t.failure_text += p + "\n";
     }
-    t.system_out = s.description + "\nreplayed: " + ticks_text(s.run.ticks) + ", " +
+    t.system_out = s.description + "\nreplayed: " + count_text(s.run.ticks, "tick") + ", " +
                    (s.run.verdict.empty() ? "not run" : s.run.verdict + " so far") + "\n";
     suite.cases.push_back(std::move(t));
   }
@@ -501,7 +502,7 @@ std::string coverage_text(const CoverageReport& report) {
   for (const auto& r : report.runs) {
     out += "  " + r.source + ": " + std::to_string(r.observations.size()) +
            (r.observations.size() == 1 ? " observation in " : " observations in ") +
-           ticks_text(r.ticks) + (r.error.empty() ? "" : ", stopped: " + r.error) + "\n";
+           count_text(r.ticks, "tick") + (r.error.empty() ? "" : ", stopped: " + r.error) + "\n";
   }
   for (const auto& v : report.visits)
     out += "  " + v.adaptable + ": " +

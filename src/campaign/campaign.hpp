@@ -82,7 +82,6 @@ struct NodeVisit {
   bool counted = true;      // every variable discrete: a cell is a state
   std::uint64_t cells = 0;  // cells of the domain
   Visited visited;
-  std::vector<std::uint64_t> states;  // the visited cells, by index in the node's space
   // A node whose space is not enumerated: why, and no share is measured ("" otherwise).
   std::string share_not_computed;
   struct TargetShare {

@@ -151,11 +151,6 @@ inline std::string numbered(const std::string& base, std::size_t n, std::size_t 
   return base + "-" + digits;
 }
 
-// "1 tick", "5 ticks".
-inline std::string ticks_text(std::uint64_t ticks) {
-  return std::to_string(ticks) + (ticks == 1 ? " tick" : " ticks");
-}
-
 // A number inside (lo, hi) that reads well: an integer, else the fewest decimals (up to six).
 inline std::optional<verify::detail::Fraction> simple_inside(const verify::detail::Fraction& lo,
                                                              const verify::detail::Fraction& hi) {

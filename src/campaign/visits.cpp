@@ -107,7 +107,6 @@ std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
       }
     const Fraction whole = n.space->measure(n.domain);
     visit.visited = measure(n, states, nullptr, whole);
-    visit.states.assign(states.begin(), states.end());
     for (const auto& local : n.locals) {
       if (local.pair) continue;
       NodeVisit::TargetShare t;

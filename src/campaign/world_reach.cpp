@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "base/text.hpp"
 #include "campaign/node.hpp"
 #include "fretish/parse.hpp"
 
@@ -208,7 +209,7 @@ void reach_in_world(const load::Mission& mission, const Model& model, const Repl
                  (problem[g].empty() ? std::string() : " (" + problem[g] + ")");
         return false;
       case prove::Verdict::bounded:
-        reason = "not decided within " + ticks_text(a.depth);
+        reason = "not decided within " + count_text(a.depth, "tick");
         return false;
       case prove::Verdict::vacuous: reason = "world.json leaves no run: " + a.reason; return true;
       case prove::Verdict::unsupported:

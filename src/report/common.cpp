@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <numeric>
 
+#include "base/text.hpp"
+
 namespace uabt::report::detail {
 
 nlohmann::ordered_json witness_json(const State& state) {
@@ -182,11 +184,8 @@ SeverityCounts count_severities(const std::vector<Finding>& findings) {
 }
 
 std::string counts_text(const SeverityCounts& counts) {
-  auto item = [](std::size_t n, const char* word) {
-    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-  };
-  return item(counts.errors, "error") + ", " + item(counts.warnings, "warning") + ", " +
-         item(counts.notes, "note");
+  return count_text(counts.errors, "error") + ", " + count_text(counts.warnings, "warning") + ", " +
+         count_text(counts.notes, "note");
 }
 
 const char* alternative_colour(std::size_t index) {
@@ -195,17 +194,6 @@ const char* alternative_colour(std::size_t index) {
       "#8c564b", "#9467bd", "#17becf", "#bcbd22", "#a6761d", "#1b9e77",
   };
   return kPalette[index % (sizeof kPalette / sizeof kPalette[0])];
-}
-
-std::vector<const fretish::SelectionRequirement*> selections_of(const load::Mission& mission,
-                                                                const std::string& adaptable) {
-  std::vector<const fretish::SelectionRequirement*> guarded, defaults;
-  for (const auto& selection : mission.selections) {
-    if (selection.adaptable != adaptable) continue;
-    (selection.guard ? guarded : defaults).push_back(&selection);
-  }
-  guarded.insert(guarded.end(), defaults.begin(), defaults.end());
-  return guarded;
 }
 
 const fretish::Requirement* find_requirement(const load::Mission& mission, const std::string& id) {
@@ -236,10 +224,6 @@ std::string html_code(std::string_view text) {
 
 std::string alternative_text(const std::string& alternative) {
   return alternative.empty() ? "(nothing: the node fails)" : alternative;
-}
-
-std::string states_text(std::uint64_t n) {
-  return std::to_string(n) + (n == 1 ? " state" : " states");
 }
 
 }  // namespace uabt::report::detail

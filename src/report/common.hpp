@@ -42,8 +42,6 @@ std::string html_escape(std::string_view text);
 std::string html_code(std::string_view text);
 // An alternative as a report names it: "" (no alternative selected) is the node failing.
 std::string alternative_text(const std::string& alternative);
-// "1 state", "5 states".
-std::string states_text(std::uint64_t n);
 
 // An SVG picture as inline HTML: without its namespace declaration, which HTML needs not, so
 // that a page holds no URL.
@@ -78,10 +76,7 @@ const char* alternative_colour(std::size_t index);
 inline constexpr const char* kGapColour = "#d62728";
 inline constexpr const char* kOverlapColour = "#4d4d4d";
 
-// The selection requirements of one adaptable node in priority order (default last), and the
-// parsed requirement of an id; both from the loaded mission.
-std::vector<const fretish::SelectionRequirement*> selections_of(const load::Mission& mission,
-                                                                const std::string& adaptable);
+// The parsed requirement of an id, from the loaded mission.
 const fretish::Requirement* find_requirement(const load::Mission& mission, const std::string& id);
 
 // The adaptable nodes a report shows, in mission order, then ids that only findings or coverage

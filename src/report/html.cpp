@@ -237,7 +237,7 @@ void requirements_html(const ReportInput& input, const std::string& adaptable, s
     out += "<p>The mission could not be loaded: its requirements are not shown.</p>\n";
     return;
   }
-  const auto selections = detail::selections_of(*input.mission, adaptable);
+  const auto selections = input.mission->selections_for(adaptable);
   if (selections.empty()) {
     out +=
         "<p class=\"callout\">No selection requirement names this node: it cannot "

@@ -5,6 +5,7 @@
 
 #include "base/diagnostics.hpp"
 #include "base/number_text.hpp"
+#include "base/text.hpp"
 #include "report/common.hpp"
 #include "report/coverage_view.hpp"
 
@@ -13,7 +14,6 @@ namespace uabt::report {
 namespace {
 
 using detail::alternative_text;
-using detail::states_text;
 
 using Json = nlohmann::ordered_json;
 
@@ -65,7 +65,7 @@ std::string impact_text(const verify::Impact& impact) {
     for (const auto& c : node.changes) {
       out += "  " + move_text(c);
       if (node.counted)
-        out += ": " + states_text(c.states) + " (" + c.share.text + ")";
+        out += ": " + count_text(c.states, "state") + " (" + c.share.text + ")";
       else if (shares_only(node))
         out += ": " + space_share(c.share);
       out += "\n    e.g. " + format_state(c.example) + "\n";
@@ -138,8 +138,8 @@ std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
       message += "the uplink " + std::string(node.status == "added" ? "adds" : "removes") +
                  " this adaptable node's requirements";
     else if (node.counted)
-      message += std::to_string(node.changed_states) + " of " + states_text(node.states) + " (" +
-                 node.changed_share.text + ") change their alternative";
+      message += std::to_string(node.changed_states) + " of " + count_text(node.states, "state") +
+                 " (" + node.changed_share.text + ") change their alternative";
     else if (shares_only(node))
       message += space_share(node.changed_share) + " changes its alternative";
     else
@@ -150,7 +150,7 @@ std::vector<Finding> behaviour_change_findings(const verify::Impact& impact,
     for (const auto& c : node.changes) {
       std::string note = move_text(c);
       if (node.counted)
-        note += ": " + states_text(c.states) + " (" + c.share.text + ")";
+        note += ": " + count_text(c.states, "state") + " (" + c.share.text + ")";
       else if (shares_only(node))
         note += ": " + space_share(c.share);
       note += ", e.g. " + format_state(c.example);

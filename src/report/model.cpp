@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "base/text.hpp"
+
 namespace uabt::report {
 
 std::string ReportInput::verdict_text() const {
@@ -32,15 +34,12 @@ std::string ReportInput::banner() const {
 
 std::string TestCampaign::headline() const {
   if (!not_built.empty()) return "no test campaign: " + not_built;
-  auto plural = [](std::size_t n, const char* word) {
-    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-  };
-  std::string out = directory + ": " + plural(scenarios, "scenario");
+  std::string out = directory + ": " + count_text(scenarios, "scenario");
   if (change_scenarios > 0)
     out += " (" + std::to_string(change_scenarios) + " for " +
            (change_scenarios == 1 ? "a behaviour change" : "behaviour changes") + ")";
   return out + (scenarios == 1 ? " covers " : " cover ") + std::to_string(covered) + " of " +
-         plural(reachable, "reachable target") + "; " + plural(targets, "target") + ", " +
+         count_text(reachable, "reachable target") + "; " + count_text(targets, "target") + ", " +
          std::to_string(targets - reachable - undecided.size()) + " unreachable" +
          (undecided.empty() ? "" : ", " + std::to_string(undecided.size()) + " not decided");
 }

@@ -18,13 +18,9 @@ using Json = nlohmann::ordered_json;
 // The base of every artifact URI: the source root (--source-root, default the git work tree).
 constexpr const char* kSourceRoot = "%SRCROOT%";
 
+// SARIF's levels bear uabt's severity names: error, warning, note.
 const char* sarif_level(Severity severity) {
-  switch (severity) {
-    case Severity::error: return "error";
-    case Severity::warning: return "warning";
-    case Severity::note: return "note";
-  }
-  return "error";
+  return severity_name(severity);
 }
 
 // RFC 3986: keep unreserved characters and '/', percent-encode every other byte, so that a

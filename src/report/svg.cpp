@@ -7,6 +7,7 @@
 #include <set>
 #include <tuple>
 
+#include "base/text.hpp"
 #include "fretish/expr.hpp"
 #include "report/common.hpp"
 #include "report/coverage_view.hpp"
@@ -19,7 +20,6 @@ namespace {
 
 using detail::kGapColour;
 using detail::kOverlapColour;
-using detail::states_text;
 
 constexpr double kWidth = 720;
 constexpr double kMargin = 10;
@@ -112,7 +112,7 @@ std::string coverage_svg(const verify::Coverage& coverage) {
   // Counted nodes say states; measured ones the share of the space (exact beside it).
   auto amount = [&](std::uint64_t states, const std::optional<detail::ShownShare>& share) {
     if (coverage.counted)
-      return states_text(states) + " (" + detail::percent(states, coverage.states) + ")";
+      return count_text(states, "state") + " (" + detail::percent(states, coverage.states) + ")";
     return share ? detail::share_text(*share) + " of the space" : std::string("?");
   };
   const bool boundary_gap =
@@ -242,7 +242,7 @@ std::string coverage_svg(const verify::Coverage& coverage) {
   std::string out = svg_open(kWidth, height, "Terrain coverage of " + coverage.adaptable);
   out += patterns(prefix);
   std::string heading = coverage.adaptable + ": ";
-  heading += coverage.counted ? states_text(coverage.states) + " in the domain"
+  heading += coverage.counted ? count_text(coverage.states, "state") + " in the domain"
              : coverage.measured
                  ? "the domain measured exactly (measure " + coverage.measure.text + ")"
                  : std::string("state space not measured");

@@ -27,7 +27,8 @@ std::string priority_text(const load::UplinkMerge& m) {
   return std::to_string(m.priority) + " of " + std::to_string(m.of);
 }
 
-std::string count_text(const verify::NodeImpact& node, const verify::SelectionChange& change) {
+std::string changed_states_text(const verify::NodeImpact& node,
+                                const verify::SelectionChange& change) {
   if (node.counted)
     return std::to_string(change.states) + " (" + change.share.text + ", " +
            percent(change.states, node.states) + ")";
@@ -156,7 +157,7 @@ std::string uplink_markdown(const UplinkChange& uplink) {
     out += "\n  | From | To | States | Example |\n  |---|---|---:|---|\n";
     for (const auto& c : node.changes)
       out += "  | " + span(alternative_text(c.from)) + " | " + span(alternative_text(c.to)) +
-             " | " + count_text(node, c) + " | " + span(format_state(c.example)) + " |\n";
+             " | " + changed_states_text(node, c) + " | " + span(format_state(c.example)) + " |\n";
   }
   return out;
 }
@@ -205,8 +206,9 @@ std::string uplink_html(const UplinkChange& uplink) {
         "</thead>\n<tbody>\n";
     for (const auto& c : node.changes)
       out += "<tr><td>" + html_code(alternative_text(c.from)) + "</td><td>" +
-             html_code(alternative_text(c.to)) + "</td><td>" + html_escape(count_text(node, c)) +
-             "</td><td>" + html_code(format_state(c.example)) + "</td></tr>\n";
+             html_code(alternative_text(c.to)) + "</td><td>" +
+             html_escape(changed_states_text(node, c)) + "</td><td>" +
+             html_code(format_state(c.example)) + "</td></tr>\n";
     out += "</tbody></table>\n";
   }
   out += "</section>\n";
