@@ -30,15 +30,6 @@ const char* criterion_name(Criterion c) {
   return "decision";
 }
 
-namespace {
-
-Value real_value(const Fraction& x) {
-  const std::string decimal = x.decimal();
-  return Value::of_real(x.to_double(), decimal);
-}
-
-}  // namespace
-
 std::string Model::Node::key(std::uint64_t state) const {
   return std::string(reinterpret_cast<const char*>(&sigs[state * words]), words * 8);
 }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/number_text.hpp"
 #include "campaign/campaign.hpp"
 #include "fretish/selection.hpp"
 #include "smt/evaluate.hpp"
@@ -177,6 +178,15 @@ inline State in_domain_order(const fretish::Domain& domain, State state) {
     return ra != rb ? ra < rb : (ra == domain.variables.size() && a.first < b.first);
   });
   return state;
+}
+
+// A real as a scenario writes it: the short decimal when there is one, else the nearest double
+// (1/3 as 0.3333333333333333), which a scenario can carry and where the tree's arithmetic, a
+// double's as in BehaviorTree.CPP, lies where 1/3 does.
+inline Value real_value(const verify::detail::Fraction& x) {
+  const std::string decimal = x.decimal();
+  if (decimal.find('/') == std::string::npos) return Value::of_real(x.to_double(), decimal);
+  return Value::of_real(x.to_double(), number_text(x.to_double()));
 }
 
 // A number as a FRETISH condition reads it: "2.5", "(-3)", "(1/3)".

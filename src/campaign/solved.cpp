@@ -29,13 +29,6 @@ constexpr unsigned kTimeoutMs = 10000;
 // node is not solved (no hang).
 constexpr std::size_t kMaxAtoms = 2048;
 
-// A real as the domain writes it: the short decimal when there is one, else the nearest double.
-Value real_value(const Fraction& x) {
-  const std::string decimal = x.decimal();
-  if (decimal.find('/') == std::string::npos) return Value::of_real(x.to_double(), decimal);
-  return Value::of_real(x.to_double(), number_text(x.to_double()));
-}
-
 std::optional<Fraction> bound(const std::string& text) {
   if (text.empty()) return std::nullopt;
   return Fraction::parse(text);

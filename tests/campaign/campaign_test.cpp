@@ -436,6 +436,37 @@ std::map<std::string, std::string> outcome(const campaign::Campaign& c) {
   return out;
 }
 
+TEST(CampaignSolved, ABreakpointNoDecimalWritesGetsANumberInEveryScenario) {
+  // 3 * slope > 1 changes at slope = 1/3, which no JSON number is: enumerated and solved nodes
+  // both write a real as one real_value does, a number a scenario carries (the nearest double),
+  // never the text "1/3", which uabt run would refuse as a string for a real.
+  TempMission dir({{"mission.xml", mission_with("    <Adaptable ID=\"node\"/>")},
+                   {"domain.fret", "real slope in [0, 1]\n"},
+                   {"requirements.fret",
+                    "R1: In node if 3 * slope > 1 Mission shall satisfy selected_alt = high\n"
+                    "Other: In node Mission shall satisfy selected_alt = other\n"},
+                   {"alternatives/node/high.xml", alternative_tree("high", "<AlwaysSuccess/>")},
+                   {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}});
+  const load::Mission m = load(dir.dir());
+  for (const bool solve : {false, true}) {
+    campaign::Options options;
+    options.criteria = {Criterion::boundary};
+    options.solve_every_node = solve;
+    const campaign::Campaign c = campaign::build_campaign(m, options);
+    ASSERT_EQ(c.targets.size(), 3u);
+    for (const auto& t : c.targets)
+      for (const State& witness : t.witness)
+        for (const auto& [name, value] : witness)
+          EXPECT_EQ(value.to_string().find('/'), std::string::npos) << t.id << " solve " << solve;
+    EXPECT_EQ(outcome(c)["node/boundary/slope/1/3/below"], "covered") << "solve " << solve;
+    EXPECT_EQ(outcome(c)["node/boundary/slope/1/3/above"], "covered") << "solve " << solve;
+    for (const auto& s : c.scenarios) {
+      EXPECT_TRUE(s.problems.empty()) << s.name << "\n" << s.json;
+      EXPECT_TRUE(nlohmann::json::parse(s.json)["initial"]["slope"].is_number()) << s.json;
+    }
+  }
+}
+
 TEST(CampaignSolved, SolvingAgreesWithEnumerationOnTheShippedMissions) {
   campaign::Options enumerating;
   enumerating.criteria = {Criterion::decision, Criterion::mcdc, Criterion::boundary};
