@@ -319,8 +319,18 @@ namespace {
 struct Counts {
   std::size_t targets = 0, reachable = 0, covered = 0, undecided = 0;
   std::size_t unreachable() const { return targets - reachable - undecided; }
+  // "2 unreachable, 1 not decided": targets no state reaches, and those not decided either way.
+  std::string unreached_text() const {
+    return std::to_string(unreachable()) + " unreachable" +
+           (undecided == 0 ? "" : ", " + std::to_string(undecided) + " not decided");
+  }
   std::map<std::string, std::size_t> by_criterion;
 };
+
+// The line of a target no run can reach: unreachable, or not decided either way, and why.
+std::string unreached_line(const Target& t) {
+  return (t.undecided ? "not decided: " : "unreachable: ") + t.text + ": " + t.reason + "\n";
+}
 
 Counts count(const std::vector<Target>& targets, const std::vector<bool>& covered) {
   Counts c;
@@ -393,11 +403,9 @@ std::string campaign_text(const Campaign& campaign) {
   const Counts c = count(campaign.targets, campaign.covered);
   std::string out = campaign.mission + ": " + std::to_string(c.targets) + " targets" +
                     (c.targets == 0 ? "" : " (" + criteria_text(c) + ")") + ", " +
-                    std::to_string(c.unreachable()) + " unreachable" +
-                    (c.undecided == 0 ? "" : ", " + std::to_string(c.undecided) + " not decided") +
-                    "; " + std::to_string(campaign.scenarios.size()) + " scenarios cover " +
-                    std::to_string(c.covered) + " of " + std::to_string(c.reachable) +
-                    " reachable targets\n";
+                    c.unreached_text() + "; " + std::to_string(campaign.scenarios.size()) +
+                    " scenarios cover " + std::to_string(c.covered) + " of " +
+                    std::to_string(c.reachable) + " reachable targets\n";
   for (const auto& s : campaign.scenarios) {
     out += "  " + s.name + ".json: " +
            (s.change.empty() ? std::to_string(s.purpose.size()) +
@@ -409,10 +417,8 @@ std::string campaign_text(const Campaign& campaign) {
   }
   for (std::size_t k = 0; k < campaign.targets.size(); ++k) {
     const Target& t = campaign.targets[k];
-    if (t.undecided)
-      out += "not decided: " + t.text + ": " + t.reason + "\n";
-    else if (!t.reachable)
-      out += "unreachable: " + t.text + ": " + t.reason + "\n";
+    if (!t.reachable)
+      out += unreached_line(t);
     else if (!campaign.covered[k])
       out += "not covered: " + t.text + "\n";
   }
@@ -485,8 +491,7 @@ std::string coverage_headline(const CoverageReport& report) {
   return report.mission + ": " + std::to_string(report.runs.size()) +
          (report.runs.size() == 1 ? " run covers " : " runs cover ") + std::to_string(c.covered) +
          " of " + std::to_string(c.reachable) + " reachable targets (" +
-         (c.targets == 0 ? "" : criteria_text(c) + "; ") + std::to_string(c.targets - c.reachable) +
-         " unreachable" +
+         (c.targets == 0 ? "" : criteria_text(c) + "; ") + c.unreached_text() +
          (report.not_judged.empty()
               ? ""
               : ", " + std::to_string(report.not_judged.size()) + " not judged") +
@@ -526,7 +531,7 @@ std::string coverage_text(const CoverageReport& report) {
   for (const auto& [k, why] : report.not_judged)
     out += "not judged: " + report.targets[k].text + ": " + why + "\n";
   for (const auto& t : report.targets)
-    if (!t.reachable) out += "unreachable: " + t.text + ": " + t.reason + "\n";
+    if (!t.reachable) out += unreached_line(t);
   for (const auto& [node, reason] : report.skipped)
     out += "no targets for " + node + ": " + reason + "\n";
   for (const auto& note : report.notes) out += note + "\n";
@@ -537,11 +542,9 @@ std::string coverage_json(const CoverageReport& report) {
   const Counts c = count(report.targets, report.covered);
   Json j = Json::object();
   j["mission"] = report.mission;
-  j["summary"] = {{"targets", c.targets},
-                  {"reachable", c.reachable},
-                  {"unreachable", c.targets - c.reachable},
-                  {"covered", c.covered},
-                  {"not_judged", report.not_judged.size()},
+  j["summary"] = {{"targets", c.targets},           {"reachable", c.reachable},
+                  {"unreachable", c.unreachable()}, {"undecided", c.undecided},
+                  {"covered", c.covered},           {"not_judged", report.not_judged.size()},
                   {"runs", report.runs.size()}};
   Json runs = Json::array();
   for (const auto& r : report.runs) {

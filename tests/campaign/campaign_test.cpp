@@ -467,6 +467,36 @@ TEST(CampaignSolved, ABreakpointNoDecimalWritesGetsANumberInEveryScenario) {
   }
 }
 
+TEST(CampaignCoverage, ATargetNotDecidedIsCountedAndListedAsTheCampaignDoes) {
+  // Enumerated, slope = 1/3 is a cell no scenario's number lies in: the target is not decided
+  // either way. `uabt coverage` must say so as `uabt tests` does, not call it unreachable.
+  TempMission dir({{"mission.xml", mission_with("    <Adaptable ID=\"node\"/>")},
+                   {"domain.fret", "real slope in [0, 1]\n"},
+                   {"requirements.fret",
+                    "R1: In node if 3 * slope > 1 Mission shall satisfy selected_alt = high\n"
+                    "Other: In node Mission shall satisfy selected_alt = other\n"},
+                   {"alternatives/node/high.xml", alternative_tree("high", "<AlwaysSuccess/>")},
+                   {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}});
+  const load::Mission m = load(dir.dir());
+  campaign::Options options;
+  options.criteria = {Criterion::boundary};
+  const campaign::Campaign c = campaign::build_campaign(m, options);
+  ASSERT_TRUE(targets_by_id(c).at("node/boundary/slope/1/3/at")->undecided);
+  EXPECT_NE(campaign::campaign_text(c).find("0 unreachable, 1 not decided"), std::string::npos)
+      << campaign::campaign_text(c);
+  campaign::CoverageReport report;
+  report.mission = "slope";
+  report.targets = c.targets;
+  report.covered = c.covered;
+  const std::string text = campaign::coverage_text(report);
+  EXPECT_NE(text.find("0 unreachable, 1 not decided)"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nnot decided: slope = 1/3, on the boundary: "), std::string::npos) << text;
+  EXPECT_EQ(text.find("\nunreachable: "), std::string::npos) << text;
+  const auto summary = nlohmann::json::parse(campaign::coverage_json(report))["summary"];
+  EXPECT_EQ(summary["unreachable"], 0);
+  EXPECT_EQ(summary["undecided"], 1);
+}
+
 TEST(CampaignSolved, SolvingAgreesWithEnumerationOnTheShippedMissions) {
   campaign::Options enumerating;
   enumerating.criteria = {Criterion::decision, Criterion::mcdc, Criterion::boundary};
