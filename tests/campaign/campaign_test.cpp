@@ -436,17 +436,22 @@ std::map<std::string, std::string> outcome(const campaign::Campaign& c) {
   return out;
 }
 
+// One real whose guard 3 * slope > 1 changes at slope = 1/3, a number no decimal writes.
+std::map<std::string, std::string> one_third_boundary_mission() {
+  return {{"mission.xml", mission_with("    <Adaptable ID=\"node\"/>")},
+          {"domain.fret", "real slope in [0, 1]\n"},
+          {"requirements.fret",
+           "R1: In node if 3 * slope > 1 Mission shall satisfy selected_alt = high\n"
+           "Other: In node Mission shall satisfy selected_alt = other\n"},
+          {"alternatives/node/high.xml", alternative_tree("high", "<AlwaysSuccess/>")},
+          {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}};
+}
+
 TEST(CampaignSolved, ABreakpointNoDecimalWritesGetsANumberInEveryScenario) {
   // 3 * slope > 1 changes at slope = 1/3, which no JSON number is: enumerated and solved nodes
   // both write a real as one real_value does, a number a scenario carries (the nearest double),
   // never the text "1/3", which uabt run would refuse as a string for a real.
-  TempMission dir({{"mission.xml", mission_with("    <Adaptable ID=\"node\"/>")},
-                   {"domain.fret", "real slope in [0, 1]\n"},
-                   {"requirements.fret",
-                    "R1: In node if 3 * slope > 1 Mission shall satisfy selected_alt = high\n"
-                    "Other: In node Mission shall satisfy selected_alt = other\n"},
-                   {"alternatives/node/high.xml", alternative_tree("high", "<AlwaysSuccess/>")},
-                   {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}});
+  TempMission dir(one_third_boundary_mission());
   const load::Mission m = load(dir.dir());
   for (const bool solve : {false, true}) {
     campaign::Options options;
@@ -470,13 +475,7 @@ TEST(CampaignSolved, ABreakpointNoDecimalWritesGetsANumberInEveryScenario) {
 TEST(CampaignCoverage, ATargetNotDecidedIsCountedAndListedAsTheCampaignDoes) {
   // Enumerated, slope = 1/3 is a cell no scenario's number lies in: the target is not decided
   // either way. `uabt coverage` must say so as `uabt tests` does, not call it unreachable.
-  TempMission dir({{"mission.xml", mission_with("    <Adaptable ID=\"node\"/>")},
-                   {"domain.fret", "real slope in [0, 1]\n"},
-                   {"requirements.fret",
-                    "R1: In node if 3 * slope > 1 Mission shall satisfy selected_alt = high\n"
-                    "Other: In node Mission shall satisfy selected_alt = other\n"},
-                   {"alternatives/node/high.xml", alternative_tree("high", "<AlwaysSuccess/>")},
-                   {"alternatives/node/other.xml", alternative_tree("other", "<AlwaysSuccess/>")}});
+  TempMission dir(one_third_boundary_mission());
   const load::Mission m = load(dir.dir());
   campaign::Options options;
   options.criteria = {Criterion::boundary};
