@@ -42,14 +42,6 @@ std::optional<double> number_of(const Value& v) {
 
 }  // namespace
 
-// A number's exact value: an integer, or a real's decimal text.
-std::optional<Fraction> exact(const Value* v) {
-  if (v == nullptr) return std::nullopt;
-  if (v->kind == Value::Kind::integer) return Fraction(v->integer);
-  if (v->kind == Value::Kind::real) return Fraction::parse(v->text);
-  return std::nullopt;
-}
-
 // One node's questions: the node's variables, a primed copy of them (MC/DC pairs), the domain,
 // the guards and the atoms, lowered once; kept with the node to solve a goal again.
 class SolvedQuestions {
@@ -666,10 +658,9 @@ std::optional<State> Model::Node::solved_state(const State& state) const {
     if (v == nullptr) return std::nullopt;
     const fretish::Variable* decl = solved->domain->find(name);
     if (decl != nullptr && decl->declared) {
-      const auto x = number_of(*v);
       const auto lo = bound(decl->lower), hi = bound(decl->upper);
-      if (x && lo && *x < lo->to_double()) return std::nullopt;
-      if (x && hi && *x > hi->to_double()) return std::nullopt;
+      if (lo && verify::detail::side_of(*v, *lo).value_or(0) < 0) return std::nullopt;
+      if (hi && verify::detail::side_of(*v, *hi).value_or(0) > 0) return std::nullopt;
       if (decl->type == fretish::VarType::enumeration &&
           std::find(decl->enum_values.begin(), decl->enum_values.end(), v->text) ==
               decl->enum_values.end())
@@ -700,8 +691,10 @@ bool Model::Node::solved_reaches(const Goal& goal, const State& state) const {
     case Goal::Kind::pair: return false;
     case Goal::Kind::boundary: {
       if (goal.line) {
-        const auto x = exact(find_value(state, goal.variable));
-        const auto y = exact(find_value(state, goal.variable2));
+        const Value* vx = find_value(state, goal.variable);
+        const Value* vy = find_value(state, goal.variable2);
+        const auto x = vx ? verify::detail::exact_value(*vx) : std::nullopt;
+        const auto y = vy ? verify::detail::exact_value(*vy) : std::nullopt;
         if (!x || !y) return false;
         try {
           return (*x + goal.slope * *y + goal.offset).sign() == goal.sign;
@@ -710,10 +703,10 @@ bool Model::Node::solved_reaches(const Goal& goal, const State& state) const {
         }
       }
       const Value* v = find_value(state, goal.variable);
-      const auto x = v == nullptr ? std::nullopt : number_of(*v);
-      if (!x) return false;
-      if (goal.point) return *x == goal.lo->to_double();
-      return (!goal.lo || *x > goal.lo->to_double()) && (!goal.hi || *x < goal.hi->to_double());
+      if (v == nullptr || !number_of(*v)) return false;
+      auto side = [&](const Fraction& at) { return *verify::detail::side_of(*v, at); };
+      if (goal.point) return side(*goal.lo) == 0;
+      return (!goal.lo || side(*goal.lo) > 0) && (!goal.hi || side(*goal.hi) < 0);
     }
   }
   return false;

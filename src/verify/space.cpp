@@ -251,9 +251,6 @@ std::string Space::plan(const std::set<std::string>& names, const std::vector<co
   return {};
 }
 
-namespace {
-
-// A witness value exactly: "1/3", "-0.25", "7".
 std::optional<Fraction> exact_value(const Value& v) {
   if (v.kind == Value::Kind::integer) return Fraction(static_cast<long long>(v.integer));
   const std::string& text = v.text.empty() ? v.to_string() : v.text;
@@ -265,7 +262,15 @@ std::optional<Fraction> exact_value(const Value& v) {
   return *n / *d;
 }
 
-}  // namespace
+std::optional<int> side_of(const Value& v, const Fraction& breakpoint) {
+  if (v.kind == Value::Kind::integer) {
+    const Fraction x(static_cast<long long>(v.integer));
+    return x < breakpoint ? -1 : breakpoint < x ? 1 : 0;
+  }
+  if (v.kind != Value::Kind::real) return std::nullopt;
+  const double at = breakpoint.to_double();
+  return v.real < at ? -1 : v.real > at ? 1 : 0;
+}
 
 std::optional<std::uint64_t> Space::state_of(const State& state) const {
   std::uint64_t index = 0;
@@ -295,11 +300,14 @@ std::optional<std::uint64_t> Space::state_of(const State& state) const {
         const auto x = v ? exact_value(*v) : std::nullopt;
         if (!x) return std::nullopt;
         std::optional<std::size_t> found;
-        for (std::size_t c = 0; c < axis.cells() && !found; ++c)
-          if (RealAxis::is_point(c) ? *x == axis.from(c) : (*x > axis.from(c) && *x < axis.to(c)))
+        for (std::size_t c = 0; c < axis.cells() && !found; ++c) {
+          const auto from = side_of(*v, axis.from(c));
+          if (RealAxis::is_point(c) ? from == 0 : (from > 0 && side_of(*v, axis.to(c)) < 0))
             found = c;
+        }
         if (!found) return std::nullopt;
-        point.push_back(*x);
+        // At a breakpoint the run computed with the breakpoint itself: so do the lines.
+        point.push_back(RealAxis::is_point(*found) ? axis.from(*found) : *x);
         axis_cells.push_back(*found);
       }
       std::vector<int> signs;

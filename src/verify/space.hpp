@@ -75,6 +75,8 @@ class Space {
   }
   std::uint64_t stride(std::size_t d) const { return strides_[d]; }
   // The state (cell) a full assignment lies in; nullopt when a value is missing or outside.
+  // A real lies at a breakpoint as side_of says, so a run's state lands in the cell whose
+  // atoms have the values the run computed.
   std::optional<std::uint64_t> state_of(const State& state) const;
 
  private:
@@ -103,5 +105,16 @@ class Space {
 
 // The variables a condition reads (domain variables and implicit booleans).
 void variables_of(const fretish::Expr& e, const smt::Typing& typing, std::set<std::string>& out);
+
+// A number's exact value: an integer, or a real's text ("1/3", "-0.25", "7").
+std::optional<Fraction> exact_value(const Value& v);
+
+// Where a number lies against a breakpoint: -1 below, 0 at, 1 above; nullopt for a value that
+// is no number. A run's real is a double, and the one evaluator compares doubles, so a real lies
+// at a breakpoint when it is the breakpoint's nearest double: the value a scenario writes for it
+// (1/3 as 0.3333333333333333), where the run's guard holds as at 1/3. An integer compares
+// exactly. Every reading of a run's state against the cells (enumerated and solved campaign
+// nodes, coverage) asks this.
+std::optional<int> side_of(const Value& v, const Fraction& breakpoint);
 
 }  // namespace uabt::verify::detail
