@@ -3,6 +3,7 @@
 #include "base/number_text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -220,6 +221,48 @@ std::vector<std::string> adaptables_shown(const ReportInput& input) {
 
 std::string html_code(std::string_view text) {
   return "<code>" + html_escape(text) + "</code>";
+}
+
+std::string markdown_text(std::string_view raw) {
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  const std::string text = clean_text(raw);
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    switch (c) {
+      case '\n':
+      case '\t': out += ' '; break;
+      case '_':
+        if (i > 0 && i + 1 < text.size() && word(text[i - 1]) && word(text[i + 1]))
+          out += c;
+        else
+          out += "\\_";
+        break;
+      case '\\':
+      case '`':
+      case '*':
+      case '[':
+      case ']':
+      case '<':
+      case '>':
+      case '|':
+      case '~':
+        out += '\\';
+        out += c;
+        break;
+      case '&':  // only where it could start an entity: "a & b" stays readable
+        out += i + 1 < text.size() && (word(text[i + 1]) || text[i + 1] == '#') ? "&amp;" : "&";
+        break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string markdown_code(std::string_view raw) {
+  const std::string text = clean_text(raw);
+  if (text.empty() || text.find_first_of("`|\n") != std::string::npos) return markdown_text(text);
+  return "`" + text + "`";
 }
 
 std::string alternative_text(const std::string& alternative) {

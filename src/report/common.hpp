@@ -40,6 +40,15 @@ std::string html_escape(std::string_view text);
 
 // `text` escaped in an HTML <code> element.
 std::string html_code(std::string_view text);
+
+// Text safe inside a GFM table cell (after clean_text): Markdown punctuation is
+// backslash-escaped (an intraword '_' is left alone: GFM never makes emphasis of it, and
+// `selected_alt` stays readable), '&' cannot start an entity, '|' cannot end the cell and a
+// newline cannot end the row.
+std::string markdown_text(std::string_view text);
+
+// A Markdown code span, or markdown_text when the content would break one.
+std::string markdown_code(std::string_view text);
 // An alternative as a report names it: "" (no alternative selected) is the node failing.
 std::string alternative_text(const std::string& alternative);
 

@@ -245,33 +245,23 @@ std::string coverage_html(const verify::Coverage& coverage) {
 
 std::string decision_table_markdown(const verify::Coverage& coverage) {
   const Table t = decision_table(coverage);
-  auto md = [](const std::string& s) {
-    std::string out;
-    for (char ch : s) {
-      if (ch == '|' || ch == '*' || ch == '_' || ch == '`' || ch == '[' || ch == ']' || ch == '<' ||
-          ch == '>')
-        out += '\\';
-      out += ch;
-    }
-    return out;
-  };
   std::string out = "| # |";
-  for (const auto& c : t.columns) out += " " + md(c) + " |";
+  for (const auto& c : t.columns) out += " " + markdown_text(c) + " |";
   if (t.other) out += " other condition |";
   out += " selects | share |\n|---|";
   for (std::size_t k = 0; k < t.columns.size(); ++k) out += "---|";
   if (t.other) out += "---|";
   out += "---|---:|\n";
   for (const auto& row : t.rows) {
-    std::string label = md(row.label);
+    std::string label = markdown_text(row.label);
     if (row.kind != "rule") {
       label = "**" + row.kind + "**";
-      for (const auto& r : row.requirements) label += " " + md(r);
+      for (const auto& r : row.requirements) label += " " + markdown_text(r);
     }
     out += "| " + label + " |";
-    for (const auto& c : row.cells) out += " " + md(c) + " |";
-    if (t.other) out += " " + md(row.other) + " |";
-    out += " " + md(row.outcome) + " | " + md(row.share) + " |\n";
+    for (const auto& c : row.cells) out += " " + markdown_text(c) + " |";
+    if (t.other) out += " " + markdown_text(row.other) + " |";
+    out += " " + markdown_text(row.outcome) + " | " + markdown_text(row.share) + " |\n";
   }
   return out;
 }

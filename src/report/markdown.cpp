@@ -8,53 +8,6 @@ namespace uabt::report {
 
 namespace {
 
-bool is_word_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) != 0;
-}
-
-// Text safe inside a GFM table cell: Markdown punctuation is backslash-escaped (an intraword
-// '_' is left alone: GFM never makes emphasis of it, and `selected_alt` stays readable), '|'
-// cannot end the cell and newlines become spaces.
-std::string md(std::string_view raw) {
-  const std::string text = detail::clean_text(raw);
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    switch (c) {
-      case '\n':
-      case '\t': out += ' '; break;
-      case '_':
-        if (i > 0 && i + 1 < text.size() && is_word_char(text[i - 1]) && is_word_char(text[i + 1]))
-          out += c;
-        else
-          out += "\\_";
-        break;
-      case '\\':
-      case '`':
-      case '*':
-      case '[':
-      case ']':
-      case '<':
-      case '>':
-      case '|':
-      case '~':
-        out += '\\';
-        out += c;
-        break;
-      case '&': out += "&amp;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// A code span, or escaped text when the content would break one.
-std::string code(std::string_view raw) {
-  const std::string text = detail::clean_text(raw);
-  if (text.empty() || text.find_first_of("`|\n") != std::string::npos) return md(text);
-  return "`" + text + "`";
-}
-
 std::string state_words(const State& state) {
   std::string out;
   for (const auto& [name, value] : state) {
@@ -65,25 +18,29 @@ std::string state_words(const State& state) {
 }
 
 void coverage_section(const verify::Coverage& coverage, std::string& out) {
-  out += "\n### Coverage of " + code(coverage.adaptable) + "\n\n";
+  out += "\n### Coverage of " + detail::markdown_code(coverage.adaptable) + "\n\n";
   if (!coverage.counted && (coverage.measured || coverage.bounded)) {
     out += coverage.measured
-               ? "Measured exactly: the domain measures " + code(coverage.measure.text) +
+               ? "Measured exactly: the domain measures " +
+                     detail::markdown_code(coverage.measure.text) +
                      " (the real variables' length, area or volume, summed over the discrete "
                      "values).\n\n"
-               : "Shares " + md(detail::not_measured_text(coverage)) +
+               : "Shares " + detail::markdown_text(detail::not_measured_text(coverage)) +
                      "; certified bounds instead.\n\n";
     out += "| Alternative | Requirement | Share |\n|---|---|---:|\n";
     auto row = [&](const std::string& name, const std::string& requirement,
                    const std::optional<detail::ShownShare>& share, const verify::Exact& lo,
                    const verify::Exact& hi) {
-      out += "| " + name + " | " + requirement + " | " +
-             md(share ? detail::share_text(*share) : detail::bounds_text(lo, hi)) + " |\n";
+      out +=
+          "| " + name + " | " + requirement + " | " +
+          detail::markdown_text(share ? detail::share_text(*share) : detail::bounds_text(lo, hi)) +
+          " |\n";
     };
     for (std::size_t i = 0; i < coverage.alternatives.size(); ++i) {
       const auto& a = coverage.alternatives[i];
-      row(md(a.name) + (a.reachable ? "" : " (never selected)"), md(a.requirement),
-          detail::alternative_share(coverage, i), a.share_lower, a.share_upper);
+      row(detail::markdown_text(a.name) + (a.reachable ? "" : " (never selected)"),
+          detail::markdown_text(a.requirement), detail::alternative_share(coverage, i),
+          a.share_lower, a.share_upper);
     }
     row("*gap: none selected*", "", detail::gap_share(coverage), coverage.gap_share_lower,
         coverage.gap_share_upper);
@@ -92,18 +49,22 @@ void coverage_section(const verify::Coverage& coverage, std::string& out) {
   } else if (!coverage.counted) {
     out +=
         "Not counted: " +
-        md(coverage.not_counted_reason.empty() ? "no reason given" : coverage.not_counted_reason) +
+        detail::markdown_text(coverage.not_counted_reason.empty() ? "no reason given"
+                                                                  : coverage.not_counted_reason) +
         ".\n\n";
     out += "| Alternative | Requirement | Selected in some state |\n|---|---|---|\n";
     for (const auto& alternative : coverage.alternatives)
-      out += "| " + md(alternative.name) + " | " + md(alternative.requirement) + " | " +
+      out += "| " + detail::markdown_text(alternative.name) + " | " +
+             detail::markdown_text(alternative.requirement) + " | " +
              (alternative.reachable ? "yes" : "**no**") + " |\n";
   } else {
     out += "| Alternative | Requirement | States | Share |\n|---|---|---:|---:|\n";
     for (const auto& alternative : coverage.alternatives) {
-      out += "| " + md(alternative.name) + (alternative.reachable ? "" : " (never selected)") +
-             " | " + md(alternative.requirement) + " | " + std::to_string(alternative.states) +
-             " | " + detail::percent(alternative.states, coverage.states) + " |\n";
+      out += "| " + detail::markdown_text(alternative.name) +
+             (alternative.reachable ? "" : " (never selected)") + " | " +
+             detail::markdown_text(alternative.requirement) + " | " +
+             std::to_string(alternative.states) + " | " +
+             detail::percent(alternative.states, coverage.states) + " |\n";
     }
     out += "| *gap: none selected* | | " + std::to_string(coverage.gap_states) + " | " +
            detail::percent(coverage.gap_states, coverage.states) + " |\n";
@@ -119,7 +80,7 @@ void coverage_section(const verify::Coverage& coverage, std::string& out) {
   }
   if (!coverage.gap_region.empty() && coverage.gap_regions.empty()) {
     out += "\nUncovered region:\n\n";
-    for (const auto& cube : coverage.gap_region) out += "- " + code(cube) + "\n";
+    for (const auto& cube : coverage.gap_region) out += "- " + detail::markdown_code(cube) + "\n";
   }
   if (!coverage.alternatives.empty())
     out += "\nDecision table (priority order, then the gap and overlap regions):\n\n" +
@@ -131,13 +92,13 @@ void coverage_section(const verify::Coverage& coverage, std::string& out) {
 std::string to_markdown(const ReportInput& input) {
   const auto counts = detail::count_severities(input.findings);
   std::string out;
-  out += "## uabt: " + md(input.mission_name) + "\n\n";
+  out += "## uabt: " + detail::markdown_text(input.mission_name) + "\n\n";
   out += "**Verdict: " + input.banner() + "** | " + detail::counts_text(counts) + " | uabt " +
-         md(input.tool_version);
+         detail::markdown_text(input.tool_version);
   if (!input.stages.empty()) {
     out += " | stages:";
     for (std::size_t i = 0; i < input.stages.size(); ++i)
-      out += (i == 0 ? " " : ", ") + md(input.stages[i]);
+      out += (i == 0 ? " " : ", ") + detail::markdown_text(input.stages[i]);
   }
   out += "\n\n### Findings\n\n";
   if (input.findings.empty()) {
@@ -145,29 +106,33 @@ std::string to_markdown(const ReportInput& input) {
   } else {
     out += "| Severity | Check | Location | Message |\n|---|---|---|---|\n";
     for (const auto& finding : input.findings) {
-      std::string message = md(finding.message);
-      if (!finding.adaptable.empty()) message += " (node " + code(finding.adaptable) + ")";
-      if (finding.more_like_it > 0) message += "; " + md(finding.notes.back());
-      out += std::string("| ") + severity_name(finding.severity) + " | " + code(finding.check) +
-             " | " + code(detail::location_text(finding.location)) + " | " + message + " |\n";
+      std::string message = detail::markdown_text(finding.message);
+      if (!finding.adaptable.empty())
+        message += " (node " + detail::markdown_code(finding.adaptable) + ")";
+      if (finding.more_like_it > 0) message += "; " + detail::markdown_text(finding.notes.back());
+      out += std::string("| ") + severity_name(finding.severity) + " | " +
+             detail::markdown_code(finding.check) + " | " +
+             detail::markdown_code(detail::location_text(finding.location)) + " | " + message +
+             " |\n";
     }
     bool any_witness = false;
     for (const auto& finding : input.findings) {
       if (finding.witness.empty()) continue;
       if (!any_witness) out += "\nWitnesses (states in which the finding is true):\n\n";
       any_witness = true;
-      out += "- " + code(finding.check) + " at " + code(detail::location_text(finding.location)) +
-             ": " + md(state_words(finding.witness)) + "\n";
+      out += "- " + detail::markdown_code(finding.check) + " at " +
+             detail::markdown_code(detail::location_text(finding.location)) + ": " +
+             detail::markdown_text(state_words(finding.witness)) + "\n";
     }
     out += "\n`uabt explain CHECK-ID` says why a check matters and how to fix it.\n";
   }
   if (input.uplink) out += detail::uplink_markdown(*input.uplink);
   if (input.proofs) out += proofs_markdown(*input.proofs);
   if (input.campaign) {
-    out += "\n### Test campaign\n\n" + md(input.campaign->headline()) + "\n";
+    out += "\n### Test campaign\n\n" + detail::markdown_text(input.campaign->headline()) + "\n";
     const auto details = input.campaign->details();
     if (!details.empty()) out += "\n";
-    for (const auto& line : details) out += "- " + md(line) + "\n";
+    for (const auto& line : details) out += "- " + detail::markdown_text(line) + "\n";
   }
   for (const auto& coverage : input.coverage) coverage_section(coverage, out);
   return out;

@@ -13,39 +13,24 @@ namespace {
 // Markdown shows at most this many ticks of a timeline (the last ones); report.html shows all.
 constexpr std::size_t kMarkdownTicks = 30;
 
-// Text safe in a GFM table cell.
-std::string cell(std::string_view raw) {
-  std::string out;
-  for (char c : detail::clean_text(raw)) {
-    if (c == '|' || c == '\\' || c == '`' || c == '*' || c == '_' || c == '<' || c == '>' ||
-        c == '[' || c == ']')
-      out += '\\';
-    out += (c == '\n' || c == '\t') ? ' ' : c;
-  }
-  return out;
-}
-
-std::string code(std::string_view raw) {
-  const std::string text = detail::clean_text(raw);
-  if (text.empty() || text.find_first_of("`|\n") != std::string::npos) return cell(text);
-  return "`" + text + "`";
-}
-
 std::string markdown_cell(const detail::TimelineCell& c) {
   switch (c.kind) {
     case detail::CellKind::on: return "■";
     case detail::CellKind::off: return "□";
-    case detail::CellKind::running: return c.text == "running" ? "▬" : cell(c.text);
+    case detail::CellKind::running:
+      return c.text == "running" ? "▬" : detail::markdown_text(c.text);
     case detail::CellKind::idle:
     case detail::CellKind::text: break;
   }
-  return cell(c.text);
+  return detail::markdown_text(c.text);
 }
 
 void timeline_markdown(const ProofAnswer& a, const ProofCounterexample& cex, const Proofs& proofs,
                        std::string& out) {
-  out += "\n#### " + code(a.requirement) + " is violated at tick " + std::to_string(cex.tick) +
-         "\n\n" + code(detail::location_text(a.location)) + " " + cell(a.text) + "\n\n";
+  out += "\n#### " + detail::markdown_code(a.requirement) + " is violated at tick " +
+         std::to_string(cex.tick) + "\n\n" +
+         detail::markdown_code(detail::location_text(a.location)) + " " +
+         detail::markdown_text(a.text) + "\n\n";
   const std::size_t first =
       cex.ticks.size() > kMarkdownTicks ? cex.ticks.size() - kMarkdownTicks : 0;
   if (first > 0)
@@ -60,30 +45,36 @@ void timeline_markdown(const ProofAnswer& a, const ProofCounterexample& cex, con
   }
   out += "\n" + rule + "\n";
   for (const detail::TimelineRow& row : detail::timeline_of(cex)) {
-    out += "| " + (row.kind == detail::RowKind::root ? cell(row.label) : code(row.label)) + " |";
+    out += "| " +
+           (row.kind == detail::RowKind::root ? detail::markdown_text(row.label)
+                                              : detail::markdown_code(row.label)) +
+           " |";
     for (std::size_t i = first; i < row.cells.size(); ++i)
       out += " " + markdown_cell(row.cells[i]) + " |";
     out += "\n";
   }
   out += "\n■ true, □ false, ▬ action running. Replay: " +
-         code(replay_command(proofs, cex.scenario_file)) + "\n";
-  for (const std::string& note : cex.notes) out += "\nNote: " + cell(note) + "\n";
+         detail::markdown_code(replay_command(proofs, cex.scenario_file)) + "\n";
+  for (const std::string& note : cex.notes) out += "\nNote: " + detail::markdown_text(note) + "\n";
 }
 
 }  // namespace
 
 std::string proofs_markdown(const Proofs& proofs) {
   if (proofs.answers.empty()) return "";
-  std::string out = "\n### Proofs\n\n" + cell(proofs_summary(proofs)) + "\n\n";
+  std::string out = "\n### Proofs\n\n" + detail::markdown_text(proofs_summary(proofs)) + "\n\n";
   out += "| Guarantee | Verdict | Requirement | Location |\n|---|---|---|---|\n";
   for (const ProofAnswer& a : proofs.answers) {
     std::string verdict = proof_verdict_text(a);
     if (!a.reason.empty()) verdict += " (" + a.reason + ")";
-    out += "| " + code(a.requirement) + " | " +
-           (a.verdict == "proved" ? cell(verdict) : "**" + cell(verdict) + "**") + " | " +
-           cell(a.text) + " | " + code(detail::location_text(a.location)) + " |\n";
+    out += "| " + detail::markdown_code(a.requirement) + " | " +
+           (a.verdict == "proved" ? detail::markdown_text(verdict)
+                                  : "**" + detail::markdown_text(verdict) + "**") +
+           " | " + detail::markdown_text(a.text) + " | " +
+           detail::markdown_code(detail::location_text(a.location)) + " |\n";
   }
-  for (const std::string& note : proofs.notes) out += "\nNote: " + cell(note) + "\n";
+  for (const std::string& note : proofs.notes)
+    out += "\nNote: " + detail::markdown_text(note) + "\n";
   for (const ProofAnswer& a : proofs.answers)
     if (a.counterexample) timeline_markdown(a, *a.counterexample, proofs, out);
   return out;

@@ -48,13 +48,6 @@ std::string node_summary(const verify::NodeImpact& node) {
   return "some states change (not counted: " + node.not_counted_reason + ")";
 }
 
-// A Markdown code span for identifiers and states (they hold no backtick or '|').
-std::string span(const std::string& text) {
-  const std::string clean = clean_text(text);
-  if (clean.find_first_of("`|\n") != std::string::npos) return html_escape(clean);
-  return "`" + clean + "`";
-}
-
 // "weakened (uplink.json: weaken, "reason")".
 std::string change_text(const ContractChange& c) {
   std::string out = c.change;
@@ -126,20 +119,15 @@ Json uplink_json(const UplinkChange& uplink) {
 }
 
 std::string uplink_markdown(const UplinkChange& uplink) {
-  std::string out = "\n### Uplink " + span(uplink.package) + "\n\n";
+  std::string out = "\n### Uplink " + markdown_code(uplink.package) + "\n\n";
   if (!uplink.contract.empty()) {
     out += "Guarantees the uplink changes (the mission's contract):\n\n|";
     for (const char* h : kContractHeader) out += std::string(" ") + h + " |";
     out += "\n|---|---|---|---|---|\n";
     for (const ContractChange& c : uplink.contract) {
       const std::vector<std::string> cells = contract_cells(c);
-      out += "| " + span(cells[0]) + " |";
-      for (std::size_t i = 1; i < cells.size(); ++i) {
-        std::string text;
-        for (char ch : clean_text(cells[i]))
-          text += ch == '|' ? std::string("\\|") : std::string(1, ch);
-        out += " " + html_escape(text) + " |";
-      }
+      out += "| " + markdown_code(cells[0]) + " |";
+      for (std::size_t i = 1; i < cells.size(); ++i) out += " " + markdown_text(cells[i]) + " |";
       out += "\n";
     }
     out += "\n";
@@ -147,17 +135,19 @@ std::string uplink_markdown(const UplinkChange& uplink) {
   out += "Where the merge put each requirement:\n\n";
   out += "| Requirement | Node | Rule | Priority |\n|---|---|---|---|\n";
   for (const auto& m : uplink.merges)
-    out += "| " + span(m.requirement) + " | " + (m.adaptable.empty() ? "" : span(m.adaptable)) +
-           " | " + rule_text(m) + " | " + priority_text(m) + " |\n";
+    out += "| " + markdown_code(m.requirement) + " | " +
+           (m.adaptable.empty() ? "" : markdown_code(m.adaptable)) + " | " + rule_text(m) + " | " +
+           priority_text(m) + " |\n";
   if (uplink.merges.empty()) out += "| *none* | | | |\n";
   out += "\nBehaviour change (running version -> merged version):\n";
   for (const auto& node : uplink.impact.nodes) {
-    out += "\n- " + span(node.adaptable) + ": " + node_summary(node) + "\n";
+    out += "\n- " + markdown_code(node.adaptable) + ": " + node_summary(node) + "\n";
     if (node.changes.empty()) continue;
     out += "\n  | From | To | States | Example |\n  |---|---|---:|---|\n";
     for (const auto& c : node.changes)
-      out += "  | " + span(alternative_text(c.from)) + " | " + span(alternative_text(c.to)) +
-             " | " + changed_states_text(node, c) + " | " + span(format_state(c.example)) + " |\n";
+      out += "  | " + markdown_code(alternative_text(c.from)) + " | " +
+             markdown_code(alternative_text(c.to)) + " | " + changed_states_text(node, c) + " | " +
+             markdown_code(format_state(c.example)) + " |\n";
   }
   return out;
 }

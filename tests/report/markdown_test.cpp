@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "report/common.hpp"
 #include "report/reports.hpp"
 #include "report_fixtures.hpp"
 
@@ -44,19 +45,30 @@ TEST(MarkdownReport, Witnesses) {
   EXPECT_TRUE(has(text, "slope = 1/3"));
 }
 
+TEST(MarkdownReport, ATableCellStaysOneCellWhateverItsTextHolds) {
+  // Every table of summary.md escapes through these two: a '|' or a newline in a requirement,
+  // a state or a package name would end the cell or the row.
+  EXPECT_EQ(detail::markdown_text("a | b\nc"), "a \\| b c");
+  EXPECT_EQ(detail::markdown_text("x < 1 & y > 2"), "x \\< 1 & y \\> 2");
+  EXPECT_EQ(detail::markdown_text("&amp; &#38;"), "&amp;amp; &amp;#38;");
+  EXPECT_EQ(detail::markdown_text("selected_alt _x *y* [z]"), "selected_alt \\_x \\*y\\* \\[z\\]");
+  EXPECT_EQ(detail::markdown_code("on_dust"), "`on_dust`");
+  EXPECT_EQ(detail::markdown_code("a|b"), "a\\|b");
+  EXPECT_EQ(detail::markdown_code("two\nlines"), "two lines");
+  EXPECT_EQ(detail::markdown_code(""), "");
+}
+
 TEST(MarkdownReport, CoverageTables) {
   const std::string text = to_markdown(testing::failing_input());
   EXPECT_TRUE(has(text, "### Coverage of `navigation`"));
-  EXPECT_TRUE(has(text, "| on\\_dust | Req1 | 2 | 50.0% |\n") ||
-              has(text, "| on_dust | Req1 | 2 | 50.0% |\n"))
-      << text;
+  EXPECT_TRUE(has(text, "| on_dust | Req1 | 2 | 50.0% |\n")) << text;
   EXPECT_TRUE(has(text, "| on_rocks | Req2 | 1 | 25.0% |\n"));
   EXPECT_TRUE(has(text, "| *gap: none selected* | | 1 | 25.0% |\n"));
   EXPECT_TRUE(has(text, "Gap: 1 of 4 states (25.0%) select no alternative"));
   EXPECT_TRUE(has(text, "Overlap: 1 of 4 states (25.0%) are claimed by two or more guards."));
   // The decision table: the requirements, then the gap and overlap regions.
   EXPECT_TRUE(has(text, "| # | OnDust | OnRocks | selects | share |\n")) << text;
-  EXPECT_TRUE(has(text, "| 1 Req1 | true | - | on\\_dust | 50.0% |\n"));
+  EXPECT_TRUE(has(text, "| 1 Req1 | true | - | on_dust | 50.0% |\n"));
   EXPECT_TRUE(has(text, "| **gap** Req1 Req2 | false | false | none: the node fails | 25.0% |\n"));
   EXPECT_TRUE(
       has(text, "| **overlap** Req1 Req2 | true | true | the first in priority order | 25.0% |\n"));
