@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/number_text.hpp"
+#include "base/text.hpp"
 #include "campaign/campaign.hpp"
 #include "fretish/selection.hpp"
 #include "smt/evaluate.hpp"
@@ -136,13 +137,6 @@ struct Model::Node {
   // A solved node: two states of the domain are an MC/DC pair of the goal's atom.
   bool solved_pair(const Goal& goal, const State& s, const State& u) const;
 };
-
-// "a, b, c" with `sep` between the parts.
-inline std::string join(const std::vector<std::string>& parts, const std::string& sep) {
-  std::string out;
-  for (const auto& p : parts) out += (out.empty() ? "" : sep) + p;
-  return out;
-}
 
 // "run-03": `base` numbered `n`, with as many digits as `total` has (two at least).
 inline std::string numbered(const std::string& base, std::size_t n, std::size_t total) {

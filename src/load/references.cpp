@@ -1,6 +1,7 @@
 #include "load/references.hpp"
 
 #include "base/suggest.hpp"
+#include "base/text.hpp"
 #include "bt/node_kinds.hpp"
 
 #include <cctype>
@@ -42,12 +43,6 @@ void infer_from(const Expr& e, const SourceLocation& owner, fretish::Domain& dom
     v.location = start_of(atom->range, owner);
     domain.variables.push_back(std::move(v));
   }
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
-  return out;
 }
 
 void duplicate_requirement_ids(Mission& m) {
@@ -136,7 +131,7 @@ void selection_references(Mission& m) {
           make_finding("ref-unknown-adaptable",
                        "requirement " + s.id + " is scoped to '" + s.adaptable +
                            "', but the mission has no <Adaptable ID=\"" + s.adaptable + "\"/>" +
-                           (known.empty() ? "" : " (it has: " + joined(known) + ")"),
+                           (known.empty() ? "" : " (it has: " + join(known, ", ") + ")"),
                        s.location);
       f.adaptable = s.adaptable;
       f.requirements = {s.id};

@@ -2,6 +2,7 @@
 #include <map>
 
 #include "base/number_text.hpp"
+#include "base/text.hpp"
 #include "verify/coverage_parts.hpp"
 
 namespace uabt::verify::detail {
@@ -27,6 +28,26 @@ struct Selector {
 
 bool categorical(const Dimension& d) {
   return d.component < 0 && d.sort != smt::Sort::integer;
+}
+
+// A boolean or an enum variable as a constraint on the values `taken`: "!flag", "mode = a",
+// "mode in {a, b}"; no text when it may take every value.
+RegionConstraint values_constraint(const Dimension& d, const std::vector<bool>& taken) {
+  RegionConstraint c;
+  c.kind = RegionConstraint::Kind::values;
+  c.variable = d.name;
+  const bool enumeration = d.sort == smt::Sort::enumeration;
+  for (std::uint64_t v = 0; v < d.radix; ++v)
+    if (taken[v])
+      c.values.push_back(enumeration ? d.declaration->enum_values[v] : (v ? "true" : "false"));
+  if (c.values.size() == d.radix) return c;
+  if (!enumeration)
+    c.text = (c.values[0] == "true" ? "" : "!") + d.name;
+  else if (c.values.size() == 1)
+    c.text = d.name + " = " + c.values[0];
+  else
+    c.text = d.name + " in {" + join(c.values, ", ") + "}";
+  return c;
 }
 
 class BoxCover {
@@ -270,17 +291,9 @@ RegionConstraint describe_range(const Space& space, std::size_t dim, std::uint64
         lo == hi ? d.name + " = " + c.lower : d.name + " in [" + c.lower + ", " + c.upper + "]";
     return c;
   }
-  c.kind = RegionConstraint::Kind::values;
-  if (lo == 0 && hi + 1 == d.radix) return c;
-  for (std::uint64_t v = lo; v <= hi; ++v)
-    c.values.push_back(d.declaration && d.sort == smt::Sort::enumeration
-                           ? d.declaration->enum_values[v]
-                           : (v ? "true" : "false"));
-  if (d.sort != smt::Sort::enumeration)
-    c.text = (lo == 1 ? "" : "!") + d.name;
-  else if (c.values.size() == 1)
-    c.text = d.name + " = " + c.values[0];
-  return c;
+  std::vector<bool> taken(d.radix, false);
+  for (std::uint64_t v = lo; v <= hi; ++v) taken[v] = true;
+  return values_constraint(d, taken);
 }
 
 namespace {
@@ -299,27 +312,7 @@ std::vector<RegionConstraint> render(const Space& space, const std::vector<Selec
     const Dimension& dim = dims[d];
     const Selector& s = box[d];
     if (categorical(dim)) {
-      RegionConstraint c;
-      c.kind = RegionConstraint::Kind::values;
-      c.variable = dim.name;
-      std::size_t n = 0;
-      for (std::uint64_t v = 0; v < dim.radix; ++v) {
-        if (!s.values[v]) continue;
-        ++n;
-        c.values.push_back(dim.sort == smt::Sort::enumeration ? dim.declaration->enum_values[v]
-                                                              : (v ? "true" : "false"));
-      }
-      if (n == dim.radix) continue;
-      if (dim.sort != smt::Sort::enumeration) {
-        c.text = (c.values[0] == "true" ? "" : "!") + dim.name;
-      } else if (n == 1) {
-        c.text = dim.name + " = " + c.values[0];
-      } else {
-        c.text = dim.name + " in {";
-        for (std::size_t k = 0; k < c.values.size(); ++k) c.text += (k ? ", " : "") + c.values[k];
-        c.text += "}";
-      }
-      ordered.emplace_back(d, c);
+      ordered.emplace_back(d, values_constraint(dim, s.values));
       continue;
     }
     if (dim.component < 0 || space.components()[dim.component].axes.size() == 1) {

@@ -192,5 +192,20 @@ TEST(Coverage, DivisionByZeroInSomeStateIsNotGuessed) {
   EXPECT_EQ(guarded.coverage.at(0).alternatives.at(0).states, 3u);  // 1, 2, 3
 }
 
+TEST(CoverageMap, NeighbouringEnumValuesOfOneOutcomeAreNamedWhereTheyAreDrawn) {
+  // rocks and mud select the same alternative, so the map draws them as one shape; its
+  // description must name both, not drop the variable.
+  const load::Mission m = make_mission(
+      "Sand: In nav if terrain = sand Mission shall satisfy selected_alt = slow\n"
+      "Other: In nav Mission shall satisfy selected_alt = fast\n",
+      "enum terrain in {sand, rocks, mud}\n");
+  const verify::Result r = verify_checked(m);
+  ASSERT_TRUE(r.coverage.at(0).map.has_value());
+  std::vector<std::string> wheres;
+  for (const auto& panel : r.coverage.at(0).map->panels)
+    for (const auto& shape : panel.shapes) wheres.push_back(shape.where);
+  EXPECT_EQ(wheres, (std::vector<std::string>{"terrain = sand", "terrain in {rocks, mud}"}));
+}
+
 }  // namespace
 }  // namespace uabt::testing
