@@ -1,5 +1,7 @@
 #include "conform/context.hpp"
 
+#include "conform/compare.hpp"
+
 namespace uabt::conform {
 
 std::string root_path(const bt::TreeDef& tree) {
@@ -14,6 +16,39 @@ bool shares_blackboard(const bt::Node& call, int bt_format) {
   for (const auto& [key, value] : call.attributes)
     if (is_remap_attribute(key, bt_format) && value == "true") return true;
   return false;
+}
+
+std::vector<std::string> remapping_attributes(const bt::Node& call, int bt_format) {
+  std::vector<std::string> out;
+  for (const auto& [key, value] : call.attributes) {
+    if (key == "ID" || key == "name") continue;
+    if (is_remap_attribute(key, bt_format) && value == "true") continue;
+    out.push_back(key + "=\"" + value + "\"");
+  }
+  return out;
+}
+
+std::optional<std::string> extra_attribute(const bt::Node& n) {
+  for (const auto& [key, value] : n.attributes) {
+    if (key == "name" || (key == "ID" && n.tag != n.kind())) continue;
+    return key + "=\"" + value + "\"";
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> Context::alternatives_called(const std::string& adaptable,
+                                                      const std::string& tree_id) const {
+  std::vector<std::string> out;
+  for (const auto& alt : mission_.alternatives)
+    if (alt.adaptable == adaptable && alt.tree_id == tree_id) out.push_back(alt.name);
+  const bt::TreeDef* tree = compiled_.find_tree(tree_id);
+  if (!out.empty() || tree == nullptr) return out;
+  for (const auto& alt : mission_.alternatives) {
+    if (alt.adaptable != adaptable) continue;
+    const bt::TreeDef* source = alt.document.find_tree(alt.tree_id);
+    if (source != nullptr && same_tree(source->root, tree->root)) out.push_back(alt.name);
+  }
+  return out;
 }
 
 Context::Context(const load::Mission& mission, const bt::Document& compiled)

@@ -78,44 +78,19 @@ class TickReader {
     return std::nullopt;
   }
 
-  static std::optional<std::string> extra_attribute(const bt::Node& n) {
-    for (const auto& [key, value] : n.attributes) {
-      if (key == "name" || (key == "ID" && n.tag != n.kind())) continue;
-      return key + "=\"" + value + "\"";
-    }
-    return std::nullopt;
-  }
-
-  // The alternative a call runs: by tree ID, else by a tree equal to the alternative's.
-  std::string alternative_of(const std::string& id) const {
-    const load::Mission& m = ctx_.mission();
-    for (const auto& alt : m.alternatives)
-      if (alt.adaptable == adaptable_ && alt.tree_id == id) return alt.name;
-    const bt::TreeDef* tree = ctx_.compiled().find_tree(id);
-    if (tree == nullptr) return {};
-    for (const auto& alt : m.alternatives) {
-      if (alt.adaptable != adaptable_) continue;
-      const bt::TreeDef* source = alt.document.find_tree(alt.tree_id);
-      if (source != nullptr && same_tree(source->root, tree->root)) return alt.name;
-    }
-    return {};
-  }
-
   std::optional<TickNode> call(const bt::Node& n, const std::string& path, bool visible,
                                int depth) {
     const int format = ctx_.compiled().format;
-    for (const auto& [key, value] : n.attributes) {
-      if (key == "ID" || key == "name") continue;
-      if (is_remap_attribute(key, format) && value == "true") continue;
-      return fail("the call at " + path + " has " + key + "=\"" + value +
-                  "\": it does not pass the parent's blackboard unchanged");
-    }
+    if (const auto remaps = remapping_attributes(n, format); !remaps.empty())
+      return fail("the call at " + path + " has " + remaps.front() +
+                  ": it does not pass the parent's blackboard unchanged");
     const std::string* id = n.attribute("ID");
     const bt::TreeDef* target = id ? ctx_.compiled().find_tree(*id) : nullptr;
     if (target == nullptr || target->root.tag.empty())
       return fail("the call at " + path + " names no tree");
-    const std::string alt = alternative_of(*id);
-    if (!alt.empty()) {
+    const std::vector<std::string> alts = ctx_.alternatives_called(adaptable_, *id);
+    if (!alts.empty()) {
+      const std::string& alt = alts.front();
       TickNode t;
       t.op = TickNode::Op::alternative;
       t.alternative = codes_.at(alt);

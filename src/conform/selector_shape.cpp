@@ -12,16 +12,6 @@ namespace {
 
 const char* const kCheck = "compiled-selector-shape";
 
-// The attributes a selector node may carry besides its kind: a name only.
-std::optional<std::string> extra_attribute(const bt::Node& n) {
-  for (const auto& [key, value] : n.attributes) {
-    if (key == "name") continue;
-    if (key == "ID" && n.tag != n.kind()) continue;  // explicit <Control ID="Fallback">
-    return key + "=\"" + value + "\"";
-  }
-  return std::nullopt;
-}
-
 // Every call of `adaptable` in the trees of mission.xml shares its parent's blackboard.
 bool calls_share_blackboard(const Context& ctx, const std::string& adaptable) {
   bool shared = true;
@@ -40,13 +30,11 @@ bool calls_share_blackboard(const Context& ctx, const std::string& adaptable) {
 void identify_call(Context& ctx, const std::string& adaptable, Branch& b) {
   const bt::Node& call = *b.call;
   const int format = ctx.compiled().format;
-  for (const auto& [key, value] : call.attributes) {
-    if (key == "ID" || key == "name") continue;
-    if (is_remap_attribute(key, format) && value == "true") continue;
+  for (const std::string& remap : remapping_attributes(call, format)) {
     ctx.report(kCheck,
                "the alternative call of branch " + std::to_string(b.index) + " of '" + adaptable +
-                   "' has " + key + "=\"" + value +
-                   "\": the call must pass the parent's blackboard unchanged (only " +
+                   "' has " + remap +
+                   ": the call must pass the parent's blackboard unchanged (only " +
                    (format == 3 ? "__shared_blackboard" : "_autoremap") + "=\"true\", or nothing)",
                call, b.call_path)
         .adaptable = adaptable;
@@ -55,17 +43,8 @@ void identify_call(Context& ctx, const std::string& adaptable, Branch& b) {
   const std::string* id = call.attribute("ID");
   if (id == nullptr) return;  // compiled-dangling-subtree
   const load::Mission& m = ctx.mission();
-  for (const auto& alt : m.alternatives)
-    if (alt.adaptable == adaptable && alt.tree_id == *id) b.alternatives.push_back(alt.name);
-  const bt::TreeDef* tree = ctx.compiled().find_tree(*id);
-  if (!b.alternatives.empty() || tree == nullptr) return;  // a missing tree is a dangling SubTree
-  // The paper's generator or a hand edit may have renamed the tree: the same tree will do.
-  for (const auto& alt : m.alternatives) {
-    if (alt.adaptable != adaptable) continue;
-    const bt::TreeDef* source = alt.document.find_tree(alt.tree_id);
-    if (source != nullptr && same_tree(source->root, tree->root))
-      b.alternatives.push_back(alt.name);
-  }
+  b.alternatives = ctx.alternatives_called(adaptable, *id);
+  if (ctx.compiled().find_tree(*id) == nullptr) return;  // a dangling SubTree
   if (!b.alternatives.empty()) return;
   std::string known;
   for (const auto& alt : m.alternatives) {

@@ -251,6 +251,19 @@ TEST_F(Rules, CallOfATreeThatIsNoAlternative) {
   EXPECT_EQ(value_of(f.witness, "OnRocks"), "false");
 }
 
+TEST_F(Rules, AnAlternativeCallThatRemapsAPortIsNamedWithTheAttribute) {
+  const auto findings = msl(replace(msl_document(msl_default_selector()),
+                                    "<SubTree ID=\"on_rocks\" _autoremap=\"true\"/>",
+                                    "<SubTree ID=\"on_rocks\" _autoremap=\"true\" goal=\"{x}\"/>"));
+  const auto shape = with_check(findings, "compiled-selector-shape");
+  ASSERT_EQ(shape.size(), 1u) << describe(findings);
+  EXPECT_EQ(shape[0]->message,
+            "the alternative call of branch 1 of 'navigation' has goal=\"{x}\": the call must pass "
+            "the parent's blackboard unchanged (only _autoremap=\"true\", or nothing)");
+  EXPECT_EQ(shape[0]->node_path, "navigation/Fallback/Sequence[1]/SubTree[1]");
+  EXPECT_EQ(findings.size(), 1u) << describe(findings);
+}
+
 TEST_F(Rules, RenamedAlternativeTreeWithTheSameContentIsRecognised) {
   std::string xml = msl_document(msl_default_selector());
   xml = replace(xml, "<BehaviorTree ID=\"on_dust\">", "<BehaviorTree ID=\"dust_terrain\">");
