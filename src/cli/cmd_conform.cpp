@@ -33,7 +33,8 @@ void register_conform(CLI::App& app, int& exit_code) {
     if (!args->nodes.empty()) load_options.nodes_file = args->nodes;
     auto mission = load_or_complain(args->mission, load_options, exit_code);
     if (!mission) return;
-    report::ReportInput input = report_input(*mission, {"load", "conform"});
+    report::ReportInput input =
+        report::ReportInput::of(*mission, tool_version(), {"load", "conform"});
     const std::filesystem::path compiled_path(args->compiled);
     bt::ReadOptions read_options;
     read_options.confine_to =

@@ -157,7 +157,8 @@ void register_prove(CLI::App& app, int& exit_code) {
       emit(args->output, report::proofs_page_html(proofs, outcome.mission->name, tool_version()));
       return;
     }
-    report::ReportInput input = report_input(*outcome.mission, {"prove"});
+    report::ReportInput input =
+        report::ReportInput::of(*outcome.mission, tool_version(), {"prove"});
     input.findings = gate::findings_of(result, written, proofs);
     input.uri_prefix = sarif_uri_prefix(args->mission, "");
     if (args->format == "sarif") {

@@ -168,7 +168,8 @@ void register_realizable(CLI::App& app, int& exit_code) {
       }
     }
     if (args->format == "sarif" || args->format == "junit" || args->format == "html") {
-      report::ReportInput input = report_input(*mission, {"load", "realize"});
+      report::ReportInput input =
+          report::ReportInput::of(*mission, tool_version(), {"load", "realize"});
       const std::vector<Finding> found = realize::findings_of(*mission, result);
       input.findings.insert(input.findings.end(), found.begin(), found.end());
       sort_findings(input.findings);

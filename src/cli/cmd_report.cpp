@@ -26,7 +26,8 @@ void register_report(CLI::App& app, int& exit_code) {
     auto mission = load_or_complain(args->mission, {}, exit_code);
     if (!mission) return;
     verify::Result result = verify::verify_mission(*mission, {});
-    report::ReportInput input = report_input(*mission, {"load", "verify"});
+    report::ReportInput input =
+        report::ReportInput::of(*mission, tool_version(), {"load", "verify"});
     input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
     sort_findings(input.findings);
     input.coverage = std::move(result.coverage);

@@ -34,7 +34,8 @@ void register_verify(CLI::App& app, int& exit_code) {
     options.allow_overlap = args->allow_overlap;
     options.timeout_ms = args->timeout_ms;
     verify::Result result = verify::verify_mission(*mission, options);
-    report::ReportInput input = report_input(*mission, {"load", "verify"});
+    report::ReportInput input =
+        report::ReportInput::of(*mission, tool_version(), {"load", "verify"});
     input.findings.insert(input.findings.end(), result.findings.begin(), result.findings.end());
     sort_findings(input.findings);
     input.coverage = std::move(result.coverage);

@@ -62,21 +62,6 @@ std::string sarif_uri_prefix(const std::string& mission_arg, const std::string& 
   return text + "/";
 }
 
-report::ReportInput report_input(const load::Mission& mission, std::vector<std::string> stages) {
-  report::ReportInput input;
-  input.tool_version = tool_version();
-  input.mission_name = mission.name;
-  input.mission = &mission;
-  for (const auto& site : mission.adaptables) {
-    bool seen = false;
-    for (const auto& id : input.adaptables) seen |= id == site.id;
-    if (!seen && !site.id.empty()) input.adaptables.push_back(site.id);
-  }
-  input.findings = mission.findings;
-  input.stages = std::move(stages);
-  return input;
-}
-
 int write_findings(const report::ReportInput& input, const std::string& format,
                    const std::string& output,
                    const std::pair<std::string, std::string>& verdict_words) {

@@ -13,9 +13,6 @@ namespace uabt::cli {
 // findings.
 void add_findings_output_options(CLI::App& cmd, std::string& format, std::string& output);
 
-// A report input holding the mission's own (load-stage) findings.
-report::ReportInput report_input(const load::Mission& mission, std::vector<std::string> stages);
-
 // `--source-root DIR`, for every command whose output may be SARIF.
 void add_source_root_option(CLI::App& cmd, std::string& source_root);
 

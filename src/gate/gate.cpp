@@ -13,18 +13,8 @@ Outcome check_mission(load::Mission mission, const Options& options,
   out.mission = std::make_unique<load::Mission>(std::move(mission));
   const load::Mission& m = *out.mission;
 
+  out.report = report::ReportInput::of(m, tool_version, {"load"});
   report::ReportInput& report = out.report;
-  report.tool_version = tool_version;
-  report.mission_name = m.name;
-  report.mission = &m;
-  for (const auto& site : m.adaptables) {
-    if (site.id.empty()) continue;
-    bool seen = false;
-    for (const auto& id : report.adaptables) seen |= id == site.id;
-    if (!seen) report.adaptables.push_back(site.id);
-  }
-  report.findings = m.findings;
-  report.stages = {"load"};
   const std::vector<Finding> properties = check_mission_properties(m);
   report.findings.insert(report.findings.end(), properties.begin(), properties.end());
 

@@ -1,10 +1,27 @@
 #include "report/model.hpp"
 
+#include <algorithm>
+
 #include <cctype>
 
 #include "base/text.hpp"
 
 namespace uabt::report {
+
+ReportInput ReportInput::of(const load::Mission& mission, std::string tool_version,
+                            std::vector<std::string> stages) {
+  ReportInput input;
+  input.tool_version = std::move(tool_version);
+  input.mission_name = mission.name;
+  input.mission = &mission;
+  for (const auto& site : mission.adaptables)
+    if (!site.id.empty() && std::find(input.adaptables.begin(), input.adaptables.end(), site.id) ==
+                                input.adaptables.end())
+      input.adaptables.push_back(site.id);
+  input.findings = mission.findings;
+  input.stages = std::move(stages);
+  return input;
+}
 
 std::string ReportInput::verdict_text() const {
   if (!passed()) return "fail";

@@ -82,6 +82,11 @@ struct ReportInput {
   std::optional<Proofs> proofs;          // set when the mission states guarantees
   std::optional<TestCampaign> campaign;  // set by `gate` when it writes the test campaign
 
+  // What a report of `mission` starts from: its adaptable nodes in mission order and the
+  // findings loading it gave; each stage that runs adds its findings and its name.
+  static ReportInput of(const load::Mission& mission, std::string tool_version,
+                        std::vector<std::string> stages);
+
   bool passed() const { return !has_errors(findings); }
   // "pass", "fail", or "pass with 1 guarantee retired" (and/or weakened) when an uplink gives
   // up guarantees with uplink.json's consent: every format's banner says it in these words.
