@@ -47,67 +47,40 @@ std::optional<Atom> atom_of(const std::optional<Affine>& l, const std::optional<
   return out;
 }
 
-class FretishAffine {
- public:
-  FretishAffine(const std::set<std::string, std::less<>>& numeric,
-                const std::set<std::string, std::less<>>& mission,
-                const std::set<std::string, std::less<>>& integers)
-      : numeric_(numeric), mission_(mission), integers_(integers) {}
-  std::optional<Affine> of(const Expr& e) const {
-    try {
-      switch (e.kind) {
-        case ExprKind::number: {
-          const auto f = Fraction::parse(e.text);
-          if (!f) return std::nullopt;
-          return Affine::of_constant(*f);
-        }
-        case ExprKind::identifier:
-          if (!numeric_.contains(e.text) && !mission_.contains(e.text)) return std::nullopt;
-          return Affine::of_variable(e.text);
-        case ExprKind::negate: return product(of(*e.args[0]), Affine::of_constant(-1));
-        case ExprKind::add:
-        case ExprKind::sub: {
-          std::optional<Affine> acc = of(*e.args[0]);
-          for (std::size_t i = 1; i < e.args.size() && acc; ++i) {
-            const auto r = of(*e.args[i]);
-            acc = r ? std::optional(acc->plus(*r, e.kind == ExprKind::add ? 1 : -1)) : std::nullopt;
-          }
-          return acc;
-        }
-        case ExprKind::mul: return product(of(*e.args[0]), of(*e.args[1]));
-        case ExprKind::div:
-          // A quotient of integers truncates toward zero: a step function, not affine.
-          if (integral(*e.args[0]) && integral(*e.args[1])) return std::nullopt;
-          return quotient(of(*e.args[0]), of(*e.args[1]));
-        default: return std::nullopt;
-      }
-    } catch (const verify::detail::FractionOverflow&) {
-      return std::nullopt;
-    }
+// Whether `e` has FRETISH's integer type (its numbers and variables are integers).
+bool integral(const Expr& e, const std::set<std::string, std::less<>>& integers) {
+  switch (e.kind) {
+    case ExprKind::number: return fretish::is_integer_literal(e.text);
+    case ExprKind::identifier: return integers.contains(e.text);
+    case ExprKind::negate:
+    case ExprKind::add:
+    case ExprKind::sub:
+    case ExprKind::mul:
+    case ExprKind::div:
+    case ExprKind::mod:
+      for (const auto& a : e.args)
+        if (!a || !integral(*a, integers)) return false;
+      return true;
+    default: return false;
   }
+}
 
- private:
-  // Whether `e` has FRETISH's integer type (its numbers and variables are integers).
-  bool integral(const Expr& e) const {
-    switch (e.kind) {
-      case ExprKind::number: return e.text.find_first_of(".eE") == std::string::npos;
-      case ExprKind::identifier: return integers_.contains(e.text);
-      case ExprKind::negate:
-      case ExprKind::add:
-      case ExprKind::sub:
-      case ExprKind::mul:
-      case ExprKind::div:
-      case ExprKind::mod:
-        for (const auto& a : e.args)
-          if (!a || !integral(*a)) return false;
-        return true;
-      default: return false;
-    }
+// `e` as an affine form over the cut's variables and the mission's state; a division of
+// integers truncates toward zero, a step function, so it has none.
+std::optional<Affine> affine_of(const Expr& e, const std::set<std::string, std::less<>>& numeric,
+                                const std::set<std::string, std::less<>>& mission,
+                                const std::set<std::string, std::less<>>& integers) {
+  const verify::detail::AffineReading reading{
+      [&](const Expr& x) { return numeric.contains(x.text) || mission.contains(x.text); },
+      [&](const Expr& d) {
+        return integral(*d.args[0], integers) && integral(*d.args[1], integers);
+      }};
+  try {
+    return verify::detail::affine_form(e, reading);
+  } catch (const verify::detail::FractionOverflow&) {
+    return std::nullopt;
   }
-  const std::set<std::string, std::less<>>& numeric_;
-  const std::set<std::string, std::less<>>& mission_;
-  const std::set<std::string, std::less<>>& integers_;
-};
+}
 
 }  // namespace
 
@@ -168,10 +141,10 @@ void Cuts::walk(const Expr& e, const std::string& where, const Expr* atom, bool 
        name_value(e.args[1]->text, e.args[0]->text)))
     return;
   if (fretish::is_relation(e.kind) && e.args.size() == 2) {
-    const FretishAffine affine(numeric_, mission_, integers_);
     std::optional<Atom> a;
     try {
-      a = atom_of(affine.of(*e.args[0]), affine.of(*e.args[1]), numeric_);
+      a = atom_of(affine_of(*e.args[0], numeric_, mission_, integers_),
+                  affine_of(*e.args[1], numeric_, mission_, integers_), numeric_);
     } catch (const verify::detail::FractionOverflow&) {
     }
     if (cut(a, "the atom `" + fretish::to_fretish(e) + "` (" + where + ")", at_tick_start)) return;

@@ -47,26 +47,22 @@ std::optional<Affine> quotient(const std::optional<Affine>& l, const std::option
   return l->scaled(Fraction(1) / r->constant);
 }
 
-namespace {
-
-std::optional<Affine> form_of(const Expr& e, const smt::Typing& typing) {
-  const smt::TypeInfo* t = typing.find(e);
-  if (t == nullptr || (t->sort != smt::Sort::integer && t->sort != smt::Sort::real))
-    return std::nullopt;
+std::optional<Affine> affine_form(const Expr& e, const AffineReading& reading) {
   switch (e.kind) {
     case ExprKind::number: {
       const auto f = Fraction::parse(e.text);
       return f ? std::optional(Affine::of_constant(*f)) : std::nullopt;
     }
     case ExprKind::identifier:
-      return t->variable ? std::optional(Affine::of_variable(e.text)) : std::nullopt;
-    case ExprKind::negate: return product(form_of(*e.args[0], typing), Affine::of_constant(-1));
+      return reading.variable(e) ? std::optional(Affine::of_variable(e.text)) : std::nullopt;
+    case ExprKind::negate:
+      return product(affine_form(*e.args[0], reading), Affine::of_constant(-1));
     case ExprKind::add:
     case ExprKind::sub:
     case ExprKind::mul: {
-      std::optional<Affine> acc = form_of(*e.args[0], typing);
+      std::optional<Affine> acc = affine_form(*e.args[0], reading);
       for (std::size_t k = 1; k < e.args.size() && acc; ++k) {
-        const auto a = form_of(*e.args[k], typing);
+        const auto a = affine_form(*e.args[k], reading);
         if (e.kind == ExprKind::mul)
           acc = product(acc, a);
         else
@@ -75,14 +71,11 @@ std::optional<Affine> form_of(const Expr& e, const smt::Typing& typing) {
       return acc;
     }
     case ExprKind::div:
-      // Integer division truncates: not linear.
-      if (t->sort != smt::Sort::real || e.args.size() != 2) return std::nullopt;
-      return quotient(form_of(*e.args[0], typing), form_of(*e.args[1], typing));
+      if (e.args.size() != 2 || reading.truncates(e)) return std::nullopt;
+      return quotient(affine_form(*e.args[0], reading), affine_form(*e.args[1], reading));
     default: return std::nullopt;
   }
 }
-
-}  // namespace
 
 bool LinearAtom::holds_at(const Fraction& value) const {
   switch (op) {
@@ -104,7 +97,14 @@ bool LinearAtom::holds(const std::map<std::string, Fraction>& values) const {
 std::optional<LinearAtom> linear_atom(const Expr& atom, const smt::Typing& typing) {
   if (!fretish::is_relation(atom.kind) || atom.args.size() != 2) return std::nullopt;
   try {
-    auto lhs = form_of(*atom.args[0], typing), rhs = form_of(*atom.args[1], typing);
+    auto numeric = [&](const Expr& e) {
+      const smt::TypeInfo* t = typing.find(e);
+      return t != nullptr && (t->sort == smt::Sort::integer || t->sort == smt::Sort::real);
+    };
+    const AffineReading reading{
+        [&](const Expr& e) { return numeric(e) && typing.find(e)->variable; },
+        [&](const Expr& e) { return !numeric(e) || typing.find(e)->sort != smt::Sort::real; }};
+    auto lhs = affine_form(*atom.args[0], reading), rhs = affine_form(*atom.args[1], reading);
     if (!lhs || !rhs) return std::nullopt;
     const Affine d = lhs->plus(*rhs, -1);
     LinearAtom out;

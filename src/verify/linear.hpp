@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -25,6 +26,17 @@ struct Affine {
 // when either is nullopt).
 std::optional<Affine> product(const std::optional<Affine>& l, const std::optional<Affine>& r);
 std::optional<Affine> quotient(const std::optional<Affine>& l, const std::optional<Affine>& r);
+
+// How a caller reads the leaves of an expression as an affine form: which identifiers are
+// variables of the form, and which divisions truncate (integer division, a step function).
+struct AffineReading {
+  std::function<bool(const fretish::Expr& identifier)> variable;
+  std::function<bool(const fretish::Expr& division)> truncates;
+};
+// The affine form of a numeric expression: numbers, variables, + - unary minus, multiplication
+// by a constant and division by a non-zero constant that does not truncate. nullopt for
+// anything else; beyond 128 bits it throws FractionOverflow.
+std::optional<Affine> affine_form(const fretish::Expr& e, const AffineReading& reading);
 
 // An atom `Σ coefficient·variable + constant  op  0` over numeric variables, exact.
 struct LinearAtom {
