@@ -45,4 +45,14 @@ void counterexample_html(const std::string& id, const std::string& heading, cons
 const char* page_style();
 const char* proofs_style();
 
+// The start of a uabt HTML page through its banner: the title names the command
+// ("uabt report: M PASS"), `style` is the page's CSS, `lines` the banner's paragraphs (HTML).
+std::string page_head(std::string_view command, const std::string& mission, bool passed,
+                      const std::string& verdict, const std::string& style,
+                      const std::vector<std::string>& lines);
+// The end of a page: <main> closed and a footer naming the tool and the mission, and with
+// `explains_checks` where `uabt explain` documents its findings.
+std::string page_foot(const std::string& tool_version, const std::string& mission,
+                      bool explains_checks);
+
 }  // namespace uabt::report::detail
