@@ -126,11 +126,11 @@ std::string path_prefix_for(const fs::path& mission_dir) {
   return text + "/";
 }
 
-std::string format_state(const State& state) {
+std::string format_state(const State& state, std::string_view equals) {
   std::string out;
   for (const auto& [name, value] : state) {
     if (!out.empty()) out += ", ";
-    out += name + "=" + value.to_string();
+    out += name + std::string(equals) + value.to_string();
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "base/finding.hpp"
@@ -24,8 +25,8 @@ struct TextOptions {
 // witness as `note:` lines. Locations without a line print as `file: severity: …`.
 std::string format_text(const std::vector<Finding>& findings, const TextOptions& options = {});
 
-// "OnDust=true, OnRocks=true"
-std::string format_state(const State& state);
+// "OnDust=true, OnRocks=true"; with `equals` " = ", "OnDust = true, OnRocks = true".
+std::string format_state(const State& state, std::string_view equals = "=");
 
 // The prefix that makes a file relative to `mission_dir` openable from the current directory:
 // the directory as given when it is relative, else relative to the current directory when it

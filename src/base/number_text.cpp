@@ -136,6 +136,12 @@ nlohmann::ordered_json value_json(const Value& value) {
   return value.to_string();
 }
 
+nlohmann::ordered_json state_json(const State& state) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& [name, value] : state) out[name] = value_json(value);
+  return out;
+}
+
 Value number_value(double value) {
   if (fits_int64(value)) return Value::of_int(static_cast<std::int64_t>(value));
   return Value::of_real(value, number_text(value));

@@ -29,6 +29,8 @@ nlohmann::ordered_json number_json(double value);
 // number by its variable's declaration, fretish::number_is_integer; a real whose exact value
 // is no double, such as the solver's 1/3, as its exact text), enumeration values as strings.
 nlohmann::ordered_json value_json(const Value& value);
+// A state (a witness, a scenario's initial values) as a JSON object of value_json, in its order.
+nlohmann::ordered_json state_json(const State& state);
 
 // A number read at run time (by a monitor, from a trace) as a Value: integer-valued numbers
 // within 64 bits are integers, the others reals whose text is number_text's.

@@ -116,7 +116,7 @@ void replay(const load::Mission& mission, const Replayer& replayer, const Option
   // In world.json's world: an initial state it allows, its actions' contracts.
   if (options.world != nullptr)
     initial = world_initial(mission, *options.world, std::move(initial));
-  j_scenario["initial"] = Json::parse(state_json(in_domain_order(mission.domain, initial)));
+  j_scenario["initial"] = state_json(in_domain_order(mission.domain, initial));
   if (options.world != nullptr) j_scenario["actions"] = world_actions(*options.world, initial);
   s.json = j_scenario.dump(2) + "\n";
   try {
@@ -358,7 +358,7 @@ std::string criteria_text(const Counts& c) {
 
 std::string witness_text(const Target& t) {
   std::string out;
-  for (const auto& w : t.witness) out += (out.empty() ? "" : " and ") + state_json(w);
+  for (const auto& w : t.witness) out += (out.empty() ? "" : " and ") + state_json(w).dump();
   return out;
 }
 
@@ -566,7 +566,7 @@ std::string coverage_json(const CoverageReport& report) {
       e["scenario"] = Json::parse(t.scenario);
     else if (t.reachable && !report.covered[k]) {
       Json w = Json::array();
-      for (const auto& s : t.witness) w.push_back(Json::parse(state_json(s)));
+      for (const auto& s : t.witness) w.push_back(state_json(s));
       e["scenario_initial"] = w;
     }
     targets.push_back(std::move(e));

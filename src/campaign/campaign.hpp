@@ -307,7 +307,4 @@ std::string visited_text(const Visited& visited);
 RunRecord observe_trace(const load::Mission& mission, const std::string& content,
                         const std::string& file, std::vector<Finding>& findings);
 
-// A state as the "initial" object of a scenario.
-std::string state_json(const State& state);
-
 }  // namespace uabt::campaign

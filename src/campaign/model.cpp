@@ -478,7 +478,7 @@ std::vector<State> solved_visits(const Model::Node& n, const std::vector<const O
     if (s) {
       if (alt.empty() && n.solved_selection(*s) >= 0)
         alt = n.reqs[static_cast<std::size_t>(n.solved_selection(*s))]->alternative;
-      if (keys.insert(state_json(*s)).second) states.push_back(*s);
+      if (keys.insert(state_json(*s).dump()).second) states.push_back(*s);
     }
     if (!alt.empty() && alternatives != nullptr) alternatives->insert(alt);
   }
@@ -679,12 +679,6 @@ std::vector<Model::Pick> Model::minimise(
     }
   }
   return picks;
-}
-
-std::string state_json(const State& state) {
-  nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (const auto& [name, v] : state) j[name] = value_json(v);
-  return j.dump();
 }
 
 }  // namespace uabt::campaign

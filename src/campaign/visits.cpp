@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "base/number_text.hpp"
 #include "campaign/campaign.hpp"
 #include "campaign/node.hpp"
 #include "verify/coverage_parts.hpp"
@@ -88,7 +89,7 @@ std::vector<NodeVisit> Model::visits(const std::vector<RunRecord>& runs) const {
       // No enumeration, no measure: the distinct states the runs visited, counted.
       std::set<std::string> seen;
       for (const auto& [o, run] : by_node[n.adaptable])
-        if (const auto s = n.solved_state(o->state)) seen.insert(state_json(*s));
+        if (const auto s = n.solved_state(o->state)) seen.insert(state_json(*s).dump());
       visit.visited.cells = seen.size();
       visit.share_not_computed = n.solved->why;
       visit.no_map = n.solved->why;

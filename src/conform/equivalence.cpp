@@ -1,5 +1,7 @@
 #include "conform/equivalence.hpp"
 
+#include "base/diagnostics.hpp"
+
 namespace uabt::conform {
 
 Prover::Prover(const fretish::Domain& domain, unsigned timeout_ms)
@@ -49,12 +51,7 @@ Proof Prover::equivalent(const z3::expr& a, const z3::expr& b) {
 }
 
 std::string describe(const State& state) {
-  std::string out;
-  for (const auto& [name, value] : state) {
-    if (!out.empty()) out += ", ";
-    out += name + " = " + value.to_string();
-  }
-  return out.empty() ? "any state" : out;
+  return state.empty() ? "any state" : format_state(state, " = ");
 }
 
 }  // namespace uabt::conform

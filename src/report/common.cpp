@@ -14,12 +14,6 @@
 
 namespace uabt::report::detail {
 
-nlohmann::ordered_json witness_json(const State& state) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const auto& [name, value] : state) out[name] = value_json(value);
-  return out;
-}
-
 std::string percent(std::uint64_t part, std::uint64_t whole) {
   char buffer[32];
   const double share =

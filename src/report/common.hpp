@@ -15,9 +15,6 @@
 
 namespace uabt::report::detail {
 
-// A witness as a JSON object of its values (uabt::value_json).
-nlohmann::ordered_json witness_json(const State& state);
-
 // "25.0%" — one decimal, "0.0%" when `whole` is 0.
 std::string percent(std::uint64_t part, std::uint64_t whole);
 

@@ -89,7 +89,7 @@ Json impact_nodes_json(const verify::Impact& impact) {
       j["states"] = counted ? Json(c.states) : Json(nullptr);
       j["share"] = share_json(node, c.share);
       j["share_exact"] = share_exact_json(node, c.share);
-      j["example"] = detail::witness_json(c.example);
+      j["example"] = state_json(c.example);
       changes.push_back(std::move(j));
     }
     Json j;

@@ -24,7 +24,7 @@ Json finding_json(const Finding& finding) {
   out["adaptable"] = finding.adaptable;
   out["requirements"] = Json(finding.requirements);
   out["alternatives"] = Json(finding.alternatives);
-  out["witness"] = detail::witness_json(finding.witness);
+  out["witness"] = state_json(finding.witness);
   if (!finding.node_path.empty()) out["node_path"] = finding.node_path;
   if (!finding.notes.empty()) out["notes"] = Json(finding.notes);
   return out;

@@ -8,15 +8,6 @@ namespace uabt::report {
 
 namespace {
 
-std::string state_words(const State& state) {
-  std::string out;
-  for (const auto& [name, value] : state) {
-    if (!out.empty()) out += ", ";
-    out += name + " = " + value.to_string();
-  }
-  return out;
-}
-
 void coverage_section(const verify::Coverage& coverage, std::string& out) {
   out += "\n### Coverage of " + detail::markdown_code(coverage.adaptable) + "\n\n";
   if (!coverage.counted && (coverage.measured || coverage.bounded)) {
@@ -122,7 +113,7 @@ std::string to_markdown(const ReportInput& input) {
       any_witness = true;
       out += "- " + detail::markdown_code(finding.check) + " at " +
              detail::markdown_code(detail::location_text(finding.location)) + ": " +
-             detail::markdown_text(state_words(finding.witness)) + "\n";
+             detail::markdown_text(format_state(finding.witness, " = ")) + "\n";
     }
     out += "\n`uabt explain CHECK-ID` says why a check matters and how to fix it.\n";
   }

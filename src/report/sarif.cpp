@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/number_text.hpp"
 #include "report/common.hpp"
 #include "report/reports.hpp"
 #include "report/text.hpp"
@@ -164,7 +165,7 @@ std::string to_sarif(const ReportInput& input) {
     properties["adaptable"] = finding.adaptable;
     properties["requirements"] = Json(finding.requirements);
     properties["alternatives"] = Json(finding.alternatives);
-    properties["witness"] = detail::witness_json(finding.witness);
+    properties["witness"] = state_json(finding.witness);
     if (!finding.node_path.empty()) properties["node_path"] = finding.node_path;
     if (!finding.notes.empty()) properties["notes"] = Json(finding.notes);
     result["properties"] = std::move(properties);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "base/files.hpp"
+#include "base/number_text.hpp"
 #include "campaign/campaign.hpp"
 #include "cli/cli_support.hpp"
 #include "fretish/expr.hpp"
@@ -358,7 +359,7 @@ TEST(CampaignSolved, WideIntegersGetBoundaryTargetsAndNoShare) {
   std::map<std::string, std::string> boundary;
   for (const auto& t : c.targets)
     if (t.criterion == Criterion::boundary)
-      boundary[t.id] = t.reachable ? campaign::state_json(t.witness.front()) : t.reason;
+      boundary[t.id] = t.reachable ? state_json(t.witness.front()).dump() : t.reason;
   ASSERT_EQ(boundary.size(), 10u);
   for (const char* side : {"below", "at", "above"})
     EXPECT_EQ(boundary.count(std::string("node/boundary/line/w + v = 60/") + side), 1u) << side;
@@ -607,7 +608,7 @@ TEST(CampaignTargets, BoundariesOfRealsAndIntegers) {
   const campaign::Model model(m, {Criterion::boundary});
   std::map<std::string, std::string> witness;
   for (const auto& t : model.targets())
-    if (t.reachable) witness[t.id] = campaign::state_json(t.witness.front());
+    if (t.reachable) witness[t.id] = state_json(t.witness.front()).dump();
   // wind < 15 / wind >= 15: one scenario on the point boundary, one on each side.
   EXPECT_EQ(witness.at("landing/boundary/wind/15/at"),
             R"({"wind":15,"battery":0,"terrain":"flat"})");
@@ -872,7 +873,7 @@ std::string record_text(const campaign::RunRecord& r) {
       r.source + " | " + r.verdict + " | " + r.error + " | " + std::to_string(r.ticks) + "\n";
   for (const auto& o : r.observations)
     out += "  " + o.adaptable + " " + o.alternative + " at " + std::to_string(o.tick) + " in " +
-           campaign::state_json(o.state) + "\n";
+           state_json(o.state).dump() + "\n";
   return out;
 }
 
