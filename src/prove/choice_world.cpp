@@ -77,17 +77,10 @@ ChoiceWorld::ChoiceWorld(const WorldModel& model, std::vector<bt::NodeModel> nod
       domain_(domain) {}
 
 std::string leaf_state_key(const std::string& name, std::span<const runtime::LeafPort> ports) {
-  if (ports.empty()) return name;
-  std::vector<const runtime::LeafPort*> sorted;
-  for (const auto& p : ports) {
+  for (const auto& p : ports)
     if (p.from_blackboard()) return name;
-    sorted.push_back(&p);
-  }
-  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->name < b->name; });
-  std::string key = name + "(";
-  for (std::size_t i = 0; i < sorted.size(); ++i)
-    key += (i ? "," : "") + sorted[i]->name + "=" + sorted[i]->literal;
-  return key + ")";
+  return runtime::qualified_leaf_key(name, ports,
+                                     [](const runtime::LeafPort& p) { return p.literal; });
 }
 
 std::uint32_t ChoiceWorld::bind_leaf(const runtime::LeafBinding& binding) {

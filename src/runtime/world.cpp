@@ -26,21 +26,24 @@ void SimWorld::apply_event(const ScenarioEvent& event, Blackboard& blackboard) c
   for (const auto& [key, value] : event.set) blackboard.set(key, value);
 }
 
-std::string SimWorld::qualified_key(const Leaf& leaf, std::span<const LeafPort> ports,
-                                    const Blackboard& blackboard) const {
-  if (ports.empty()) return leaf.name;
+std::string qualified_leaf_key(const std::string& name, std::span<const LeafPort> ports,
+                               const std::function<std::string(const LeafPort&)>& value) {
+  if (ports.empty()) return name;
   std::vector<const LeafPort*> sorted;
   for (const LeafPort& p : ports) sorted.push_back(&p);
   std::sort(sorted.begin(), sorted.end(),
             [](const LeafPort* a, const LeafPort* b) { return a->name < b->name; });
-  std::string key = leaf.name + "(";
-  for (std::size_t i = 0; i < sorted.size(); ++i) {
-    if (i > 0) key += ",";
-    key += sorted[i]->name + "=";
-    key += sorted[i]->from_blackboard() ? blackboard.value(sorted[i]->slot).to_string()
-                                        : sorted[i]->literal;
-  }
+  std::string key = name + "(";
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    key += (i ? "," : "") + sorted[i]->name + "=" + value(*sorted[i]);
   return key + ")";
+}
+
+std::string SimWorld::qualified_key(const Leaf& leaf, std::span<const LeafPort> ports,
+                                    const Blackboard& blackboard) const {
+  return qualified_leaf_key(leaf.name, ports, [&](const LeafPort& p) {
+    return p.from_blackboard() ? blackboard.value(p.slot).to_string() : p.literal;
+  });
 }
 
 std::uint32_t SimWorld::bind_leaf(const LeafBinding& binding) {

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <span>
 #include <string>
@@ -37,6 +38,11 @@ struct LeafPort {
            (direction == PortDirection::output || direction == PortDirection::inout);
   }
 };
+
+// "MoveTo(goal=A,speed=2)": a leaf's name qualified by its ports in name order, as world.json
+// and scenarios key a leaf; `value` gives a port's value (its literal, or the entry it reads).
+std::string qualified_leaf_key(const std::string& name, std::span<const LeafPort> ports,
+                               const std::function<std::string(const LeafPort&)>& value);
 
 // What a World learns about a robot leaf once, when it is instantiated.
 struct LeafBinding {
