@@ -12,6 +12,7 @@
 #include "base/diagnostics.hpp"
 #include "campaign/guarantee.hpp"
 #include "campaign/node.hpp"
+#include "campaign/world_reach.hpp"
 #include "monitor/check_trace.hpp"
 #include "monitor/monitor.hpp"
 #include "monitor/property_set.hpp"
@@ -260,28 +261,14 @@ GuaranteePlan plan_guarantee_targets(const load::Mission& mission, const Replaye
     Target t = planned[k].target;
     const prove::Reach& a = answers[k];
     const fretish::Requirement& r = *planned[k].goal.scope_of;
-    switch (a.verdict) {
-      case prove::Verdict::violated: reached.push_back(k); break;
-      case prove::Verdict::proved:
-        t.reachable = false;
+    if (a.verdict == prove::Verdict::violated) {
+      reached.push_back(k);
+    } else {
+      t.reachable = false;
+      t.undecided = !unreached(a, t.reason);
+      if (a.verdict == prove::Verdict::proved)
         t.reason = "no run that world.json allows reaches it (" + r.id + " at " +
                    where(mission, r.location) + ")";
-        break;
-      case prove::Verdict::bounded:
-        t.reachable = false;
-        t.undecided = true;
-        t.reason =
-            "not decided within " + std::to_string(a.depth) + (a.depth == 1 ? " tick" : " ticks");
-        break;
-      case prove::Verdict::vacuous:
-        t.reachable = false;
-        t.reason = "world.json leaves no run: " + a.reason;
-        break;
-      case prove::Verdict::unsupported:
-        t.reachable = false;
-        t.undecided = true;
-        t.reason = "not decided: prove cannot read it: " + a.reason;
-        break;
     }
     out.targets.push_back(std::move(t));
     out.covered.push_back(false);

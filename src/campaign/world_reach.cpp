@@ -51,6 +51,21 @@ prove::Goal node_goal(const load::Mission& mission, const Model& model, std::siz
   return goal;
 }
 
+bool unreached(const prove::Reach& a, std::string& reason) {
+  switch (a.verdict) {
+    case prove::Verdict::proved: return true;
+    case prove::Verdict::vacuous: reason = "world.json leaves no run: " + a.reason; return true;
+    case prove::Verdict::bounded:
+      reason = "not decided within " + count_text(a.depth, "tick");
+      break;
+    case prove::Verdict::unsupported:
+      reason = "not decided: prove cannot read it: " + a.reason;
+      break;
+    case prove::Verdict::violated: break;
+  }
+  return false;
+}
+
 void reach_in_world(const load::Mission& mission, const Model& model, const Replayer& replayer,
                     const Options& options, Campaign& c) {
   std::vector<RunRecord> runs;
@@ -201,21 +216,10 @@ void reach_in_world(const load::Mission& mission, const Model& model, const Repl
                 : "no run (whatever its actions return: no world.json bounds them)";
   auto why_not = [&](std::size_t g, std::string& reason) {
     const prove::Reach& a = answers[g];
-    switch (a.verdict) {
-      case prove::Verdict::proved: return true;
-      case prove::Verdict::violated:
-        reason = "not decided: uabt prove reaches it at tick " + std::to_string(a.depth) +
-                 " but the replay of its run does not" +
-                 (problem[g].empty() ? std::string() : " (" + problem[g] + ")");
-        return false;
-      case prove::Verdict::bounded:
-        reason = "not decided within " + count_text(a.depth, "tick");
-        return false;
-      case prove::Verdict::vacuous: reason = "world.json leaves no run: " + a.reason; return true;
-      case prove::Verdict::unsupported:
-        reason = "not decided: prove cannot read it: " + a.reason;
-        return false;
-    }
+    if (a.verdict != prove::Verdict::violated) return unreached(a, reason);
+    reason = "not decided: uabt prove reaches it at tick " + std::to_string(a.depth) +
+             " but the replay of its run does not" +
+             (problem[g].empty() ? std::string() : " (" + problem[g] + ")");
     return false;
   };
   std::size_t reached = 0, unreachable = 0, undecided = 0;

@@ -17,6 +17,11 @@ namespace uabt::campaign {
 prove::Goal node_goal(const load::Mission& mission, const Model& model, std::size_t node,
                       const std::string& condition, const std::string& id);
 
+// Of a goal prove's search did not reach (any verdict but violated): true where it shows that no
+// run reaches it, else false with why it is not decided in `reason` (also set for world.json
+// leaving no run). One wording for selection targets and guarantee targets.
+bool unreached(const prove::Reach& answer, std::string& reason);
+
 // Searches for each selection target of `c` that no run of its scenarios covers and that the
 // domain does not rule out, with prove's world model (options.world, else the unconstrained
 // one): adds a scenario for the targets its runs reach (scenarios named "<node>-00", numbered
