@@ -13,6 +13,14 @@ struct SourceLocation {
   int end_line = 0;  // last line when the place spans several lines (a node's requirements)
 };
 
+// "requirements.fret:9:76": a file, line and column as every message names a place.
+inline std::string place_text(const std::string& file, int line, int column) {
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+}
+inline std::string place_text(const SourceLocation& l) {
+  return place_text(l.file, l.line, l.column);
+}
+
 // A span within one file (1-based, end inclusive of the last character).
 struct SourceRange {
   int begin_line = 0;

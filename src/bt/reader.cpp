@@ -359,9 +359,8 @@ class TextParser {
         const SourceLocation& earlier = first->second.first;
         Finding f = make_finding("ref-duplicate-id",
                                  "node ID '" + model.id + "' is registered twice in " + file_, at);
-        f.notes.push_back("first registered at " + earlier.file + ":" +
-                          std::to_string(earlier.line) + ":" + std::to_string(earlier.column) +
-                          " (as " + first->second.second +
+        f.notes.push_back("first registered at " + place_text(earlier) + " (as " +
+                          first->second.second +
                           "): BehaviorTree.CPP refuses to register an ID twice");
         findings_.push_back(std::move(f));
         continue;

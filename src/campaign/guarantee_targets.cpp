@@ -197,8 +197,7 @@ Play play(const load::Mission& traps, const Replayer& replayer, const std::strin
 }
 
 std::string where(const load::Mission& mission, const SourceLocation& l) {
-  return path_prefix_for(mission.dir) + l.file + ":" + std::to_string(l.line) + ":" +
-         std::to_string(l.column);
+  return path_prefix_for(mission.dir) + place_text(l);
 }
 
 // Why the monitor cannot judge a trap on a trace: "the trace lacks OnMud", else its own words.

@@ -175,9 +175,8 @@ void register_prove(CLI::App& app, int& exit_code) {
     std::string text = format_text(input.findings, text_options);
     for (const auto& a : result.answers)
       if (a.verdict == prove::Verdict::proved)
-        text += text_options.path_prefix + a.location.file + ":" + std::to_string(a.location.line) +
-                ":" + std::to_string(a.location.column) + ": note: guarantee '" + a.requirement +
-                "' is proved: " + a.text + " (" + proof_extent(result, a) + ")\n";
+        text += text_options.path_prefix + place_text(a.location) + ": note: guarantee '" +
+                a.requirement + "' is proved: " + a.text + " (" + proof_extent(result, a) + ")\n";
     if (!result.engine_reason.empty())
       text +=
           "note: the symbolic engine was chosen: " + with_user_path(result.engine_reason, prefix) +

@@ -177,11 +177,7 @@ std::string trace_report_json(const TraceReport& report) {
     r["pending"] = p.pending_since ? nlohmann::ordered_json{{"obligation", p.pending},
                                                             {"since", *p.pending_since}}
                                    : nlohmann::ordered_json(nullptr);
-    if (!p.values.empty()) {
-      nlohmann::ordered_json values = nlohmann::ordered_json::object();
-      for (const auto& [name, value] : p.values) values[name] = value_json(value);
-      r["values"] = values;
-    }
+    if (!p.values.empty()) r["values"] = state_json(p.values);
     out["requirements"].push_back(r);
   }
   return out.dump(2) + "\n";
@@ -191,10 +187,8 @@ std::string trace_report_text(const TraceReport& report) {
   std::string out;
   int held = 0, violated = 0, unmonitored = 0;
   for (const PropertyResult& p : report.properties) {
-    const std::string where = p.location.file.empty()
-                                  ? std::string()
-                                  : p.location.file + ":" + std::to_string(p.location.line) + ":" +
-                                        std::to_string(p.location.column) + ": ";
+    const std::string where =
+        p.location.file.empty() ? std::string() : place_text(p.location) + ": ";
     const std::string role = p.assumption ? " (assumption)" : p.selection ? " (selection)" : "";
     switch (p.verdict) {
       case Verdict::held:

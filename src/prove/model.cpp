@@ -47,8 +47,7 @@ struct ProbeWorld : runtime::World {
       if (!p.writes_entry()) continue;
       Output out{b.blackboard.key(p.slot), p.name, "",
                  b.blackboard.owner(p.slot) == runtime::Blackboard::kRootScope,
-                 b.info.location.file + ":" + std::to_string(b.info.location.line) + ":" +
-                     std::to_string(b.info.location.column) + ": " + b.kind};
+                 place_text(b.info.location) + ": " + b.kind};
       if (model)
         for (const auto& port : model->ports)
           if (port.name == p.name) out.type = port.type;
@@ -235,10 +234,8 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
         auto it = std::find_if(vars.begin(), vars.end(),
                                [&](const StateVar& v) { return v.name == written; });
         if (it == vars.end())
-          throw ProveError(c.location.file + ":" + std::to_string(c.location.line) + ":" +
-                           std::to_string(c.location.column) + ": error: action '" + name +
-                           "' writes '" + written +
-                           "', which is neither declared in the domain nor a condition");
+          throw ProveError(place_text(c.location) + ": error: action '" + name + "' writes '" +
+                           written + "', which is neither declared in the domain nor a condition");
         it->env = false;
         it->script_written = true;
       }
@@ -320,8 +317,7 @@ Model::Model(const load::Mission& m, const bt::Document& compiled, const WorldMo
           auto program = runtime::script::Program::parse(value);
           for (const auto& name : program.names()) read.insert(name);
           tree_scripts.push_back({std::move(program), "the " + attr + " of " + n.tag + " at " +
-                                                          doc.file + ":" + std::to_string(n.line) +
-                                                          ":" + std::to_string(n.column)});
+                                                          place_text(doc.file, n.line, n.column)});
         } catch (const std::exception&) {
         }
       }
@@ -449,14 +445,11 @@ void Model::choose_values(const std::map<std::string, std::string, std::less<>>&
       integers.insert(v.name);
   Cuts cuts(numeric, mission_numbers, integers, enums);
   if (!numeric.empty() || !enums.empty()) {
-    auto where = [](const SourceLocation& l) {
-      return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
-    };
     for (const Property& p : properties)
       for (const auto& e : p.exprs)
-        if (e) cuts.add(*e, where(p.requirement->location));
+        if (e) cuts.add(*e, place_text(p.requirement->location));
     for (const auto& a : mission.domain.assumptions)
-      if (a.expr) cuts.add(*a.expr, where(a.location), true);
+      if (a.expr) cuts.add(*a.expr, place_text(a.location), true);
     if (world.initial) cuts.add(*world.initial, world.file + ": initial", true);
     std::vector<char> in_disjunction(tree_scripts.size(), 0);
     for (const auto& [first, last] : disjunctions) {

@@ -121,12 +121,7 @@ struct SymbolicTick::Impl {
 
   Impl(Model& model, z3::context& c) : m(model), ctx(c) {}
 
-  std::string where(NodeId id) const {
-    const runtime::NodeInfo& i = m.engine->info(id);
-    return i.location.file + ":" + std::to_string(i.location.line) + ":" +
-           std::to_string(i.location.column) + ": " + i.kind +
-           (i.name.empty() ? "" : " '" + i.name + "'");
-  }
+  std::string where(NodeId id) const { return m.engine->info(id).place(); }
 
   void build() {
     const runtime::Engine& e = *m.engine;

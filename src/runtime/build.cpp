@@ -117,8 +117,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
                                  std::uint32_t instance, NodeId parent, std::uint32_t child_index,
                                  int depth) {
   const std::string& file = def.file.empty() ? core.file : def.file;
-  const std::string where =
-      file + ":" + std::to_string(xml.line) + ":" + std::to_string(xml.column) + ": ";
+  const std::string where = place_text(file, xml.line, xml.column) + ": ";
   auto refuse = [&](const std::string& message) -> LoadError { return LoadError(where + message); };
 
   if (depth > bt::kMaxDepth)
@@ -134,8 +133,7 @@ NodeId Builder::instantiate_node(const bt::Node& xml, const bt::TreeDef& def,
     if (s.refusal.empty()) continue;
     const auto [line, column] =
         s.attribute.empty() ? std::pair{xml.line, xml.column} : xml.attribute_position(s.attribute);
-    throw LoadError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-                    s.refusal);
+    throw LoadError(place_text(file, line, column) + ": " + s.refusal);
   }
   const bt::BuiltinNode* builtin = bt::find_builtin(kind_name);
   if (builtin != nullptr && !runs(builtin->kind))
@@ -409,8 +407,8 @@ Engine Engine::build(const bt::Document& doc, const std::string& main_tree, Worl
   for (const bt::TreeDef& tree : doc.trees) {
     auto [it, inserted] = core->defs.emplace(tree.id, std::make_shared<bt::TreeDef>(tree));
     if (!inserted)
-      throw LoadError(doc.file + ":" + std::to_string(tree.line) + ":" +
-                      std::to_string(tree.column) + ": tree '" + tree.id + "' is defined twice");
+      throw LoadError(place_text(doc.file, tree.line, tree.column) + ": tree '" + tree.id +
+                      "' is defined twice");
   }
   const bt::TreeDef* main = main_tree.empty() ? doc.main() : doc.find_tree(main_tree);
   if (main == nullptr)

@@ -162,10 +162,7 @@ void Core::halt_node(NodeId id) {
 void Core::fail(NodeId id, const std::string& message, const std::string& script) {
   ++stats.errors;
   const NodeInfo& i = info[id];
-  std::string text = i.location.file + ":" + std::to_string(i.location.line) + ":" +
-                     std::to_string(i.location.column) + ": " + i.kind;
-  if (!i.name.empty()) text += " '" + i.name + "'";
-  TickError error{tick, id, text + ": " + message, instance_path(id), script};
+  TickError error{tick, id, i.place() + ": " + message, instance_path(id), script};
   if (errors.size() < options.max_recorded_errors) errors.push_back(error);
   throw TickException(std::move(error));
 }

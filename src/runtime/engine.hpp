@@ -45,6 +45,11 @@ struct NodeInfo {
   SourceLocation location;
   const bt::Node* element = nullptr;  // the XML element (kept alive by the engine)
   bool alive = true;
+
+  // "mission.xml:12:7: MoveTo 'approach'": where a message about the node points.
+  std::string place() const {
+    return place_text(location) + ": " + kind + (name.empty() ? "" : " '" + name + "'");
+  }
 };
 
 // A failure BT.CPP raises as an exception while ticking (undefined script key, type error,

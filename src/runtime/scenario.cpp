@@ -6,6 +6,7 @@
 
 #include "base/files.hpp"
 #include "base/json_input.hpp"
+#include "base/location.hpp"
 
 namespace uabt::runtime {
 
@@ -185,7 +186,7 @@ std::string Scenario::where(std::string_view pointer, bool value) const {
   const auto& map = value ? value_positions : key_positions;
   const auto it = map.find(pointer);
   if (it == map.end()) return file;
-  return file + ":" + std::to_string(it->second.first) + ":" + std::to_string(it->second.second);
+  return place_text(file, it->second.first, it->second.second);
 }
 
 bool Scenario::mentions_state(std::string_view key) const {
@@ -207,8 +208,7 @@ Scenario parse_scenario(std::string_view text, const std::string& file) {
   JsonInputError error;
   std::optional<Json> parsed = parse_json_input<Json>(text, error);
   if (!parsed)
-    throw ScenarioError(file + ":" + std::to_string(error.line) + ":" +
-                        std::to_string(error.column) + ": error: " + error.message);
+    throw ScenarioError(place_text(file, error.line, error.column) + ": error: " + error.message);
   Json root = std::move(*parsed);
   Scenario s;
   s.file = file;

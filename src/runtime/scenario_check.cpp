@@ -152,8 +152,8 @@ std::string misfit_message(const std::string& name, const ScriptValue& value,
   const std::string why = misfit(value, var);
   if (why.empty()) return "";
   return name + " = " + (value.is_string() ? "\"" + value.to_string() + "\"" : value.to_string()) +
-         " " + why + " (declared " + fretish::var_type_name(var.type) + " at " + var.location.file +
-         ":" + std::to_string(var.location.line) + ":" + std::to_string(var.location.column) + ")";
+         " " + why + " (declared " + fretish::var_type_name(var.type) + " at " +
+         place_text(var.location) + ")";
 }
 
 bool ScenarioVocabulary::is_leaf(const std::string& key) const {

@@ -73,8 +73,7 @@ std::string with_source_places(std::string text, const bt::Document& compiled,
       }
     }
     if (!source) continue;
-    const std::string named =
-        source->file + ":" + std::to_string(source->line) + ":" + std::to_string(source->column);
+    const std::string named = place_text(source->file, source->line, source->column);
     text.replace(at, end - at, named);
   }
   return text;
