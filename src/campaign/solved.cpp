@@ -34,12 +34,6 @@ std::optional<Fraction> bound(const std::string& text) {
   return Fraction::parse(text);
 }
 
-std::optional<double> number_of(const Value& v) {
-  if (v.kind == Value::Kind::integer) return static_cast<double>(v.integer);
-  if (v.kind == Value::Kind::real) return v.real;
-  return std::nullopt;
-}
-
 }  // namespace
 
 // One node's questions: the node's variables, a primed copy of them (MC/DC pairs), the domain,
@@ -703,7 +697,7 @@ bool Model::Node::solved_reaches(const Goal& goal, const State& state) const {
         }
       }
       const Value* v = find_value(state, goal.variable);
-      if (v == nullptr || !number_of(*v)) return false;
+      if (v == nullptr || !verify::detail::side_of(*v, Fraction(0))) return false;
       auto side = [&](const Fraction& at) { return *verify::detail::side_of(*v, at); };
       if (goal.point) return side(*goal.lo) == 0;
       return (!goal.lo || side(*goal.lo) > 0) && (!goal.hi || side(*goal.hi) < 0);

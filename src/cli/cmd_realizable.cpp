@@ -25,9 +25,7 @@ Json values_json(const std::vector<Value>& values) {
 Json defeat_json(const std::vector<realize::Choice>& choices) {
   Json ticks = Json::array();
   for (const auto& c : choices) {
-    Json inputs = Json::object();
-    for (const auto& [name, value] : c.inputs) inputs[name] = value_json(value);
-    ticks.push_back({{"tick", c.tick}, {"inputs", inputs}});
+    ticks.push_back({{"tick", c.tick}, {"inputs", state_json(c.inputs)}});
   }
   return ticks;
 }

@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "base/diagnostics.hpp"
 #include "base/finding.hpp"
 #include "realize/realize.hpp"
 
@@ -19,9 +20,8 @@ SourceLocation location_of(const load::Mission& m, const std::string& id) {
 std::string inputs_text(const std::vector<Choice>& choices) {
   std::string out;
   for (const auto& c : choices) {
-    out += (out.empty() ? "" : "; ") + std::string("tick ") + std::to_string(c.tick) + ":";
-    for (std::size_t k = 0; k < c.inputs.size(); ++k)
-      out += (k == 0 ? " " : ", ") + c.inputs[k].first + " = " + c.inputs[k].second.to_string();
+    out += (out.empty() ? "" : "; ") + std::string("tick ") + std::to_string(c.tick) + ":" +
+           (c.inputs.empty() ? "" : " " + format_state(c.inputs, " = "));
   }
   return out;
 }

@@ -116,8 +116,7 @@ nlohmann::ordered_json proofs_json(const Proofs& proofs) {
       const ProofCounterexample& cex = *a.counterexample;
       Json trace = Json::array();
       for (const ProofTick& t : cex.ticks) {
-        Json values = Json::object();
-        for (const auto& [name, value] : t.values) values[name] = value_json(value);
+        Json values = state_json(t.values);
         Json actions = Json::array();
         for (const auto& [action, event] : t.actions)
           actions.push_back(event.empty() ? action : action + " " + event);

@@ -136,17 +136,18 @@ std::string uplink_markdown(const UplinkChange& uplink) {
   out += "| Requirement | Node | Rule | Priority |\n|---|---|---|---|\n";
   for (const auto& m : uplink.merges)
     out += "| " + markdown_code(m.requirement) + " | " +
-           (m.adaptable.empty() ? "" : markdown_code(m.adaptable)) + " | " + rule_text(m) + " | " +
-           priority_text(m) + " |\n";
+           (m.adaptable.empty() ? "" : markdown_code(m.adaptable)) + " | " +
+           markdown_text(rule_text(m)) + " | " + markdown_text(priority_text(m)) + " |\n";
   if (uplink.merges.empty()) out += "| *none* | | | |\n";
   out += "\nBehaviour change (running version -> merged version):\n";
   for (const auto& node : uplink.impact.nodes) {
-    out += "\n- " + markdown_code(node.adaptable) + ": " + node_summary(node) + "\n";
+    out += "\n- " + markdown_code(node.adaptable) + ": " + markdown_text(node_summary(node)) + "\n";
     if (node.changes.empty()) continue;
     out += "\n  | From | To | States | Example |\n  |---|---|---:|---|\n";
     for (const auto& c : node.changes)
       out += "  | " + markdown_code(alternative_text(c.from)) + " | " +
-             markdown_code(alternative_text(c.to)) + " | " + changed_states_text(node, c) + " | " +
+             markdown_code(alternative_text(c.to)) + " | " +
+             markdown_text(changed_states_text(node, c)) + " | " +
              markdown_code(format_state(c.example)) + " |\n";
   }
   return out;

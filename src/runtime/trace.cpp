@@ -96,9 +96,7 @@ std::string trace_json_lines(const std::vector<TraceEvent>& trace) {
     }
     if (e.event == "violation") {
       j["role"] = e.role;
-      Json values = Json::object();
-      for (const auto& [name, value] : e.values) values[name] = uabt::value_json(value);
-      j["values"] = std::move(values);
+      j["values"] = uabt::state_json(e.values);
     }
     if (!e.message.empty() && e.event != "pending") j["message"] = e.message;
     if (!e.script.empty()) j["script"] = e.script;

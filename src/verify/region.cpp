@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "base/number_text.hpp"
+#include "base/text.hpp"
 #include "smt/rational.hpp"
 #include "verify/prefilter.hpp"
 
@@ -167,13 +168,7 @@ std::string render_cube(const std::vector<CubeLiteral>& cube, const fretish::Dom
       std::vector<std::string> names;
       for (std::size_t k = 0; k < allowed.size(); ++k)
         if (allowed[k]) names.push_back(type->enum_values[k]);
-      if (names.size() == 1) {
-        piece = key + " = " + names[0];
-      } else {
-        piece = key + " in {";
-        for (std::size_t k = 0; k < names.size(); ++k) piece += (k ? ", " : "") + names[k];
-        piece += "}";
-      }
+      piece = names.size() == 1 ? key + " = " + names[0] : key + " in {" + join(names, ", ") + "}";
     }
     if (piece.empty()) continue;
     out += (out.empty() ? "" : " & ") + piece;

@@ -267,7 +267,7 @@ std::optional<int> side_of(const Value& v, const Fraction& breakpoint) {
     const Fraction x(static_cast<long long>(v.integer));
     return x < breakpoint ? -1 : breakpoint < x ? 1 : 0;
   }
-  if (v.kind != Value::Kind::real) return std::nullopt;
+  if (v.kind != Value::Kind::real || std::isnan(v.real)) return std::nullopt;
   const double at = breakpoint.to_double();
   return v.real < at ? -1 : v.real > at ? 1 : 0;
 }

@@ -110,9 +110,9 @@ void variables_of(const fretish::Expr& e, const smt::Typing& typing, std::set<st
 std::optional<Fraction> exact_value(const Value& v);
 
 // Where a number lies against a breakpoint: -1 below, 0 at, 1 above; nullopt for a value that
-// is no number. A run's real is a double, and the one evaluator compares doubles, so a real lies
-// at a breakpoint when it is the breakpoint's nearest double: the value a scenario writes for it
-// (1/3 as 0.3333333333333333), where the run's guard holds as at 1/3. An integer compares
+// is no number (or NaN). A run's real is a double, and the one evaluator compares doubles, so a
+// real lies at a breakpoint when it is the breakpoint's nearest double: the value a scenario writes
+// for it (1/3 as 0.3333333333333333), where the run's guard holds as at 1/3. An integer compares
 // exactly. Every reading of a run's state against the cells (enumerated and solved campaign
 // nodes, coverage) asks this.
 std::optional<int> side_of(const Value& v, const Fraction& breakpoint);

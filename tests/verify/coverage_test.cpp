@@ -1,7 +1,11 @@
 // Coverage counts against brute force with the independent evaluator.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+
 #include "verify/mission_builder.hpp"
+#include "verify/space.hpp"
 
 namespace uabt::testing {
 namespace {
@@ -190,6 +194,23 @@ TEST(Coverage, DivisionByZeroInSomeStateIsNotGuessed) {
       "integer battery in [0, 9]\n"));
   EXPECT_TRUE(guarded.coverage.at(0).counted);
   EXPECT_EQ(guarded.coverage.at(0).alternatives.at(0).states, 3u);  // 1, 2, 3
+}
+
+TEST(RunValues, ARealLiesAtABreakpointWhenItIsTheBreakpointsNearestDouble) {
+  // The run computes in doubles: 0.3333333333333333 is where 1/3 is for every guard it reads.
+  using verify::detail::Fraction;
+  using verify::detail::side_of;
+  const Fraction third = Fraction::of(1, 3);
+  const double at = 1.0 / 3.0;
+  EXPECT_EQ(side_of(Value::of_real(at, "0.3333333333333333"), third), 0);
+  EXPECT_EQ(side_of(Value::of_real(std::nextafter(at, 1.0), "0.33333333333333337"), third), 1);
+  EXPECT_EQ(side_of(Value::of_real(std::nextafter(at, 0.0), "0.33333333333333326"), third), -1);
+  // An integer compares exactly, also beyond 2^53.
+  EXPECT_EQ(side_of(Value::of_int(INT64_MAX), Fraction(static_cast<long long>(INT64_MAX - 1))), 1);
+  EXPECT_EQ(side_of(Value::of_int(7), Fraction(7)), 0);
+  // No place at all for what is no number.
+  EXPECT_FALSE(side_of(Value::of_real(std::nan(""), "nan"), third).has_value());
+  EXPECT_FALSE(side_of(Value::of_bool(true), third).has_value());
 }
 
 TEST(CoverageMap, NeighbouringEnumValuesOfOneOutcomeAreNamedWhereTheyAreDrawn) {
